@@ -1,0 +1,28 @@
+// The subcommands of mdrsim: options as parsed, and the functions that carry them out.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace mdrsim::cli {
+
+struct RunOptions {
+  std::string scene;
+  std::vector<std::string> sets;  ///< KEY=VALUE
+  std::string json;               ///< path, "-" or empty (print a summary)
+  std::string trajectory;         ///< CSV path or empty
+};
+
+struct SweepOptions {
+  std::string scene;
+  std::string vary;  ///< KEY=FROM:TO:COUNT
+  std::vector<std::string> sets;
+  std::string csv = "-";
+  int threads = 1;
+};
+
+/// Each returns the process exit code; bad input throws SceneError or UsageError.
+int run_command(const RunOptions& options);
+int sweep_command(const SweepOptions& options);
+
+}  // namespace mdrsim::cli

@@ -1,0 +1,82 @@
+// mdrsim: the command line. Parse, call the engine, print; exit 0 done, 1 internal, 2 bad input.
+#include <fmt/format.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <thread>
+
+#include "apps/commands.hpp"
+#include "apps/usage_error.hpp"
+#include "engine/scene_error.hpp"
+
+namespace {
+
+constexpr const char* kLevels[] = {"trace", "debug", "info", "warn", "error", "off"};
+
+void set_up_logging(const std::string& level) {
+  auto logger = spdlog::stderr_color_mt("mdrsim");
+  logger->set_pattern("[%l] %v");
+  spdlog::set_default_logger(logger);
+  spdlog::set_level(spdlog::level::from_str(level));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"mdrsim: adhesive contact under combined normal and tangential loading (MDR)"};
+  app.require_subcommand(1);
+  std::string level = "info";
+  const std::vector<std::string> levels(std::begin(kLevels), std::end(kLevels));
+
+  mdrsim::cli::RunOptions run;
+  CLI::App* run_app = app.add_subcommand("run", "pull one scene off and report its critical point");
+  run_app->add_option("scene", run.scene, "scene file (TOML)")->required();
+  run_app->add_option("--set", run.sets, "override one scene value: KEY=VALUE (repeatable)")
+      ->allow_extra_args(false);
+  run_app->add_option("--json", run.json,
+                      "write the JSON result to PATH, or - for standard output");
+  run_app->add_option("--trajectory", run.trajectory, "write one CSV row per event to PATH");
+  run_app->add_option("--log-level", level, "log level on standard error")
+      ->check(CLI::IsMember(levels));
+
+  mdrsim::cli::SweepOptions sweep;
+  sweep.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  CLI::App* sweep_app = app.add_subcommand("sweep", "one run per value of a scene key, as CSV");
+  sweep_app->add_option("scene", sweep.scene, "scene file (TOML)")->required();
+  sweep_app->add_option("--vary", sweep.vary, "KEY=FROM:TO:COUNT, evenly spaced values")
+      ->required();
+  sweep_app->add_option("--set", sweep.sets, "override one scene value: KEY=VALUE (repeatable)")
+      ->allow_extra_args(false);
+  sweep_app->add_option("--csv", sweep.csv, "write the CSV to PATH, or - (default)");
+  sweep_app->add_option("--threads", sweep.threads, "runs in parallel (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  sweep_app->add_option("--log-level", level, "log level on standard error")
+      ->check(CLI::IsMember(levels));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "mdrsim: " << e.what() << '\n';
+    return 2;
+  }
+  try {
+    set_up_logging(level);
+    if (run_app->parsed()) return mdrsim::cli::run_command(run);
+    return mdrsim::cli::sweep_command(sweep);
+  } catch (const mdrsim::SceneError& e) {
+    std::cerr << e.what() << '\n';
+    return 2;
+  } catch (const mdrsim::cli::UsageError& e) {
+    std::cerr << "mdrsim: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "mdrsim: internal error: " << e.what() << '\n';
+    return 1;
+  } catch (...) {
+    std::cerr << "mdrsim: internal error\n";
+    return 1;
+  }
+}

@@ -1,0 +1,33 @@
+// An output that is standard output for "-", else a file that appears only when complete.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <string>
+
+namespace mdrsim::cli {
+
+/// Writes to PATH.partial and renames it to PATH on commit(); an uncommitted file is removed,
+/// so a failed run leaves no partial output behind.
+class OutputFile {
+ public:
+  /// `flag` names the option in messages; throws UsageError when the file cannot be created.
+  OutputFile(std::string flag, const std::string& path);
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  ~OutputFile();
+
+  std::ostream& stream();
+  void commit();
+
+ private:
+  std::string flag_;
+  bool to_stdout_;
+  std::filesystem::path path_;
+  std::filesystem::path partial_;
+  std::ofstream file_;
+  bool committed_ = false;
+};
+
+}  // namespace mdrsim::cli

@@ -1,0 +1,77 @@
+// mdrsim run: one pull-off, its JSON result, trajectory and a short summary.
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "apps/commands.hpp"
+#include "apps/output_file.hpp"
+#include "apps/scene_input.hpp"
+#include "apps/usage_error.hpp"
+#include "engine/log_observer.hpp"
+#include "engine/pull_off.hpp"
+#include "engine/result_json.hpp"
+#include "engine/trajectory_csv.hpp"
+
+namespace mdrsim::cli {
+namespace {
+
+void print_summary(const Scene& scene, const RunResult& r) {
+  const ContactSnapshot& c = r.critical;
+  fmt::print("status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
+             to_string(r.status), scene.normal.control,
+             scene.tangential ? scene.tangential->control : "fixed-grips", scene.criterion_name,
+             scene.springs);
+  fmt::print(
+      "critical: F = {:.8g} N, Fx = {:.8g} N, a = {:.8g} m, d = {:.8g} m, ux = {:.8g} m, {} "
+      "springs in contact\n",
+      c.normal_force, c.tangential_force, c.contact_radius, c.indentation,
+      c.tangential_displacement, c.springs_in_contact);
+  if (const auto s = dimensionless_scales(scene)) {
+    fmt::print(
+        "dimensionless: F/F0 = {:.8g}, Fx/F0 = {:.8g}, a/a0 = {:.8g}, d/d0 = {:.8g}, ux/d0 = "
+        "{:.8g}\n",
+        c.normal_force / s->force, c.tangential_force / s->force, c.contact_radius / s->radius,
+        c.indentation / s->depth, c.tangential_displacement / s->depth);
+  }
+  fmt::print("counts: {} events, {} steps, {} halvings; {:.3g} s\n", r.counts.events,
+             r.counts.steps, r.counts.halvings, r.wall_time_s);
+}
+
+}  // namespace
+
+int run_command(const RunOptions& options) {
+  if (options.json == "-" && options.trajectory == "-") {
+    throw UsageError("--trajectory: cannot share standard output with --json -");
+  }
+  const SceneDocument document = load_scene_document(options.scene, options.sets);
+  const Scene scene = document.build(Registries::builtin());
+
+  std::optional<OutputFile> json_file;
+  if (!options.json.empty()) json_file.emplace("--json", options.json);
+  std::optional<OutputFile> trajectory_file;
+  std::unique_ptr<TrajectoryCsvWriter> trajectory;
+  ObserverList observers;
+  LogObserver log;
+  observers.add(log);
+  if (!options.trajectory.empty()) {
+    trajectory_file.emplace("--trajectory", options.trajectory);
+    trajectory = std::make_unique<TrajectoryCsvWriter>(trajectory_file->stream());
+    observers.add(*trajectory);
+  }
+
+  const RunResult result = run_pull_off(scene, observers);
+
+  if (trajectory_file) trajectory_file->commit();
+  if (json_file) {
+    json_file->stream() << result_to_json(scene, result).dump(2) << '\n';
+    json_file->commit();
+  } else {
+    print_summary(scene, result);
+  }
+  return 0;
+}
+
+}  // namespace mdrsim::cli

@@ -1,0 +1,48 @@
+// When the boundary spring of the glued contact lets go: the detachment criterion interface.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace mdrsim {
+
+/// The interface's elastic and adhesive properties that every criterion sees.
+struct InterfaceProperties {
+  double effective_modulus;        ///< E* [Pa] (paper eq. 8)
+  double effective_shear_modulus;  ///< G* [Pa] (paper eq. 8)
+  double work_of_adhesion;         ///< dgamma [J/m^2]
+};
+
+/// The state of the boundary spring of the glued contact.
+struct BoundarySpring {
+  double elongation;               ///< normal stretch -u_z, zero when compressed [m]
+  double tangential_displacement;  ///< u_x [m]
+  double contact_radius;           ///< a, the position of the boundary spring [m]
+};
+
+/// The rule of Hess (paper eq. 12): the elongation dl(a) [m] at which a spring of a pure
+/// normal contact lets go at contact radius a [m].
+inline double hess_elongation_limit(const InterfaceProperties& p, double contact_radius) {
+  return std::sqrt(2.0 * std::numbers::pi * contact_radius * p.work_of_adhesion /
+                   p.effective_modulus);
+}
+
+/// Required: margin(). Optional: critical_elongation().
+class DetachmentCriterion {
+ public:
+  virtual ~DetachmentCriterion() = default;
+
+  /// Required: a signed margin, > 0 while the spring holds and <= 0 when it lets go;
+  /// continuous and non-increasing in the elongation. Its unit is the criterion's own.
+  virtual double margin(const BoundarySpring& spring) const = 0;
+
+  /// Optional: the closed-form smallest elongation [m] with margin <= 0, for a spring whose
+  /// margin at zero elongation is >= 0. Without it the engine root-finds margin().
+  virtual std::optional<double> critical_elongation(double /*contact_radius*/,
+                                                    double /*tangential_displacement*/) const {
+    return std::nullopt;
+  }
+};
+
+}  // namespace mdrsim

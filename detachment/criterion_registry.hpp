@@ -1,0 +1,14 @@
+// The registry of detachment criteria, filled by name from a scene's [detachment] table.
+#pragma once
+
+#include "detachment/criterion.hpp"
+#include "engine/part_registry.hpp"
+
+namespace mdrsim {
+
+using CriterionRegistry = PartRegistry<DetachmentCriterion, const InterfaceProperties&>;
+
+/// Registers the built-in criteria of SPEC's table.
+void register_builtin_criteria(CriterionRegistry& registry);
+
+}  // namespace mdrsim

@@ -1,0 +1,19 @@
+// The deformation criterion: sqrt(uz^2 + ux^2) >= dl(a) (paper eq. 38).
+#pragma once
+
+#include "detachment/criterion.hpp"
+
+namespace mdrsim {
+
+class DeformationCriterion final : public DetachmentCriterion {
+ public:
+  explicit DeformationCriterion(const InterfaceProperties& properties) : p_(properties) {}
+  double margin(const BoundarySpring& spring) const override;
+  std::optional<double> critical_elongation(double contact_radius,
+                                            double tangential_displacement) const override;
+
+ private:
+  InterfaceProperties p_;
+};
+
+}  // namespace mdrsim

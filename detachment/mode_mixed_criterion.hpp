@@ -1,0 +1,19 @@
+// Johnson's energy release rate: E* uz^2 + G* ux^2 >= 2 pi a dgamma (paper eqs. 3, 20).
+#pragma once
+
+#include "detachment/criterion.hpp"
+
+namespace mdrsim {
+
+class ModeMixedCriterion final : public DetachmentCriterion {
+ public:
+  explicit ModeMixedCriterion(const InterfaceProperties& properties) : p_(properties) {}
+  double margin(const BoundarySpring& spring) const override;
+  std::optional<double> critical_elongation(double contact_radius,
+                                            double tangential_displacement) const override;
+
+ private:
+  InterfaceProperties p_;
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,19 @@
+// An interface without tangential strength: |uz| >= dl(a), ux ignored.
+#pragma once
+
+#include "detachment/criterion.hpp"
+
+namespace mdrsim {
+
+class NormalOnlyCriterion final : public DetachmentCriterion {
+ public:
+  explicit NormalOnlyCriterion(const InterfaceProperties& properties) : p_(properties) {}
+  double margin(const BoundarySpring& spring) const override;
+  std::optional<double> critical_elongation(double contact_radius,
+                                            double tangential_displacement) const override;
+
+ private:
+  InterfaceProperties p_;
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,19 @@
+// The critical spring stress: sqrt((E* uz)^2 + (G* ux)^2) >= E* dl(a).
+#pragma once
+
+#include "detachment/criterion.hpp"
+
+namespace mdrsim {
+
+class StressCriterion final : public DetachmentCriterion {
+ public:
+  explicit StressCriterion(const InterfaceProperties& properties) : p_(properties) {}
+  double margin(const BoundarySpring& spring) const override;
+  std::optional<double> critical_elongation(double contact_radius,
+                                            double tangential_displacement) const override;
+
+ private:
+  InterfaceProperties p_;
+};
+
+}  // namespace mdrsim

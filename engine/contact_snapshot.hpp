@@ -1,0 +1,18 @@
+// The observable state of the contact at one moment, in SI units.
+#pragma once
+
+#include <cstdint>
+
+namespace mdrsim {
+
+struct ContactSnapshot {
+  double normal_control = 0.0;           ///< value held by the normal controller [m or N]
+  double indentation = 0.0;              ///< d, positive into the half-space [m]
+  double normal_force = 0.0;             ///< F_z, positive pressing [N]
+  double contact_radius = 0.0;           ///< a [m]
+  double tangential_displacement = 0.0;  ///< u_x [m]
+  double tangential_force = 0.0;         ///< F_x [N]
+  std::int64_t springs_in_contact = 0;   ///< attached springs of one half
+};
+
+}  // namespace mdrsim

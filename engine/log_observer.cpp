@@ -1,0 +1,30 @@
+// Levels chosen so that info shows the preload, the tangential load and the critical point.
+#include "engine/log_observer.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "engine/event_format.hpp"
+
+namespace mdrsim {
+
+void LogObserver::on_event(const Event& event) {
+  switch (event.kind) {
+    case EventKind::preload_reached:
+    case EventKind::tangential_applied:
+    case EventKind::instability:
+      spdlog::info("{}", event);
+      break;
+    case EventKind::finished:
+      if (event.status != RunStatus::instability) spdlog::info("{}", event);
+      break;
+    case EventKind::spring_detached:
+      spdlog::debug("{}", event);
+      break;
+    case EventKind::step_accepted:
+    case EventKind::step_halved:
+      spdlog::trace("{}", event);
+      break;
+  }
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,13 @@
+// The logging observer: milestones at info, detachments at debug, steps at trace (spdlog).
+#pragma once
+
+#include "engine/observer.hpp"
+
+namespace mdrsim {
+
+class LogObserver final : public Observer {
+ public:
+  void on_event(const Event& event) override;
+};
+
+}  // namespace mdrsim

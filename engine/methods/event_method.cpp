@@ -1,0 +1,49 @@
+// One detachment per advance, located exactly; O(1) work unless the criterion needs a root search.
+#include "engine/methods/event_method.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "engine/boundary_let_go.hpp"
+
+namespace mdrsim {
+
+AdvanceOutcome EventMethod::advance(Contact& contact, const DetachmentCriterion& criterion,
+                                    const ObserverList& observers, RunCounts& counts) {
+  const BoundaryLetGo go = locate_boundary_let_go(contact, criterion);
+  counts.root_iterations += go.let_go.root_iterations;
+  if (go.let_go.kind == LetGo::Kind::never) {
+    throw std::runtime_error(
+        "the detachment criterion never lets go of the boundary spring at a = " +
+        std::to_string(contact.contact_radius()) + " m");
+  }
+  AdvanceOutcome out;
+  out.first_by_shear = go.let_go.kind == LetGo::Kind::now;
+  const double held = contact.normal_control();
+  // Already due at the held value (a cascade), up to rounding of the two control values.
+  const double tolerance = 4.0 * std::numeric_limits<double>::epsilon() *
+                           std::max(std::abs(held), std::abs(go.normal_control));
+  const bool due = out.first_by_shear || go.normal_control >= held - tolerance;
+  if (due) {
+    out.first_stretch = boundary_elongation(contact);
+  } else {
+    contact.set_normal_control(go.normal_control);
+    out.equilibrium_before = contact.snapshot();
+    out.first_stretch = go.let_go.elongation;
+  }
+  if (!observers.empty()) {
+    observers.emit({.kind = EventKind::spring_detached,
+                    .state = out.equilibrium_before ? *out.equilibrium_before : contact.snapshot(),
+                    .spring = contact.springs_in_contact(),
+                    .in_cascade = due});
+  }
+  contact.detach_boundary_spring();
+  out.detached = 1;
+  ++counts.events;
+  return out;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,38 @@
+// The interface of a solver method: take the contact to its next detachment(s).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "detachment/criterion.hpp"
+#include "engine/contact.hpp"
+#include "engine/observer.hpp"
+
+namespace mdrsim {
+
+struct RunCounts {
+  std::int64_t events = 0;           ///< springs detached
+  std::int64_t steps = 0;            ///< stepping increments taken
+  std::int64_t halvings = 0;         ///< stepping increments halved
+  std::int64_t root_iterations = 0;  ///< iterations of let-go root searches
+};
+
+struct AdvanceOutcome {
+  std::int64_t detached = 0;  ///< springs detached by this advance
+  /// The equilibrium the control left before the first detachment; empty when the first
+  /// detachment happened at the control value the contact already had (a cascade goes on).
+  std::optional<ContactSnapshot> equilibrium_before;
+  bool first_by_shear = false;  ///< the first spring let go at zero elongation (margin < 0)
+  double first_stretch = 0.0;   ///< stretch of the first detached spring at that equilibrium [m]
+};
+
+class PullOffMethod {
+ public:
+  virtual ~PullOffMethod() = default;
+  /// Lowers the normal control from its current value until at least one spring of the
+  /// contact (which has one or more) detaches, and detaches it. Emits the detachments.
+  virtual AdvanceOutcome advance(Contact& contact, const DetachmentCriterion& criterion,
+                                 const ObserverList& observers, RunCounts& counts) = 0;
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,69 @@
+// Trial steps on a saved state: restore and halve on a multi-spring detachment, else accept.
+#include "engine/methods/stepping_method.hpp"
+
+#include <stdexcept>
+
+#include "engine/boundary_let_go.hpp"
+
+namespace mdrsim {
+
+SteppingMethod::SteppingMethod(double step, int max_halvings)
+    : step_(step), max_halvings_(max_halvings) {
+  if (!(step > 0.0)) throw std::invalid_argument("the stepping increment must be positive");
+  if (max_halvings < 0) throw std::invalid_argument("max_halvings must be >= 0");
+}
+
+AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriterion& criterion,
+                                       const ObserverList& observers, RunCounts& counts) {
+  const Contact::State start = contact.save();
+  const ContactSnapshot before = contact.snapshot();
+  const double stretch_before = boundary_elongation(contact);
+  const bool emit = !observers.empty();
+  double step = step_;
+  for (int halvings = 0;; ++halvings) {
+    const bool last_try = halvings >= max_halvings_;
+    contact.set_normal_control(start.normal_control - step);
+    pending_.clear();
+    AdvanceOutcome out;
+    while (contact.springs_in_contact() > 0 && boundary_lets_go_now(contact, criterion)) {
+      if (out.detached == 0) {
+        out.first_by_shear = criterion.margin({0.0, contact.tangential_displacement(),
+                                               contact.contact_radius()}) < 0.0;
+      }
+      if (emit) {
+        Event e{.kind = EventKind::spring_detached,
+                .state = contact.snapshot(),
+                .spring = contact.springs_in_contact(),
+                .in_cascade = out.detached > 0};
+        if (last_try) {
+          observers.emit(e);
+        } else {
+          pending_.push_back(e);
+        }
+      }
+      contact.detach_boundary_spring();
+      ++out.detached;
+      if (out.detached > 1 && !last_try) break;  // the step will be halved
+    }
+    if (out.detached > 1 && !last_try) {
+      contact.restore(start);
+      step *= 0.5;
+      ++counts.halvings;
+      if (emit) observers.emit({.kind = EventKind::step_halved, .state = before, .step = step});
+      continue;
+    }
+    for (const Event& e : pending_) observers.emit(e);
+    counts.events += out.detached;
+    ++counts.steps;
+    if (emit) {
+      observers.emit({.kind = EventKind::step_accepted, .state = contact.snapshot(), .step = step});
+    }
+    if (out.detached > 0) {
+      out.equilibrium_before = before;
+      out.first_stretch = stretch_before;
+    }
+    return out;
+  }
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,50 @@
+// A loaded scene: the parts and numbers of one pull-off run, checked and resolved.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "controllers/controller.hpp"
+#include "detachment/criterion.hpp"
+#include "engine/material.hpp"
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+enum class SolverMethod { event, stepping };
+
+struct SolverOptions {
+  SolverMethod method = SolverMethod::event;
+  /// Stepping increment of the normal control [m for fixed-grips and compliant, N for
+  /// fixed-load]; default 1e-3 of the control value at the preload.
+  std::optional<double> step;
+  int max_halvings = 30;
+  std::int64_t max_steps = 100'000'000;
+};
+
+/// One axis of the loading machine: its controller and, on the tangential axis, the value
+/// it holds during the pull-off.
+struct AxisLoading {
+  std::string control;  ///< the controller's registered name
+  std::unique_ptr<AxisController> controller;
+  double held_value = 0.0;  ///< [m] or [N], see AxisController::held_value_key
+};
+
+struct Scene {
+  std::string title;
+  Material material{};
+  std::string profile_name;
+  std::unique_ptr<Profile> profile;
+  double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
+  double preload_depth = 0.0;  ///< indentation at the preload [m]
+  AxisLoading normal;
+  std::optional<AxisLoading> tangential;
+  std::string criterion_name;
+  std::unique_ptr<DetachmentCriterion> criterion;
+  std::int64_t springs = 0;  ///< springs across the glued radius (one half)
+  SolverOptions solver;
+};
+
+}  // namespace mdrsim

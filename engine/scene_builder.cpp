@@ -1,0 +1,201 @@
+// Reads a scene table into a Scene: every key checked, parts created by name, preload resolved.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/scene_document_impl.hpp"
+#include "engine/scene_error.hpp"
+#include "engine/toml_reader.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr Bound kPositive{0.0, false};
+
+/// Runs a part's factory, turning its complaints into SceneErrors at the right key.
+template <class Make>
+auto create_part(TomlReader& table, std::string_view name_key, Make make) {
+  try {
+    return make();
+  } catch (const ParameterError& e) {
+    table.fail_at(e.key(), e.what());
+  } catch (const std::invalid_argument& e) {
+    table.fail_at(name_key, e.what());
+  }
+}
+
+Material read_material(TomlReader& t) {
+  const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
+  const bool effective = t.has("effective_modulus") || t.has("effective_shear_modulus");
+  if (youngs && effective) {
+    t.fail_at(t.has("effective_modulus") ? "effective_modulus" : "effective_shear_modulus",
+              "give youngs_modulus and poisson_ratio, or effective_modulus (and "
+              "effective_shear_modulus), not both");
+  }
+  const double dgamma = t.number({.key = "work_of_adhesion",
+                                  .help = "work of adhesion dgamma [J/m^2], >= 0",
+                                  .lower = Bound{0.0, true}});
+  if (effective) {
+    const double e_star =
+        t.number({.key = "effective_modulus", .help = "E* [Pa], > 0", .lower = kPositive});
+    const auto g_star = t.optional_number(
+        {.key = "effective_shear_modulus", .help = "G* [Pa], > 0", .lower = kPositive});
+    return {e_star, g_star.value_or(e_star), dgamma};
+  }
+  const double e = t.number({.key = "youngs_modulus",
+                             .help = "Young's modulus E [Pa], > 0; or give effective_modulus",
+                             .lower = kPositive});
+  const double nu = t.number({.key = "poisson_ratio",
+                              .help = "Poisson's ratio nu in (-1, 0.5]",
+                              .lower = Bound{-1.0, false},
+                              .upper = Bound{0.5, true}});
+  return Material::from_youngs_modulus(e, nu, dgamma);
+}
+
+AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool holds_value) {
+  AxisLoading axis;
+  axis.control = t.name("control", controllers.names());
+  const auto* entry = controllers.find(axis.control);
+  const ParameterValues values = t.read_all(entry->parameters);
+  axis.controller = create_part(t, "control", [&] { return entry->create(values); });
+  if (holds_value) {
+    const std::string key(axis.controller->held_value_key());
+    axis.held_value = t.number({.key = key, .help = fmt::format("the held {} (SI)", key)});
+  }
+  t.finish();
+  return axis;
+}
+
+/// The glued radius and the preload depth, from the one preload quantity given.
+void resolve_preload(TomlReader& t, Scene& scene) {
+  const char* keys[] = {"depth", "force", "contact_radius"};
+  int given = 0;
+  for (const char* k : keys) given += t.has(k) ? 1 : 0;
+  if (given != 1) t.fail("give exactly one of depth [m], force [N] or contact_radius [m]");
+  const Profile& profile = *scene.profile;
+  const double e_star = scene.material.effective_modulus;
+  const auto fixed = profile.fixed_contact_radius();
+  try {
+    if (const auto d = t.optional_number({.key = "depth", .help = "[m]", .lower = kPositive})) {
+      scene.glued_radius = fixed ? *fixed : profile.contact_radius_at_depth(*d);
+      scene.preload_depth = *d;
+    } else if (const auto f =
+                   t.optional_number({.key = "force", .help = "[N]", .lower = kPositive})) {
+      const double a = contact_radius_at_force(profile, *f, e_star);
+      scene.glued_radius = a;
+      // Depth that carries the force over radius a: F = 2 E* (a d - integral_0^a g).
+      const double image_integral =
+          a * profile.mdr_image(a) - 0.5 * profile.nonadhesive_force_per_modulus(a);
+      scene.preload_depth = (*f / (2.0 * e_star) + image_integral) / a;
+    } else {
+      const double a = t.number({.key = "contact_radius", .help = "[m]", .lower = kPositive});
+      if (fixed && std::abs(a - *fixed) > 1e-12 * *fixed) {
+        t.fail_at("contact_radius", fmt::format("= {} differs from the profile's fixed contact "
+                                                "radius {}",
+                                                a, *fixed));
+      }
+      if (a > profile.outer_radius()) {
+        t.fail_range("contact_radius", fmt::format("= {} is beyond the profile's edge at {}", a,
+                                                   profile.outer_radius()));
+      }
+      scene.glued_radius = a;
+      scene.preload_depth = profile.mdr_image(a);
+    }
+  } catch (const std::domain_error& e) {
+    t.fail(e.what());
+  }
+  if (!(scene.glued_radius > 0.0) || !std::isfinite(scene.glued_radius)) {
+    t.fail(fmt::format("the preload gives no glued contact (radius {})", scene.glued_radius));
+  }
+  t.finish();
+}
+
+void read_solver(TomlReader& t, SolverOptions& solver) {
+  const std::string method = t.name("method", {"event", "stepping"}, "event");
+  solver.method = method == "event" ? SolverMethod::event : SolverMethod::stepping;
+  if (solver.method == SolverMethod::event) {
+    for (const char* k : {"step", "max_halvings", "max_steps"}) {
+      if (t.has(k)) t.fail_at(k, "applies to method = \"stepping\" only");
+    }
+  } else {
+    solver.step = t.optional_number(
+        {.key = "step", .help = "increment of the normal control (SI)", .lower = kPositive});
+    if (t.has("max_halvings")) {
+      solver.max_halvings = static_cast<int>(
+          t.integer({.key = "max_halvings", .lower = Bound{0, true}, .upper = Bound{60, true}}));
+    }
+    if (t.has("max_steps")) {
+      solver.max_steps =
+          t.integer({.key = "max_steps", .lower = Bound{1, true}, .upper = Bound{1e15, true}});
+    }
+  }
+  t.finish();
+}
+
+}  // namespace
+
+Scene build_scene(const toml::table& root_table, const std::string& source_name,
+                  const std::filesystem::path& base_dir, const Registries& registries) {
+  TomlReader root(root_table, "", source_name, base_dir);
+  Scene scene;
+  scene.title = root.optional_text("title").value_or("");
+
+  TomlReader material = root.table("material");
+  scene.material = read_material(material);
+  material.finish();
+
+  TomlReader profile = root.table("profile");
+  scene.profile_name = profile.name("type", registries.profiles.names());
+  {
+    const auto* entry = registries.profiles.find(scene.profile_name);
+    const ParameterValues values = profile.read_all(entry->parameters);
+    scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
+  }
+  profile.finish();
+
+  TomlReader loading = root.table("loading");
+  TomlReader normal = loading.table("normal");
+  scene.normal = read_axis(normal, registries.controllers, false);
+  if (auto tangential = loading.optional_table("tangential")) {
+    scene.tangential = read_axis(*tangential, registries.controllers, true);
+  }
+  TomlReader preload = loading.table("preload");
+  resolve_preload(preload, scene);
+  loading.finish();
+
+  const InterfaceProperties interface = scene.material.interface_properties();
+  if (auto detachment = root.optional_table("detachment")) {
+    scene.criterion_name =
+        detachment->name("criterion", registries.criteria.names(), std::string("mode-mixed"));
+    const auto* entry = registries.criteria.find(scene.criterion_name);
+    const ParameterValues values = detachment->read_all(entry->parameters);
+    scene.criterion =
+        create_part(*detachment, "criterion", [&] { return entry->create(values, interface); });
+    detachment->finish();
+  } else {
+    scene.criterion_name = "mode-mixed";
+    const auto* entry = registries.criteria.find(scene.criterion_name);
+    scene.criterion = entry->create(ParameterValues{}, interface);
+  }
+
+  scene.springs = 2000;
+  if (auto discretization = root.optional_table("discretization")) {
+    if (discretization->has("rtol")) {
+      discretization->fail_at("rtol", "is not available in this version; give springs");
+    }
+    if (discretization->has("springs")) {
+      scene.springs = discretization->integer({.key = "springs",
+                                               .help = "springs across the glued radius",
+                                               .lower = Bound{1, true},
+                                               .upper = Bound{1e9, true}});
+    }
+    discretization->finish();
+  }
+
+  if (auto solver = root.optional_table("solver")) read_solver(*solver, scene.solver);
+  root.finish();
+  return scene;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,35 @@
+// One half of the symmetric MDR foundation under the glued contact (paper eq. 7).
+#pragma once
+
+#include <cstdint>
+
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+/// Springs i = 1..N at x_i = i a_g / N: the boundary spring of i attached springs sits at the
+/// contact radius x_i. Only the springs the glued contact can hold exist, and none is stored:
+/// positions and images are computed on demand.
+class SpringFoundation {
+ public:
+  SpringFoundation(const Profile& profile, double glued_radius, std::int64_t springs);
+
+  std::int64_t springs() const { return springs_; }
+  double glued_radius() const { return glued_radius_; }  ///< a_g [m]
+  double spacing() const { return spacing_; }            ///< dx [m]
+  double position(std::int64_t i) const {                ///< x_i [m]
+    return glued_radius_ * (static_cast<double>(i) / static_cast<double>(springs_));
+  }
+  double image(std::int64_t i) const { return profile_->mdr_image(position(i)); }  ///< g(x_i) [m]
+  double total_image() const { return total_image_; }  ///< sum of g(x_i), i = 1..N [m]
+  const Profile& profile() const { return *profile_; }
+
+ private:
+  const Profile* profile_;
+  double glued_radius_;
+  std::int64_t springs_;
+  double spacing_;
+  double total_image_;
+};
+
+}  // namespace mdrsim

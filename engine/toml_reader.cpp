@@ -1,0 +1,245 @@
+// Messages follow SPEC: "scene.toml:7:16: material.poisson_ratio = 0.7 is outside (-1, 0.5]".
+#include "engine/toml_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/scene_error.hpp"
+
+namespace mdrsim {
+namespace {
+
+std::string interval(const ParameterSpec& s) {
+  const std::string lo = s.lower
+                             ? fmt::format("{}{}", s.lower->inclusive ? "[" : "(", s.lower->value)
+                             : std::string("(-inf");
+  const std::string hi = s.upper
+                             ? fmt::format("{}{}", s.upper->value, s.upper->inclusive ? "]" : ")")
+                             : std::string("inf)");
+  return lo + ", " + hi;
+}
+
+bool inside(const ParameterSpec& s, double v) {
+  if (s.lower && (s.lower->inclusive ? v < s.lower->value : v <= s.lower->value)) return false;
+  if (s.upper && (s.upper->inclusive ? v > s.upper->value : v >= s.upper->value)) return false;
+  return true;
+}
+
+std::string describe(const toml::node& node) {
+  if (const auto* s = node.as_string()) return fmt::format("string \"{}\"", s->get());
+  if (node.is_table()) return "a table";
+  if (node.is_array()) return "an array";
+  if (node.is_boolean()) return node.as_boolean()->get() ? "true" : "false";
+  if (node.is_integer()) return fmt::format("{}", node.as_integer()->get());
+  if (node.is_floating_point()) return fmt::format("{}", node.as_floating_point()->get());
+  return "a date or time";
+}
+
+const char* expected(ParameterKind kind) {
+  switch (kind) {
+    case ParameterKind::number:
+      return "a number";
+    case ParameterKind::integer:
+      return "a whole number";
+    case ParameterKind::number_list:
+      return "an array of numbers";
+    case ParameterKind::text:
+      return "a string";
+    case ParameterKind::path:
+      return "a file path string";
+  }
+  return "?";
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+TomlReader::TomlReader(const toml::table& table, std::string path, std::string file,
+                       std::filesystem::path base_dir)
+    : table_(&table),
+      path_(std::move(path)),
+      file_(std::move(file)),
+      base_dir_(std::move(base_dir)) {}
+
+std::string TomlReader::key_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+std::string TomlReader::where(const toml::node& node) const {
+  const auto& src = node.source();
+  const std::string file = src.path ? *src.path : file_;
+  if (file == "--set" || file == "--vary") return file;
+  if (src.begin.line == 0) return file;
+  return fmt::format("{}:{}:{}", file, src.begin.line, src.begin.column);
+}
+
+void TomlReader::fail(const std::string& message) const {
+  throw SceneError(
+      fmt::format("{}: {}: {}", where(*table_), path_.empty() ? "scene" : path_, message));
+}
+
+void TomlReader::fail_at(std::string_view key, const std::string& message) const {
+  const toml::node* node = table_->get(key);
+  throw SceneError(
+      fmt::format("{}: {}: {}", node ? where(*node) : where(*table_), key_path(key), message));
+}
+
+void TomlReader::fail_range(std::string_view key, const std::string& message) const {
+  const toml::node* node = table_->get(key);
+  throw SceneError(
+      fmt::format("{}: {} {}", node ? where(*node) : where(*table_), key_path(key), message));
+}
+
+const toml::node* TomlReader::find(std::string_view key) {
+  const toml::node* node = table_->get(key);
+  asked_.emplace(key);
+  if (node) read_.emplace(key);
+  return node;
+}
+
+double TomlReader::checked_number(std::string_view key, const toml::node& node,
+                                  const ParameterSpec& spec) {
+  double v = 0.0;
+  if (const auto* i = node.as_integer()) {
+    v = static_cast<double>(i->get());
+  } else if (const auto* f = node.as_floating_point()) {
+    v = f->get();
+  } else {
+    fail_at(key, fmt::format("expected {}, got {}", expected(spec.kind), describe(node)));
+  }
+  if (!std::isfinite(v)) fail_range(key, fmt::format("= {} is not a finite number", v));
+  if (!inside(spec, v)) fail_range(key, fmt::format("= {} is outside {}", v, interval(spec)));
+  return v;
+}
+
+std::optional<ParameterValue> TomlReader::read(const ParameterSpec& spec) {
+  const toml::node* node = find(spec.key);
+  if (!node) {
+    if (spec.required) {
+      fail_at(spec.key, fmt::format("missing, expected {} ({})", expected(spec.kind), spec.help));
+    }
+    if (spec.default_value) return ParameterValue{*spec.default_value};
+    return std::nullopt;
+  }
+  switch (spec.kind) {
+    case ParameterKind::number:
+      return ParameterValue{checked_number(spec.key, *node, spec)};
+    case ParameterKind::integer: {
+      const double v = checked_number(spec.key, *node, spec);
+      if (v != std::floor(v)) fail_range(spec.key, fmt::format("= {} is not a whole number", v));
+      return ParameterValue{v};
+    }
+    case ParameterKind::number_list: {
+      const auto* array = node->as_array();
+      if (!array)
+        fail_at(spec.key, fmt::format("expected an array of numbers, got {}", describe(*node)));
+      std::vector<double> values;
+      values.reserve(array->size());
+      for (const toml::node& element : *array) {
+        values.push_back(checked_number(spec.key, element, spec));
+      }
+      return ParameterValue{std::move(values)};
+    }
+    case ParameterKind::text:
+    case ParameterKind::path: {
+      const auto* s = node->as_string();
+      if (!s)
+        fail_at(spec.key, fmt::format("expected {}, got {}", expected(spec.kind), describe(*node)));
+      if (spec.kind == ParameterKind::text) return ParameterValue{s->get()};
+      const std::filesystem::path p(s->get());
+      return ParameterValue{(p.is_absolute() ? p : base_dir_ / p).string()};
+    }
+  }
+  return std::nullopt;
+}
+
+ParameterValues TomlReader::read_all(const std::vector<ParameterSpec>& specs) {
+  ParameterValues values;
+  for (const ParameterSpec& spec : specs) {
+    if (auto v = read(spec)) values.set(spec.key, std::move(*v));
+  }
+  return values;
+}
+
+double TomlReader::number(const ParameterSpec& spec) {
+  ParameterSpec required = spec;
+  required.required = true;
+  return std::get<double>(*read(required));
+}
+
+std::optional<double> TomlReader::optional_number(const ParameterSpec& spec) {
+  ParameterSpec optional = spec;
+  optional.required = false;
+  const auto v = read(optional);
+  if (!v) return std::nullopt;
+  return std::get<double>(*v);
+}
+
+std::int64_t TomlReader::integer(const ParameterSpec& spec) {
+  ParameterSpec whole = spec;
+  whole.kind = ParameterKind::integer;
+  const auto v = read(whole);
+  return static_cast<std::int64_t>(std::get<double>(*v));
+}
+
+std::optional<std::string> TomlReader::optional_text(std::string_view key) {
+  const auto v = read({.key = std::string(key), .kind = ParameterKind::text, .required = false});
+  if (!v) return std::nullopt;
+  return std::get<std::string>(*v);
+}
+
+std::string TomlReader::name(std::string_view key, const std::vector<std::string>& known,
+                             std::optional<std::string> fallback) {
+  const auto v = read({.key = std::string(key),
+                       .kind = ParameterKind::text,
+                       .help = "one of: " + join(known),
+                       .required = !fallback.has_value()});
+  if (!v) return *fallback;
+  const std::string& given = std::get<std::string>(*v);
+  if (std::find(known.begin(), known.end(), given) == known.end()) {
+    fail_at(key, fmt::format("unknown '{}' (known: {})", given, join(known)));
+  }
+  return given;
+}
+
+TomlReader TomlReader::table(std::string_view key) {
+  auto t = optional_table(key);
+  if (!t) fail_at(key, "missing, expected a table");
+  return std::move(*t);
+}
+
+std::optional<TomlReader> TomlReader::optional_table(std::string_view key) {
+  const toml::node* node = find(key);
+  if (!node) return std::nullopt;
+  const auto* t = node->as_table();
+  if (!t) fail_at(key, fmt::format("expected a table, got {}", describe(*node)));
+  return TomlReader(*t, key_path(key), file_, base_dir_);
+}
+
+void TomlReader::finish() const {
+  const toml::node* first = nullptr;
+  std::string first_key;
+  std::vector<std::string> known(asked_.begin(), asked_.end());
+  for (auto&& [key, node] : *table_) {
+    if (read_.count(key.str()) != 0) continue;
+    const auto& b = node.source().begin;
+    if (!first || b.line < first->source().begin.line ||
+        (b.line == first->source().begin.line && b.column < first->source().begin.column)) {
+      first = &node;
+      first_key = std::string(key.str());
+    }
+  }
+  if (!first) return;
+  throw SceneError(
+      fmt::format("{}: {}: unknown key{}", where(*first), key_path(first_key),
+                  known.empty() ? std::string() : fmt::format(" (known: {})", join(known))));
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,65 @@
+// A typed reader over one TOML table: range-checked reads, file:line:col in every message,
+// and keys never read reported as unknown.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/parameters.hpp"
+
+namespace mdrsim {
+
+class TomlReader {
+ public:
+  /// `path` is the dotted key of the table ("" for the root); `file` names the document;
+  /// `base_dir` resolves relative file paths.
+  TomlReader(const toml::table& table, std::string path, std::string file,
+             std::filesystem::path base_dir);
+
+  bool has(std::string_view key) const { return table_->contains(key); }
+
+  /// Reads a declared parameter; absent and not required gives its default or nullopt.
+  std::optional<ParameterValue> read(const ParameterSpec& spec);
+  /// Reads every declared parameter of a part.
+  ParameterValues read_all(const std::vector<ParameterSpec>& specs);
+
+  double number(const ParameterSpec& spec);
+  std::optional<double> optional_number(const ParameterSpec& spec);
+  std::int64_t integer(const ParameterSpec& spec);
+  std::optional<std::string> optional_text(std::string_view key);
+  /// A name from `known`; `fallback` when absent (nullopt makes it required).
+  std::string name(std::string_view key, const std::vector<std::string>& known,
+                   std::optional<std::string> fallback = std::nullopt);
+
+  TomlReader table(std::string_view key);
+  std::optional<TomlReader> optional_table(std::string_view key);
+
+  /// Fails on the first key (in file order) that no read asked for.
+  void finish() const;
+
+  [[noreturn]] void fail_at(std::string_view key, const std::string& message) const;
+  [[noreturn]] void fail_range(std::string_view key, const std::string& message) const;
+  [[noreturn]] void fail(const std::string& message) const;
+  std::string key_path(std::string_view key) const;
+
+ private:
+  const toml::node* find(std::string_view key);
+  std::string where(const toml::node& node) const;
+  double checked_number(std::string_view key, const toml::node& node, const ParameterSpec& spec);
+
+  const toml::table* table_;
+  std::string path_;
+  std::string file_;
+  std::filesystem::path base_dir_;
+  std::set<std::string, std::less<>> read_;   ///< keys present and read
+  std::set<std::string, std::less<>> asked_;  ///< keys asked for, present or not
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,28 @@
+// The parabolic indenter: closed forms of its MDR image, Hertz radius and Hertz force.
+#include "profiles/parabolic_profile.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace mdrsim {
+
+ParabolicProfile::ParabolicProfile(double radius) : radius_(radius) {
+  if (!(radius > 0.0) || !std::isfinite(radius)) {
+    throw std::invalid_argument("the parabola's radius must be positive and finite");
+  }
+}
+
+double ParabolicProfile::shape(double r) const { return r * r / (2.0 * radius_); }
+
+double ParabolicProfile::mdr_image(double x) const { return x * x / radius_; }
+
+double ParabolicProfile::contact_radius_at_depth(double depth) const {
+  return depth > 0.0 ? std::sqrt(radius_ * depth) : 0.0;
+}
+
+// 2 * integral_0^a (a^2 - x^2)/R dx = 4 a^3 / (3 R), the Hertz force over E*.
+double ParabolicProfile::nonadhesive_force_per_modulus(double a) const {
+  return 4.0 * a * a * a / (3.0 * radius_);
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,44 @@
+// The rigid axisymmetric indenter: its shape f(r) and its MDR image g(x) (paper eqs. 4-6).
+#pragma once
+
+#include <limits>
+#include <optional>
+
+namespace mdrsim {
+
+/// Required operations: shape() and mdr_image(). The others have numerical defaults that
+/// a profile overrides where it knows a closed form.
+class Profile {
+ public:
+  virtual ~Profile() = default;
+
+  /// Required: the gap f(r) [m] between indenter and undeformed surface at radius r >= 0 [m].
+  virtual double shape(double radius) const = 0;
+
+  /// Required: the MDR image g(x) [m] at x >= 0 [m] (paper eq. 4); non-decreasing in x.
+  virtual double mdr_image(double x) const = 0;
+
+  /// Optional: the non-adhesive contact radius [m] at indentation depth [m], the x with
+  /// g(x) = depth. Default: a bracketing root search on mdr_image().
+  virtual double contact_radius_at_depth(double depth) const;
+
+  /// Optional: the non-adhesive normal force per unit E* of a contact of radius a [m],
+  /// 2 * integral_0^a (g(a) - g(x)) dx [m^2]. Default: Gauss-Kronrod quadrature.
+  virtual double nonadhesive_force_per_modulus(double contact_radius) const;
+
+  /// Optional: a contact radius the shape fixes for any glued contact (flat punch) [m].
+  virtual std::optional<double> fixed_contact_radius() const { return std::nullopt; }
+
+  /// Optional: the largest radius the shape is defined on [m] (a sphere ends at its radius).
+  virtual double outer_radius() const { return std::numeric_limits<double>::infinity(); }
+
+  /// Optional: the radius R of the JKR scales F0, a0, d0 (paper eq. 17), for profiles whose
+  /// tip is the parabola r^2/(2R); nullopt where those scales do not apply [m].
+  virtual std::optional<double> jkr_scale_radius() const { return std::nullopt; }
+};
+
+/// The non-adhesive contact radius [m] carrying normal force `force` [N] on a half-space of
+/// effective modulus [Pa]: the inverse of Profile::nonadhesive_force_per_modulus.
+double contact_radius_at_force(const Profile& profile, double force, double effective_modulus);
+
+}  // namespace mdrsim

@@ -1,0 +1,14 @@
+// The registry of indenter profiles, filled by name from a scene's [profile] table.
+#pragma once
+
+#include "engine/part_registry.hpp"
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+using ProfileRegistry = PartRegistry<Profile>;
+
+/// Registers the built-in profiles (parabolic, ...).
+void register_builtin_profiles(ProfileRegistry& registry);
+
+}  // namespace mdrsim
