@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages mdrsim needs to build, test and draw the paper's figures.
+# Idempotent: when every package is already installed it only runs dpkg -s and exits,
+# so the test and reproduce scripts can call it every time at no cost.
+set -euo pipefail
+
+packages=(
+  cmake g++ make
+  libeigen3-dev libspdlog-dev libfmt-dev libgtest-dev libbenchmark-dev libboost-dev
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  python3-matplotlib python3-numpy
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  # dpkg -s succeeds for removed-but-configured packages too; check the status line.
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present" >&2
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}" >&2
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    sudo_cmd=(sudo -n)   # -n: never prompt (CI has no stdin)
+  else
+    echo "setup: not root and no sudo; install as root: apt-get install ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+"${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
