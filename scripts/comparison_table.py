@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""Prints the comparison of mdrsim's critical forces with the paper's closed forms.
+
+    python3 scripts/comparison_table.py [--results results] [--scenes scenes] [--tolerance 2e-3]
+
+Reads the runs written by scripts/reproduce.sh (fig2_*.json, fig3a_*.csv) and prints a
+plain-text table  case | analytic | simulated | error | time [s]  followed by the largest
+error over every point of each Fig. 3a sweep. The analytic values come from
+scripts/paper_reference.py (independent of the engine). Forces and displacements are made
+dimensionless here, from the SI columns and the scene's material (F0, d0 of paper eq. 17),
+not with the engine's own dimensionless columns; those are only cross-checked.
+
+Exit status: 0 when every error is within the tolerance (default 2e-3 in units of F0),
+1 otherwise or when an input is missing, so the main job fails loudly if the engine regresses.
+"""
+
+import argparse
+import csv
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import paper_reference as ref  # noqa: E402
+
+TOLERANCE = 2e-3
+U_TARGETS = (0.0, 1.0, 2.0, 3.0, 4.0)   # u/d0 of the Fig. 3a rows shown individually
+NU_03 = 0.3                              # Poisson ratio of fig3a_fixed_grips_nu03 (reproduce.sh --set)
+VARIED_KEY = "loading.tangential.displacement"
+
+
+class Scale:
+    """F0, d0 and gamma of a parabolic scene, from the scene file (or the engine's columns as a fallback)."""
+
+    def __init__(self, scene_path, poisson_override=None):
+        self.source = scene_path
+        try:
+            import tomllib
+            with open(scene_path, "rb") as f:
+                scene = tomllib.load(f)
+        except (ImportError, OSError) as err:
+            print(f"note: cannot read {scene_path} ({err}); using the engine's dimensionless columns")
+            self.f0 = self.d0 = None
+            self.gamma = ref.gamma_from_nu(poisson_override or 0.0)
+            return
+        mat = scene["material"]
+        if "effective_modulus" in mat and poisson_override is None:
+            es = mat["effective_modulus"]
+            gs = mat.get("effective_shear_modulus", es)
+        else:
+            nu = mat.get("poisson_ratio", 0.0) if poisson_override is None else poisson_override
+            es, gs = ref.effective_moduli(mat["youngs_modulus"], nu)
+        self.gamma = gs / es
+        self.f0, _, self.d0 = ref.scales(scene["profile"]["radius"], es, mat["work_of_adhesion"])
+
+
+def read_sweep(path, scale, problems):
+    """Rows of a sweep CSV as dicts u, Fz, Fx (dimensionless), status; cross-checks the engine's scaling."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    out = []
+    for r in rows:
+        if scale.f0 is None:
+            u = float(r["dimensionless_tangential_displacement"])
+            fz, fx = float(r["dimensionless_normal_force"]), float(r["dimensionless_tangential_force"])
+        else:
+            u = float(r[VARIED_KEY]) / scale.d0
+            fz, fx = float(r["normal_force"]) / scale.f0, float(r["tangential_force"]) / scale.f0
+            engine = (float(r["dimensionless_tangential_displacement"]),
+                      float(r["dimensionless_normal_force"]), float(r["dimensionless_tangential_force"]))
+            if any(abs(a - b) > 1e-9 * max(1.0, abs(b)) for a, b in zip(engine, (u, fz, fx))):
+                problems.append(f"{os.path.basename(path)}: the engine's dimensionless columns {engine} "
+                                f"differ from the scene's scales {(u, fz, fx)}")
+        out.append({"u": u, "Fz": fz, "Fx": fx, "status": r.get("status", "instability")})
+    return out
+
+
+def fmt(x, spec):
+    return "-" if x is None else format(x, spec)
+
+
+def main(argv=None):
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--results", default=os.path.join(root, "results"))
+    parser.add_argument("--scenes", default=os.path.join(root, "scenes"))
+    parser.add_argument("--tolerance", type=float, default=TOLERANCE, help="largest allowed |error| (units of F0)")
+    args = parser.parse_args(argv)
+
+    rows = []        # (case, analytic, simulated, time)
+    summary = []     # (sweep, quantity, max error, at u)
+    problems = []
+
+    def result(name):
+        return os.path.join(args.results, name)
+
+    # ---- Fig. 2: JKR pull-off from the single runs
+    for control, panel, analytic in (("fixed_grips", "2a", ref.JKR_PULL_OFF_FIXED_GRIPS),
+                                     ("fixed_load", "2b", ref.JKR_PULL_OFF_FIXED_LOAD)):
+        path = result(f"fig2_{control}.json")
+        try:
+            with open(path) as f:
+                run = json.load(f)
+        except (OSError, ValueError) as err:
+            problems.append(f"{path}: {err}")
+            continue
+        scale = Scale(os.path.join(args.scenes, f"fig2_{control}.toml"))
+        sim = (run["critical"]["normal_force"] / scale.f0 if scale.f0
+               else run["dimensionless"]["normal_force"])
+        if run.get("status") != "instability":
+            problems.append(f"{path}: status {run.get('status')!r}, expected 'instability'")
+        rows.append((f"Fig. {panel} JKR pull-off {control.replace('_', '-')}, F/F0", analytic, sim,
+                     run.get("wall_time_s")))
+
+    # ---- Fig. 3a sweeps
+    sweeps = (("fixed-grips", "fig3a_fixed_grips.csv", "fig3a_fixed_grips.toml", None),
+              ("fixed-load", "fig3a_fixed_load.csv", "fig3a_fixed_load.toml", None),
+              ("fixed-grips", "fig3a_fixed_grips_nu03.csv", "fig3a_fixed_grips.toml", NU_03))
+    for control, csv_name, scene_name, nu in sweeps:
+        path = result(csv_name)
+        scale = Scale(os.path.join(args.scenes, scene_name), nu)
+        try:
+            points = read_sweep(path, scale, problems)
+        except (OSError, KeyError, ValueError) as err:
+            problems.append(f"{path}: {err!r}")
+            continue
+        label = f"Fig. 3a {control}" + ("" if nu is None else f" nu={nu}")
+        worst = {"Fz": (0.0, None), "Fx": (0.0, None)}
+        for p in points:
+            if p["status"] != "instability":
+                problems.append(f"{csv_name}: u/d0 = {p['u']:.4f} has status {p['status']!r}")
+                continue
+            exact = ref.critical(control, p["u"], scale.gamma)
+            p["exact"] = exact
+            for q in ("Fz", "Fx"):
+                err = abs(p[q] - exact[q])
+                if not err <= worst[q][0] or worst[q][1] is None:   # NaN counts as worst
+                    worst[q] = (err, p["u"])
+        # individual rows: the sweep points nearest to the target u/d0 values
+        shown = set()
+        valid = [p for p in points if "exact" in p]
+        for target in U_TARGETS:
+            if not valid:
+                break
+            p = min(valid, key=lambda q: abs(q["u"] - target))
+            if id(p) in shown or abs(p["u"] - target) > 0.06:
+                continue
+            shown.add(id(p))
+            rows.append((f"{label} u/d0={p['u']:.3f}, Fz/F0", p["exact"]["Fz"], p["Fz"], None))
+            if p["u"] > 0.0:
+                rows.append((f"{label} u/d0={p['u']:.3f}, Fx/F0", p["exact"]["Fx"], p["Fx"], None))
+            if nu is not None and p["u"] > 0.0:
+                rows.append((f"{label} u/d0={p['u']:.3f}, eq.34 Fz(Fx sim)",
+                             ref.master_curve_fixed_grips(p["Fx"], scale.gamma), p["Fz"], None))
+        name = csv_name[:-4]
+        summary.append((name, "Fz/F0", worst["Fz"][0], worst["Fz"][1], len(valid)))
+        summary.append((name, "Fx/F0", worst["Fx"][0], worst["Fx"][1], len(valid)))
+
+    # ---- print
+    width = max([len(r[0]) for r in rows] + [40])
+    header = f"{'case':<{width}} | {'analytic':>11} | {'simulated':>11} | {'error':>10} | {'time [s]':>9}"
+    print(header)
+    print("-" * len(header))
+    failed = []
+    for case, analytic, sim, wall in rows:
+        err = sim - analytic
+        flag = ""
+        if not abs(err) <= args.tolerance:
+            failed.append(case)
+            flag = "  <-- exceeds tolerance"
+        print(f"{case:<{width}} | {analytic:>11.6f} | {sim:>11.6f} | {err:>+10.2e} | {fmt(wall, '>9.4f')}{flag}")
+    print()
+    print("max |simulated - analytic| over each sweep (at the same u/d0):")
+    for name, quantity, worst, at_u, count in summary:
+        flag = ""
+        if not worst <= args.tolerance:
+            failed.append(f"{name} {quantity}")
+            flag = "  <-- exceeds tolerance"
+        where = "" if at_u is None else f" at u/d0 = {at_u:.3f}"
+        print(f"  {name:<28} {quantity:<6} {worst:.2e} over {count} points{where}{flag}")
+    print()
+    for p in problems:
+        print(f"problem: {p}")
+    if failed or problems:
+        print(f"FAILED: {len(failed)} comparison(s) beyond {args.tolerance:g}, {len(problems)} problem(s)")
+        return 1
+    print(f"all comparisons within {args.tolerance:g} (units of F0)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
