@@ -28,13 +28,16 @@ echo "setup: installing ${missing[*]}" >&2
 sudo_cmd=()
 if [ "$(id -u)" -ne 0 ]; then
   if command -v sudo >/dev/null 2>&1; then
-    sudo_cmd=(sudo -n)   # -n: never prompt (CI has no stdin)
+    if [ -t 0 ]; then
+      sudo_cmd=(sudo)      # a user at a terminal may be asked for a password
+    else
+      sudo_cmd=(sudo -n)   # no terminal (CI): fail rather than wait for a password
+    fi
   else
     echo "setup: not root and no sudo; install as root: apt-get install ${missing[*]}" >&2
     exit 1
   fi
 fi
-export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
 "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive \
   apt-get install -y -q --no-install-recommends "${missing[@]}"
