@@ -2,7 +2,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "engine/scene_document_impl.hpp"
 #include "engine/scene_error.hpp"
@@ -25,7 +28,29 @@ auto create_part(TomlReader& table, std::string_view name_key, Make make) {
   }
 }
 
+/// The keys of a part's table: its name key and the chosen part's parameters. A key that
+/// only another part declares is reported as belonging to that part.
+template <class Registry>
+void check_part_keys(TomlReader& t, const std::string& name_key, const std::string& chosen,
+                     const Registry& registry, std::vector<std::string> extra = {}) {
+  std::vector<std::string> known{name_key};
+  for (const ParameterSpec& spec : registry.find(chosen)->parameters) known.push_back(spec.key);
+  known.insert(known.end(), extra.begin(), extra.end());
+  t.check_keys(known, [&](std::string_view key) -> std::optional<std::string> {
+    std::string owners;
+    for (const std::string& name : registry.names()) {
+      for (const ParameterSpec& spec : registry.find(name)->parameters) {
+        if (spec.key == key) owners += fmt::format("{}\"{}\"", owners.empty() ? "" : " or ", name);
+      }
+    }
+    if (owners.empty()) return std::nullopt;
+    return fmt::format("applies to {} = {} only", name_key, owners);
+  });
+}
+
 Material read_material(TomlReader& t) {
+  t.check_keys({"youngs_modulus", "poisson_ratio", "work_of_adhesion", "effective_modulus",
+                "effective_shear_modulus"});
   const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
   const bool effective = t.has("effective_modulus") || t.has("effective_shear_modulus");
   if (youngs && effective) {
@@ -50,17 +75,38 @@ Material read_material(TomlReader& t) {
                               .help = "Poisson's ratio nu in (-1, 0.5]",
                               .lower = Bound{-1.0, false},
                               .upper = Bound{0.5, true}});
-  return Material::from_youngs_modulus(e, nu, dgamma);
+  const Material m = Material::from_youngs_modulus(e, nu, dgamma);
+  // Extreme E and nu near -1 overflow G = E/(2(1+nu)) (paper eq. 8).
+  for (const double modulus : {m.effective_modulus, m.effective_shear_modulus}) {
+    if (!std::isfinite(modulus) || !(modulus > 0.0)) {
+      t.fail(
+          fmt::format("youngs_modulus = {} and poisson_ratio = {} give E* = {} Pa, G* = {} Pa; "
+                      "expected finite positive moduli",
+                      e, nu, m.effective_modulus, m.effective_shear_modulus));
+    }
+  }
+  return m;
 }
 
 AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool holds_value) {
   AxisLoading axis;
   axis.control = t.name("control", controllers.names());
   const auto* entry = controllers.find(axis.control);
+  // A controller names its held value only once created, so keys are checked against both
+  // quantities an axis can hold, and the one this controller does not hold is refused below.
+  const std::vector<std::string> held_keys{"displacement", "force"};
+  check_part_keys(t, "control", axis.control, controllers,
+                  holds_value ? held_keys : std::vector<std::string>{});
   const ParameterValues values = t.read_all(entry->parameters);
   axis.controller = create_part(t, "control", [&] { return entry->create(values); });
   if (holds_value) {
     const std::string key(axis.controller->held_value_key());
+    for (const std::string& other : held_keys) {
+      if (other != key && t.has(other)) {
+        t.fail_at(other,
+                  fmt::format("control = \"{}\" holds {}, not {}", axis.control, key, other));
+      }
+    }
     axis.held_value = t.number({.key = key, .help = fmt::format("the held {} (SI)", key)});
   }
   t.finish();
@@ -69,9 +115,10 @@ AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool
 
 /// The glued radius and the preload depth, from the one preload quantity given.
 void resolve_preload(TomlReader& t, Scene& scene) {
-  const char* keys[] = {"depth", "force", "contact_radius"};
+  const std::vector<std::string> keys{"depth", "force", "contact_radius"};
+  t.check_keys(keys);
   int given = 0;
-  for (const char* k : keys) given += t.has(k) ? 1 : 0;
+  for (const std::string& k : keys) given += t.has(k) ? 1 : 0;
   if (given != 1) t.fail("give exactly one of depth [m], force [N] or contact_radius [m]");
   const Profile& profile = *scene.profile;
   const double e_star = scene.material.effective_modulus;
@@ -106,12 +153,24 @@ void resolve_preload(TomlReader& t, Scene& scene) {
     t.fail(e.what());
   }
   if (!(scene.glued_radius > 0.0) || !std::isfinite(scene.glued_radius)) {
-    t.fail(fmt::format("the preload gives no glued contact (radius {})", scene.glued_radius));
+    t.fail(fmt::format("the preload gives no glued contact (radius {} m)", scene.glued_radius));
+  }
+  // Extreme but in-range values overflow the force and elongation scales of the run.
+  const double force_scale = e_star * scene.glued_radius * std::abs(scene.preload_depth);
+  const double adhesion_scale =
+      2.0 * std::numbers::pi * scene.glued_radius * scene.material.work_of_adhesion;
+  if (!std::isfinite(scene.preload_depth) || !std::isfinite(force_scale) ||
+      !std::isfinite(adhesion_scale)) {
+    t.fail(fmt::format(
+        "the preload overflows (contact radius {} m, depth {} m, E* a d = {} N, 2 pi a dgamma "
+        "= {} N)",
+        scene.glued_radius, scene.preload_depth, force_scale, adhesion_scale));
   }
   t.finish();
 }
 
 void read_solver(TomlReader& t, SolverOptions& solver) {
+  t.check_keys({"method", "step", "max_halvings", "max_steps"});
   const std::string method = t.name("method", {"event", "stepping"}, "event");
   solver.method = method == "event" ? SolverMethod::event : SolverMethod::stepping;
   if (solver.method == SolverMethod::event) {
@@ -138,6 +197,8 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
 Scene build_scene(const toml::table& root_table, const std::string& source_name,
                   const std::filesystem::path& base_dir, const Registries& registries) {
   TomlReader root(root_table, "", source_name, base_dir);
+  root.check_keys(
+      {"title", "material", "profile", "loading", "detachment", "discretization", "solver"});
   Scene scene;
   scene.title = root.optional_text("title").value_or("");
 
@@ -147,6 +208,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
 
   TomlReader profile = root.table("profile");
   scene.profile_name = profile.name("type", registries.profiles.names());
+  check_part_keys(profile, "type", scene.profile_name, registries.profiles);
   {
     const auto* entry = registries.profiles.find(scene.profile_name);
     const ParameterValues values = profile.read_all(entry->parameters);
@@ -155,34 +217,37 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   profile.finish();
 
   TomlReader loading = root.table("loading");
-  TomlReader normal = loading.table("normal");
-  scene.normal = read_axis(normal, registries.controllers, false);
+  loading.check_keys({"preload", "tangential", "normal"});
+  TomlReader preload = loading.table("preload");
+  resolve_preload(preload, scene);
   if (auto tangential = loading.optional_table("tangential")) {
     scene.tangential = read_axis(*tangential, registries.controllers, true);
   }
-  TomlReader preload = loading.table("preload");
-  resolve_preload(preload, scene);
+  TomlReader normal = loading.table("normal");
+  scene.normal = read_axis(normal, registries.controllers, false);
   loading.finish();
 
   const InterfaceProperties interface = scene.material.interface_properties();
+  scene.criterion_name = "mode-mixed";
   if (auto detachment = root.optional_table("detachment")) {
     scene.criterion_name =
-        detachment->name("criterion", registries.criteria.names(), std::string("mode-mixed"));
+        detachment->name("criterion", registries.criteria.names(), scene.criterion_name);
+    check_part_keys(*detachment, "criterion", scene.criterion_name, registries.criteria);
     const auto* entry = registries.criteria.find(scene.criterion_name);
     const ParameterValues values = detachment->read_all(entry->parameters);
     scene.criterion =
         create_part(*detachment, "criterion", [&] { return entry->create(values, interface); });
     detachment->finish();
   } else {
-    scene.criterion_name = "mode-mixed";
     const auto* entry = registries.criteria.find(scene.criterion_name);
     scene.criterion = entry->create(ParameterValues{}, interface);
   }
 
   scene.springs = 2000;
   if (auto discretization = root.optional_table("discretization")) {
+    discretization->check_keys({"springs", "rtol"});
     if (discretization->has("rtol")) {
-      discretization->fail_at("rtol", "is not available in this version; give springs");
+      discretization->fail_at("rtol", "not supported yet, give springs");
     }
     if (discretization->has("springs")) {
       scene.springs = discretization->integer({.key = "springs",

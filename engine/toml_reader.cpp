@@ -28,13 +28,17 @@ bool inside(const ParameterSpec& s, double v) {
 }
 
 std::string describe(const toml::node& node) {
-  if (const auto* s = node.as_string()) return fmt::format("string \"{}\"", s->get());
+  if (const auto* s = node.as_string()) return fmt::format("string \"{}\"", printable(s->get()));
   if (node.is_table()) return "a table";
   if (node.is_array()) return "an array";
   if (node.is_boolean()) return node.as_boolean()->get() ? "true" : "false";
   if (node.is_integer()) return fmt::format("{}", node.as_integer()->get());
   if (node.is_floating_point()) return fmt::format("{}", node.as_floating_point()->get());
   return "a date or time";
+}
+
+bool before(const toml::source_position& a, const toml::source_position& b) {
+  return a.line < b.line || (a.line == b.line && a.column < b.column);
 }
 
 const char* expected(ParameterKind kind) {
@@ -69,32 +73,50 @@ TomlReader::TomlReader(const toml::table& table, std::string path, std::string f
       base_dir_(std::move(base_dir)) {}
 
 std::string TomlReader::key_path(std::string_view key) const {
-  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  const std::string shown = printable(key);
+  return path_.empty() ? shown : path_ + "." + shown;
 }
 
-std::string TomlReader::where(const toml::node& node) const {
-  const auto& src = node.source();
-  const std::string file = src.path ? *src.path : file_;
-  if (file == "--set" || file == "--vary") return file;
-  if (src.begin.line == 0) return file;
-  return fmt::format("{}:{}:{}", file, src.begin.line, src.begin.column);
+std::string TomlReader::where(const toml::source_region& src) const {
+  // Values given on the command line carry the flag as their source.
+  if (src.path && (*src.path == "--set" || *src.path == "--vary")) return *src.path + ":";
+  if (src.begin.line == 0) return file_ + ":";
+  return fmt::format("{}:{}:{}:", file_, src.begin.line, src.begin.column);
+}
+
+std::string TomlReader::where_table() const {
+  // The root table "begins" at 1:1, which points at nothing in particular.
+  if (path_.empty()) return file_ + ":";
+  return where(*table_);
 }
 
 void TomlReader::fail(const std::string& message) const {
   throw SceneError(
-      fmt::format("{}: {}: {}", where(*table_), path_.empty() ? "scene" : path_, message));
+      fmt::format("{} {}: {}", where_table(), path_.empty() ? "scene" : path_, message));
 }
 
 void TomlReader::fail_at(std::string_view key, const std::string& message) const {
   const toml::node* node = table_->get(key);
   throw SceneError(
-      fmt::format("{}: {}: {}", node ? where(*node) : where(*table_), key_path(key), message));
+      fmt::format("{} {}: {}", node ? where(*node) : where_table(), key_path(key), message));
 }
 
 void TomlReader::fail_range(std::string_view key, const std::string& message) const {
   const toml::node* node = table_->get(key);
   throw SceneError(
-      fmt::format("{}: {} {}", node ? where(*node) : where(*table_), key_path(key), message));
+      fmt::format("{} {} {}", node ? where(*node) : where_table(), key_path(key), message));
+}
+
+void TomlReader::fail_unknown(const toml::key& key, const toml::node& node) const {
+  std::set<std::string, std::less<>> known = known_;
+  known.insert(asked_.begin(), asked_.end());
+  // A key inserted by --set has no source of its own; its value does.
+  const std::string location = key.source().begin.line != 0 ? where(key.source()) : where(node);
+  throw SceneError(fmt::format(
+      "{} {}: unknown key{}", location, key_path(key.str()),
+      known.empty() ? std::string()
+                    : fmt::format(" (known: {})",
+                                  join(std::vector<std::string>(known.begin(), known.end())))));
 }
 
 const toml::node* TomlReader::find(std::string_view key) {
@@ -104,18 +126,26 @@ const toml::node* TomlReader::find(std::string_view key) {
   return node;
 }
 
-double TomlReader::checked_number(std::string_view key, const toml::node& node,
-                                  const ParameterSpec& spec) {
+double TomlReader::checked_number(const std::string& shown, const toml::node& node,
+                                  const ParameterSpec& spec) const {
+  const auto fail_here = [&](const std::string& message) {
+    throw SceneError(fmt::format("{} {}{}", where(node), shown, message));
+  };
   double v = 0.0;
   if (const auto* i = node.as_integer()) {
     v = static_cast<double>(i->get());
   } else if (const auto* f = node.as_floating_point()) {
     v = f->get();
   } else {
-    fail_at(key, fmt::format("expected {}, got {}", expected(spec.kind), describe(node)));
+    fail_here(fmt::format(": expected {}, got {}",
+                          spec.kind == ParameterKind::integer ? "a whole number" : "a number",
+                          describe(node)));
   }
-  if (!std::isfinite(v)) fail_range(key, fmt::format("= {} is not a finite number", v));
-  if (!inside(spec, v)) fail_range(key, fmt::format("= {} is outside {}", v, interval(spec)));
+  if (!std::isfinite(v)) fail_here(fmt::format(" = {} is not a finite number", v));
+  if (!inside(spec, v)) fail_here(fmt::format(" = {} is outside {}", v, interval(spec)));
+  if (spec.kind == ParameterKind::integer && v != std::floor(v)) {
+    fail_here(fmt::format(" = {} is not a whole number", v));
+  }
   return v;
 }
 
@@ -130,20 +160,17 @@ std::optional<ParameterValue> TomlReader::read(const ParameterSpec& spec) {
   }
   switch (spec.kind) {
     case ParameterKind::number:
-      return ParameterValue{checked_number(spec.key, *node, spec)};
-    case ParameterKind::integer: {
-      const double v = checked_number(spec.key, *node, spec);
-      if (v != std::floor(v)) fail_range(spec.key, fmt::format("= {} is not a whole number", v));
-      return ParameterValue{v};
-    }
+    case ParameterKind::integer:
+      return ParameterValue{checked_number(key_path(spec.key), *node, spec)};
     case ParameterKind::number_list: {
       const auto* array = node->as_array();
       if (!array)
         fail_at(spec.key, fmt::format("expected an array of numbers, got {}", describe(*node)));
       std::vector<double> values;
       values.reserve(array->size());
-      for (const toml::node& element : *array) {
-        values.push_back(checked_number(spec.key, element, spec));
+      for (std::size_t i = 0; i < array->size(); ++i) {
+        values.push_back(
+            checked_number(fmt::format("{}[{}]", key_path(spec.key), i), *array->get(i), spec));
       }
       return ParameterValue{std::move(values)};
     }
@@ -185,6 +212,7 @@ std::optional<double> TomlReader::optional_number(const ParameterSpec& spec) {
 std::int64_t TomlReader::integer(const ParameterSpec& spec) {
   ParameterSpec whole = spec;
   whole.kind = ParameterKind::integer;
+  whole.required = true;
   const auto v = read(whole);
   return static_cast<std::int64_t>(std::get<double>(*v));
 }
@@ -204,7 +232,7 @@ std::string TomlReader::name(std::string_view key, const std::vector<std::string
   if (!v) return *fallback;
   const std::string& given = std::get<std::string>(*v);
   if (std::find(known.begin(), known.end(), given) == known.end()) {
-    fail_at(key, fmt::format("unknown '{}' (known: {})", given, join(known)));
+    fail_at(key, fmt::format("unknown '{}' (known: {})", printable(given), join(known)));
   }
   return given;
 }
@@ -223,23 +251,40 @@ std::optional<TomlReader> TomlReader::optional_table(std::string_view key) {
   return TomlReader(*t, key_path(key), file_, base_dir_);
 }
 
-void TomlReader::finish() const {
-  const toml::node* first = nullptr;
-  std::string first_key;
-  std::vector<std::string> known(asked_.begin(), asked_.end());
+void TomlReader::check_keys(
+    const std::vector<std::string>& known,
+    const std::function<std::optional<std::string>(std::string_view)>& explain) {
+  known_.insert(known.begin(), known.end());
+  const toml::key* first = nullptr;
+  const toml::node* first_node = nullptr;
   for (auto&& [key, node] : *table_) {
-    if (read_.count(key.str()) != 0) continue;
-    const auto& b = node.source().begin;
-    if (!first || b.line < first->source().begin.line ||
-        (b.line == first->source().begin.line && b.column < first->source().begin.column)) {
-      first = &node;
-      first_key = std::string(key.str());
+    if (known_.count(key.str()) != 0) continue;
+    if (!first || before(key.source().begin, first->source().begin)) {
+      first = &key;
+      first_node = &node;
     }
   }
   if (!first) return;
-  throw SceneError(
-      fmt::format("{}: {}: unknown key{}", where(*first), key_path(first_key),
-                  known.empty() ? std::string() : fmt::format(" (known: {})", join(known))));
+  if (explain) {
+    if (const auto message = explain(first->str())) fail_at(first->str(), *message);
+  }
+  fail_unknown(*first, *first_node);
+}
+
+void TomlReader::finish() const {
+  const toml::key* first = nullptr;
+  const toml::node* first_node = nullptr;
+  for (auto&& [key, node] : *table_) {
+    if (read_.count(key.str()) != 0) continue;
+    if (!first || before(key.source().begin, first->source().begin)) {
+      first = &key;
+      first_node = &node;
+    }
+  }
+  if (!first) return;
+  if (known_.count(first->str()) == 0) fail_unknown(*first, *first_node);
+  // A declared key that these settings never read: a safety net, the builder says why first.
+  fail_at(first->str(), "does not apply with these settings");
 }
 
 }  // namespace mdrsim

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -41,6 +42,11 @@ class TomlReader {
   TomlReader table(std::string_view key);
   std::optional<TomlReader> optional_table(std::string_view key);
 
+  /// Declares every key this table may hold and fails on the first other key (in file order),
+  /// so that a typo is reported before any value is checked.
+  /// `explain` may give a better message than "unknown key" for a key it recognises.
+  void check_keys(const std::vector<std::string>& known,
+                  const std::function<std::optional<std::string>(std::string_view)>& explain = {});
   /// Fails on the first key (in file order) that no read asked for.
   void finish() const;
 
@@ -51,8 +57,14 @@ class TomlReader {
 
  private:
   const toml::node* find(std::string_view key);
-  std::string where(const toml::node& node) const;
-  double checked_number(std::string_view key, const toml::node& node, const ParameterSpec& spec);
+  std::string where(const toml::source_region& source) const;
+  std::string where(const toml::node& node) const { return where(node.source()); }
+  /// The table itself: its header, or the file alone for the root table.
+  std::string where_table() const;
+  [[noreturn]] void fail_unknown(const toml::key& key, const toml::node& node) const;
+  /// `shown` names the value in messages: the key, or key[i] for an array element.
+  double checked_number(const std::string& shown, const toml::node& node,
+                        const ParameterSpec& spec) const;
 
   const toml::table* table_;
   std::string path_;
@@ -60,6 +72,7 @@ class TomlReader {
   std::filesystem::path base_dir_;
   std::set<std::string, std::less<>> read_;   ///< keys present and read
   std::set<std::string, std::less<>> asked_;  ///< keys asked for, present or not
+  std::set<std::string, std::less<>> known_;  ///< keys declared by check_keys
 };
 
 }  // namespace mdrsim
