@@ -11,6 +11,8 @@
 
 namespace mdrsim {
 
+struct SceneOverride;
+
 class SceneDocument {
  public:
   /// Reads and parses a scene file; throws SceneError naming the file (and line).
@@ -38,6 +40,7 @@ class SceneDocument {
  private:
   struct Impl;
   explicit SceneDocument(std::unique_ptr<Impl> impl);
+  void remember(const SceneOverride& override_value);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "engine/registries.hpp"
 #include "engine/scene.hpp"
@@ -12,10 +13,19 @@
 
 namespace mdrsim {
 
+/// One --set or --vary value, kept so that a copy of the document can replay it.
+struct SceneOverride {
+  std::string origin;              ///< "--set" or "--vary", the source of its nodes
+  std::vector<std::string> parts;  ///< the dotted key, split
+  std::string value_toml;          ///< the value as TOML text
+};
+
 struct SceneDocument::Impl {
-  toml::table root;
+  std::string text;  ///< the scene file as read: copies re-parse it
   std::string source_name;
   std::filesystem::path base_dir;
+  std::vector<SceneOverride> overrides;
+  toml::table root;  ///< nodes carry their file line:col, or --set/--vary as their path
 };
 
 /// Reads the whole scene out of the table (scene_builder.cpp).
