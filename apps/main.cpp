@@ -4,8 +4,12 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include <cctype>
+#include <csignal>
 #include <iostream>
+#include <string>
 #include <thread>
+#include <utility>
 
 #include "apps/commands.hpp"
 #include "apps/usage_error.hpp"
@@ -22,9 +26,38 @@ void set_up_logging(const std::string& level) {
   spdlog::set_level(spdlog::level::from_str(level));
 }
 
+/// Messages are one line: a stray newline would break the one-line-per-error contract.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+/// CLI11's messages in our form: "--flag: what" where it names the flag, else "mdrsim: what";
+/// lowercase after the location.
+std::string usage_message(const std::string& what) {
+  std::string text = one_line(what);
+  const std::size_t colon = text.find(": ");
+  std::size_t start = 0;
+  if (text.rfind("--", 0) == 0 && colon != std::string::npos && text.find(' ') > colon) {
+    start = colon + 2;
+  } else {
+    text = "mdrsim: " + text;
+    start = 8;
+  }
+  if (start < text.size()) {
+    text[start] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[start])));
+  }
+  return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A closed pipe on standard output is a write error reported below, not a signal.
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"mdrsim: adhesive contact under combined normal and tangential loading (MDR)"};
   app.require_subcommand(1);
   std::string level = "info";
@@ -59,21 +92,35 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::cerr << "mdrsim: " << e.what() << '\n';
+    if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+      std::cerr << "mdrsim: unknown command '" << mdrsim::printable(argv[1])
+                << "' (known: run, sweep)\n";
+      return 2;
+    }
+    std::cerr << usage_message(e.what()) << '\n';
     return 2;
   }
   try {
+    // An empty PATH (say an unset shell variable) must not silently mean "not given".
+    const std::pair<CLI::App*, const char*> path_flags[] = {
+        {run_app, "--json"}, {run_app, "--trajectory"}, {sweep_app, "--csv"}};
+    for (const auto& [sub, flag] : path_flags) {
+      if (sub->parsed() && sub->count(flag) > 0 &&
+          sub->get_option(flag)->as<std::string>().empty()) {
+        throw mdrsim::cli::UsageError(fmt::format("{}: needs a file path or -", flag));
+      }
+    }
     set_up_logging(level);
     if (run_app->parsed()) return mdrsim::cli::run_command(run);
     return mdrsim::cli::sweep_command(sweep);
   } catch (const mdrsim::SceneError& e) {
-    std::cerr << e.what() << '\n';
+    std::cerr << one_line(e.what()) << '\n';
     return 2;
   } catch (const mdrsim::cli::UsageError& e) {
-    std::cerr << "mdrsim: " << e.what() << '\n';
+    std::cerr << one_line(e.what()) << '\n';
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "mdrsim: internal error: " << e.what() << '\n';
+    std::cerr << "mdrsim: internal error: " << one_line(e.what()) << '\n';
     return 1;
   } catch (...) {
     std::cerr << "mdrsim: internal error\n";

@@ -3,13 +3,54 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <iostream>
+#include <stdexcept>
 
 #include "apps/usage_error.hpp"
+#include "engine/scene_error.hpp"
 
 namespace mdrsim::cli {
+namespace {
+
+std::string system_reason(int error) {
+  std::string text = std::strerror(error);
+  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+  return text;
+}
+
+/// Whether two paths name the same file, existing or not.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code ec;
+  if (std::filesystem::equivalent(a, b, ec)) return true;
+  const auto ca = std::filesystem::weakly_canonical(a, ec);
+  if (ec) return false;
+  const auto cb = std::filesystem::weakly_canonical(b, ec);
+  return !ec && ca == cb;
+}
+
+}  // namespace
+
+void require_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs,
+                              const std::string& scene_path) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [flag, path] = outputs[i];
+    if (path.empty() || path == "-") continue;
+    if (same_file(path, scene_path)) {
+      throw UsageError(fmt::format("{}: '{}' is the scene file", flag, printable(path)));
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const auto& [other_flag, other_path] = outputs[j];
+      if (other_path.empty() || other_path == "-") continue;
+      if (same_file(path, other_path)) {
+        throw UsageError(
+            fmt::format("{}: '{}' is the {} output as well", flag, printable(path), other_flag));
+      }
+    }
+  }
+}
 
 OutputFile::OutputFile(std::string flag, const std::string& path)
     : flag_(std::move(flag)), to_stdout_(path == "-"), path_(path) {
@@ -17,13 +58,15 @@ OutputFile::OutputFile(std::string flag, const std::string& path)
   if (path.empty()) throw UsageError(fmt::format("{}: needs a file path or -", flag_));
   std::error_code ec;
   if (std::filesystem::is_directory(path_, ec)) {
-    throw UsageError(fmt::format("{}: cannot write '{}' (it is a directory)", flag_, path));
+    throw UsageError(
+        fmt::format("{}: cannot write '{}' (it is a directory)", flag_, printable(path)));
   }
   partial_ = path_;
   partial_ += ".partial";
   file_.open(partial_, std::ios::binary | std::ios::trunc);
   if (!file_) {
-    throw UsageError(fmt::format("{}: cannot write '{}' ({})", flag_, path, std::strerror(errno)));
+    throw UsageError(
+        fmt::format("{}: cannot write '{}' ({})", flag_, printable(path), system_reason(errno)));
   }
 }
 
@@ -40,6 +83,8 @@ std::ostream& OutputFile::stream() { return to_stdout_ ? std::cout : file_; }
 void OutputFile::commit() {
   if (to_stdout_) {
     std::cout.flush();
+    if (!std::cout)
+      throw std::runtime_error(fmt::format("{}: writing standard output failed", flag_));
     return;
   }
   file_.close();

@@ -5,8 +5,15 @@
 #include <fstream>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace mdrsim::cli {
+
+/// Output flags and their paths ("" = not given, "-" = standard output): throws UsageError
+/// when two name the same file or one names the scene file, which a run would overwrite.
+void require_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs,
+                              const std::string& scene_path);
 
 /// Writes to PATH.partial and renames it to PATH on commit(); an uncommitted file is removed,
 /// so a failed run leaves no partial output behind.

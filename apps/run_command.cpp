@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "apps/commands.hpp"
+#include "apps/finite_result.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/usage_error.hpp"
@@ -46,6 +47,8 @@ int run_command(const RunOptions& options) {
   if (options.json == "-" && options.trajectory == "-") {
     throw UsageError("--trajectory: cannot share standard output with --json -");
   }
+  require_distinct_outputs({{"--json", options.json}, {"--trajectory", options.trajectory}},
+                           options.scene);
   const SceneDocument document = load_scene_document(options.scene, options.sets);
   const Scene scene = document.build(Registries::builtin());
 
@@ -63,6 +66,7 @@ int run_command(const RunOptions& options) {
   }
 
   const RunResult result = run_pull_off(scene, observers);
+  require_finite(scene, result);
 
   if (trajectory_file) trajectory_file->commit();
   if (json_file) {

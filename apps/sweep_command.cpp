@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/finite_result.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/vary_spec.hpp"
@@ -59,6 +60,7 @@ void write_csv(std::ostream& out, const VarySpec& vary, const std::vector<Scene>
 
 int sweep_command(const SweepOptions& options) {
   const VarySpec vary = parse_vary(options.vary);
+  require_distinct_outputs({{"--csv", options.csv}}, options.scene);
   const SceneDocument base = load_scene_document(options.scene, options.sets);
   const Registries registries = Registries::builtin();
 
@@ -94,6 +96,7 @@ int sweep_command(const SweepOptions& options) {
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+  for (std::size_t i = 0; i < scenes.size(); ++i) require_finite(scenes[i], results[i]);
 
   write_csv(csv.stream(), vary, scenes, results);
   csv.commit();
