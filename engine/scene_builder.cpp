@@ -107,7 +107,8 @@ AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool
                   fmt::format("control = \"{}\" holds {}, not {}", axis.control, key, other));
       }
     }
-    axis.held_value = t.number({.key = key, .help = fmt::format("the held {} (SI)", key)});
+    const char* unit = key == "force" ? "N" : key == "displacement" ? "m" : "SI";
+    axis.held_value = t.number({.key = key, .help = fmt::format("the held {} [{}]", key, unit)});
   }
   t.finish();
   return axis;
