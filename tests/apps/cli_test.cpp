@@ -1,0 +1,439 @@
+// The mdrsim binary on bad input: exit code 2, one exact line on stderr, nothing on stdout and
+// no output file left behind; and on good input: exit 0, clean JSON on stdout, help texts.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+
+#include "engine/registries.hpp"
+#include "tests/support/run_command.hpp"
+
+namespace mdrsim::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Line numbers in the messages below refer to this scene.
+constexpr std::string_view kScene = R"([material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[loading]
+preload = { contact_radius = 5.0e-4 }
+normal = { control = "fixed-load" }
+[discretization]
+springs = 100
+)";
+
+constexpr const char* kMaterialKeys =
+    "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
+    "youngs_modulus";
+
+/// `text` as one single-quoted shell word.
+std::string shell_word(std::string_view text) {
+  std::string out = "'";
+  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = make_temp_dir();
+    scene_ = write("scene.toml", kScene);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ec);
+    fs::remove_all(dir_, ec);
+  }
+
+  /// Writes `text` to a file in the test's folder; returns its path.
+  std::string write(const std::string& name, std::string_view text) const {
+    const std::string path = dir_ + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+  }
+  /// kScene with the one occurrence of `from` replaced, written to bad.toml.
+  std::string bad_scene(std::string_view from, std::string_view to) const {
+    std::string text(kScene);
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return write("bad.toml", text.replace(at, from.size(), to));
+  }
+  std::string path(const std::string& name) const { return dir_ + "/" + name; }
+
+  std::string dir_;
+  std::string scene_;
+};
+
+/// Exit code 2, exactly `message` as the one line on stderr, nothing on stdout.
+::testing::AssertionResult bad_input(const CommandResult& r, const std::string& message) {
+  if (r.exit_code == 2 && r.err == message + "\n" && r.out.empty()) {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure()
+         << "exit code " << r.exit_code << " (want 2)\nstderr: [" << r.err << "]\nwant:   ["
+         << message << "\n]\nstdout: [" << r.out << "]";
+}
+
+/// Neither PATH nor PATH.partial exists.
+::testing::AssertionResult nothing_at(const std::string& path) {
+  for (const std::string& p : {path, path + ".partial"}) {
+    if (fs::exists(p)) return ::testing::AssertionFailure() << p << " was left behind";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// ---- the scene file ----
+
+TEST_F(Cli, MissingSceneFile) {
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", path("none.toml"), json));
+  EXPECT_TRUE(
+      bad_input(r, path("none.toml") + ": cannot read the scene file (no such file or directory)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, DirectoryAsSceneFile) {
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", dir_, json));
+  EXPECT_TRUE(bad_input(r, dir_ + ": cannot read the scene file (it is a directory)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, UnreadableSceneFile) {
+  fs::permissions(scene_, fs::perms::none);
+  if (geteuid() == 0 || std::ifstream(scene_).good()) {
+    GTEST_SKIP() << "running as root (or with CAP_DAC_OVERRIDE): chmod 000 cannot make a file "
+                    "unreadable";
+  }
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene_, json));
+  EXPECT_TRUE(bad_input(r, scene_ + ": cannot read the scene file (permission denied)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, TypoInAKey) {
+  const std::string scene = bad_scene("youngs_modulus", "youngs_modulu");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, fmt::format("{}:2:1: material.youngs_modulu: unknown key (known: {})",
+                                       scene, kMaterialKeys)));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, PoissonRatioOutOfRange) {
+  const std::string scene = bad_scene("poisson_ratio = 0.0", "poisson_ratio = 0.7");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, scene + ":3:17: material.poisson_ratio = 0.7 is outside (-1, 0.5]"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, NegativeModulus) {
+  const std::string scene = bad_scene("youngs_modulus = 1.0e6", "youngs_modulus = -1.0e6");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(
+      bad_input(r, scene + ":2:18: material.youngs_modulus = -1000000 is outside (0, inf)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, NotANumber) {
+  const std::string scene = bad_scene("radius = 0.01", R"(radius = "1 cm")");
+  const std::string csv = path("out.csv");
+  const auto r = run_mdrsim(
+      fmt::format("sweep {} --vary material.poisson_ratio=0:0.3:2 --csv {}", scene, csv));
+  EXPECT_TRUE(
+      bad_input(r, scene + R"(:7:10: profile.radius: expected a number, got string "1 cm")"));
+  EXPECT_TRUE(nothing_at(csv));
+}
+
+TEST_F(Cli, MalformedToml) {
+  const std::string scene = bad_scene("springs = 100", "springs = 100\nsprings = 200");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, scene + ":13:11: malformed TOML: error while parsing key-value pair: "
+                                   "cannot redefine existing integer 'springs'"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, NewlineInAValueStaysOnOneLine) {
+  const std::string scene = bad_scene(R"(type = "parabolic")", "type = \"\"\"para\nbolic\"\"\"");
+  std::string known;
+  for (const auto& name : Registries::builtin().profiles.names()) {
+    known += (known.empty() ? "" : ", ") + name;
+  }
+  const auto r = run_mdrsim("run " + scene);
+  EXPECT_TRUE(bad_input(
+      r, fmt::format(R"({}:6:8: profile.type: unknown 'para\nbolic' (known: {}))", scene, known)));
+}
+
+// ---- --set ----
+
+TEST_F(Cli, SetWithoutEquals) {
+  const std::string json = path("out.json");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --set material.poisson_ratio --json {}", scene_, json));
+  EXPECT_TRUE(bad_input(r, "--set: 'material.poisson_ratio' is not KEY=VALUE"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, SetWithEmptyKey) {
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --set =0.3 --json {}", scene_, json));
+  EXPECT_TRUE(bad_input(r, "--set: '=0.3' is not KEY=VALUE"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, SetWithEmptyValue) {
+  const auto r = run_mdrsim(fmt::format("run {} --set material.poisson_ratio=", scene_));
+  EXPECT_TRUE(bad_input(r, "--set: material.poisson_ratio: the value is empty"));
+}
+
+TEST_F(Cli, SetOutOfRange) {
+  const std::string json = path("out.json");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --set material.poisson_ratio=0.7 --json {}", scene_, json));
+  EXPECT_TRUE(bad_input(r, "--set: material.poisson_ratio = 0.7 is outside (-1, 0.5]"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, SetNotANumber) {
+  const auto r = run_mdrsim(fmt::format("run {} --set profile.radius=big", scene_));
+  EXPECT_TRUE(bad_input(r, R"(--set: profile.radius: expected a number, got string "big")"));
+}
+
+TEST_F(Cli, SetUnknownKey) {
+  const std::string json = path("out.json");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --set material.poisson=0.3 --json {}", scene_, json));
+  EXPECT_TRUE(
+      bad_input(r, fmt::format("--set: material.poisson: unknown key (known: {})", kMaterialKeys)));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, SetThroughAValue) {
+  const auto r = run_mdrsim(fmt::format("run {} --set profile.radius.x=1", scene_));
+  EXPECT_TRUE(bad_input(r, "--set: profile.radius.x: 'radius' is not a table"));
+}
+
+TEST_F(Cli, SetWithoutArgument) {
+  const auto r = run_mdrsim(fmt::format("run {} --set", scene_));
+  EXPECT_TRUE(bad_input(r, "--set: 1 required TEXT missing"));
+}
+
+// ---- --vary ----
+
+TEST_F(Cli, VaryBadSpecs) {
+  const std::string csv = path("out.csv");
+  const auto sweep = [&](const std::string& vary) {
+    return run_mdrsim(fmt::format("sweep {} --vary {} --csv {}", scene_, shell_word(vary), csv));
+  };
+  EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:0.3"),
+                        "--vary: 'material.poisson_ratio=0:0.3' is not KEY=FROM:TO:COUNT"));
+  EXPECT_TRUE(bad_input(sweep("0:0.3:2"), "--vary: '0:0.3:2' is not KEY=FROM:TO:COUNT"));
+  EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=low:0.3:2"),
+                        "--vary: material.poisson_ratio: FROM 'low' is not a finite number"));
+  EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:high:2"),
+                        "--vary: material.poisson_ratio: TO 'high' is not a finite number"));
+  EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:0.3:0"),
+                        "--vary: material.poisson_ratio: COUNT '0' is not a whole number from 1 "
+                        "to 1000000"));
+  EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:0.3:2.5"),
+                        "--vary: material.poisson_ratio: COUNT '2.5' is not a whole number from "
+                        "1 to 1000000"));
+  EXPECT_TRUE(
+      bad_input(sweep("material.poisson=0:0.3:2"),
+                fmt::format("--vary: material.poisson: unknown key (known: {})", kMaterialKeys)));
+  EXPECT_TRUE(bad_input(sweep("material..poisson_ratio=0:0.3:2"),
+                        "--vary: 'material..poisson_ratio' is not a dotted scene key like "
+                        "material.poisson_ratio"));
+  EXPECT_TRUE(nothing_at(csv));
+}
+
+TEST_F(Cli, VaryValueOutOfRangeInsideTheSweep) {
+  // The third of four values is outside; no run starts and no CSV appears.
+  const std::string csv = path("out.csv");
+  const auto r = run_mdrsim(
+      fmt::format("sweep {} --vary material.poisson_ratio=0.2:0.8:4 --csv {}", scene_, csv));
+  EXPECT_TRUE(bad_input(r,
+                        "--vary: material.poisson_ratio = 0.6 is outside (-1, "
+                        "0.5]"));
+  EXPECT_TRUE(nothing_at(csv));
+}
+
+TEST_F(Cli, VaryWholeNumberKey) {
+  const auto r =
+      run_mdrsim(fmt::format("sweep {} --vary discretization.springs=10:20:4 --csv -", scene_));
+  EXPECT_TRUE(bad_input(r,
+                        "--vary: discretization.springs = 13.333333333333334 is not a whole "
+                        "number"));
+  const auto good =
+      run_mdrsim(fmt::format("sweep {} --vary discretization.springs=10:20:3 --csv -", scene_));
+  EXPECT_EQ(good.exit_code, 0) << good.err;
+}
+
+TEST_F(Cli, VaryMissing) {
+  const auto r = run_mdrsim("sweep " + scene_);
+  EXPECT_TRUE(bad_input(r, "mdrsim: --vary is required"));
+}
+
+// ---- flags ----
+
+TEST_F(Cli, UnknownFlag) {
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --jsn {}", scene_, json));
+  EXPECT_TRUE(bad_input(
+      r, fmt::format("mdrsim: the following arguments were not expected: {} --jsn", json)));
+  EXPECT_TRUE(nothing_at(json));
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --bogus", scene_)),
+                        "mdrsim: the following argument was not expected: --bogus"));
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("sweep {} --vary a=0:1:2 --json -", scene_)),
+                        "mdrsim: the following arguments were not expected: - --json"));
+}
+
+TEST_F(Cli, MissingOrUnknownSubcommand) {
+  EXPECT_TRUE(bad_input(run_mdrsim(""), "mdrsim: a subcommand is required"));
+  EXPECT_TRUE(bad_input(run_mdrsim("--json -"), "mdrsim: a subcommand is required"));
+  EXPECT_TRUE(bad_input(run_mdrsim("simulate " + scene_),
+                        "mdrsim: unknown command 'simulate' (known: "
+                        "run, sweep)"));
+  EXPECT_TRUE(bad_input(run_mdrsim("run"), "mdrsim: scene is required"));
+}
+
+TEST_F(Cli, ThreadsZero) {
+  const std::string csv = path("out.csv");
+  const auto r = run_mdrsim(fmt::format(
+      "sweep {} --vary material.poisson_ratio=0:0.3:2 --threads 0 --csv {}", scene_, csv));
+  EXPECT_TRUE(bad_input(r, "--threads: value 0 not in range 1 to 1024"));
+  EXPECT_TRUE(nothing_at(csv));
+}
+
+TEST_F(Cli, LogLevelLoud) {
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --log-level loud --json {}", scene_, json));
+  EXPECT_TRUE(bad_input(r, "--log-level: loud not in {trace,debug,info,warn,error,off}"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, JsonIntoAMissingDirectory) {
+  const std::string json = path("missing/out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene_, json));
+  EXPECT_TRUE(bad_input(r, "--json: cannot write '" + json + "' (no such file or directory)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, TrajectoryIntoAMissingDirectoryLeavesNoJson) {
+  // The JSON output is opened first; the failing trajectory must take it away again.
+  const std::string json = path("out.json");
+  const std::string trajectory = path("missing/trajectory.csv");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --json {} --trajectory {}", scene_, json, trajectory));
+  EXPECT_TRUE(
+      bad_input(r, "--trajectory: cannot write '" + trajectory + "' (no such file or directory)"));
+  EXPECT_TRUE(nothing_at(json));
+  EXPECT_TRUE(nothing_at(trajectory));
+}
+
+TEST_F(Cli, JsonIntoADirectory) {
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene_, dir_));
+  EXPECT_TRUE(bad_input(r, "--json: cannot write '" + dir_ + "' (it is a directory)"));
+}
+
+TEST_F(Cli, JsonAndTrajectoryBothOnStandardOutput) {
+  const auto r = run_mdrsim(fmt::format("run {} --json - --trajectory -", scene_));
+  EXPECT_TRUE(bad_input(r, "--trajectory: cannot share standard output with --json -"));
+}
+
+TEST_F(Cli, JsonAndTrajectoryInTheSameFile) {
+  const std::string out = path("out.json");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --json {} --trajectory {}/./out.json", scene_, out, dir_));
+  EXPECT_TRUE(bad_input(r, "--trajectory: '" + dir_ + "/./out.json' is the --json output as well"));
+  EXPECT_TRUE(nothing_at(out));
+}
+
+TEST_F(Cli, OutputOverTheSceneFile) {
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene_, scene_));
+  EXPECT_TRUE(bad_input(r, "--json: '" + scene_ + "' is the scene file"));
+  std::ifstream in(scene_);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), kScene);
+}
+
+TEST_F(Cli, EmptyOutputPath) {
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --json ''", scene_)),
+                        "--json: needs a file path or -"));
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --trajectory ''", scene_)),
+                        "--trajectory: needs a file path or -"));
+  EXPECT_TRUE(bad_input(
+      run_mdrsim(fmt::format("sweep {} --vary material.poisson_ratio=0:0.3:2 --csv ''", scene_)),
+      "--csv: needs a file path or -"));
+}
+
+// ---- good input ----
+
+TEST_F(Cli, GoodRunExitsZero) {
+  const auto r = run_mdrsim(fmt::format("run {}", scene_));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("status: "), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, JsonOnStandardOutputIsOnlyJson) {
+  const auto r = run_mdrsim(fmt::format("run {} --json - --log-level debug", scene_));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json json;
+  ASSERT_NO_THROW(json = nlohmann::json::parse(r.out)) << r.out;
+  EXPECT_TRUE(json.is_object());
+  EXPECT_TRUE(json.contains("status"));
+  EXPECT_TRUE(json.contains("critical"));
+}
+
+TEST_F(Cli, OutputFilesAppearWholeWithNoPartialLeft) {
+  const std::string json = path("out.json");
+  const std::string trajectory = path("trajectory.csv");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --json {} --trajectory {} --set {}", scene_, json, trajectory,
+                             shell_word("loading.normal.control=fixed-grips")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  std::ifstream in(json);
+  EXPECT_TRUE(nlohmann::json::accept(in));
+  EXPECT_TRUE(fs::exists(trajectory));
+  EXPECT_FALSE(fs::exists(json + ".partial"));
+  EXPECT_FALSE(fs::exists(trajectory + ".partial"));
+}
+
+TEST_F(Cli, GoodSweepWritesOneRowPerValue) {
+  const std::string csv = path("out.csv");
+  const auto r = run_mdrsim(fmt::format(
+      "sweep {} --vary material.poisson_ratio=0:0.5:3 --threads 2 --csv {}", scene_, csv));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(csv);
+  int lines = 0;
+  for (std::string line; std::getline(in, line);) ++lines;
+  EXPECT_EQ(lines, 4);
+  EXPECT_FALSE(fs::exists(csv + ".partial"));
+}
+
+TEST_F(Cli, HelpExitsZero) {
+  for (const char* args : {"--help", "run --help", "sweep --help"}) {
+    const auto r = run_mdrsim(args);
+    EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << args << ": " << r.out;
+    EXPECT_TRUE(r.err.empty()) << args << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace mdrsim::test
