@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/jkr_scales.hpp"
 #include "engine/scene_document_impl.hpp"
 #include "engine/scene_error.hpp"
 #include "engine/toml_reader.hpp"
@@ -88,6 +89,20 @@ Material read_material(TomlReader& t) {
   return m;
 }
 
+/// The controller's constraint a_u u + a_F F = rhs against the contact's stiffness k [N/m]:
+/// a_u + a_F k must be finite, or the equilibrium of every step is NaN.
+void check_constraint(TomlReader& t, const AxisLoading& axis, double contact_stiffness) {
+  const AffineConstraint c = axis.controller->constraint();
+  const double combined = c.displacement_coefficient + c.force_coefficient * contact_stiffness;
+  if (!std::isfinite(c.displacement_coefficient) || !std::isfinite(c.force_coefficient) ||
+      !std::isfinite(combined)) {
+    t.fail(fmt::format(
+        "control = \"{}\" is degenerate with these values (constraint a_u = {}, a_F = {} m/N "
+        "against a contact stiffness of {} N/m)",
+        axis.control, c.displacement_coefficient, c.force_coefficient, contact_stiffness));
+  }
+}
+
 AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool holds_value) {
   AxisLoading axis;
   axis.control = t.name("control", controllers.names());
@@ -157,6 +172,15 @@ void resolve_preload(TomlReader& t, Scene& scene) {
     t.fail(fmt::format("the preload gives no glued contact (radius {} m)", scene.glued_radius));
   }
   // Extreme but in-range values overflow the force and elongation scales of the run.
+  const double normal_stiffness = 2.0 * e_star * scene.glued_radius;
+  const double shear_stiffness = 2.0 * scene.material.effective_shear_modulus * scene.glued_radius;
+  if (!std::isfinite(normal_stiffness) || !(normal_stiffness > 0.0) ||
+      !std::isfinite(shear_stiffness) || !(shear_stiffness > 0.0)) {
+    t.fail(fmt::format(
+        "the contact stiffnesses 2 E* a = {} N/m and 2 G* a = {} N/m at contact radius {} m are "
+        "not finite and positive",
+        normal_stiffness, shear_stiffness, scene.glued_radius));
+  }
   const double force_scale = e_star * scene.glued_radius * std::abs(scene.preload_depth);
   const double adhesion_scale =
       2.0 * std::numbers::pi * scene.glued_radius * scene.material.work_of_adhesion;
@@ -168,6 +192,39 @@ void resolve_preload(TomlReader& t, Scene& scene) {
         scene.glued_radius, scene.preload_depth, force_scale, adhesion_scale));
   }
   t.finish();
+}
+
+/// The dimensionless output divides by F0, a0 and d0 (paper eq. 17): extreme material values
+/// must not overflow or underflow them.
+void check_jkr_scales(TomlReader& material, const Scene& scene) {
+  const auto radius = scene.profile->jkr_scale_radius();
+  if (!radius) return;
+  const auto s =
+      JkrScales::of(*radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
+  if (!s) return;
+  for (const double scale : {s->force, s->radius, s->depth}) {
+    if (!std::isfinite(scale) || !(scale > 0.0)) {
+      material.fail(fmt::format(
+          "with R = {} m the JKR scales F0 = {} N, a0 = {} m, d0 = {} m are not finite and "
+          "positive; E* = {} Pa and dgamma = {} J/m^2 are too extreme",
+          *radius, s->force, s->radius, s->depth, scene.material.effective_modulus,
+          scene.material.work_of_adhesion));
+    }
+  }
+}
+
+/// The held tangential value must leave the tangential force and displacement of the glued
+/// contact, Fx ~ 2 G* a ux, finite.
+void check_tangential_scale(TomlReader& t, const Scene& scene) {
+  const AxisLoading& axis = *scene.tangential;
+  const std::string key(axis.controller->held_value_key());
+  const double stiffness = 2.0 * scene.material.effective_shear_modulus * scene.glued_radius;
+  const double other = key == "force" ? std::abs(axis.held_value) / stiffness
+                                      : std::abs(axis.held_value) * stiffness;
+  if (!std::isfinite(other)) {
+    t.fail_range(key, fmt::format("= {} overflows the tangential {} of the glued contact",
+                                  axis.held_value, key == "force" ? "displacement" : "force"));
+  }
 }
 
 void read_solver(TomlReader& t, SolverOptions& solver) {
@@ -216,6 +273,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
   }
   profile.finish();
+  check_jkr_scales(material, scene);
 
   TomlReader loading = root.table("loading");
   loading.check_keys({"preload", "tangential", "normal"});
@@ -223,9 +281,14 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   resolve_preload(preload, scene);
   if (auto tangential = loading.optional_table("tangential")) {
     scene.tangential = read_axis(*tangential, registries.controllers, true);
+    check_tangential_scale(*tangential, scene);
+    check_constraint(*tangential, *scene.tangential,
+                     2.0 * scene.material.effective_shear_modulus * scene.glued_radius);
   }
   TomlReader normal = loading.table("normal");
   scene.normal = read_axis(normal, registries.controllers, false);
+  check_constraint(normal, scene.normal,
+                   2.0 * scene.material.effective_modulus * scene.glued_radius);
   loading.finish();
 
   const InterfaceProperties interface = scene.material.interface_properties();

@@ -123,6 +123,17 @@ TEST_F(Cli, UnreadableSceneFile) {
   EXPECT_TRUE(nothing_at(json));
 }
 
+TEST_F(Cli, SceneFileBelowAFile) {
+  // Runs as root too, unlike the chmod case: the OS reason is named, lowercase.
+  const auto r = run_mdrsim(fmt::format("run {}/x.toml", scene_));
+  EXPECT_TRUE(bad_input(r, scene_ + "/x.toml: cannot read the scene file (not a directory)"));
+}
+
+TEST_F(Cli, EndlessSceneFile) {
+  const auto r = run_mdrsim("run /dev/zero");
+  EXPECT_TRUE(bad_input(r, "/dev/zero: cannot read the scene file (it is larger than 16 MiB)"));
+}
+
 TEST_F(Cli, TypoInAKey) {
   const std::string scene = bad_scene("youngs_modulus", "youngs_modulu");
   const std::string json = path("out.json");
