@@ -56,25 +56,38 @@ OutputFile::OutputFile(std::string flag, const std::string& path)
     : flag_(std::move(flag)), to_stdout_(path == "-"), path_(path) {
   if (to_stdout_) return;
   if (path.empty()) throw UsageError(fmt::format("{}: needs a file path or -", flag_));
+  const auto cannot_write = [&](const std::string& why) {
+    throw UsageError(fmt::format("{}: cannot write '{}' ({})", flag_, printable(path), why));
+  };
   std::error_code ec;
-  if (std::filesystem::is_directory(path_, ec)) {
-    throw UsageError(
-        fmt::format("{}: cannot write '{}' (it is a directory)", flag_, printable(path)));
+  const auto status = std::filesystem::status(path_, ec);
+  if (std::filesystem::is_directory(status)) cannot_write("it is a directory");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    // Renaming a file over /dev/null or a fifo would replace the device with a file.
+    file_.open(path_, std::ios::binary | std::ios::out);
+    if (!file_) cannot_write(system_reason(errno));
+    return;
   }
-  partial_ = path_;
+  // The new file goes where a link points (also a dangling one), so the link survives.
+  target_ = path_;
+  for (int hops = 0; std::filesystem::is_symlink(std::filesystem::symlink_status(target_, ec));
+       ++hops) {
+    if (hops == 40) cannot_write(system_reason(ELOOP));
+    const std::filesystem::path link = std::filesystem::read_symlink(target_, ec);
+    if (ec) cannot_write(system_reason(ec.value()));
+    target_ = link.is_absolute() ? link : target_.parent_path() / link;
+  }
+  partial_ = target_;
   partial_ += ".partial";
   file_.open(partial_, std::ios::binary | std::ios::trunc);
-  if (!file_) {
-    throw UsageError(
-        fmt::format("{}: cannot write '{}' ({})", flag_, printable(path), system_reason(errno)));
-  }
+  if (!file_) cannot_write(system_reason(errno));
 }
 
 OutputFile::~OutputFile() {
   if (!to_stdout_ && !committed_) {
     file_.close();
     std::error_code ec;
-    std::filesystem::remove(partial_, ec);
+    if (!partial_.empty()) std::filesystem::remove(partial_, ec);
   }
 }
 
@@ -83,14 +96,17 @@ std::ostream& OutputFile::stream() { return to_stdout_ ? std::cout : file_; }
 void OutputFile::commit() {
   if (to_stdout_) {
     std::cout.flush();
-    if (!std::cout)
+    if (!std::cout) {
       throw std::runtime_error(fmt::format("{}: writing standard output failed", flag_));
+    }
     return;
   }
   file_.close();
-  if (!file_)
-    throw std::runtime_error(fmt::format("{}: writing '{}' failed", flag_, path_.string()));
-  std::filesystem::rename(partial_, path_);
+  if (!file_) {
+    throw std::runtime_error(
+        fmt::format("{}: writing '{}' failed", flag_, printable(path_.string())));
+  }
+  if (!partial_.empty()) std::filesystem::rename(partial_, target_);
   committed_ = true;
 }
 

@@ -16,7 +16,8 @@ void require_distinct_outputs(const std::vector<std::pair<std::string, std::stri
                               const std::string& scene_path);
 
 /// Writes to PATH.partial and renames it to PATH on commit(); an uncommitted file is removed,
-/// so a failed run leaves no partial output behind.
+/// so a failed run leaves no partial output behind. A symbolic link keeps pointing at the new
+/// file; a device or pipe (/dev/null, a fifo) is written in place, never replaced by a file.
 class OutputFile {
  public:
   /// `flag` names the option in messages; throws UsageError when the file cannot be created.
@@ -32,7 +33,8 @@ class OutputFile {
   std::string flag_;
   bool to_stdout_;
   std::filesystem::path path_;
-  std::filesystem::path partial_;
+  std::filesystem::path target_;   ///< the file renamed into place: PATH or where its link points
+  std::filesystem::path partial_;  ///< empty when written in place
   std::ofstream file_;
   bool committed_ = false;
 };

@@ -1,6 +1,8 @@
 // The mdrsim binary on bad input: exit code 2, one exact line on stderr, nothing on stdout and
 // no output file left behind; and on good input: exit 0, clean JSON on stdout, help texts.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -10,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <thread>
 
 #include "engine/registries.hpp"
 #include "tests/support/run_command.hpp"
@@ -435,6 +438,36 @@ TEST_F(Cli, GoodSweepWritesOneRowPerValue) {
   for (std::string line; std::getline(in, line);) ++lines;
   EXPECT_EQ(lines, 4);
   EXPECT_FALSE(fs::exists(csv + ".partial"));
+}
+
+TEST_F(Cli, FifoIsWrittenInPlaceNotReplaced) {
+  // Renaming a finished file over a device or pipe would replace it (as root even /dev/null).
+  const std::string fifo = path("fifo");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo);
+    received.assign(std::istreambuf_iterator<char>(in), {});
+  });
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene_, fifo));
+  // Unblocks the reader if mdrsim never opened the fifo.
+  if (const int fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK); fd >= 0) close(fd);
+  reader.join();
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::accept(received)) << received;
+  EXPECT_EQ(fs::status(fifo).type(), fs::file_type::fifo);
+  EXPECT_FALSE(fs::exists(fifo + ".partial"));
+}
+
+TEST_F(Cli, SymlinkedOutputKeepsItsLink) {
+  fs::create_directory(path("results"));
+  fs::create_symlink("results/out.json", path("out.json"));
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene_, path("out.json")));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(path("out.json")));
+  std::ifstream in(path("results/out.json"));
+  EXPECT_TRUE(nlohmann::json::accept(in));
+  EXPECT_FALSE(fs::exists(path("results/out.json.partial")));
 }
 
 TEST_F(Cli, HelpExitsZero) {
