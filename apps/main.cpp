@@ -50,6 +50,8 @@ std::string usage_message(const std::string& what) {
   if (start < text.size()) {
     text[start] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[start])));
   }
+  // CLI11 2.1 says "At Most 1 required but received 2".
+  if (const auto at = text.find("at Most "); at != std::string::npos) text[at + 3] = 'm';
   return text;
 }
 

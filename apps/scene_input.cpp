@@ -8,6 +8,7 @@
 namespace mdrsim::cli {
 
 SceneDocument load_scene_document(const std::string& path, const std::vector<std::string>& sets) {
+  if (path.empty()) throw UsageError("mdrsim: the scene file path is empty");
   SceneDocument document = SceneDocument::from_file(path);
   for (const std::string& set : sets) {
     const auto eq = set.find('=');

@@ -326,6 +326,17 @@ TEST_F(Cli, MissingOrUnknownSubcommand) {
   EXPECT_TRUE(bad_input(run_mdrsim("run"), "mdrsim: scene is required"));
 }
 
+TEST_F(Cli, FlagGivenTwiceOrWithoutValue) {
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --json a.json --json b.json", scene_)),
+                        "--json: at most 1 required but received 2"));
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --log-level", scene_)),
+                        "--log-level: 1 required TEXT:{trace,debug,info,warn,error,off} missing"));
+}
+
+TEST_F(Cli, EmptySceneFilePath) {
+  EXPECT_TRUE(bad_input(run_mdrsim("run ''"), "mdrsim: the scene file path is empty"));
+}
+
 TEST_F(Cli, ThreadsZero) {
   const std::string csv = path("out.csv");
   const auto r = run_mdrsim(fmt::format(
