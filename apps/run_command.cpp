@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -19,25 +20,27 @@
 namespace mdrsim::cli {
 namespace {
 
-void print_summary(const Scene& scene, const RunResult& r) {
+/// The human summary; on standard error when standard output carries the trajectory CSV.
+void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
   const ContactSnapshot& c = r.critical;
-  fmt::print("status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
+  fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
              to_string(r.status), scene.normal.control,
              scene.tangential ? scene.tangential->control : "fixed-grips", scene.criterion_name,
              scene.springs);
-  fmt::print(
-      "critical: F = {:.8g} N, Fx = {:.8g} N, a = {:.8g} m, d = {:.8g} m, ux = {:.8g} m, {} "
-      "springs in contact\n",
-      c.normal_force, c.tangential_force, c.contact_radius, c.indentation,
-      c.tangential_displacement, c.springs_in_contact);
+  fmt::print(out,
+             "critical: F = {:.8g} N, Fx = {:.8g} N, a = {:.8g} m, d = {:.8g} m, ux = {:.8g} m, {} "
+             "springs in contact\n",
+             c.normal_force, c.tangential_force, c.contact_radius, c.indentation,
+             c.tangential_displacement, c.springs_in_contact);
   if (const auto s = dimensionless_scales(scene)) {
     fmt::print(
+        out,
         "dimensionless: F/F0 = {:.8g}, Fx/F0 = {:.8g}, a/a0 = {:.8g}, d/d0 = {:.8g}, ux/d0 = "
         "{:.8g}\n",
         c.normal_force / s->force, c.tangential_force / s->force, c.contact_radius / s->radius,
         c.indentation / s->depth, c.tangential_displacement / s->depth);
   }
-  fmt::print("counts: {} events, {} steps, {} halvings; {:.3g} s\n", r.counts.events,
+  fmt::print(out, "counts: {} events, {} steps, {} halvings; {:.3g} s\n", r.counts.events,
              r.counts.steps, r.counts.halvings, r.wall_time_s);
 }
 
@@ -73,7 +76,7 @@ int run_command(const RunOptions& options) {
     json_file->stream() << result_to_json(scene, result).dump(2) << '\n';
     json_file->commit();
   } else {
-    print_summary(scene, result);
+    print_summary(options.trajectory == "-" ? stderr : stdout, scene, result);
   }
   return 0;
 }

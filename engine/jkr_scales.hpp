@@ -19,8 +19,15 @@ struct JkrScales {
     if (!(work_of_adhesion > 0.0)) return std::nullopt;
     constexpr double pi = std::numbers::pi;
     const double r = tip_radius, e = effective_modulus, w = work_of_adhesion;
-    return JkrScales{1.5 * pi * r * w, std::cbrt(9.0 * pi * r * r * w / (8.0 * e)),
-                     std::cbrt(3.0 * pi * pi * r * w * w / (64.0 * e * e))};
+    // Cube roots taken factor by factor, so that w^2 or R^2 cannot underflow or overflow.
+    const double ratio = std::cbrt(w / e);
+    const double scales[] = {1.5 * pi * r * w,
+                             std::cbrt(9.0 * pi / 8.0) * std::cbrt(r) * std::cbrt(r) * ratio,
+                             std::cbrt(3.0 * pi * pi / 64.0) * std::cbrt(r) * ratio * ratio};
+    for (const double s : scales) {
+      if (!(s > 0.0) || !std::isfinite(s)) return std::nullopt;
+    }
+    return JkrScales{scales[0], scales[1], scales[2]};
   }
 };
 
