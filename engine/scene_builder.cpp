@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "engine/jkr_scales.hpp"
 #include "engine/scene_document_impl.hpp"
 #include "engine/scene_error.hpp"
 #include "engine/toml_reader.hpp"
@@ -194,25 +193,6 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   t.finish();
 }
 
-/// The dimensionless output divides by F0, a0 and d0 (paper eq. 17): extreme material values
-/// must not overflow or underflow them.
-void check_jkr_scales(TomlReader& material, const Scene& scene) {
-  const auto radius = scene.profile->jkr_scale_radius();
-  if (!radius) return;
-  const auto s =
-      JkrScales::of(*radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
-  if (!s) return;
-  for (const double scale : {s->force, s->radius, s->depth}) {
-    if (!std::isfinite(scale) || !(scale > 0.0)) {
-      material.fail(fmt::format(
-          "with R = {} m the JKR scales F0 = {} N, a0 = {} m, d0 = {} m are not finite and "
-          "positive; E* = {} Pa and dgamma = {} J/m^2 are too extreme",
-          *radius, s->force, s->radius, s->depth, scene.material.effective_modulus,
-          scene.material.work_of_adhesion));
-    }
-  }
-}
-
 /// The held tangential value must leave the tangential force and displacement of the glued
 /// contact, Fx ~ 2 G* a ux, finite.
 void check_tangential_scale(TomlReader& t, const Scene& scene) {
@@ -273,7 +253,6 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
   }
   profile.finish();
-  check_jkr_scales(material, scene);
 
   TomlReader loading = root.table("loading");
   loading.check_keys({"preload", "tangential", "normal"});

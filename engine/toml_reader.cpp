@@ -251,40 +251,34 @@ std::optional<TomlReader> TomlReader::optional_table(std::string_view key) {
   return TomlReader(*t, key_path(key), file_, base_dir_);
 }
 
+std::optional<std::pair<const toml::key*, const toml::node*>> TomlReader::first_key_outside(
+    const std::set<std::string, std::less<>>& keys) const {
+  std::optional<std::pair<const toml::key*, const toml::node*>> first;
+  for (auto&& [key, node] : *table_) {
+    if (keys.count(key.str()) != 0) continue;
+    if (!first || before(key.source().begin, first->first->source().begin)) first = {&key, &node};
+  }
+  return first;
+}
+
 void TomlReader::check_keys(
     const std::vector<std::string>& known,
     const std::function<std::optional<std::string>(std::string_view)>& explain) {
   known_.insert(known.begin(), known.end());
-  const toml::key* first = nullptr;
-  const toml::node* first_node = nullptr;
-  for (auto&& [key, node] : *table_) {
-    if (known_.count(key.str()) != 0) continue;
-    if (!first || before(key.source().begin, first->source().begin)) {
-      first = &key;
-      first_node = &node;
-    }
-  }
+  const auto first = first_key_outside(known_);
   if (!first) return;
   if (explain) {
-    if (const auto message = explain(first->str())) fail_at(first->str(), *message);
+    if (const auto message = explain(first->first->str())) fail_at(first->first->str(), *message);
   }
-  fail_unknown(*first, *first_node);
+  fail_unknown(*first->first, *first->second);
 }
 
 void TomlReader::finish() const {
-  const toml::key* first = nullptr;
-  const toml::node* first_node = nullptr;
-  for (auto&& [key, node] : *table_) {
-    if (read_.count(key.str()) != 0) continue;
-    if (!first || before(key.source().begin, first->source().begin)) {
-      first = &key;
-      first_node = &node;
-    }
-  }
+  const auto first = first_key_outside(read_);
   if (!first) return;
-  if (known_.count(first->str()) == 0) fail_unknown(*first, *first_node);
+  if (known_.count(first->first->str()) == 0) fail_unknown(*first->first, *first->second);
   // A declared key that these settings never read: a safety net, the builder says why first.
-  fail_at(first->str(), "does not apply with these settings");
+  fail_at(first->first->str(), "does not apply with these settings");
 }
 
 }  // namespace mdrsim

@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "engine/parameters.hpp"
@@ -57,6 +58,9 @@ class TomlReader {
 
  private:
   const toml::node* find(std::string_view key);
+  /// The first key in file order that is not in `keys`, with its value.
+  std::optional<std::pair<const toml::key*, const toml::node*>> first_key_outside(
+      const std::set<std::string, std::less<>>& keys) const;
   std::string where(const toml::source_region& source) const;
   std::string where(const toml::node& node) const { return where(node.source()); }
   /// The table itself: its header, or the file alone for the root table.

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/expect_throw_msg.hpp"
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -12,22 +14,6 @@
 
 namespace mdrsim::cli {
 namespace {
-
-/// What `statement` throws as E, or what happened instead (fmt's EXPECT_THROW_MSG habit).
-template <class E>
-std::string thrown_message(const std::function<void()>& statement) {
-  try {
-    statement();
-  } catch (const E& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    return std::string("<other exception> ") + e.what();
-  }
-  return "<no exception>";
-}
-
-#define EXPECT_THROW_MSG(statement, expected_exception, expected_message) \
-  EXPECT_EQ(thrown_message<expected_exception>([&] { statement; }), expected_message)
 
 TEST(VarySpec, EvenlySpacedFromFromToTo) {
   const VarySpec v = parse_vary("material.poisson_ratio=0:0.4:5");
