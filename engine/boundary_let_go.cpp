@@ -9,8 +9,8 @@ namespace mdrsim {
 BoundaryLetGo locate_boundary_let_go(const Contact& contact, const DetachmentCriterion& criterion) {
   const double a = contact.contact_radius();
   const double ux = contact.tangential_displacement();
-  const double scale = hess_elongation_limit(contact.material().interface_properties(), a) +
-                       std::abs(ux) + contact.foundation().spacing();
+  // Only a root search needs the scale, and it widens its bracket from there.
+  const double scale = std::abs(ux) + contact.foundation().spacing();
   BoundaryLetGo out{locate_let_go(criterion, a, ux, scale)};
   if (out.let_go.kind == LetGo::Kind::at_elongation) {
     out.normal_control =

@@ -9,7 +9,7 @@ Contact::Contact(const SpringFoundation& foundation, const Material& material,
       material_(material),
       normal_(normal),
       tangential_(tangential),
-      state_{foundation.springs(), {}, 0.0, 0.0} {
+      state_{foundation.springs(), {}, 0.0, 0.0, foundation.image(foundation.springs())} {
   state_.image_sum.add(foundation.total_image());
 }
 
@@ -34,15 +34,21 @@ double Contact::tangential_displacement() const {
 
 double Contact::contact_radius() const { return foundation_->position(state_.springs_in_contact); }
 
-double Contact::boundary_image() const { return foundation_->image(state_.springs_in_contact); }
-
 double Contact::normal_control_at(double indentation) const {
   return held_value_at(normal_, normal_response(), indentation);
 }
 
 void Contact::detach_boundary_spring() {
-  state_.image_sum.add(-boundary_image());
+  state_.image_sum.add(-state_.boundary_image);
   --state_.springs_in_contact;
+  state_.boundary_image =
+      state_.springs_in_contact > 0 ? foundation_->image(state_.springs_in_contact) : 0.0;
+}
+
+ContactSnapshot Contact::snapshot_of(const State& state) const {
+  Contact copy = *this;
+  copy.restore(state);
+  return copy.snapshot();
 }
 
 ContactSnapshot Contact::snapshot() const {

@@ -23,6 +23,7 @@ class Contact {
     CompensatedSum image_sum;  ///< sum of g(x_i) over attached springs [m]
     double normal_control;     ///< held value of the normal controller
     double tangential_held;    ///< held value of the tangential controller
+    double boundary_image;     ///< g at the boundary spring, 0 without springs [m]
   };
 
   Contact(const SpringFoundation& foundation, const Material& material, AffineConstraint normal,
@@ -39,7 +40,7 @@ class Contact {
   double indentation() const;              ///< d [m]
   double tangential_displacement() const;  ///< u_x [m]
   double contact_radius() const;           ///< position of the boundary spring, 0 if none [m]
-  double boundary_image() const;           ///< g at the boundary spring [m]
+  double boundary_image() const { return state_.boundary_image; }  ///< g at the boundary [m]
   /// The normal held value that puts the indenter at `indentation` [m].
   double normal_control_at(double indentation) const;
 
@@ -47,6 +48,8 @@ class Contact {
   void detach_boundary_spring();
 
   ContactSnapshot snapshot() const;
+  /// The snapshot of a saved state, without changing this contact.
+  ContactSnapshot snapshot_of(const State& state) const;
   State save() const { return state_; }
   void restore(const State& state) { state_ = state; }
 

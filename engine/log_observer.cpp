@@ -27,4 +27,16 @@ void LogObserver::on_event(const Event& event) {
   }
 }
 
+bool LogObserver::wants(EventKind kind) const {
+  switch (kind) {
+    case EventKind::spring_detached:
+      return spdlog::should_log(spdlog::level::debug);
+    case EventKind::step_accepted:
+    case EventKind::step_halved:
+      return spdlog::should_log(spdlog::level::trace);
+    default:
+      return true;
+  }
+}
+
 }  // namespace mdrsim

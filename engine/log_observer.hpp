@@ -8,6 +8,7 @@ namespace mdrsim {
 class LogObserver final : public Observer {
  public:
   void on_event(const Event& event) override;
+  bool wants(EventKind kind) const override;
 };
 
 }  // namespace mdrsim

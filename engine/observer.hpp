@@ -11,6 +11,8 @@ class Observer {
  public:
   virtual ~Observer() = default;
   virtual void on_event(const Event& event) = 0;
+  /// Optional: whether events of this kind are wanted at all; saves building them.
+  virtual bool wants(EventKind /*kind*/) const { return true; }
 };
 
 /// Non-owning list of observers.
@@ -21,6 +23,12 @@ class ObserverList {
     for (Observer* o : observers_) o->on_event(event);
   }
   bool empty() const { return observers_.empty(); }
+  bool wants(EventKind kind) const {
+    for (const Observer* o : observers_) {
+      if (o->wants(kind)) return true;
+    }
+    return false;
+  }
 
  private:
   std::vector<Observer*> observers_;

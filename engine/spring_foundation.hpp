@@ -18,7 +18,8 @@ class SpringFoundation {
   double glued_radius() const { return glued_radius_; }  ///< a_g [m]
   double spacing() const { return spacing_; }            ///< dx [m]
   double position(std::int64_t i) const {                ///< x_i [m]
-    return glued_radius_ * (static_cast<double>(i) / static_cast<double>(springs_));
+    // The outermost spring sits exactly at the glued radius, whatever the rounding of dx.
+    return i == springs_ ? glued_radius_ : spacing_ * static_cast<double>(i);
   }
   double image(std::int64_t i) const { return profile_->mdr_image(position(i)); }  ///< g(x_i) [m]
   double total_image() const { return total_image_; }  ///< sum of g(x_i), i = 1..N [m]

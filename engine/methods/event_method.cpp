@@ -31,12 +31,12 @@ AdvanceOutcome EventMethod::advance(Contact& contact, const DetachmentCriterion&
     out.first_stretch = boundary_elongation(contact);
   } else {
     contact.set_normal_control(go.normal_control);
-    out.equilibrium_before = contact.snapshot();
+    out.equilibrium_before = contact.save();
     out.first_stretch = go.let_go.elongation;
   }
-  if (!observers.empty()) {
+  if (observers.wants(EventKind::spring_detached)) {
     observers.emit({.kind = EventKind::spring_detached,
-                    .state = out.equilibrium_before ? *out.equilibrium_before : contact.snapshot(),
+                    .state = contact.snapshot(),
                     .spring = contact.springs_in_contact(),
                     .in_cascade = due});
   }

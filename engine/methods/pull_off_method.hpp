@@ -21,7 +21,7 @@ struct AdvanceOutcome {
   std::int64_t detached = 0;  ///< springs detached by this advance
   /// The equilibrium the control left before the first detachment; empty when the first
   /// detachment happened at the control value the contact already had (a cascade goes on).
-  std::optional<ContactSnapshot> equilibrium_before;
+  std::optional<Contact::State> equilibrium_before;
   bool first_by_shear = false;  ///< the first spring let go at zero elongation (margin < 0)
   double first_stretch = 0.0;   ///< stretch of the first detached spring at that equilibrium [m]
 };

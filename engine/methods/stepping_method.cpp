@@ -16,9 +16,8 @@ SteppingMethod::SteppingMethod(double step, int max_halvings)
 AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriterion& criterion,
                                        const ObserverList& observers, RunCounts& counts) {
   const Contact::State start = contact.save();
-  const ContactSnapshot before = contact.snapshot();
   const double stretch_before = boundary_elongation(contact);
-  const bool emit = !observers.empty();
+  const bool emit = observers.wants(EventKind::spring_detached);
   double step = step_;
   for (int halvings = 0;; ++halvings) {
     const bool last_try = halvings >= max_halvings_;
@@ -49,17 +48,19 @@ AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriteri
       contact.restore(start);
       step *= 0.5;
       ++counts.halvings;
-      if (emit) observers.emit({.kind = EventKind::step_halved, .state = before, .step = step});
+      if (observers.wants(EventKind::step_halved)) {
+        observers.emit({.kind = EventKind::step_halved, .state = contact.snapshot(), .step = step});
+      }
       continue;
     }
     for (const Event& e : pending_) observers.emit(e);
     counts.events += out.detached;
     ++counts.steps;
-    if (emit) {
+    if (observers.wants(EventKind::step_accepted)) {
       observers.emit({.kind = EventKind::step_accepted, .state = contact.snapshot(), .step = step});
     }
     if (out.detached > 0) {
-      out.equilibrium_before = before;
+      out.equilibrium_before = start;
       out.first_stretch = stretch_before;
     }
     return out;
