@@ -13,8 +13,8 @@
 #include "apps/scene_input.hpp"
 #include "apps/usage_error.hpp"
 #include "engine/log_observer.hpp"
-#include "engine/pull_off.hpp"
 #include "engine/result_json.hpp"
+#include "engine/run_scene.hpp"
 #include "engine/trajectory_csv.hpp"
 
 namespace mdrsim::cli {
@@ -26,7 +26,11 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
   fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
              to_string(r.status), scene.normal.control,
              scene.tangential ? scene.tangential->control : "fixed-grips", scene.criterion_name,
-             scene.springs);
+             r.springs);
+  if (r.resolutions.size() == 2) {
+    fmt::print(out, "extrapolated: richardson over rows of {} and {} springs\n", r.resolutions[0],
+               r.resolutions[1]);
+  }
   fmt::print(out,
              "critical: F = {:.8g} N, Fx = {:.8g} N, a = {:.8g} m, d = {:.8g} m, ux = {:.8g} m, {} "
              "springs in contact\n",
@@ -68,7 +72,7 @@ int run_command(const RunOptions& options) {
     observers.add(*trajectory);
   }
 
-  const RunResult result = run_pull_off(scene, observers);
+  const RunResult result = run_scene(scene, observers);
   require_finite(scene, result);
 
   if (trajectory_file) trajectory_file->commit();

@@ -16,8 +16,8 @@
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/vary_spec.hpp"
-#include "engine/pull_off.hpp"
 #include "engine/result_json.hpp"
+#include "engine/run_scene.hpp"
 
 namespace mdrsim::cli {
 namespace {
@@ -83,7 +83,7 @@ int sweep_command(const SweepOptions& options) {
   const auto worker = [&] {
     for (std::size_t i = next++; i < scenes.size(); i = next++) {
       try {
-        results[i] = run_pull_off(scenes[i], no_observers);
+        results[i] = run_scene(scenes[i], no_observers);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();

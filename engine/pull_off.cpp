@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "controllers/builtin_controllers.hpp"
+#include "engine/fold_refinement.hpp"
 #include "engine/methods/event_method.hpp"
 #include "engine/methods/stepping_method.hpp"
 
@@ -42,8 +43,12 @@ class ProgressLog {
 }  // namespace
 
 RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
+  return run_pull_off(scene, scene.springs, observers);
+}
+
+RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverList& observers) {
   const auto started = std::chrono::steady_clock::now();
-  const SpringFoundation foundation(*scene.profile, scene.glued_radius, scene.springs);
+  const SpringFoundation foundation(*scene.profile, scene.glued_radius, springs);
   const AffineConstraint tangential_constraint = scene.tangential
                                                      ? scene.tangential->controller->constraint()
                                                      : FixedGripsController().constraint();
@@ -59,11 +64,14 @@ RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
 
   const std::unique_ptr<PullOffMethod> method = make_method(scene.solver, contact.normal_control());
   RunResult result;
-  result.critical = contact.snapshot();
-  std::int64_t cascade_size = 0;  // springs detached since the last equilibrium
+  result.springs = springs;
+  result.resolutions = {springs};
+  Contact::State critical = contact.save();
+  std::optional<Contact::State> before_critical;  // the equilibrium before, for the fold
+  std::int64_t cascade_size = 0;                  // springs detached since the last equilibrium
   bool cascade_by_shear = false;
   double cascade_stretch = 0.0;
-  ProgressLog progress(scene.springs);
+  ProgressLog progress(springs);
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
       result.status = RunStatus::step_limit;
@@ -73,7 +81,10 @@ RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
     progress.tick(contact, result.counts);
     if (out.detached == 0) continue;
     if (out.equilibrium_before || cascade_size == 0) {
-      if (out.equilibrium_before) result.critical = *out.equilibrium_before;
+      if (out.equilibrium_before) {
+        before_critical = critical;
+        critical = *out.equilibrium_before;
+      }
       cascade_size = 0;
       cascade_by_shear = out.first_by_shear;
       cascade_stretch = out.first_stretch;
@@ -88,7 +99,15 @@ RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
                     : smooth         ? RunStatus::no_instability
                                      : RunStatus::instability;
   } else {
-    result.critical = contact.snapshot();
+    critical = contact.save();
+  }
+  result.critical = contact.snapshot_of(critical);
+  if (result.status == RunStatus::instability && scene.solver.method == SolverMethod::event &&
+      before_critical) {
+    if (const auto fold = refine_fold(contact, *scene.criterion, *before_critical, critical)) {
+      result.fold = fold->state;
+      result.fold_force_step = fold->normal_force_step;
+    }
   }
   if (result.status == RunStatus::instability || result.status == RunStatus::shear_off) {
     observers.emit(

@@ -18,7 +18,11 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
                   {"tangential", scene.tangential ? scene.tangential->control : "fixed-grips"}};
   j["criterion"] = scene.criterion_name;
   j["method"] = scene.solver.method == SolverMethod::event ? "event" : "stepping";
-  j["springs"] = scene.springs;
+  j["springs"] = result.springs;
+  if (scene.discretization.rtol) j["rtol"] = *scene.discretization.rtol;
+  if (scene.discretization.richardson) {
+    j["extrapolation"] = {{"method", "richardson"}, {"springs", result.resolutions}};
+  }
   j["critical"] = {{"normal_force", c.normal_force},
                    {"tangential_force", c.tangential_force},
                    {"contact_radius", c.contact_radius},

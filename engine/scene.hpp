@@ -24,6 +24,14 @@ struct SolverOptions {
   std::int64_t max_steps = 100'000'000;
 };
 
+/// How the spring row is chosen and its results combined across resolutions.
+struct DiscretizationOptions {
+  /// Requested relative accuracy of the critical force; picks the springs (run_scene.hpp).
+  std::optional<double> rtol;
+  /// Report the Richardson extrapolation of the row's fold from N and 2N springs.
+  bool richardson = false;
+};
+
 /// One axis of the loading machine: its controller and, on the tangential axis, the value
 /// it holds during the pull-off.
 struct AxisLoading {
@@ -44,6 +52,7 @@ struct Scene {
   std::string criterion_name;
   std::unique_ptr<DetachmentCriterion> criterion;
   std::int64_t springs = 0;  ///< springs across the glued radius (one half)
+  DiscretizationOptions discretization;
   SolverOptions solver;
 };
 

@@ -288,10 +288,18 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
 
   scene.springs = 2000;
   if (auto discretization = root.optional_table("discretization")) {
-    discretization->check_keys({"springs", "rtol"});
-    if (discretization->has("rtol")) {
-      discretization->fail_at("rtol", "not supported yet, give springs");
+    discretization->check_keys({"springs", "rtol", "extrapolation"});
+    if (discretization->has("rtol") && discretization->has("springs")) {
+      discretization->fail_at("rtol", "give springs or rtol, not both");
     }
+    scene.discretization.rtol =
+        discretization->optional_number({.key = "rtol",
+                                         .help = "relative accuracy of the critical force",
+                                         .lower = Bound{1e-12, true},
+                                         .upper = Bound{0.1, true}});
+    const std::string extrapolation =
+        discretization->name("extrapolation", {"none", "richardson"}, std::string("none"));
+    scene.discretization.richardson = extrapolation == "richardson";
     if (discretization->has("springs")) {
       scene.springs = discretization->integer({.key = "springs",
                                                .help = "springs across the glued radius",
@@ -302,6 +310,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
 
   if (auto solver = root.optional_table("solver")) read_solver(*solver, scene.solver);
+  if (scene.discretization.richardson && scene.solver.method != SolverMethod::event) {
+    TomlReader discretization = root.table("discretization");
+    discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
+  }
   root.finish();
   return scene;
 }

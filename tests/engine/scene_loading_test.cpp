@@ -442,9 +442,15 @@ std::vector<BadScene> discretization_cases() {
       {"SpringsArray", "springs = 100", "springs = [100]",
        "test.toml:16:11: discretization.springs: expected a whole number, got an array"},
       {"SpringsTypo", "springs = 100", "spring = 100",
-       "test.toml:16:1: discretization.spring: unknown key (known: rtol, springs)"},
-      {"RtolNotYet", "springs = 100", "rtol = 1e-4",
-       "test.toml:16:8: discretization.rtol: not supported yet, give springs"},
+       "test.toml:16:1: discretization.spring: unknown key (known: extrapolation, rtol, springs)"},
+      {"RtolTooLoose", "springs = 100", "rtol = 0.5",
+       "test.toml:16:8: discretization.rtol = 0.5 is outside [1e-12, 0.1]"},
+      {"RtolString", "springs = 100", "rtol = \"tight\"",
+       R"(test.toml:16:8: discretization.rtol: expected a number, got string "tight")"},
+      {"RtolAndSprings", "springs = 100", "springs = 100\nrtol = 1e-3",
+       "test.toml:17:8: discretization.rtol: give springs or rtol, not both"},
+      {"ExtrapolationUnknown", "springs = 100", "extrapolation = \"aitken\"",
+       "test.toml:16:17: discretization.extrapolation: unknown 'aitken' (known: none, richardson)"},
   };
 }
 INSTANTIATE_TEST_SUITE_P(Discretization, BadSceneTest, ::testing::ValuesIn(discretization_cases()),
