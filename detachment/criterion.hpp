@@ -28,6 +28,16 @@ inline double hess_elongation_limit(const InterfaceProperties& p, double contact
                    p.effective_modulus);
 }
 
+/// Ratios the closed-form criteria need at every let-go, computed once.
+struct ElongationScales {
+  double hess_squared_per_radius;  ///< dl(a)^2 / a = 2 pi dgamma / E* [m]
+  double shear_ratio;              ///< G* / E* [1]
+
+  explicit ElongationScales(const InterfaceProperties& p)
+      : hess_squared_per_radius(2.0 * std::numbers::pi * p.work_of_adhesion / p.effective_modulus),
+        shear_ratio(p.effective_shear_modulus / p.effective_modulus) {}
+};
+
 /// Required: margin(). Optional: critical_elongation().
 class DetachmentCriterion {
  public:

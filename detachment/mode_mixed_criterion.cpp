@@ -11,8 +11,7 @@ double ModeMixedCriterion::margin(const BoundarySpring& s) const {
 
 // Paper eq. 21: |uz| = sqrt(2 pi a dgamma / E* - G*/E* ux^2).
 std::optional<double> ModeMixedCriterion::critical_elongation(double a, double ux) const {
-  const double dl = hess_elongation_limit(p_, a);
-  const double squared = dl * dl - p_.effective_shear_modulus / p_.effective_modulus * ux * ux;
+  const double squared = scales_.hess_squared_per_radius * a - scales_.shear_ratio * ux * ux;
   return squared > 0.0 ? std::sqrt(squared) : 0.0;
 }
 

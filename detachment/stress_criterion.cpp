@@ -10,9 +10,8 @@ double StressCriterion::margin(const BoundarySpring& s) const {
 }
 
 std::optional<double> StressCriterion::critical_elongation(double a, double ux) const {
-  const double dl = hess_elongation_limit(p_, a);
-  const double shear = p_.effective_shear_modulus / p_.effective_modulus * ux;
-  const double squared = dl * dl - shear * shear;
+  const double shear = scales_.shear_ratio * ux;
+  const double squared = scales_.hess_squared_per_radius * a - shear * shear;
   return squared > 0.0 ? std::sqrt(squared) : 0.0;
 }
 

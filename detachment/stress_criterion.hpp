@@ -7,13 +7,15 @@ namespace mdrsim {
 
 class StressCriterion final : public DetachmentCriterion {
  public:
-  explicit StressCriterion(const InterfaceProperties& properties) : p_(properties) {}
+  explicit StressCriterion(const InterfaceProperties& properties)
+      : p_(properties), scales_(properties) {}
   double margin(const BoundarySpring& spring) const override;
   std::optional<double> critical_elongation(double contact_radius,
                                             double tangential_displacement) const override;
 
  private:
   InterfaceProperties p_;
+  ElongationScales scales_;
 };
 
 }  // namespace mdrsim

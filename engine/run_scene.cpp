@@ -11,7 +11,7 @@ namespace mdrsim {
 namespace {
 
 constexpr std::int64_t kPilotSprings = 1024;
-constexpr double kSafety = 1.25;
+constexpr double kSafety = 1.15;
 constexpr double kMaxSprings = 1e9;
 
 void add_counts(RunCounts& total, const RunCounts& more) {

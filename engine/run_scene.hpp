@@ -17,7 +17,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers);
 /// The springs for relative accuracy `rtol` of the critical normal force, from the row's
 /// known convergence: the plain row's error is C/N + a quantization of at most half the
 /// force change per spring at the fold, S/N; the extrapolated one's is C2/N^2. C, S and C2
-/// are measured on pilot rows of 1024, 2048 (and 4096) springs, and a factor 1.25 keeps
+/// are measured on pilot rows of 1024, 2048 (and 4096) springs, and a factor 1.15 keeps
 /// the result inside rtol. Pilot events are added to `counts`.
 std::int64_t springs_for_rtol(const Scene& scene, double rtol, bool richardson, RunCounts& counts);
 

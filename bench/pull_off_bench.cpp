@@ -1,0 +1,68 @@
+// Google Benchmark: pull-off cost across springs, methods and stepping increments,
+// registered at run time over the registered normal controllers.
+#include <benchmark/benchmark.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <string>
+
+#include "bench/bench_cases.hpp"
+#include "engine/registries.hpp"
+#include "engine/run_scene.hpp"
+
+namespace {
+
+void pull_off(benchmark::State& state, std::string normal, std::string method, double increment) {
+  const auto springs = static_cast<std::int64_t>(state.range(0));
+  mdrsim::test::JkrScenario s;
+  s.normal = normal;
+  s.springs = springs;
+  s.method = method;
+  if (normal == "compliant") {
+    s.normal_extra = "stiffness = " + std::to_string(s.scales().force / s.scales().depth);
+  }
+  mdrsim::Scene scene = mdrsim::test::build_scene_text(s.toml());
+  if (method == "stepping") scene.solver.step = increment * scene.preload_depth;
+  mdrsim::RunResult result;
+  for (auto _ : state) {
+    result = mdrsim::run_scene(scene, {});
+    benchmark::DoNotOptimize(result.critical.normal_force);
+  }
+  const double exact =
+      mdrsim::bench::paper_cases()[normal == "fixed-load" ? 0 : 2].exact_normal_force;
+  state.counters["events"] = static_cast<double>(result.counts.events);
+  state.counters["steps"] = static_cast<double>(result.counts.steps);
+  state.counters["halvings"] = static_cast<double>(result.counts.halvings);
+  state.counters["root_iterations"] = static_cast<double>(result.counts.root_iterations);
+  if (normal != "compliant") {
+    state.counters["relative_error"] =
+        std::abs(result.critical.normal_force / s.scales().force - exact) / std::abs(exact);
+  }
+  state.SetItemsProcessed(state.iterations() * springs);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  spdlog::set_level(spdlog::level::warn);
+  for (const std::string& normal : mdrsim::Registries::builtin().controllers.names()) {
+    benchmark::RegisterBenchmark(("event/" + normal).c_str(), pull_off, normal, "event", 0.0)
+        ->RangeMultiplier(10)
+        ->Range(100, 10'000'000)
+        ->Unit(benchmark::kMillisecond);
+    if (normal == "compliant") continue;  // stepping increments are in the control's units
+    for (const double increment : {1e-2, 1e-3}) {
+      benchmark::RegisterBenchmark(
+          ("stepping/" + normal + "/increment:" + std::to_string(increment)).c_str(), pull_off,
+          normal, "stepping", increment)
+          ->RangeMultiplier(10)
+          ->Range(100, 100'000)
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
