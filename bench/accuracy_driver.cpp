@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
   const std::vector<std::int64_t> event_springs{100,   300,    1000,   3000,    10000,
                                                 30000, 100000, 300000, 1000000, 10000000};
   const std::vector<std::int64_t> richardson_springs{25, 50, 100, 250, 500, 1000, 2500, 5000};
-  const std::vector<std::int64_t> stepping_springs{1000, 10000, 100000};
+  const std::vector<std::int64_t> stepping_springs{1000, 3000, 10000, 30000, 100000};
   const std::vector<double> increments{1e-2, 1e-3, 1e-4};
   for (const BenchCase& c : mdrsim::bench::paper_cases()) {
     for (const std::int64_t n : event_springs) {

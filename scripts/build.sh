@@ -9,7 +9,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build_dir="${BUILD_DIR:-build}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMDRSIM_WERROR=ON
+# bench/ is built too, so that CI compiles it with warnings as errors.
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMDRSIM_WERROR=ON -DMDRSIM_BUILD_BENCH=ON
 if [ $# -eq 0 ]; then
   cmake --build "$build_dir" -j"$jobs"
 else

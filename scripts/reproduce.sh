@@ -5,7 +5,8 @@
 #
 # Installs what is missing, builds mdrsim (in $BUILD_DIR, default build, configured like the
 # tests), runs the scenes and sweeps into results/ ($RESULTS_DIR), draws the figures (PNG and
-# SVG) and prints the comparison table. Exits non-zero if a run fails or any simulated critical force is
+# SVG) and prints the comparison table, then measures speed against accuracy (bench/) and
+# draws that chart. Exits non-zero if a run fails or any simulated critical force is
 # further than 2e-3 F0 from the paper's analytic value. Works from any directory.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -19,7 +20,7 @@ py=/usr/bin/python3
 # Installation and build logs go to standard error: standard output is the report alone
 # (the figures written and the comparison table), e.g. bash scripts/reproduce.sh > report.txt
 bash scripts/setup.sh >&2
-BUILD_DIR="$build_dir" bash scripts/build.sh mdrsim >&2
+BUILD_DIR="$build_dir" bash scripts/build.sh mdrsim mdrsim_accuracy >&2
 mkdir -p "$results"
 
 # u/d0 from 0 to 4 in 41 values; d0 = 2.2614848269449475e-6 m for the Fig. 3a scenes (R = 1 cm,
@@ -47,3 +48,10 @@ echo "== figures" >&2
 
 echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
+
+# Speed against accuracy (issue 4): one CSV row per method, springs and increment, the
+# chart, and the targets checked on this machine (MET/MISS lines; a MISS fails the job).
+echo "== speed against accuracy (bench/, about 15 s)" >&2
+echo
+"$build_dir/bench/mdrsim_accuracy" --out "$results/speed_accuracy.csv"
+"$py" scripts/plot_speed_accuracy.py --csv "$results/speed_accuracy.csv" --out "$results"
