@@ -13,6 +13,8 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "engine/registries.hpp"
 #include "tests/support/run_command.hpp"
@@ -193,6 +195,47 @@ TEST_F(Cli, NewlineInAValueStaysOnOneLine) {
       r, fmt::format(R"({}:6:8: profile.type: unknown 'para\nbolic' (known: {}))", scene, known)));
 }
 
+TEST_F(Cli, SceneFileThatIsADanglingLink) {
+  // Unreadable as root too: the link points nowhere.
+  fs::create_symlink("nowhere.toml", path("dangling.toml"));
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", path("dangling.toml"), json));
+  EXPECT_TRUE(bad_input(
+      r, path("dangling.toml") + ": cannot read the scene file (no such file or directory)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, SceneFileInALinkLoop) {
+  fs::create_symlink("loop2", path("loop1"));
+  fs::create_symlink("loop1", path("loop2"));
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", path("loop1"), json));
+  EXPECT_TRUE(bad_input(
+      r, path("loop1") + ": cannot read the scene file (too many levels of symbolic links)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, EmptySceneFile) {
+  const std::string scene = write("empty.toml", "");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, scene + ": material: missing, expected a table"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, SceneFileThatIsNotUtf8OrHasANulByte) {
+  const std::string json = path("out.json");
+  const std::string latin1 = write("latin1.toml", "title = \"\xff\xfe\"\n");
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --json {}", latin1, json)),
+                        latin1 + ":1:9: malformed TOML: encountered invalid utf-8 sequence"));
+  const std::string nul = write("nul.toml", std::string("title = \"a\0b\"\n", 14));
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --json {}", nul, json)),
+                        nul + ":1:11: malformed TOML: error while parsing string: unescaped "
+                              "control characters other than TAB (U+0009) are explicitly "
+                              "prohibited"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
 // ---- --set ----
 
 TEST_F(Cli, SetWithoutEquals) {
@@ -245,6 +288,143 @@ TEST_F(Cli, SetThroughAValue) {
 TEST_F(Cli, SetWithoutArgument) {
   const auto r = run_mdrsim(fmt::format("run {} --set", scene_));
   EXPECT_TRUE(bad_input(r, "--set: 1 required TEXT missing"));
+}
+
+/// `names` joined by ", ": the known-names lists come from the registries, so that a newly
+/// registered part does not break the cases below.
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// Every key of SPEC's scene file through --set, each way a value can be wrong: of the wrong
+// type, out of range, missing (a --set table without it) and unknown (a typo in each table).
+// The file itself is checked key by key in tests/engine/scene_loading_test.cpp; this checks
+// that the command line turns each into exit code 2, exactly one line naming --set and the
+// key, nothing on standard output and no JSON file left behind.
+TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
+  const auto registries = Registries::builtin();
+  const std::string profiles = joined(registries.profiles.names());
+  const std::string criteria = joined(registries.criteria.names());
+  const std::string controllers = joined(registries.controllers.names());
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"title=[1]", "--set: title: expected a string, got an array"},
+      {"x=1",
+       "--set: x: unknown key (known: detachment, discretization, loading, material, "
+       "profile, solver, title)"},
+      {"material.youngs_modulus=true",
+       "--set: material.youngs_modulus: expected a number, got true"},
+      {"material.youngs_modulus=-1", "--set: material.youngs_modulus = -1 is outside (0, inf)"},
+      {"material.poisson_ratio=[0.3]",
+       "--set: material.poisson_ratio: expected a number, got an array"},
+      {"material.poisson_ratio=-1", "--set: material.poisson_ratio = -1 is outside (-1, 0.5]"},
+      {"material.work_of_adhesion=abc",
+       R"(--set: material.work_of_adhesion: expected a number, got string "abc")"},
+      {"material.work_of_adhesion=-1", "--set: material.work_of_adhesion = -1 is outside [0, inf)"},
+      {"material={ youngs_modulus = 1e6, poisson_ratio = 0.0 }",
+       "--set: material.work_of_adhesion: missing, expected a number (work of adhesion dgamma "
+       "[J/m^2], >= 0)"},
+      {"material={ effective_modulus = \"x\", work_of_adhesion = 0.05 }",
+       R"(--set: material.effective_modulus: expected a number, got string "x")"},
+      {"material={ effective_modulus = 0, work_of_adhesion = 0.05 }",
+       "--set: material.effective_modulus = 0 is outside (0, inf)"},
+      {"material={ effective_modulus = 1e6, effective_shear_modulus = true, work_of_adhesion = "
+       "0.05 }",
+       "--set: material.effective_shear_modulus: expected a number, got true"},
+      {"material={ effective_modulus = 1e6, effective_shear_modulus = -1, work_of_adhesion = "
+       "0.05 }",
+       "--set: material.effective_shear_modulus = -1 is outside (0, inf)"},
+      {"material.youngs_modulu=1",
+       fmt::format("--set: material.youngs_modulu: unknown key (known: {})", kMaterialKeys)},
+      {"profile.type=3", "--set: profile.type: expected a string, got 3"},
+      {"profile.type=cone2",
+       fmt::format("--set: profile.type: unknown 'cone2' (known: {})", profiles)},
+      {"profile={ radius = 0.01 }",
+       fmt::format("--set: profile.type: missing, expected a string (one of: {})", profiles)},
+      {"profile.radius=[1]", "--set: profile.radius: expected a number, got an array"},
+      {"profile.radius=0", "--set: profile.radius = 0 is outside (0, inf)"},
+      {"profile.radus=1", "--set: profile.radus: unknown key (known: radius, type)"},
+      {"loading.x=1", "--set: loading.x: unknown key (known: normal, preload, tangential)"},
+      {"loading.preload={}",
+       "--set: loading.preload: give exactly one of depth [m], force [N] or contact_radius [m]"},
+      {"loading.preload={ radius = 1 }",
+       "--set: loading.preload.radius: unknown key (known: contact_radius, depth, force)"},
+      {"loading.preload={ depth = \"deep\" }",
+       R"(--set: loading.preload.depth: expected a number, got string "deep")"},
+      {"loading.preload={ depth = 0 }", "--set: loading.preload.depth = 0 is outside (0, inf)"},
+      {"loading.preload={ force = true }",
+       "--set: loading.preload.force: expected a number, got true"},
+      {"loading.preload={ force = -1 }", "--set: loading.preload.force = -1 is outside (0, inf)"},
+      {"loading.preload={ contact_radius = [1] }",
+       "--set: loading.preload.contact_radius: expected a number, got an array"},
+      {"loading.preload={ contact_radius = -1 }",
+       "--set: loading.preload.contact_radius = -1 is outside (0, inf)"},
+      {"loading.tangential={ control = 1, displacement = 0 }",
+       "--set: loading.tangential.control: expected a string, got 1"},
+      {"loading.tangential={ control = \"fixed-grips\" }",
+       "--set: loading.tangential.displacement: missing, expected a number (the held "
+       "displacement [m])"},
+      {"loading.tangential={ control = \"fixed-grips\", displacement = \"x\" }",
+       R"(--set: loading.tangential.displacement: expected a number, got string "x")"},
+      {"loading.tangential={ control = \"fixed-load\", force = \"x\" }",
+       R"(--set: loading.tangential.force: expected a number, got string "x")"},
+      {"loading.tangential={ control = \"fixed-grips\", displacement = 0, x = 1 }",
+       "--set: loading.tangential.x: unknown key (known: control, displacement, force)"},
+      {"loading.normal.control=1", "--set: loading.normal.control: expected a string, got 1"},
+      {"loading.normal.control=grips",
+       fmt::format("--set: loading.normal.control: unknown 'grips' (known: {})", controllers)},
+      {"loading.normal={ control = \"compliant\" }",
+       "--set: loading.normal.stiffness: missing, expected a number (machine stiffness k "
+       "[N/m])"},
+      {"loading.normal={ control = \"compliant\", stiffness = \"k\" }",
+       R"(--set: loading.normal.stiffness: expected a number, got string "k")"},
+      {"loading.normal={ control = \"compliant\", stiffness = 0 }",
+       "--set: loading.normal.stiffness = 0 is outside (0, inf)"},
+      {"loading.normal={ control = \"compliant\", stiffness = 1, x = 1 }",
+       "--set: loading.normal.x: unknown key (known: control, stiffness)"},
+      {"detachment.criterion=2", "--set: detachment.criterion: expected a string, got 2"},
+      {"detachment.criterion=stres",
+       fmt::format("--set: detachment.criterion: unknown 'stres' (known: {})", criteria)},
+      {"detachment.x=1", "--set: detachment.x: unknown key (known: criterion)"},
+      {"detachment={ criterion = \"mode-dependent\" }",
+       "--set: detachment.lambda: missing, expected a number (mode sensitivity: 0 = "
+       "normal-only, 1 = mode-mixed)"},
+      {"detachment={ criterion = \"mode-dependent\", lambda = \"half\" }",
+       R"(--set: detachment.lambda: expected a number, got string "half")"},
+      {"detachment={ criterion = \"mode-dependent\", lambda = 2 }",
+       "--set: detachment.lambda = 2 is outside [0, 1]"},
+      {"discretization.springs=x",
+       R"(--set: discretization.springs: expected a whole number, got string "x")"},
+      {"discretization.springs=1.5", "--set: discretization.springs = 1.5 is not a whole number"},
+      {"discretization.springs=0", "--set: discretization.springs = 0 is outside [1, 1000000000]"},
+      {"discretization={ rtol = \"x\" }",
+       R"(--set: discretization.rtol: expected a number, got string "x")"},
+      {"discretization={ rtol = 1 }", "--set: discretization.rtol = 1 is outside [1e-12, 0.1]"},
+      {"discretization.x=1",
+       "--set: discretization.x: unknown key (known: extrapolation, rtol, springs)"},
+      {"solver.method=1", "--set: solver.method: expected a string, got 1"},
+      {"solver.method=events", "--set: solver.method: unknown 'events' (known: event, stepping)"},
+      {"solver={ method = \"stepping\", step = \"s\" }",
+       R"(--set: solver.step: expected a number, got string "s")"},
+      {"solver={ method = \"stepping\", step = 0 }", "--set: solver.step = 0 is outside (0, inf)"},
+      {"solver={ method = \"stepping\", max_halvings = \"3\" }",
+       R"(--set: solver.max_halvings: expected a whole number, got string "3")"},
+      {"solver={ method = \"stepping\", max_halvings = 61 }",
+       "--set: solver.max_halvings = 61 is outside [0, 60]"},
+      {"solver={ method = \"stepping\", max_steps = \"x\" }",
+       R"(--set: solver.max_steps: expected a whole number, got string "x")"},
+      {"solver={ method = \"stepping\", max_steps = 0 }",
+       "--set: solver.max_steps = 0 is outside [1, 1000000000000000]"},
+      {"solver.x=1", "--set: solver.x: unknown key (known: max_halvings, max_steps, method, step)"},
+  };
+  const std::string json = path("out.json");
+  for (const auto& [set, message] : cases) {
+    const auto r =
+        run_mdrsim(fmt::format("run {} --set {} --json {}", scene_, shell_word(set), json));
+    EXPECT_TRUE(bad_input(r, message)) << "--set " << set;
+    EXPECT_TRUE(nothing_at(json)) << "--set " << set;
+  }
 }
 
 // ---- --vary ----

@@ -197,6 +197,14 @@ std::vector<BadScene> material_cases() {
        "test.toml:5:20: material.work_of_adhesion = inf is not a finite number"},
       {"WorkOfAdhesionArray", "work_of_adhesion = 0.05", "work_of_adhesion = [0.05]",
        "test.toml:5:20: material.work_of_adhesion: expected a number, got an array"},
+      {"WorkOfAdhesionString", "work_of_adhesion = 0.05", "work_of_adhesion = \"sticky\"",
+       R"(test.toml:5:20: material.work_of_adhesion: expected a number, got string "sticky")"},
+      {"WorkOfAdhesionTypo", "work_of_adhesion = 0.05", "work_of_adhesio = 0.05",
+       fmt::format("test.toml:5:1: material.work_of_adhesio: unknown key (known: {})",
+                   kMaterialKeys)},
+      {"EffectiveShearModulusString", "youngs_modulus = 1.0e6\npoisson_ratio = 0.0",
+       "effective_modulus = 1.0e6\neffective_shear_modulus = \"soft\"",
+       R"(test.toml:4:27: material.effective_shear_modulus: expected a number, got string "soft")"},
       {"WorkOfAdhesionMissing", "work_of_adhesion = 0.05\n", "",
        "test.toml:2:1: material.work_of_adhesion: missing, expected a number (work of adhesion "
        "dgamma [J/m^2], >= 0)"},
@@ -351,6 +359,9 @@ std::vector<BadScene> loading_cases() {
       {"TangentialForceMissing", kTangential, R"(tangential = { control = "fixed-load" })",
        "test.toml:11:14: loading.tangential.force: missing, expected a number (the held force "
        "[N])"},
+      {"TangentialForceString", kTangential,
+       R"(tangential = { control = "fixed-load", force = "1 N" })",
+       R"(test.toml:11:48: loading.tangential.force: expected a number, got string "1 N")"},
       {"TangentialForceInf", kTangential,
        R"(tangential = { control = "fixed-load", force = -inf })",
        "test.toml:11:48: loading.tangential.force = -inf is not a finite number"},
@@ -492,6 +503,12 @@ std::vector<BadScene> solver_cases() {
        R"(test.toml:19:16: solver.max_halvings: expected a whole number, got string "3")"},
       {"MaxStepsZero", "method = \"event\"", std::string(kStepping) + "\nmax_steps = 0",
        "test.toml:19:13: solver.max_steps = 0 is outside [1, 1000000000000000]"},
+      {"MaxStepsString", "method = \"event\"", std::string(kStepping) + "\nmax_steps = \"many\"",
+       R"(test.toml:19:13: solver.max_steps: expected a whole number, got string "many")"},
+      {"MaxStepsFraction", "method = \"event\"", std::string(kStepping) + "\nmax_steps = 10.5",
+       "test.toml:19:13: solver.max_steps = 10.5 is not a whole number"},
+      {"MaxStepsTooMany", "method = \"event\"", std::string(kStepping) + "\nmax_steps = 1e16",
+       "test.toml:19:13: solver.max_steps = 1e+16 is outside [1, 1000000000000000]"},
       {"MaxStepsInf", "method = \"event\"", std::string(kStepping) + "\nmax_steps = inf",
        "test.toml:19:13: solver.max_steps = inf is not a finite number"},
   };
@@ -513,6 +530,11 @@ std::vector<BadScene> malformed_cases() {
        "existing table 'material'"},
       {"MissingValue", "radius = 0.01", "radius =",
        R"(test.toml:8:9: malformed TOML: error while parsing key-value pair: expected value, saw '\n')"},
+      {"InvalidUtf8", R"(title = "test scene")", "title = \"\xff\xfe\"",
+       "test.toml:1:9: malformed TOML: encountered invalid utf-8 sequence"},
+      {"NulByteInAString", R"(title = "test scene")", std::string("title = \"a\0b\"", 12),
+       "test.toml:1:11: malformed TOML: error while parsing string: unescaped control characters "
+       "other than TAB (U+0009) are explicitly prohibited"},
       {"UnclosedInlineTable", kNormal, R"(normal = { control = "fixed-load")",
        R"(test.toml:12:34: malformed TOML: error while parsing inline table: expected key or closing '}', saw '\n')"},
   };
@@ -640,6 +662,26 @@ TEST(BadScene, InRangeValuesThatOverflowTheRunAreRefused) {
       }),
       "test.toml:12:10: loading.normal: control = \"compliant\" is degenerate with these values "
       "(constraint a_u = 1, a_F = inf m/N against a contact stiffness of "));
+}
+
+TEST(BadScene, EmptyTextHasNoMaterial) {
+  EXPECT_THROW_MSG(build_scene_text(""), SceneError,
+                   "test.toml: material: missing, expected a table");
+}
+
+// A held tangential force in range whose dimensionless value F_x/F0 overflows: the run ends in
+// shear-off with F_x = 1e308 N, F0 = 2.4e-3 N here, and `mdrsim run` exits 1 ("the run gave
+// critical.tangential_force = 1e+308 ... not a finite number") instead of 2. Like the held
+// displacement above, the reader should refuse it, naming the key.
+TEST(BadScene, TangentialForceWhoseDimensionlessValueOverflowsIsRefused) {
+  GTEST_SKIP() << "engine gap, reported to the lead (scene_builder.cpp): the overflow check "
+                  "covers the held displacement, not the held force against F0";
+  EXPECT_TRUE(
+      starts_with(thrown_message<SceneError>([] {
+                    build_scene_text(scene_with(
+                        kTangential, R"(tangential = { control = "fixed-load", force = 1e308 })"));
+                  }),
+                  "test.toml:11:48: loading.tangential.force = 1e+308"));
 }
 
 TEST(BadScene, ArrayOfTablesWhereATableIsExpected) {
