@@ -6,24 +6,39 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 
 namespace mdrsim {
 namespace {
 
 /// Smallest x in [0, outer] with fn(x) >= target, for fn non-decreasing; throws if none.
+/// An fn that diverges at a finite outer edge (the sphere's image at r = R) is approached
+/// from inside, halving the distance to the edge until fn reaches the target.
 template <class Fn>
 double invert_increasing(Fn fn, double target, double outer, const char* what) {
   if (fn(0.0) >= target) return 0.0;
+  const auto out_of_reach = [&] {
+    return std::domain_error(std::string(what) + " is out of the profile's reach");
+  };
   double lo = 0.0;
   double hi = std::isfinite(outer) ? outer : 1.0;
   if (!std::isfinite(outer)) {
     for (int i = 0; fn(hi) < target; ++i) {
-      if (i > 2000) throw std::domain_error(std::string(what) + " is out of the profile's reach");
+      if (i > 2000) throw out_of_reach();
       lo = hi;
       hi *= 2.0;
     }
-  } else if (fn(hi) < target) {
-    throw std::domain_error(std::string(what) + " is out of the profile's reach");
+  } else if (const double at_edge = fn(outer); !std::isfinite(at_edge)) {
+    double gap = 0.5 * outer;
+    hi = outer - gap;
+    while (fn(hi) < target) {
+      lo = hi;
+      gap *= 0.5;
+      hi = outer - gap;
+      if (!(hi > lo)) throw out_of_reach();
+    }
+  } else if (at_edge < target) {
+    throw out_of_reach();
   }
   std::uintmax_t iterations = 200;
   const auto bracket = boost::math::tools::toms748_solve(
@@ -34,6 +49,17 @@ double invert_increasing(Fn fn, double target, double outer, const char* what) {
 }
 
 }  // namespace
+
+double Profile::mdr_image_slope(double x) const {
+  if (!(x > 0.0)) {
+    const double h = 1e-9;
+    return (mdr_image(h) - mdr_image(0.0)) / h;
+  }
+  const double h = 1e-3 * x;
+  return (8.0 * (mdr_image(x + h) - mdr_image(x - h)) -
+          (mdr_image(x + 2 * h) - mdr_image(x - 2 * h))) /
+         (12.0 * h);
+}
 
 double Profile::contact_radius_at_depth(double depth) const {
   return invert_increasing([this](double x) { return mdr_image(x); }, depth, outer_radius(),

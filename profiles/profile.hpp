@@ -18,6 +18,10 @@ class Profile {
   /// Required: the MDR image g(x) [m] at x >= 0 [m] (paper eq. 4); non-decreasing in x.
   virtual double mdr_image(double x) const = 0;
 
+  /// Optional: the slope dg/dx [1] at x > 0 [m]. Default: a fourth-order central difference
+  /// with step 1e-3 x (about 1e-12 relative on smooth images).
+  virtual double mdr_image_slope(double x) const;
+
   /// Optional: the non-adhesive contact radius [m] at indentation depth [m], the x with
   /// g(x) = depth. Default: a bracketing root search on mdr_image().
   virtual double contact_radius_at_depth(double depth) const;

@@ -46,6 +46,7 @@ TEST(ParabolicProfile, ClosedFormsMatchTheNumericalDefaults) {
     EXPECT_NEAR(p.nonadhesive_force_per_modulus(a), p.Profile::nonadhesive_force_per_modulus(a),
                 1e-12 * p.nonadhesive_force_per_modulus(a));
     EXPECT_NEAR(p.Profile::contact_radius_at_depth(p.mdr_image(a)), a, 1e-12 * a);
+    EXPECT_NEAR(p.mdr_image_slope(a), p.Profile::mdr_image_slope(a), 1e-10 * p.mdr_image_slope(a));
   }
   EXPECT_NEAR(mdrsim::contact_radius_at_force(p, 1e-3, 1e6),
               std::cbrt(3.0 * 0.01 * 1e-3 / (4.0 * 1e6)), 1e-15);

@@ -1,0 +1,30 @@
+// The cone's closed forms: image, depth-radius relation and the non-adhesive force.
+#include "profiles/cone_profile.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace mdrsim {
+
+ConeProfile::ConeProfile(double slope_angle_deg) {
+  if (!(slope_angle_deg > 0.0 && slope_angle_deg < 90.0)) {
+    throw std::invalid_argument("the cone's slope angle must lie in (0, 90) degrees");
+  }
+  slope_ = std::tan(slope_angle_deg * std::numbers::pi / 180.0);
+  image_slope_ = 0.5 * std::numbers::pi * slope_;
+}
+
+double ConeProfile::shape(double r) const { return r * slope_; }
+
+double ConeProfile::mdr_image(double x) const { return image_slope_ * x; }
+
+double ConeProfile::contact_radius_at_depth(double depth) const {
+  return depth > 0.0 ? depth / image_slope_ : 0.0;
+}
+
+// 2 integral_0^a k (a - x) dx = k a^2 with k = (pi/2) tan(theta): the classical cone force
+// F = (pi/2) E* a^2 tan(theta) (Sneddon).
+double ConeProfile::nonadhesive_force_per_modulus(double a) const { return image_slope_ * a * a; }
+
+}  // namespace mdrsim

@@ -1,0 +1,29 @@
+// The flat cylindrical punch of radius A: f = 0 for r <= A, a wall outside; g = 0 for x <= A.
+#pragma once
+
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+/// Its glued contact has radius A whatever the depth (fixed_contact_radius): the boundary
+/// spring starts at the punch edge. All springs have g = 0 and the same stretch, so once
+/// the edge spring lets go every inner one (smaller dl) follows at once: a single cascade.
+class FlatPunchProfile final : public Profile {
+ public:
+  explicit FlatPunchProfile(double radius);
+
+  double shape(double radius) const override;
+  double mdr_image(double x) const override;
+  double mdr_image_slope(double x) const override;
+  double contact_radius_at_depth(double depth) const override;
+  /// Zero for a <= A: the punch face carries no force without an indentation, whose
+  /// force 2 E* A d the radius alone does not fix.
+  double nonadhesive_force_per_modulus(double contact_radius) const override;
+  std::optional<double> fixed_contact_radius() const override { return radius_; }
+  double outer_radius() const override { return radius_; }
+
+ private:
+  double radius_;  ///< A [m]
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,136 @@
+// Not-a-knot spline slopes by the tridiagonal solve, Hyman's limiter and Hermite pieces.
+#include "profiles/monotone_cubic.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace mdrsim {
+namespace {
+
+void check_knots(const std::vector<double>& x, const std::vector<double>& y, std::size_t least) {
+  if (x.size() < least) throw std::invalid_argument("too few knots for the interpolant");
+  if (y.size() != x.size()) throw std::invalid_argument("one value per knot is needed");
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i]) || !std::isfinite(y[i])) {
+      throw std::invalid_argument("knots and values must be finite");
+    }
+    if (i > 0 && !(x[i] > x[i - 1])) throw std::invalid_argument("knots must increase");
+    if (i > 0 && y[i] < y[i - 1]) throw std::invalid_argument("values must not decrease");
+  }
+}
+
+// Slopes m_i of the C2 cubic spline with not-a-knot ends (de Boor; as MATLAB's spline).
+// With h_k = x_{k+1} - x_k and secants s_k, interior rows are continuity of the second
+// derivative, h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i s_{i-1} + h_{i-1}
+// s_i); the end rows are continuity of the third derivative at x_1 (x_{n-2}) with m_2 (m_{n-3})
+// eliminated by the neighbouring interior row. Thomas' algorithm: after the first
+// elimination the rows are diagonally dominant.
+std::vector<double> not_a_knot_slopes(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> h(n - 1), s(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    h[k] = x[k + 1] - x[k];
+    s[k] = (y[k + 1] - y[k]) / h[k];
+  }
+  std::vector<double> sub(n, 0.0), diag(n, 0.0), super(n, 0.0), rhs(n, 0.0);
+  diag[0] = h[1];
+  super[0] = h[0] + h[1];
+  rhs[0] = (h[1] * s[0] * (3.0 * h[0] + 2.0 * h[1]) + h[0] * h[0] * s[1]) / (h[0] + h[1]);
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    sub[i] = h[i];
+    diag[i] = 2.0 * (h[i - 1] + h[i]);
+    super[i] = h[i - 1];
+    rhs[i] = 3.0 * (h[i] * s[i - 1] + h[i - 1] * s[i]);
+  }
+  const double a = h[n - 2], b = h[n - 3];
+  sub[n - 1] = a + b;
+  diag[n - 1] = b;
+  rhs[n - 1] = (b * s[n - 2] * (3.0 * a + 2.0 * b) + a * a * s[n - 3]) / (a + b);
+  for (std::size_t i = 1; i < n; ++i) {
+    const double factor = sub[i] / diag[i - 1];
+    diag[i] -= factor * super[i - 1];
+    rhs[i] -= factor * rhs[i - 1];
+  }
+  std::vector<double> m(n);
+  m[n - 1] = rhs[n - 1] / diag[n - 1];
+  for (std::size_t i = n - 1; i-- > 0;) m[i] = (rhs[i] - super[i] * m[i + 1]) / diag[i];
+  return m;
+}
+
+}  // namespace
+
+MonotoneCubic MonotoneCubic::spline(std::vector<double> knots, std::vector<double> values) {
+  check_knots(knots, values, 4);
+  std::vector<double> slopes = not_a_knot_slopes(knots, values);
+  return MonotoneCubic(std::move(knots), values, std::move(slopes));
+}
+
+MonotoneCubic MonotoneCubic::hermite(std::vector<double> knots, std::vector<double> values,
+                                     std::vector<double> slopes) {
+  check_knots(knots, values, 2);
+  if (slopes.size() != knots.size()) throw std::invalid_argument("one slope per knot is needed");
+  return MonotoneCubic(std::move(knots), values, std::move(slopes));
+}
+
+MonotoneCubic::MonotoneCubic(std::vector<double> knots, const std::vector<double>& values,
+                             std::vector<double> slopes)
+    : knots_(std::move(knots)) {
+  const std::size_t n = knots_.size();
+  std::vector<double> secant(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    secant[k] = (values[k + 1] - values[k]) / (knots_[k + 1] - knots_[k]);
+  }
+  // Hyman's filter: 0 <= m_i <= 3 min(s_{i-1}, s_i) keeps each piece in the monotone region
+  // (alpha, beta <= 3) and flattens the curve over a flat secant.
+  for (std::size_t i = 0; i < n; ++i) {
+    double limit = i == 0       ? secant[0]
+                   : i + 1 == n ? secant[n - 2]
+                                : std::min(secant[i - 1], secant[i]);
+    slopes[i] = std::clamp(std::isnan(slopes[i]) ? limit : slopes[i], 0.0, 3.0 * limit);
+  }
+  pieces_.reserve(n - 1);
+  double integral = 0.0;
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const double h = knots_[k + 1] - knots_[k];
+    const double rise = values[k + 1] - values[k];
+    const double c1 = h * slopes[k];
+    const double c2 = 3.0 * rise - 2.0 * h * slopes[k] - h * slopes[k + 1];
+    const double c3 = h * (slopes[k] + slopes[k + 1]) - 2.0 * rise;
+    pieces_.push_back({h, values[k], c1, c2, c3, integral});
+    integral += h * (values[k] + c1 / 2.0 + c2 / 3.0 + c3 / 4.0);
+  }
+}
+
+std::size_t MonotoneCubic::piece(double x) const {
+  const auto it = std::upper_bound(knots_.begin(), knots_.end(), x);
+  const std::size_t after = static_cast<std::size_t>(it - knots_.begin());
+  return std::clamp<std::size_t>(after, 1, pieces_.size()) - 1;
+}
+
+double MonotoneCubic::value_on(std::size_t k, double x) const {
+  const Piece& p = pieces_[k];
+  const double s = (x - knots_[k]) / p.h;
+  return p.y + s * (p.c1 + s * (p.c2 + s * p.c3));
+}
+
+double MonotoneCubic::slope_on(std::size_t k, double x) const {
+  const Piece& p = pieces_[k];
+  const double s = (x - knots_[k]) / p.h;
+  return (p.c1 + s * (2.0 * p.c2 + s * 3.0 * p.c3)) / p.h;
+}
+
+double MonotoneCubic::curvature_on(std::size_t k, double x) const {
+  const Piece& p = pieces_[k];
+  const double s = (x - knots_[k]) / p.h;
+  return (2.0 * p.c2 + 6.0 * p.c3 * s) / (p.h * p.h);
+}
+
+double MonotoneCubic::integral(double x) const {
+  const std::size_t k = piece(x);
+  const Piece& p = pieces_[k];
+  const double s = (x - knots_[k]) / p.h;
+  return p.integral_before + p.h * s * (p.y + s * (p.c1 / 2.0 + s * (p.c2 / 3.0 + s * p.c3 / 4.0)));
+}
+
+}  // namespace mdrsim

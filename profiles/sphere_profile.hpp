@@ -1,0 +1,28 @@
+// The exact spherical cap f(r) = R - sqrt(R^2 - r^2) and its MDR image g(x) = x artanh(x/R).
+#pragma once
+
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+/// A rigid sphere of radius R. Its tip is the parabola r^2/(2R), so the JKR scales of that
+/// parabola apply (dimensionless output); it departs from the parabola as a/R grows, and
+/// ends at r = R, where its image diverges.
+class SphereProfile final : public Profile {
+ public:
+  explicit SphereProfile(double radius);
+
+  /// R - sqrt(R^2 - r^2) for r <= R; +infinity beyond (nothing outside the sphere touches).
+  double shape(double radius) const override;
+  /// Eq. 4 with f' = r/sqrt(R^2 - r^2): g = (x/2) ln((R + x)/(R - x)) = x artanh(x/R), x < R.
+  double mdr_image(double x) const override;
+  double mdr_image_slope(double x) const override;
+  double nonadhesive_force_per_modulus(double contact_radius) const override;
+  double outer_radius() const override { return radius_; }
+  std::optional<double> jkr_scale_radius() const override { return radius_; }
+
+ private:
+  double radius_;  ///< R [m]
+};
+
+}  // namespace mdrsim
