@@ -2,6 +2,7 @@
 # Installs the Debian 12 packages mdrsim needs to build, test and draw the paper's figures.
 # Idempotent: when every package is already installed it only runs dpkg -s and exits,
 # so the test and reproduce scripts can call it every time at no cost.
+# `setup.sh fuzz` adds clang and its compiler-rt (libFuzzer, sanitizers) for scripts/fuzz.sh.
 set -euo pipefail
 
 packages=(
@@ -10,6 +11,9 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   python3-matplotlib python3-numpy
 )
+if [ "${1:-}" = "fuzz" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,15 +1,59 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything with warnings as errors and runs the test suite.
-# Exit code: ctest's (0 when every test passes). Works from any directory.
-# BUILD_DIR overrides the build directory (default: build).
+# The whole test suite, as CI runs it (.ci/run), in three stages:
+#   1. build (Release, warnings as errors) and run every test with ctest;
+#   2. build again with clang, AddressSanitizer + UndefinedBehaviorSanitizer (leak checks on)
+#      and run the same tests there, except the 10^7-spring case (EdgeCasesLarge: minutes under
+#      ASan);
+#   3. fuzz the scene reader and the engine for FUZZ_SECONDS (default 60, scripts/fuzz.sh) with
+#      the libFuzzer target of that same build.
+# `bash scripts/test.sh --quick` runs stage 1 only. Installs what is missing first.
+# Exit code: 0 when every stage passes. Works from any directory.
+# BUILD_DIR and FUZZ_BUILD_DIR move the two build directories (default: build, build-fuzz).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+quick=0
+case "${1:-}" in
+  "") ;;
+  --quick) quick=1 ;;
+  *) echo "usage: bash scripts/test.sh [--quick]" >&2; exit 2 ;;
+esac
 build_dir="${BUILD_DIR:-build}"
+sanitize_dir="${FUZZ_BUILD_DIR:-build-fuzz}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+logs="$(mktemp -d)"
+trap 'rm -rf "$logs"' EXIT
+stage() { echo "=== test.sh: $* ($(date -u +%H:%M:%S))" >&2; }
+# ctest's closing line "N% tests passed, F tests failed out of T", added over the stages.
+totals() {
+  cat "$logs"/*.log | sed -n 's/.* \([0-9][0-9]*\) tests failed out of \([0-9][0-9]*\).*/\1 \2/p' |
+    awk '{f += $1; t += $2} END {printf "%d passed, %d failed\n", t - f, f}'
+}
 
-bash scripts/setup.sh
+if [ "$quick" -eq 1 ]; then bash scripts/setup.sh; else bash scripts/setup.sh fuzz; fi
+
+stage "1/3 build and test ($build_dir)"
 BUILD_DIR="$build_dir" bash scripts/build.sh
+ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" | tee "$logs/1.log"
+if [ "$quick" -eq 1 ]; then
+  echo "tests: $(totals)"
+  exit 0
+fi
 
-status=0
-ctest --test-dir "$build_dir" --output-on-failure -j2 || status=$?
-exit "$status"
+stage "2/3 build and test under AddressSanitizer and UndefinedBehaviorSanitizer ($sanitize_dir)"
+# The configuration of scripts/fuzz.sh, so that stage 3 reuses this build: the coverage
+# instrumentation it adds (fuzzer-no-link) does not change what the tests check.
+cmake -S . -B "$sanitize_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DMDRSIM_WERROR=ON -DMDRSIM_SANITIZE=fuzzer-no-link,address,undefined -DMDRSIM_BUILD_FUZZ=ON
+cmake --build "$sanitize_dir" -j"$jobs"
+# Any report aborts the test that caused it (-fno-sanitize-recover=all, abort_on_error); the
+# tests run the mdrsim binary too, which inherits these options.
+ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1" \
+UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+  ctest --test-dir "$sanitize_dir" --output-on-failure -j"$jobs" -E '^EdgeCasesLarge\.' |
+  tee "$logs/2.log"
+
+stage "3/3 fuzz for ${FUZZ_SECONDS:-60} s"
+FUZZ_BUILD_DIR="$sanitize_dir" bash scripts/fuzz.sh "${FUZZ_SECONDS:-60}"
+stage "all stages passed"
+echo "tests: $(totals)"  # normal and sanitizer builds together
