@@ -25,7 +25,7 @@ double root_between(Fn fn, double lo, double hi) {
 double stretch(double a, double u, double gamma) { return std::sqrt(16.0 * a - gamma * u * u); }
 
 CriticalPoint point_at(double a, double u, double gamma) {
-  return {a, indentation(a, u, gamma), normal_force(a, u, gamma), tangential_force(a, u, gamma)};
+  return {a, indentation(a, u, gamma), normal_force(a, u, gamma), tangential_force(a, u, gamma), u};
 }
 
 /// Smallest power of two times `start` at which fn turns positive.
@@ -86,6 +86,69 @@ CriticalPoint compliant_critical(double stiffness, double u, double gamma) {
 
 double fixed_grips_master_curve(double fx, double gamma) {
   return fx * fx / (4.0 * gamma) - 5.0 / 9.0;
+}
+
+// ---- Tangential force held (fixed load tangentially) ----
+//
+// Eq. 27 solved for u with F_x held: u = 2 F_x/(gamma a). In eq. 25 gamma u^2 = 4 q/a^2 with
+// q = F_x^2/gamma, so with S = sqrt(16 a - 4 q/a^2)
+//   d = 3 a^2 - S,   F_z = (a/2)(d - a^2) = a^3 - a S/2   (eq. 26),
+// real while a^3 >= q/4: below that the held force alone breaks the boundary spring
+// (eq. 20 with u_z = 0; in SI units F_x^2 = 8 pi G* a^3 dgamma). The force held makes u grow
+// as the contact shrinks, so S' = (8 + 4 q/a^3)/S has an extra term against eq. 25's 8/S.
+//
+// Fixed load normally, dF_z/da = 0: 3 a^2 - S/2 - a S'/2 = 0. Times 2 S:
+//   6 a^2 S = S^2 + 8 a + 4 q/a^2 = 24 a,   so S = 4/a,
+// and S^2 = 16/a^2 = 16 a - 4 q/a^2 gives a^3 = 1 + q/4, then F_z = a^3 - 2 = q/4 - 1 and
+// d = 3 a^2 - 4/a. So F_z = F_x^2/(4 gamma) - 1: JKR's -1 shifted by the same term as the
+// paper's eq. 34 shifts -5/9. The fold lies above the shear-off radius for every q
+// (1 + q/4 > q/4), so the held force never shears the contact off before it jumps.
+//
+// Fixed grips normally, dd/da = 0: 6 a = S', i.e. 6 a S = 8 + 4 q/a^3. Both sides are
+// positive, so squaring loses nothing: 36 a^2 (16 a - 4 q/a^2) = (8 + 4 q/a^3)^2, and with
+// t = a^3 (times t^2/16)
+//   36 t^3 - (9 q + 4) t^2 - 4 q t - q^2 = 0.
+// Its coefficients change sign once: one positive root (Descartes). Divided by t^2 it reads
+// 36 t - (9 q + 4) - 4 q/t - q^2/t^2, increasing in t, and equal to -36 at the shear-off
+// radius t = q/4: the root lies above it. At the fold a S = (8 + 4 q/t)/6, so
+//   F_z = t - 2/3 - q/(3 t),   d = 3 a^2 - (8 + 4 q/t)/(6 a).
+// Checks: q = 0 gives t = 1/9, F_z = -5/9 (eq. 33); for q -> infinity t = q/4 + 1 + O(1/q)
+// and F_z -> q/4 - 1: with the force held the fixed-grips curve joins the fixed-load one.
+
+double indentation_at_tangential_force(double a, double fx, double gamma) {
+  return indentation(a, 2.0 * fx / (gamma * a), gamma);
+}
+
+double normal_force_at_tangential_force(double a, double fx, double gamma) {
+  return normal_force(a, 2.0 * fx / (gamma * a), gamma);
+}
+
+double shear_off_radius(double fx, double gamma) { return std::cbrt(fx * fx / (4.0 * gamma)); }
+
+CriticalPoint fixed_grips_critical_at_tangential_force(double fx, double gamma) {
+  const double q = fx * fx / gamma;
+  const auto cubic_over_t2 = [&](double t) {
+    return 36.0 * t - (9.0 * q + 4.0) - 4.0 * q / t - q * q / (t * t);
+  };
+  const double lo = q > 0.0 ? q / 4.0 : 1.0 / 36.0;  // -36 (q > 0) and -3 (q = 0) there
+  const double t = root_between(cubic_over_t2, lo, upper_bracket(cubic_over_t2, lo + 1.0));
+  const double a = std::cbrt(t);
+  return {a, 3.0 * a * a - (8.0 + 4.0 * q / t) / (6.0 * a), t - 2.0 / 3.0 - q / (3.0 * t), fx,
+          2.0 * fx / (gamma * a)};
+}
+
+CriticalPoint fixed_load_critical_at_tangential_force(double fx, double gamma) {
+  const double q = fx * fx / gamma;
+  const double a = std::cbrt(1.0 + q / 4.0);
+  return {a, 3.0 * a * a - 4.0 / a, q / 4.0 - 1.0, fx, 2.0 * fx / (gamma * a)};
+}
+
+double fixed_grips_master_curve_at_tangential_force(double fx, double gamma) {
+  return fixed_grips_critical_at_tangential_force(fx, gamma).normal_force;
+}
+
+double fixed_load_master_curve_at_tangential_force(double fx, double gamma) {
+  return fx * fx / (4.0 * gamma) - 1.0;
 }
 
 }  // namespace mdrsim::parabolic_reference

@@ -20,6 +20,7 @@ struct CriticalPoint {
   double indentation;
   double normal_force;
   double tangential_force;
+  double tangential_displacement;
 };
 
 /// Fixed grips on both axes: eq. 31 for the radius, eqs. 32-33 for the forces.
@@ -31,5 +32,25 @@ CriticalPoint fixed_load_critical(double u, double gamma = 1.0);
 CriticalPoint compliant_critical(double stiffness, double u = 0.0, double gamma = 1.0);
 /// The fixed-grips master curve F_z(F_x), eq. 34 (eq. 35 at gamma = 1).
 double fixed_grips_master_curve(double tangential_force, double gamma = 1.0);
+
+// Beyond the paper: the tangential force F_x held (fixed load tangentially) instead of the
+// displacement. Eq. 27 gives u = 2 F_x/(gamma a), which changes as the contact shrinks; with
+// q = F_x^2/gamma the branch is d = 3 a^2 - sqrt(16 a - 4 q/a^2), F_z = a^3 - (a/2) sqrt(...).
+// The derivation of the folds is in parabolic_reference.cpp.
+
+/// Indentation and normal force on that branch (eqs. 25-26 with u = 2 F_x/(gamma a)).
+double indentation_at_tangential_force(double a, double fx, double gamma = 1.0);
+double normal_force_at_tangential_force(double a, double fx, double gamma = 1.0);
+/// The radius below which the held force alone breaks the glue, a^3 = F_x^2/(4 gamma)
+/// (F_x^2 = 8 pi G* a^3 dgamma in SI units): the shear-off limit.
+double shear_off_radius(double fx, double gamma = 1.0);
+/// Fixed grips normally: t = a^3 is the one positive root of
+/// 36 t^3 - (9 q + 4) t^2 - 4 q t - q^2 = 0, and F_z = t - 2/3 - q/(3 t).
+CriticalPoint fixed_grips_critical_at_tangential_force(double fx, double gamma = 1.0);
+/// Fixed load normally: a^3 = 1 + q/4 and F_z = q/4 - 1, in closed form.
+CriticalPoint fixed_load_critical_at_tangential_force(double fx, double gamma = 1.0);
+/// The master curves F_z(F_x) of the two normal controls with F_x held.
+double fixed_grips_master_curve_at_tangential_force(double fx, double gamma = 1.0);
+double fixed_load_master_curve_at_tangential_force(double fx, double gamma = 1.0);
 
 }  // namespace mdrsim::parabolic_reference
