@@ -138,12 +138,31 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   const Profile& profile = *scene.profile;
   const double e_star = scene.material.effective_modulus;
   const auto fixed = profile.fixed_contact_radius();
+  // A profile with an edge (a table's last point) reaches only so far; a sphere's image
+  // diverges at its edge instead, so any depth or force is reached inside it.
+  const double edge = profile.outer_radius();
+  const double edge_image = std::isfinite(edge) ? profile.mdr_image(edge) : INFINITY;
   try {
     if (const auto d = t.optional_number({.key = "depth", .help = "[m]", .lower = kPositive})) {
+      if (!fixed && *d > edge_image) {
+        t.fail_range("depth",
+                     fmt::format("= {} is beyond the profile's reach: its image is g = {:.6g} "
+                                 "m at its edge r = {} m",
+                                 *d, edge_image, edge));
+      }
       scene.glued_radius = fixed ? *fixed : profile.contact_radius_at_depth(*d);
       scene.preload_depth = *d;
     } else if (const auto f =
                    t.optional_number({.key = "force", .help = "[N]", .lower = kPositive})) {
+      if (!fixed && std::isfinite(edge_image)) {
+        const double edge_force = e_star * profile.nonadhesive_force_per_modulus(edge);
+        if (*f > edge_force) {
+          t.fail_range("force",
+                       fmt::format("= {} is beyond the profile's reach: {:.6g} N press it in "
+                                   "up to its edge r = {} m",
+                                   *f, edge_force, edge));
+        }
+      }
       const double a = contact_radius_at_force(profile, *f, e_star);
       scene.glued_radius = a;
       // Depth that carries the force over radius a: F = 2 E* (a d - integral_0^a g).
@@ -153,13 +172,17 @@ void resolve_preload(TomlReader& t, Scene& scene) {
     } else {
       const double a = t.number({.key = "contact_radius", .help = "[m]", .lower = kPositive});
       if (fixed && std::abs(a - *fixed) > 1e-12 * *fixed) {
-        t.fail_at("contact_radius", fmt::format("= {} differs from the profile's fixed contact "
-                                                "radius {}",
-                                                a, *fixed));
+        t.fail_range(
+            "contact_radius",
+            fmt::format("= {} differs from the profile's fixed contact radius {}", a, *fixed));
       }
-      if (a > profile.outer_radius()) {
-        t.fail_range("contact_radius", fmt::format("= {} is beyond the profile's edge at {}", a,
-                                                   profile.outer_radius()));
+      if (a > edge) {
+        t.fail_range("contact_radius",
+                     fmt::format("= {} is beyond the profile's edge at {}", a, edge));
+      }
+      if (!std::isfinite(profile.mdr_image(a))) {
+        t.fail_range("contact_radius",
+                     fmt::format("= {} is at the profile's edge, where its image diverges", a));
       }
       scene.glued_radius = a;
       scene.preload_depth = profile.mdr_image(a);

@@ -167,10 +167,11 @@ TabulatedProfile::TabulatedProfile(const ProfileTable& table)
     // Rounding may wiggle a flat image by an ulp; a real decrease is refused.
     if (!values.empty() && g.image < values.back()) {
       if (g.image < values.back() * (1.0 - 1e-12)) {
-        throw std::invalid_argument(fmt::format(
-            "the MDR image g(x) of this table decreases beyond x = {} m, where the gap flattens "
-            "too fast (r f'(r) decreases); end the table before that radius",
-            nodes[values.size() - 1]));
+        throw std::invalid_argument(
+            fmt::format("the MDR image g(x) of this table decreases beyond x = {:.6g} m, where the "
+                        "gap flattens "
+                        "too fast (r f'(r) decreases); end the table before that radius",
+                        nodes[values.size() - 1]));
       }
       values.push_back(values.back());
     } else {

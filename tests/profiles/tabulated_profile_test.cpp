@@ -151,7 +151,7 @@ TEST(TabulatedProfile, RefusesAnImageThatDecreases) {
   t.gaps = {0, 1e-4, 2e-4, 3e-4, 4e-4, 4e-4, 4e-4, 4e-4, 4e-4};
   EXPECT_THROW_MSG(
       TabulatedProfile{t}, std::invalid_argument,
-      "the MDR image g(x) of this table decreases beyond x = 0.00036640625 m, where the gap "
+      "the MDR image g(x) of this table decreases beyond x = 0.000366406 m, where the gap "
       "flattens too fast (r f'(r) decreases); end the table before that radius");
 }
 
