@@ -3,11 +3,13 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 
 #include "controllers/builtin_controllers.hpp"
+#include "engine/boundary_let_go.hpp"
 #include "engine/fold_refinement.hpp"
 #include "engine/methods/event_method.hpp"
 #include "engine/methods/stepping_method.hpp"
@@ -15,9 +17,26 @@
 namespace mdrsim {
 namespace {
 
-std::unique_ptr<PullOffMethod> make_method(const SolverOptions& solver, double preload_control) {
+/// The default stepping increment: 1e-3 of the control's scale, the larger of its value at
+/// the preload and where the first spring lets go; both are 0 for one unstretched spring
+/// under fixed load, where the glued contact's own scale (E* a_g^2 or a_g) stands in.
+double default_step(const Contact& contact, const DetachmentCriterion& criterion) {
+  double scale = std::abs(contact.normal_control());
+  const BoundaryLetGo first = locate_boundary_let_go(contact, criterion);
+  if (first.let_go.kind == LetGo::Kind::at_elongation) {
+    scale = std::max(scale, std::abs(first.normal_control));
+  }
+  if (!(scale > 0.0)) {
+    const double a = contact.foundation().glued_radius();
+    scale = std::abs(contact.normal_control_at(a)) + contact.material().effective_modulus * a * a;
+  }
+  return 1e-3 * scale;
+}
+
+std::unique_ptr<PullOffMethod> make_method(const SolverOptions& solver, const Contact& contact,
+                                           const DetachmentCriterion& criterion) {
   if (solver.method == SolverMethod::event) return std::make_unique<EventMethod>();
-  const double step = solver.step ? *solver.step : 1e-3 * std::abs(preload_control);
+  const double step = solver.step ? *solver.step : default_step(contact, criterion);
   return std::make_unique<SteppingMethod>(step, solver.max_halvings);
 }
 
@@ -62,7 +81,8 @@ RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverL
     observers.emit({.kind = EventKind::tangential_applied, .state = contact.snapshot()});
   }
 
-  const std::unique_ptr<PullOffMethod> method = make_method(scene.solver, contact.normal_control());
+  const std::unique_ptr<PullOffMethod> method =
+      make_method(scene.solver, contact, *scene.criterion);
   RunResult result;
   result.springs = springs;
   result.resolutions = {springs};

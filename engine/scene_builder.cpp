@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/jkr_scales.hpp"
 #include "engine/scene_document_impl.hpp"
 #include "engine/scene_error.hpp"
 #include "engine/toml_reader.hpp"
@@ -227,6 +228,18 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
   if (!std::isfinite(other)) {
     t.fail_range(key, fmt::format("= {} overflows the tangential {} of the glued contact",
                                   axis.held_value, key == "force" ? "displacement" : "force"));
+  }
+  // The dimensionless output divides the held value by F0 or d0 (paper eq. 16).
+  const auto radius = scene.profile->jkr_scale_radius();
+  if (!radius) return;
+  const auto scales =
+      JkrScales::of(*radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
+  if (!scales) return;
+  const double unit = key == "force" ? scales->force : scales->depth;
+  if (!std::isfinite(axis.held_value / unit)) {
+    t.fail_range(key,
+                 fmt::format("= {} overflows {} (the JKR scale is {} {})", axis.held_value,
+                             key == "force" ? "F/F0" : "u/d0", unit, key == "force" ? "N" : "m"));
   }
 }
 

@@ -1,6 +1,8 @@
 // Trial steps on a saved state: restore and halve on a multi-spring detachment, else accept.
 #include "engine/methods/stepping_method.hpp"
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "engine/boundary_let_go.hpp"
@@ -20,8 +22,15 @@ AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriteri
   const bool emit = observers.wants(EventKind::spring_detached);
   double step = step_;
   for (int halvings = 0;; ++halvings) {
-    const bool last_try = halvings >= max_halvings_;
-    contact.set_normal_control(start.normal_control - step);
+    // A step must move the control value, and halving ends where it no longer could: below
+    // the resolution of a double a trial would detach nothing and be accepted forever.
+    double target = start.normal_control - step;
+    if (target == start.normal_control) {
+      target = std::nextafter(start.normal_control, -std::numeric_limits<double>::infinity());
+    }
+    const bool last_try =
+        halvings >= max_halvings_ || start.normal_control - 0.5 * step == start.normal_control;
+    contact.set_normal_control(target);
     pending_.clear();
     AdvanceOutcome out;
     while (contact.springs_in_contact() > 0 && boundary_lets_go_now(contact, criterion)) {

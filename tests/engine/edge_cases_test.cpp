@@ -207,9 +207,6 @@ TEST(FoldUnderSteppingDefaults, StopsAtTheSameSpringAsTheEventMethod) {
 // for fewer halvings, the halving stopping where the control cannot move any more.
 // max_steps = 1e5 here keeps the failure quick.
 TEST(FoldUnderSteppingBelowTheControlResolution, HalvingEndsAtTheFold) {
-  GTEST_SKIP() << "engine bug, reported to the lead (stepping_method.cpp): a halved step below "
-                  "the control value's resolution is accepted with no detachment, so the fold "
-                  "is never passed and the run ends in step-limit";
   for (const char* normal : {"fixed-load", "fixed-grips"}) {
     for (const int max_halvings : {45, 60}) {
       JkrScenario s = scenario(normal, 2000);
@@ -387,8 +384,6 @@ INSTANTIATE_TEST_SUITE_P(EveryPart, FewSprings, ::testing::ValuesIn(few_springs_
 // "the stepping increment must be positive" (mdrsim exits 1, internal error) on a valid scene.
 // Expected: the same instability as the event method, F = -2 E* a_g dl(a_g), within one step.
 TEST(EdgeCases, OneSpringUnderFixedLoadSteppingDefaultStep) {
-  GTEST_SKIP() << "engine bug, reported to the lead (pull_off.cpp make_method): the default "
-                  "step is 1e-3 of the preload control, 0 for one spring under fixed load";
   JkrScenario s = scenario("fixed-load", 1);
   const RunResult event = run_quietly(s.build());
   s.method = "stepping";

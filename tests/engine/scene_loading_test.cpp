@@ -674,8 +674,6 @@ TEST(BadScene, EmptyTextHasNoMaterial) {
 // critical.tangential_force = 1e+308 ... not a finite number") instead of 2. Like the held
 // displacement above, the reader should refuse it, naming the key.
 TEST(BadScene, TangentialForceWhoseDimensionlessValueOverflowsIsRefused) {
-  GTEST_SKIP() << "engine gap, reported to the lead (scene_builder.cpp): the overflow check "
-                  "covers the held displacement, not the held force against F0";
   EXPECT_TRUE(
       starts_with(thrown_message<SceneError>([] {
                     build_scene_text(scene_with(
