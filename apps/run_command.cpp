@@ -43,6 +43,11 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
         "{:.8g}\n",
         c.normal_force / s->force, c.tangential_force / s->force, c.contact_radius / s->radius,
         c.indentation / s->depth, c.tangential_displacement / s->depth);
+  } else if (!scene.profile->jkr_scale_radius()) {
+    fmt::print(out, "dimensionless: not defined for profile \"{}\" (parabolic and sphere only)\n",
+               scene.profile_name);
+  } else {
+    fmt::print(out, "dimensionless: not defined without adhesion (F0 = 0)\n");
   }
   fmt::print(out, "counts: {} events, {} steps, {} halvings; {:.3g} s\n", r.counts.events,
              r.counts.steps, r.counts.halvings, r.wall_time_s);
