@@ -369,6 +369,9 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
        R"(--set: loading.tangential.displacement: expected a number, got string "x")"},
       {"loading.tangential={ control = \"fixed-load\", force = \"x\" }",
        R"(--set: loading.tangential.force: expected a number, got string "x")"},
+      {"loading.tangential={ control = \"fixed-load\", force = 1e308 }",
+       "--set: loading.tangential.force = 1e+308 overflows F/F0 (the JKR scale is "
+       "0.0023561944901923453 N)"},
       {"loading.tangential={ control = \"fixed-grips\", displacement = 0, x = 1 }",
        "--set: loading.tangential.x: unknown key (known: control, displacement, force)"},
       {"loading.normal.control=1", "--set: loading.normal.control: expected a string, got 1"},

@@ -199,13 +199,14 @@ TEST(FoldUnderSteppingDefaults, StopsAtTheSameSpringAsTheEventMethod) {
   }
 }
 
-// The same at max_halvings = 45 and 60 (allowed: 0..60). A halved step smaller than half an ulp
-// of the control value no longer moves it: that trial detaches nothing and is accepted, the
-// base step returns and crosses the fold again, forever. With the default step (1e-3 of the
-// preload value) that starts near 47 halvings; the run then ends only at max_steps with
-// step-limit (about 10 min at the default 1e8 steps). Expected: instability at the fold, as
-// for fewer halvings, the halving stopping where the control cannot move any more.
-// max_steps = 1e5 here keeps the failure quick.
+// The same at max_halvings = 45 and 60 (allowed: 0..60). With the default step (1e-3 of the
+// preload value) the halved step falls below the control value's resolution near 47 halvings:
+// a trial that cannot move the control must not be taken (it would detach nothing, be
+// accepted, and the base step would cross the fold again forever, ending only at max_steps
+// with step-limit, about 10 min at the default 1e8). Expected: instability at the fold, the
+// halving ending where a further halving could not move the control, so the critical point is
+// the event method's to rounding (1e-12 of the control). max_steps = 1e5 keeps a regression
+// quick.
 TEST(FoldUnderSteppingBelowTheControlResolution, HalvingEndsAtTheFold) {
   for (const char* normal : {"fixed-load", "fixed-grips"}) {
     for (const int max_halvings : {45, 60}) {
@@ -380,9 +381,10 @@ INSTANTIATE_TEST_SUITE_P(EveryPart, FewSprings, ::testing::ValuesIn(few_springs_
                          few_springs_name);
 
 // One spring glued at a_g sits at the contact edge with zero stretch: the preload force is 0, so
-// under fixed load the default step, 1e-3 of the preload control, is 0 and the run throws
-// "the stepping increment must be positive" (mdrsim exits 1, internal error) on a valid scene.
-// Expected: the same instability as the event method, F = -2 E* a_g dl(a_g), within one step.
+// under fixed load 1e-3 of the preload control would be a zero step (the engine once threw "the
+// stepping increment must be positive" here, exit 1 on a valid scene). Expected: the same
+// instability as the event method, F = -2 E* a_g dl(a_g), within one default step, which is
+// 1e-3 of that force at most.
 TEST(EdgeCases, OneSpringUnderFixedLoadSteppingDefaultStep) {
   JkrScenario s = scenario("fixed-load", 1);
   const RunResult event = run_quietly(s.build());
@@ -533,7 +535,10 @@ Branch branch_at(double a, double u, double gamma) {
 }
 
 TEST_P(NoShearOffDuringThePullOff, TheFoldComesFirst) {
-  const auto& [normal, tangential, fraction] = GetParam();
+  // Copies, not a structured binding: the lambda below captures them (clang 14 cannot).
+  const std::string normal = std::get<0>(GetParam());
+  const std::string tangential = std::get<1>(GetParam());
+  const double fraction = std::get<2>(GetParam());
   const double gamma = 1.0;  // nu = 0
   const double a_g = 2.0;
   JkrScenario s = scenario(normal, 10000);
