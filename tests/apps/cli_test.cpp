@@ -3,12 +3,15 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -137,6 +140,45 @@ TEST_F(Cli, SceneFileBelowAFile) {
 TEST_F(Cli, EndlessSceneFile) {
   const auto r = run_mdrsim("run /dev/zero");
   EXPECT_TRUE(bad_input(r, "/dev/zero: cannot read the scene file (it is larger than 16 MiB)"));
+}
+
+/// run_mdrsim with the memory of the run bounded (1 GiB of address space; under AddressSanitizer,
+/// which needs its address space, a 1 GiB resident limit), so that a read that never ends fails
+/// in seconds instead of taking the machine's memory.
+CommandResult run_mdrsim_bounded(const std::string& args, const std::string& dir) {
+#if defined(__SANITIZE_ADDRESS__)
+  const std::string limit = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:hard_rss_limit_mb=1024\" ";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  const std::string limit = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:hard_rss_limit_mb=1024\" ";
+#else
+  const std::string limit = "ulimit -v 1048576; ";
+#endif
+#else
+  const std::string limit = "ulimit -v 1048576; ";
+#endif
+  const std::string command = limit +
+                              "cd '" MDRSIM_SOURCE_DIR "' && timeout 120 '" MDRSIM_BINARY "' " +
+                              args + " >'" + dir + "/out' 2>'" + dir + "/err' </dev/null";
+  const int status = std::system(command.c_str());
+  const auto slurp = [](const std::string& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(dir + "/out"),
+          slurp(dir + "/err")};
+}
+
+// A tabulated profile read from an endless device must fail like an endless scene file: at the
+// size limit, with exit code 2, not after the run has taken all memory (it read /dev/zero into
+// one line until allocation failed: 4 GB and 14 s, then "cannot read").
+TEST_F(Cli, TabulatedProfileFromAnEndlessDevice) {
+  GTEST_SKIP() << "engine bug, reported to the lead (profiles/tabulated_profile.cpp): the 64 MiB "
+                  "limit is checked with file_size, which a device does not have";
+  const std::string scene = bad_scene("type = \"parabolic\"\nradius = 0.01",
+                                      "type = \"tabulated\"\nfile = \"/dev/zero\"");
+  const auto r = run_mdrsim_bounded("run " + scene, dir_);
+  EXPECT_TRUE(bad_input(r, scene + ":7:8: profile.file: '/dev/zero' is larger than 64 MiB"));
 }
 
 TEST_F(Cli, TypoInAKey) {
