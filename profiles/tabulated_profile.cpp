@@ -16,8 +16,10 @@
 #include <limits>
 #include <mutex>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 namespace mdrsim {
 namespace {
@@ -98,17 +100,24 @@ std::optional<TableProblem> find_table_problem(const ProfileTable& t) {
 ProfileTable read_profile_table(const std::string& path) {
   const std::string shown = std::filesystem::path(path).lexically_normal().string();
   std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kLargestFile) {
-    throw std::invalid_argument(
-        fmt::format("'{}' is larger than {} MiB", shown, kLargestFile >> 20));
-  }
-  std::ifstream in(path);
-  if (!in || std::filesystem::is_directory(path, ec)) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file || std::filesystem::is_directory(path, ec)) {
     throw std::invalid_argument(fmt::format(
         "cannot read '{}': {}", shown,
         std::filesystem::is_directory(path, ec) ? "it is a directory" : std::strerror(errno)));
   }
+  // Read through a capped buffer, not by the file's size: a device or a pipe has none.
+  std::string content;
+  std::vector<char> chunk(1 << 16);
+  while (file.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || file.gcount() > 0) {
+    content.append(chunk.data(), static_cast<std::size_t>(file.gcount()));
+    if (content.size() > kLargestFile) {
+      throw std::invalid_argument(
+          fmt::format("'{}' is larger than {} MiB", shown, kLargestFile >> 20));
+    }
+  }
+  if (file.bad()) throw std::invalid_argument(fmt::format("cannot read '{}'", shown));
+  std::istringstream in(content);
   ProfileTable table;
   std::string line;
   bool header_allowed = true;
@@ -134,7 +143,6 @@ ProfileTable read_profile_table(const std::string& path) {
     table.gaps.push_back(*f);
     table.lines.push_back(number);
   }
-  if (in.bad()) throw std::invalid_argument(fmt::format("cannot read '{}'", shown));
   return table;
 }
 

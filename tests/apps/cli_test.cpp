@@ -173,8 +173,6 @@ CommandResult run_mdrsim_bounded(const std::string& args, const std::string& dir
 // size limit, with exit code 2, not after the run has taken all memory (it read /dev/zero into
 // one line until allocation failed: 4 GB and 14 s, then "cannot read").
 TEST_F(Cli, TabulatedProfileFromAnEndlessDevice) {
-  GTEST_SKIP() << "engine bug, reported to the lead (profiles/tabulated_profile.cpp): the 64 MiB "
-                  "limit is checked with file_size, which a device does not have";
   const std::string scene = bad_scene("type = \"parabolic\"\nradius = 0.01",
                                       "type = \"tabulated\"\nfile = \"/dev/zero\"");
   const auto r = run_mdrsim_bounded("run " + scene, dir_);
