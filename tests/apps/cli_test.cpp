@@ -147,10 +147,10 @@ TEST_F(Cli, EndlessSceneFile) {
 /// in seconds instead of taking the machine's memory.
 CommandResult run_mdrsim_bounded(const std::string& args, const std::string& dir) {
 #if defined(__SANITIZE_ADDRESS__)
-  const std::string limit = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:hard_rss_limit_mb=1024\" ";
+  const std::string limit = "export ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:hard_rss_limit_mb=1024\"; ";
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-  const std::string limit = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:hard_rss_limit_mb=1024\" ";
+  const std::string limit = "export ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:hard_rss_limit_mb=1024\"; ";
 #else
   const std::string limit = "ulimit -v 1048576; ";
 #endif
@@ -170,8 +170,8 @@ CommandResult run_mdrsim_bounded(const std::string& args, const std::string& dir
 }
 
 // A tabulated profile read from an endless device must fail like an endless scene file: at the
-// size limit, with exit code 2, not after the run has taken all memory (it read /dev/zero into
-// one line until allocation failed: 4 GB and 14 s, then "cannot read").
+// size limit, with exit code 2, not after the run has taken all memory (it once read /dev/zero
+// into one line until allocation failed: 4 GB and 14 s, then "cannot read").
 TEST_F(Cli, TabulatedProfileFromAnEndlessDevice) {
   const std::string scene = bad_scene("type = \"parabolic\"\nradius = 0.01",
                                       "type = \"tabulated\"\nfile = \"/dev/zero\"");
