@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Fuzzes the scene reader and the engine: builds tests/fuzz/scene_fuzz with clang, libFuzzer,
 # AddressSanitizer and UndefinedBehaviorSanitizer, and runs it for SECONDS (default 60) on a
-# corpus seeded from scenes/*.toml and tests/fuzz/seeds/. Exits non-zero on a crash, a leak, a
-# sanitizer report or a timeout; the input that did it is left in $FUZZ_BUILD_DIR/artifacts/
-# and the line to reproduce it is printed. Usage: bash scripts/fuzz.sh [SECONDS]
+# corpus seeded from scenes/*.toml, tests/fuzz/seeds/ and tests/fuzz/regressions/. Exits
+# non-zero on a crash, a leak, a sanitizer report or a timeout; the input that did it is left in
+# $FUZZ_BUILD_DIR/artifacts/ and the line to reproduce it is printed. Copied into
+# tests/fuzz/regressions/, an input becomes a test (tests/engine/fuzz_regressions_test.cpp).
+# Usage: bash scripts/fuzz.sh [SECONDS]
 # FUZZ_BUILD_DIR overrides the build directory (default: build-fuzz). Works from any directory.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -30,11 +32,12 @@ ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" \
 UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
   "$fuzzer" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len=8192 \
   -dict=tests/fuzz/scene.dict -artifact_prefix="$artifacts" -print_final_stats=1 \
-  "$corpus" scenes tests/fuzz/seeds >"$log" 2>&1 || status=$?
+  "$corpus" scenes tests/fuzz/seeds tests/fuzz/regressions >"$log" 2>&1 || status=$?
 if [ "$status" -ne 0 ]; then
   tail -n 80 "$log" >&2
   for f in "$artifacts"*; do
-    [ -e "$f" ] && echo "fuzz: found $f; reproduce with: $fuzzer $f" >&2
+    [ -e "$f" ] && echo "fuzz: found $f; reproduce with: $fuzzer $f;" \
+      "keep it as a test: cp $f tests/fuzz/regressions/NAME.toml" >&2
   done
   echo "fuzz: FAILED (exit $status)" >&2
   exit "$status"
