@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -316,6 +317,11 @@ struct FewSpringsCase {
   std::string normal, tangential, criterion, method;
   std::int64_t springs;
 };
+
+void PrintTo(const FewSpringsCase& c, std::ostream* os) {
+  *os << c.normal << " " << c.tangential << " " << c.criterion << " " << c.method << " "
+      << c.springs;
+}
 
 std::vector<FewSpringsCase> few_springs_cases() {
   const auto registries = mdrsim::Registries::builtin();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -33,6 +34,8 @@ struct DimensionlessScene {
   std::string criterion_extra;
   std::string method = "event";
 };
+
+void PrintTo(const DimensionlessScene& d, std::ostream* os) { *os << d.name; }
 
 std::vector<DimensionlessScene> scenes() {
   return {
