@@ -40,6 +40,13 @@ double invert_increasing(Fn fn, double target, double outer, const char* what) {
   } else if (at_edge < target) {
     throw out_of_reach();
   }
+  // Narrow [0, hi] to [hi/2, hi] by halving: with 0 as an end the relative tolerance below
+  // cannot converge on a tiny root (R = 1e-100 m gives a ~ 1e-37 m).
+  if (lo == 0.0) {
+    for (double half = 0.5 * hi; fn(half) >= target; half *= 0.5)
+      hi = half;  // ends: fn(0) < target
+    lo = 0.5 * hi;
+  }
   std::uintmax_t iterations = 200;
   const auto bracket = boost::math::tools::toms748_solve(
       [&](double x) { return fn(x) - target; }, lo, hi,

@@ -253,10 +253,6 @@ TEST(EdgeCases, SteppingBelowTheControlResolutionEndsAtTheStepLimit) {
 // glued radius must be a = (3 F R/(4 E*))^(1/3) to rounding (1e-12) at any scale where a^3 is a
 // normal double, here R from 1 m to 1e-250 m, E* from 1e3 to 1e12 Pa, F from 1e-9 to 1e3 N.
 TEST(EdgeCases, ForcePreloadAtAbsurdTipRadii) {
-  GTEST_SKIP() << "engine bug, reported to the lead (profiles/profile.cpp invert_increasing): "
-                  "TOMS 748 on [0, 1 m] runs out of its 200 iterations for tiny radii and the "
-                  "unconverged upper end is returned (R = 1e-100 m, F = 0.01 N: a = 1.1e-23 m "
-                  "instead of 2.0e-37 m)";
   for (const double radius : {1.0, 1e-3, 1e-9, 1e-20, 1e-50, 1e-100, 1e-150, 1e-200, 1e-250}) {
     for (const double modulus : {1e3, 1e12}) {
       for (const double force : {1e-9, 1e3}) {

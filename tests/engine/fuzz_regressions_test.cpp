@@ -27,12 +27,7 @@ std::vector<std::string> kept_inputs() {
 
 // Inputs whose fix is pending, with the reason; an entry must go when its test passes.
 const std::map<std::string, std::string>& pending() {
-  static const std::map<std::string, std::string> known = {
-      {"force_preload_tiny_radius.toml",
-       "engine bug, reported to the lead (profiles/profile.cpp invert_increasing): TOMS 748 "
-       "stops after 200 iterations on [0, 1 m] and its unconverged upper end becomes the glued "
-       "radius; see EdgeCases.ForcePreloadAtAbsurdTipRadii"},
-  };
+  static const std::map<std::string, std::string> known = {};
   return known;
 }
 
