@@ -21,10 +21,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const SceneCheck check =
       mdrsim::test::check_scene_text({reinterpret_cast<const char*>(data), size});
   if (check.outcome != SceneCheck::Outcome::broken) return 0;
-  // KNOWN BUG, remove with the skip in tests/engine/fuzz_regressions_test.cpp: the force
-  // preload of a parabola with an absurdly small R is solved to an unconverged radius, and
-  // F/F0 overflows (mdrsim exits 1 with a message).
-  if (check.why.rfind("dimensionless.", 0) == 0) return 0;
   std::fprintf(stderr, "scene_fuzz: broken: %s\n", check.why.c_str());
   __builtin_trap();
 }
