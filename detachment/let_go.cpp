@@ -2,6 +2,7 @@
 #include "detachment/let_go.hpp"
 
 #include <boost/math/tools/roots.hpp>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -25,9 +26,22 @@ LetGo locate_let_go(const DetachmentCriterion& criterion, double a, double ux,
     lo = hi;
     hi *= 2.0;
   }
+  // Margins in units of the one at zero stretch (> 0 here): TOMS 748 interpolates O(1)
+  // values, where raw margins near 1e304 overflowed inside it and gave NaN.
+  const auto relative_margin = [&](double e) { return margin_at(e) / at_zero; };
+  if (!std::isfinite(relative_margin(hi))) {
+    // The margin overflowed at the upper end (E* e^2 beyond a double): bisect on its sign.
+    int halvings = 0;
+    while (hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi && halvings < 2200) {
+      const double mid = 0.5 * (lo + hi);
+      (relative_margin(mid) > 0.0 ? lo : hi) = mid;
+      ++halvings;
+    }
+    return {LetGo::Kind::at_elongation, hi, halvings + doublings};
+  }
   std::uintmax_t iterations = 100;
   const auto bracket = boost::math::tools::toms748_solve(
-      margin_at, lo, hi,
+      relative_margin, lo, hi,
       boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 3),
       iterations);
   // The upper end: the spring surely lets go there (the margin is non-increasing).

@@ -155,6 +155,14 @@ void resolve_preload(TomlReader& t, Scene& scene) {
       scene.preload_depth = *d;
     } else if (const auto f =
                    t.optional_number({.key = "force", .help = "[N]", .lower = kPositive})) {
+      // The dimensionless output divides forces by F0 (paper eq. 16).
+      if (const auto tip = profile.jkr_scale_radius()) {
+        if (const auto scales = JkrScales::of(*tip, e_star, scene.material.work_of_adhesion);
+            scales && !std::isfinite(*f / scales->force)) {
+          t.fail_range("force", fmt::format("= {} overflows F/F0 (the JKR scale is {} N)", *f,
+                                            scales->force));
+        }
+      }
       if (!fixed && std::isfinite(edge_image)) {
         const double edge_force = e_star * profile.nonadhesive_force_per_modulus(edge);
         if (*f > edge_force) {

@@ -275,9 +275,6 @@ TEST(EdgeCases, ForcePreloadAtAbsurdTipRadii) {
 // within a few eps). Also where the margin's own size, 2 pi a dgamma, nears the largest double:
 // dgamma up to 5.1e306 J/m^2 (all values of the run stay finite: F0 = 1.2e308 N).
 TEST(EdgeCases, RootSearchAtHugeWorkOfAdhesion) {
-  GTEST_SKIP() << "engine bug, reported to the lead (detachment/let_go.cpp): with a margin near "
-                  "1e304 TOMS 748 overflows inside its interpolation and returns NaN (found by "
-                  "the fuzzer, tests/fuzz/regressions/root_search_huge_work_of_adhesion.toml)";
   for (const double work : {0.05, 1e100, 1e300, 5.1e306}) {
     const auto scene_text = [&](const char* criterion) {
       return fmt::format(

@@ -27,15 +27,7 @@ std::vector<std::string> kept_inputs() {
 
 // Inputs whose fix is pending, with the reason; an entry must go when its test passes.
 const std::map<std::string, std::string>& pending() {
-  static const std::map<std::string, std::string> known = {
-      {"preload_force_overflows_f0.toml",
-       "engine gap, reported to the lead (scene_builder.cpp): a preload force whose F/F0 "
-       "overflows passes the reader; see BadScene.PreloadForceWhoseDimensionlessValue..."},
-      {"root_search_huge_work_of_adhesion.toml",
-       "engine bug, reported to the lead (detachment/let_go.cpp): TOMS 748 on a margin near "
-       "1e304 overflows inside its interpolation and returns NaN; see "
-       "EdgeCases.RootSearchAtHugeWorkOfAdhesion"},
-  };
+  static const std::map<std::string, std::string> known = {};
   return known;
 }
 

@@ -684,8 +684,6 @@ TEST(BadScene, TangentialForceWhoseDimensionlessValueOverflowsIsRefused) {
 // The same for the preload: a force in range whose F/F0 overflows would give F/F0 = inf in the
 // result (found by the fuzzer; `mdrsim run` exits 1), so the reader refuses it at its key.
 TEST(BadScene, PreloadForceWhoseDimensionlessValueOverflowsIsRefused) {
-  GTEST_SKIP() << "engine gap, reported to the lead (scene_builder.cpp): the F/F0 overflow check "
-                  "covers the held tangential force, not the preload force";
   EXPECT_THROW_MSG(
       build_scene_text(scene_with(kPreload, "preload = { force = 2.1e306 }")), SceneError,
       "test.toml:10:21: loading.preload.force = 2.1e+306 overflows F/F0 (the JKR scale is "
