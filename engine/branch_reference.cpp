@@ -1,26 +1,15 @@
 // The general branch and its folds: closed-form slopes from g'(a), scan and TOMS 748 roots.
 #include "engine/branch_reference.hpp"
 
-#include <boost/math/tools/roots.hpp>
+#include "engine/bracketed_root.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
 
 namespace mdrsim::branch_reference {
-namespace {
-
-template <class Fn>
-double root_between(Fn fn, double lo, double hi) {
-  std::uintmax_t iterations = 300;
-  const auto r = boost::math::tools::toms748_solve(
-      fn, lo, hi,
-      boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 2),
-      iterations);
-  return 0.5 * (r.first + r.second);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 EquilibriumBranch::EquilibriumBranch(const Profile& profile, const Material& material,
                                      TangentialHold tangential)
@@ -111,7 +100,7 @@ std::vector<BranchPoint> EquilibriumBranch::folds(const AffineConstraint& c, dou
       }
     }
     if (std::isfinite(s) && std::isfinite(upper_slope) && (s > 0.0) != (upper_slope > 0.0)) {
-      out.push_back(at(root_between(slope, a, upper)));
+      out.push_back(at(bracketed_root(slope, a, upper)));
     }
     upper = a;
     upper_slope = s;

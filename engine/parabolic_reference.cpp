@@ -1,8 +1,9 @@
 // Closed forms and their critical points; roots by TOMS 748 to full double precision.
 #include "engine/parabolic_reference.hpp"
 
+#include "engine/bracketed_root.hpp"
+
 #include <algorithm>
-#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -10,16 +11,6 @@
 
 namespace mdrsim::parabolic_reference {
 namespace {
-
-template <class Fn>
-double root_between(Fn fn, double lo, double hi) {
-  std::uintmax_t iterations = 300;
-  const auto r = boost::math::tools::toms748_solve(
-      fn, lo, hi,
-      boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 1),
-      iterations);
-  return 0.5 * (r.first + r.second);
-}
 
 /// sqrt(16 a - gamma u^2), the boundary elongation of eq. 25 in units of d0.
 double stretch(double a, double u, double gamma) { return std::sqrt(16.0 * a - gamma * u * u); }
@@ -59,7 +50,7 @@ double normal_force_slope(double a, double u, double gamma) {
 // Eq. 31: a^3 - gamma/16 (u a)^2 - 1/9 = 0, negative from a = 0 up to its one positive root.
 CriticalPoint fixed_grips_critical(double u, double gamma) {
   const auto eq31 = [&](double a) { return a * a * a - gamma / 16.0 * u * u * a * a - 1.0 / 9.0; };
-  const double a = root_between(eq31, 0.0, upper_bracket(eq31, 1.0));
+  const double a = bracketed_root(eq31, 0.0, upper_bracket(eq31, 1.0));
   return point_at(a, u, gamma);
 }
 
@@ -70,7 +61,7 @@ CriticalPoint fixed_load_critical(double u, double gamma) {
     return a * a * std::sqrt(a - a_min) - a + gamma * u * u / 24.0;
   };
   const double lo = a_min > 0.0 ? a_min : 1e-12;
-  const double a = root_between(eq29, lo, upper_bracket(eq29, std::max(1.0, 2.0 * lo)));
+  const double a = bracketed_root(eq29, lo, upper_bracket(eq29, std::max(1.0, 2.0 * lo)));
   return point_at(a, u, gamma);
 }
 
@@ -81,7 +72,7 @@ CriticalPoint compliant_critical(double stiffness, double u, double gamma) {
   const auto fold = [&](double a) {
     return normal_force_slope(a, u, gamma) + stiffness * indentation_slope(a, u, gamma);
   };
-  return point_at(root_between(fold, lo, hi), u, gamma);
+  return point_at(bracketed_root(fold, lo, hi), u, gamma);
 }
 
 double fixed_grips_master_curve(double fx, double gamma) {
@@ -131,7 +122,7 @@ CriticalPoint fixed_grips_critical_at_tangential_force(double fx, double gamma) 
     return 36.0 * t - (9.0 * q + 4.0) - 4.0 * q / t - q * q / (t * t);
   };
   const double lo = q > 0.0 ? q / 4.0 : 1.0 / 36.0;  // -36 (q > 0) and -3 (q = 0) there
-  const double t = root_between(cubic_over_t2, lo, upper_bracket(cubic_over_t2, lo + 1.0));
+  const double t = bracketed_root(cubic_over_t2, lo, upper_bracket(cubic_over_t2, lo + 1.0));
   const double a = std::cbrt(t);
   return {a, 3.0 * a * a - (8.0 + 4.0 * q / t) / (6.0 * a), t - 2.0 / 3.0 - q / (3.0 * t), fx,
           2.0 * fx / (gamma * a)};
