@@ -35,13 +35,9 @@ std::string scene_text(const BenchCase& c, const std::string& method, std::int64
   mdrsim::test::JkrScenario s = c.scenario;
   s.method = method;
   s.springs = springs;
+  s.richardson = richardson;
   if (method == "stepping") s.solver_extra = "max_halvings = 30";
-  std::string text = s.toml();
-  if (richardson) {
-    text.replace(text.find("[discretization]\n"), 17,
-                 "[discretization]\nextrapolation = \"richardson\"\n");
-  }
-  return text;
+  return s.toml();
 }
 
 double relative_error(const BenchCase& c, const mdrsim::RunResult& r) {
@@ -78,11 +74,9 @@ struct RtolCheck {
 };
 
 RtolCheck check_rtol(const BenchCase& c, double rtol, int samples) {
-  std::string text = c.scenario.toml();
-  text.replace(text.find("springs = "),
-               text.find('\n', text.find("springs = ")) - text.find("springs = "),
-               fmt::format("rtol = {}", rtol));
-  const mdrsim::Scene scene = mdrsim::test::build_scene_text(text);
+  mdrsim::test::JkrScenario s = c.scenario;
+  s.rtol = rtol;
+  const mdrsim::Scene scene = s.build();
   const mdrsim::RunResult chosen = mdrsim::run_scene(scene, {});
   std::int64_t needed = 0;
   const double lo = 0.25 * static_cast<double>(chosen.springs);

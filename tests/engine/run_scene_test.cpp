@@ -60,10 +60,8 @@ TEST(Richardson, SecondOrderForBothControls) {
         s.normal = normal;
         s.springs = n;
         if (u > 0) s.tangential_displacement = u;
-        std::string text = s.toml();
-        text.replace(text.find("[discretization]\n"), 17,
-                     "[discretization]\nextrapolation = \"richardson\"\n");
-        const auto r = mdrsim::run_scene(mdrsim::test::build_scene_text(text), {});
+        s.richardson = true;
+        const auto r = mdrsim::run_scene(s.build(), {});
         EXPECT_EQ(r.resolutions, (std::vector<std::int64_t>{n, 2 * n}));
         const double error = relative_error(s, r.critical, u);
         const double nn = static_cast<double>(n);
@@ -84,13 +82,8 @@ TEST(Richardson, JkrPullOffToOnePartPerMillion) {
     JkrScenario s;
     s.normal = normal;
     s.springs = 2000;
-    std::string text = s.toml();
-    text.replace(text.find("[discretization]\n"), 17,
-                 "[discretization]\nextrapolation = \"richardson\"\n");
-    EXPECT_LT(
-        relative_error(s, mdrsim::run_scene(mdrsim::test::build_scene_text(text), {}).critical),
-        1e-6)
-        << normal;
+    s.richardson = true;
+    EXPECT_LT(relative_error(s, mdrsim::run_scene(s.build(), {}).critical), 1e-6) << normal;
   }
 }
 
@@ -102,9 +95,8 @@ TEST(Rtol, LandsWithinTheRequestedAccuracy) {
     for (const double rtol : {1e-3, 1e-4}) {
       JkrScenario s;
       s.normal = normal;
-      std::string text = s.toml();
-      text.replace(text.find("springs = 10000"), 15, "rtol = " + std::to_string(rtol));
-      const auto r = mdrsim::run_scene(mdrsim::test::build_scene_text(text), {});
+      s.rtol = rtol;
+      const auto r = mdrsim::run_scene(s.build(), {});
       EXPECT_LE(relative_error(s, r.critical), rtol) << normal << " " << rtol;
       if (std::string(normal) == "fixed-load") {
         EXPECT_LE(r.springs, 2.0 * 1.5 / rtol) << rtol;
@@ -121,11 +113,9 @@ TEST(Rtol, ExclusiveWithSpringsAndExtrapolationNeedsTheEventMethod) {
   EXPECT_THROW_MSG(mdrsim::test::build_scene_text(both), mdrsim::SceneError,
                    "test.toml:16:8: discretization.rtol: give springs or rtol, not both");
   s.method = "stepping";
-  std::string stepping = s.toml();
-  stepping.replace(stepping.find("[discretization]\n"), 17,
-                   "[discretization]\nextrapolation = \"richardson\"\n");
+  s.richardson = true;
   EXPECT_THROW_MSG(
-      mdrsim::test::build_scene_text(stepping), mdrsim::SceneError,
+      s.build(), mdrsim::SceneError,
       "test.toml:15:17: discretization.extrapolation: richardson needs solver.method = "
       "\"event\"");
 }

@@ -31,7 +31,9 @@ std::string JkrScenario::toml() const {
                         *tangential_force * s.force);
   }
   text += fmt::format("[detachment]\ncriterion = \"{}\"\n{}\n", criterion, criterion_extra);
-  text += fmt::format("[discretization]\nsprings = {}\n", springs);
+  text += "[discretization]\n";
+  if (richardson) text += "extrapolation = \"richardson\"\n";
+  text += rtol ? fmt::format("rtol = {:.17g}\n", *rtol) : fmt::format("springs = {}\n", springs);
   text += fmt::format("[solver]\nmethod = \"{}\"\n{}\n", method, solver_extra);
   return text;
 }

@@ -18,8 +18,10 @@ struct JkrScenario {
   std::string normal = "fixed-load";
   std::string normal_extra;  ///< more keys of the normal table, e.g. "stiffness = 2.0"
   std::int64_t springs = 10000;
-  double glued_radius = 2.0;  ///< in a0
-  double radius = 0.01;       ///< R [m]
+  std::optional<double> rtol;  ///< written instead of springs when set
+  bool richardson = false;     ///< discretization.extrapolation = "richardson"
+  double glued_radius = 2.0;   ///< in a0
+  double radius = 0.01;        ///< R [m]
   double youngs_modulus = 1e6;
   double poisson_ratio = 0.0;
   double work_of_adhesion = 0.05;
