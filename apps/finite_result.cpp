@@ -12,26 +12,34 @@
 namespace mdrsim::cli {
 
 void require_finite(const Scene& scene, const RunResult& result) {
-  const ContactSnapshot& c = result.critical;
-  const std::pair<const char*, double> values[] = {
-      {"normal_force", c.normal_force},
-      {"tangential_force", c.tangential_force},
-      {"contact_radius", c.contact_radius},
-      {"indentation", c.indentation},
-      {"tangential_displacement", c.tangential_displacement}};
   const auto s = dimensionless_scales(scene);
-  const double scale[] = {s ? s->force : 1.0, s ? s->force : 1.0, s ? s->radius : 1.0,
-                          s ? s->depth : 1.0, s ? s->depth : 1.0};
-  for (std::size_t i = 0; i < std::size(values); ++i) {
-    const auto& [name, value] = values[i];
-    const bool finite = std::isfinite(value) && (!s || std::isfinite(value / scale[i]));
-    if (!finite) {
-      throw std::runtime_error(fmt::format(
-          "the run gave critical.{} = {}{}, not a finite number; the scene's values may be too "
-          "extreme for double precision",
-          name, value, s ? fmt::format(" (dimensionless scale {})", scale[i]) : std::string()));
-    }
+  const auto check = [&](const char* what, const char* name, double value, double scale) {
+    if (std::isfinite(value) && (!s || std::isfinite(value / scale))) return;
+    throw std::runtime_error(fmt::format(
+        "the run gave {}.{} = {}{}, not a finite number; the scene's values may be too "
+        "extreme for double precision",
+        what, name, value, s ? fmt::format(" (dimensionless scale {})", scale) : std::string()));
+  };
+  const double force = s ? s->force : 1.0, radius = s ? s->radius : 1.0, depth = s ? s->depth : 1.0;
+  for (const auto& [what, snapshot] :
+       {std::pair{"critical", &result.critical}, std::pair{"peak_adhesion", &result.peak}}) {
+    if (!*snapshot) continue;
+    const ContactSnapshot& c = **snapshot;
+    check(what, "normal_force", c.normal_force, force);
+    check(what, "tangential_force", c.tangential_force, force);
+    check(what, "contact_radius", c.contact_radius, radius);
+    check(what, "indentation", c.indentation, depth);
+    check(what, "tangential_displacement", c.tangential_displacement, depth);
   }
+  if (result.tangential_strength) {
+    check("result", "tangential_strength", *result.tangential_strength, force);
+  }
+  const Accuracy& a = result.accuracy;
+  if (a.critical_error_estimate) {
+    check("accuracy", "critical_error_estimate", *a.critical_error_estimate, force);
+  }
+  if (a.peak_error_estimate)
+    check("accuracy", "peak_error_estimate", *a.peak_error_estimate, force);
 }
 
 }  // namespace mdrsim::cli

@@ -1,11 +1,14 @@
 // mdrsim run: one pull-off, its JSON result, trajectory and a short summary.
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "apps/commands.hpp"
 #include "apps/finite_result.hpp"
@@ -20,34 +23,77 @@
 namespace mdrsim::cli {
 namespace {
 
+/// Why a run has no critical point, in the words of its status.
+const char* missing_critical(const RunResult& r) {
+  switch (r.status) {
+    case RunStatus::no_instability:
+      return "none: the contact peeled off smoothly, nothing jumped";
+    case RunStatus::shear_off:
+      return "none: the tangential load broke the glue as it was applied";
+    case RunStatus::step_limit:
+      return "none: the stepping method reached solver.max_steps first";
+    case RunStatus::instability:
+      break;
+  }
+  return "none";
+}
+
+void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
+  const Accuracy& a = r.accuracy;
+  if (!scene.discretization.rtol && !a.critical_error_estimate) return;
+  std::string line =
+      a.route == Accuracy::Route::richardson ? "richardson over rows of " : "plain row; rows of ";
+  line += fmt::format("{} springs across {:.6g} m", fmt::join(a.rows, ", "), a.outer_radius);
+  if (a.critical_error_estimate && r.critical) {
+    line += fmt::format("; critical force error estimate {:.3g} N ({:.3g} relative)",
+                        *a.critical_error_estimate,
+                        *a.critical_error_estimate / std::abs(r.critical->normal_force));
+  }
+  if (scene.discretization.rtol) {
+    line += fmt::format("; rtol {} {}", *scene.discretization.rtol, a.rtol_met ? "met" : "NOT met");
+  }
+  fmt::print(out, "accuracy: {}\n", line);
+}
+
 /// The human summary; on standard error when standard output carries the trajectory CSV.
 void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
-  const ContactSnapshot& c = r.critical;
   fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
              to_string(r.status), scene.normal.control,
              scene.tangential ? scene.tangential->control : "fixed-grips", scene.criterion_name,
              r.springs);
-  if (r.resolutions.size() == 2) {
-    fmt::print(out, "extrapolated: richardson over rows of {} and {} springs\n", r.resolutions[0],
-               r.resolutions[1]);
-  }
-  fmt::print(out,
-             "critical: F = {:.8g} N, Fx = {:.8g} N, a = {:.8g} m, d = {:.8g} m, ux = {:.8g} m, {} "
-             "springs in contact\n",
-             c.normal_force, c.tangential_force, c.contact_radius, c.indentation,
-             c.tangential_displacement, c.springs_in_contact);
-  if (const auto s = dimensionless_scales(scene)) {
-    fmt::print(
-        out,
-        "dimensionless: F/F0 = {:.8g}, Fx/F0 = {:.8g}, a/a0 = {:.8g}, d/d0 = {:.8g}, ux/d0 = "
-        "{:.8g}\n",
-        c.normal_force / s->force, c.tangential_force / s->force, c.contact_radius / s->radius,
-        c.indentation / s->depth, c.tangential_displacement / s->depth);
-  } else if (!scene.profile->jkr_scale_radius()) {
-    fmt::print(out, "dimensionless: not defined for profile \"{}\" (parabolic and sphere only)\n",
-               scene.profile_name);
+  print_accuracy(out, scene, r);
+  const auto s = dimensionless_scales(scene);
+  if (r.critical) {
+    const ContactSnapshot& c = *r.critical;
+    fmt::print(out,
+               "critical: F = {:.8g} N, Fx = {:.8g} N, a = {:.8g} m, d = {:.8g} m, ux = {:.8g} m, "
+               "{} springs in contact\n",
+               c.normal_force, c.tangential_force, c.contact_radius, c.indentation,
+               c.tangential_displacement, c.springs_in_contact);
+    if (s) {
+      fmt::print(out,
+                 "dimensionless: F/F0 = {:.8g}, Fx/F0 = {:.8g}, a/a0 = {:.8g}, d/d0 = {:.8g}, "
+                 "ux/d0 = {:.8g}\n",
+                 c.normal_force / s->force, c.tangential_force / s->force,
+                 c.contact_radius / s->radius, c.indentation / s->depth,
+                 c.tangential_displacement / s->depth);
+    } else if (!scene.profile->jkr_scale_radius()) {
+      fmt::print(out, "dimensionless: not defined for profile \"{}\" (parabolic and sphere only)\n",
+                 scene.profile_name);
+    } else {
+      fmt::print(out, "dimensionless: not defined without adhesion (F0 = 0)\n");
+    }
   } else {
-    fmt::print(out, "dimensionless: not defined without adhesion (F0 = 0)\n");
+    fmt::print(out, "critical: {}\n", missing_critical(r));
+  }
+  if (r.peak) {
+    fmt::print(out, "peak adhesion: F = {:.8g} N at a = {:.8g} m, d = {:.8g} m{}\n",
+               r.peak->normal_force, r.peak->contact_radius, r.peak->indentation,
+               s ? fmt::format(" (F/F0 = {:.8g})", r.peak->normal_force / s->force) : "");
+  }
+  if (r.tangential_strength) {
+    fmt::print(out, "tangential strength: Fx = {:.8g} N{}\n", *r.tangential_strength,
+               s ? fmt::format(" (Fx/F0 = {:.8g})", *r.tangential_strength / s->force) : "");
   }
   fmt::print(out, "counts: {} events, {} steps, {} halvings; {:.3g} s\n", r.counts.events,
              r.counts.steps, r.counts.halvings, r.wall_time_s);

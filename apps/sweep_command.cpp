@@ -8,6 +8,8 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <optional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -22,13 +24,20 @@
 namespace mdrsim::cli {
 namespace {
 
+/// A number, or an empty field where the run has none.
+std::string field(const std::optional<double>& value) {
+  return value ? fmt::format("{}", *value) : std::string();
+}
+
+/// The status leads each row, and a run without a critical point leaves the critical columns
+/// empty, so that no plot mistakes it for one.
 void write_csv(std::ostream& out, const VarySpec& vary, const std::vector<Scene>& scenes,
                const std::vector<RunResult>& results) {
   const bool dimensionless = std::any_of(scenes.begin(), scenes.end(), [](const Scene& s) {
     return dimensionless_scales(s).has_value();
   });
   fmt::print(out,
-             "{},status,normal_force,tangential_force,contact_radius,indentation,"
+             "status,{},normal_force,tangential_force,contact_radius,indentation,"
              "tangential_displacement,springs_in_contact",
              vary.key);
   if (dimensionless) {
@@ -37,14 +46,22 @@ void write_csv(std::ostream& out, const VarySpec& vary, const std::vector<Scene>
                "dimensionless_contact_radius,dimensionless_indentation,"
                "dimensionless_tangential_displacement");
   }
-  out << '\n';
+  out << ",peak_normal_force";
+  if (dimensionless) out << ",dimensionless_peak_normal_force";
+  out << ",tangential_strength,critical_error_estimate\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
-    const ContactSnapshot& c = results[i].critical;
-    fmt::print(out, "{},{},{},{},{},{},{},{}", vary.values[i], to_string(results[i].status),
-               c.normal_force, c.tangential_force, c.contact_radius, c.indentation,
-               c.tangential_displacement, c.springs_in_contact);
+    const RunResult& r = results[i];
+    const auto s = dimensionless_scales(scenes[i]);
+    fmt::print(out, "{},{}", to_string(r.status), vary.values[i]);
+    if (const auto& c = r.critical) {
+      fmt::print(out, ",{},{},{},{},{},{}", c->normal_force, c->tangential_force, c->contact_radius,
+                 c->indentation, c->tangential_displacement, c->springs_in_contact);
+    } else {
+      out << ",,,,,,";
+    }
     if (dimensionless) {
-      if (const auto s = dimensionless_scales(scenes[i])) {
+      if (s && r.critical) {
+        const ContactSnapshot& c = *r.critical;
         fmt::print(out, ",{},{},{},{},{}", c.normal_force / s->force, c.tangential_force / s->force,
                    c.contact_radius / s->radius, c.indentation / s->depth,
                    c.tangential_displacement / s->depth);
@@ -52,7 +69,13 @@ void write_csv(std::ostream& out, const VarySpec& vary, const std::vector<Scene>
         out << ",,,,,";
       }
     }
-    out << '\n';
+    out << ',' << (r.peak ? fmt::format("{}", r.peak->normal_force) : std::string());
+    if (dimensionless) {
+      out << ','
+          << (s && r.peak ? fmt::format("{}", r.peak->normal_force / s->force) : std::string());
+    }
+    out << ',' << field(r.tangential_strength) << ',' << field(r.accuracy.critical_error_estimate)
+        << '\n';
   }
 }
 

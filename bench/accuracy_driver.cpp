@@ -41,7 +41,8 @@ std::string scene_text(const BenchCase& c, const std::string& method, std::int64
 }
 
 double relative_error(const BenchCase& c, const mdrsim::RunResult& r) {
-  const double force = r.critical.normal_force / c.scenario.scales().force;
+  if (!r.critical) return INFINITY;
+  const double force = r.critical->normal_force / c.scenario.scales().force;
   return std::abs(force - c.exact_normal_force) / std::abs(c.exact_normal_force);
 }
 
@@ -64,31 +65,21 @@ Row measure(const BenchCase& c, const std::string& method, std::int64_t springs,
           seconds, result.counts};
 }
 
-/// Issue 4 target 5: rtol lands within the accuracy, with at most twice the springs it
-/// needs. "Needs" is the smallest row from which every row up to twice the chosen springs
-/// is within rtol (sampled at `samples` geometric steps from a quarter of the choice):
-/// under fixed grips the plain row's error is a sawtooth, so a single lucky row does not count.
+/// Target 5: rtol lands within the accuracy, and its own estimate bounds the error.
 struct RtolCheck {
-  std::int64_t chosen, needed;
-  double error;
+  std::int64_t springs, events;
+  double error, estimate, seconds;
 };
 
-RtolCheck check_rtol(const BenchCase& c, double rtol, int samples) {
+RtolCheck check_rtol(const BenchCase& c, double rtol) {
   mdrsim::test::JkrScenario s = c.scenario;
   s.rtol = rtol;
   const mdrsim::Scene scene = s.build();
-  const mdrsim::RunResult chosen = mdrsim::run_scene(scene, {});
-  std::int64_t needed = 0;
-  const double lo = 0.25 * static_cast<double>(chosen.springs);
-  const double ratio = std::pow(8.0, 1.0 / samples);
-  double n = lo;
-  for (int i = 0; i <= samples; ++i, n *= ratio) {
-    const auto springs = static_cast<std::int64_t>(n);
-    const double error = relative_error(c, mdrsim::run_pull_off(scene, springs, {}));
-    if (error > rtol) needed = 0;
-    if (error <= rtol && needed == 0) needed = springs;
-  }
-  return {chosen.springs, needed, relative_error(c, chosen)};
+  mdrsim::RunResult r;
+  const double seconds = seconds_per_run([&] { r = mdrsim::run_scene(scene, {}); });
+  const double force = r.critical ? std::abs(r.critical->normal_force) : INFINITY;
+  return {r.springs, r.counts.events, relative_error(c, r),
+          r.accuracy.critical_error_estimate.value_or(INFINITY) / force, seconds};
 }
 
 double peak_rss_mb() {
@@ -234,13 +225,13 @@ int main(int argc, char** argv) {
       fmt::format("4. Fig. 3a sweep, 41 points x 2 controls, 2 threads: {:.3f} s", sweep_seconds));
   for (const BenchCase& c : mdrsim::bench::paper_cases()) {
     if (c.name != "jkr") continue;
-    for (const double rtol : {1e-3, 1e-4, 1e-5}) {
-      const RtolCheck check = check_rtol(c, rtol, full ? 400 : 120);
-      report(
-          check.error <= rtol && check.needed > 0 && check.chosen <= 2 * check.needed,
-          fmt::format("5. {} rtol {}: {} springs, error {:.2e}, needed {} ({:.2f}x)",
-                      c.scenario.normal, rtol, check.chosen, check.error, check.needed,
-                      check.needed > 0 ? static_cast<double>(check.chosen) / check.needed : NAN));
+    for (const double rtol : {1e-3, 1e-4, 1e-5, 1e-6}) {
+      const RtolCheck check = check_rtol(c, rtol);
+      report(check.error <= rtol && check.error <= check.estimate && check.estimate <= rtol,
+             fmt::format("5. {} rtol {}: error {:.2e} <= estimate {:.2e} <= rtol; finest row {} "
+                         "springs, {} events in all, {:.2e} s",
+                         c.scenario.normal, rtol, check.error, check.estimate, check.springs,
+                         check.events, check.seconds));
     }
   }
   fmt::print("rows written to {}\n", out_path);

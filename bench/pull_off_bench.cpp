@@ -26,7 +26,7 @@ void pull_off(benchmark::State& state, std::string normal, std::string method, d
   mdrsim::RunResult result;
   for (auto _ : state) {
     result = mdrsim::run_scene(scene, {});
-    benchmark::DoNotOptimize(result.critical.normal_force);
+    benchmark::DoNotOptimize(result.critical->normal_force);
   }
   const double exact =
       mdrsim::bench::paper_cases()[normal == "fixed-load" ? 0 : 2].exact_normal_force;
@@ -36,7 +36,7 @@ void pull_off(benchmark::State& state, std::string normal, std::string method, d
   state.counters["root_iterations"] = static_cast<double>(result.counts.root_iterations);
   if (normal != "compliant") {
     state.counters["relative_error"] =
-        std::abs(result.critical.normal_force / s.scales().force - exact) / std::abs(exact);
+        std::abs(result.critical->normal_force / s.scales().force - exact) / std::abs(exact);
   }
   state.SetItemsProcessed(state.iterations() * springs);
 }

@@ -43,6 +43,12 @@ class Contact {
   double boundary_image() const { return state_.boundary_image; }  ///< g at the boundary [m]
   /// The normal held value that puts the indenter at `indentation` [m].
   double normal_control_at(double indentation) const;
+  /// The normal force of a saved state, without a snapshot [N].
+  double normal_force_of(const State& state) const;
+  /// The tangential displacement [m] of a contact whose boundary sat at radius `a` [m]:
+  /// the held value under the constraint with the continuum stiffness 2 G* a, so that it
+  /// equals tangential_displacement() at every spring position and is continuous between.
+  double tangential_displacement_at_radius(double a) const;
 
   /// Removes the boundary spring: O(1).
   void detach_boundary_spring();

@@ -1,9 +1,11 @@
-// The pull-off loop: tracks cascades so that the last equilibrium before the jump is the result.
+// The pull-off loop: tracks equilibria and cascades, so that the row's end is told by physics.
 #include "engine/pull_off.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -13,6 +15,7 @@
 #include "engine/fold_refinement.hpp"
 #include "engine/methods/event_method.hpp"
 #include "engine/methods/stepping_method.hpp"
+#include "engine/tangential_strength.hpp"
 
 namespace mdrsim {
 namespace {
@@ -59,6 +62,106 @@ class ProgressLog {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+/// The equilibria of the path as they come, O(1) memory: the last three of the unbroken run
+/// of single let-gos, and the most tensile one with its neighbours.
+class EquilibriumTrack {
+ public:
+  explicit EquilibriumTrack(const Contact& contact) : contact_(&contact) {}
+
+  /// A new equilibrium; `after_jump` when more than one spring left since the previous one.
+  void add(const Contact::State& state, bool after_jump) {
+    if (after_jump || count_ == 0) {
+      run_length_ = 0;
+      run_top_ = state.springs_in_contact;
+    }
+    recent_[2] = recent_[1];
+    recent_[1] = recent_[0];
+    recent_[0] = state;
+    ++run_length_;
+    ++count_;
+    if (peak_waits_for_inner_ && !after_jump) {
+      peak_inner_ = state;
+      peak_waits_for_inner_ = false;
+    }
+    const double force = contact_->normal_force_of(state);
+    last_force_ = force;
+    largest_force_ = std::max(largest_force_, std::abs(force));
+    if (count_ == 1 || force < peak_force_) {
+      peak_force_ = force;
+      peak_ = state;
+      peak_outer_.reset();
+      if (run_length_ >= 2) peak_outer_ = recent_[1];
+      peak_inner_.reset();
+      peak_waits_for_inner_ = true;
+    } else {
+      peak_waits_for_inner_ = false;
+    }
+  }
+
+  bool empty() const { return count_ == 0; }
+  const Contact::State& last() const { return recent_[0]; }
+  /// The k-th equilibrium before the last in the unbroken run (k = 1, 2), if there is one.
+  std::optional<Contact::State> before_last(int k) const {
+    if (run_length_ <= k) return std::nullopt;
+    return recent_[static_cast<std::size_t>(k)];
+  }
+  std::int64_t run_top() const { return run_top_; }
+  double last_force() const { return last_force_; }        ///< [N]
+  double largest_force() const { return largest_force_; }  ///< largest |F| on the path [N]
+  const Contact::State& peak() const { return peak_; }
+  std::optional<Contact::State> peak_outer() const { return peak_outer_; }
+  std::optional<Contact::State> peak_inner() const { return peak_inner_; }
+
+ private:
+  const Contact* contact_;
+  std::array<Contact::State, 3> recent_{};
+  int run_length_ = 0;
+  std::int64_t count_ = 0;
+  std::int64_t run_top_ = 0;
+  Contact::State peak_{};
+  double peak_force_ = 0.0;
+  double last_force_ = 0.0;
+  double largest_force_ = 0.0;
+  std::optional<Contact::State> peak_outer_;
+  std::optional<Contact::State> peak_inner_;
+  bool peak_waits_for_inner_ = false;
+};
+
+/// How the last cascade began: the spring let go at the critical point and the first one
+/// due after it.
+struct CascadeStart {
+  std::int64_t size = 0;  ///< springs detached since the last equilibrium
+  bool by_shear = false;  ///< the first spring due after it was broken at zero stretch
+};
+
+void fill_critical(RunResult& result, const Contact& contact, const DetachmentCriterion& criterion,
+                   const EquilibriumTrack& track) {
+  const Contact::State& critical = track.last();
+  result.critical = contact.snapshot_of(critical);
+  result.stable_run_top = track.run_top();
+  if (const auto outer = track.before_last(1)) {
+    if (result.status == RunStatus::instability) {
+      if (const auto fold = refine_fold(contact, criterion, *outer, critical)) {
+        result.refined_critical = fold->state;
+        result.critical_force_step = fold->normal_force_step;
+      }
+    } else if (const auto outer2 = track.before_last(2)) {
+      result.refined_critical = refine_shear_off(contact, criterion, *outer2, *outer, critical);
+      result.critical_force_step =
+          std::abs(contact.normal_force_of(*outer) - contact.normal_force_of(critical));
+    }
+  }
+  result.peak = contact.snapshot_of(track.peak());
+  result.peak_springs = track.peak().springs_in_contact;
+  if (track.peak().springs_in_contact == critical.springs_in_contact) {
+    // The most tensile equilibrium is the critical one: the force still falls at the end.
+    if (result.refined_critical) result.refined_peak = *result.refined_critical;
+  } else if (track.peak_outer() && track.peak_inner()) {
+    result.refined_peak =
+        refine_peak(contact, *track.peak_outer(), track.peak(), *track.peak_inner());
+  }
+}
+
 }  // namespace
 
 RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
@@ -67,7 +170,26 @@ RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
 
 RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverList& observers) {
   const auto started = std::chrono::steady_clock::now();
-  const SpringFoundation foundation(*scene.profile, scene.glued_radius, springs);
+  RunResult result =
+      run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, observers);
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  emit_closing_events(result, observers);
+  return result;
+}
+
+void emit_closing_events(const RunResult& result, const ObserverList& observers) {
+  if (result.critical) {
+    observers.emit(
+        {.kind = EventKind::instability, .state = *result.critical, .status = result.status});
+  }
+  observers.emit({.kind = EventKind::finished,
+                  .state = result.critical.value_or(ContactSnapshot{}),
+                  .status = result.status});
+}
+
+RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& observers) {
+  const SpringFoundation foundation(*scene.profile, row.outer_radius, row.springs);
   const AffineConstraint tangential_constraint = scene.tangential
                                                      ? scene.tangential->controller->constraint()
                                                      : FixedGripsController().constraint();
@@ -75,23 +197,25 @@ RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverL
                   tangential_constraint);
 
   contact.set_normal_control(contact.normal_control_at(scene.preload_depth));
-  observers.emit({.kind = EventKind::preload_reached, .state = contact.snapshot()});
+  if (!row.zoomed)
+    observers.emit({.kind = EventKind::preload_reached, .state = contact.snapshot()});
   if (scene.tangential) {
     contact.set_tangential_held(scene.tangential->held_value);
-    observers.emit({.kind = EventKind::tangential_applied, .state = contact.snapshot()});
+    if (!row.zoomed) {
+      observers.emit({.kind = EventKind::tangential_applied, .state = contact.snapshot()});
+    }
   }
+  const Contact::State applied = contact.save();
 
   const std::unique_ptr<PullOffMethod> method =
       make_method(scene.solver, contact, *scene.criterion);
   RunResult result;
-  result.springs = springs;
-  result.resolutions = {springs};
-  Contact::State critical = contact.save();
-  std::optional<Contact::State> before_critical;  // the equilibrium before, for the fold
-  std::int64_t cascade_size = 0;                  // springs detached since the last equilibrium
-  bool cascade_by_shear = false;
-  double cascade_stretch = 0.0;
-  ProgressLog progress(springs);
+  result.springs = row.springs;
+  result.accuracy.rows = {row.springs};
+  result.accuracy.outer_radius = row.outer_radius;
+  EquilibriumTrack track(contact);
+  CascadeStart cascade;
+  ProgressLog progress(row.springs);
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
       result.status = RunStatus::step_limit;
@@ -100,42 +224,52 @@ RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverL
     const AdvanceOutcome out = method->advance(contact, *scene.criterion, observers, result.counts);
     progress.tick(contact, result.counts);
     if (out.detached == 0) continue;
-    if (out.equilibrium_before || cascade_size == 0) {
-      if (out.equilibrium_before) {
-        before_critical = critical;
-        critical = *out.equilibrium_before;
-      }
-      cascade_size = 0;
-      cascade_by_shear = out.first_by_shear;
-      cascade_stretch = out.first_stretch;
+    // Broken by the tangential load as it was applied: the state before is no equilibrium.
+    const bool broken_at_start = track.empty() && cascade.size == 0 && out.first_by_shear;
+    if (out.equilibrium_before && !broken_at_start) {
+      track.add(*out.equilibrium_before, cascade.size > 1);
+      cascade = {.size = out.detached, .by_shear = out.detached > 1 && out.second_by_shear};
+    } else {
+      if (cascade.size == 1) cascade.by_shear = out.first_by_shear;
+      cascade.size += out.detached;
     }
-    cascade_size += out.detached;
   }
-  if (contact.springs_in_contact() == 0) {
-    // A last spring that leaves unstretched carries no force: the contact ends smoothly.
-    const bool smooth =
-        cascade_size == 1 && !cascade_by_shear && cascade_stretch <= 1e-9 * foundation.spacing();
-    result.status = cascade_by_shear ? RunStatus::shear_off
-                    : smooth         ? RunStatus::no_instability
+  if (result.status == RunStatus::step_limit) {
+    result.warnings.push_back(fmt::format(
+        "the stepping method reached solver.max_steps = {} before the contact was lost: there is "
+        "no critical point",
+        scene.solver.max_steps));
+    return result;
+  }
+  if (track.empty()) {
+    // Not one equilibrium: the tangential load broke the glue as it was applied.
+    result.status = RunStatus::shear_off;
+    Contact at_application = contact;
+    at_application.restore(applied);
+    result.tangential_strength = tangential_strength(at_application, *scene.criterion);
+    return result;
+  }
+  // The last spring let go on its own, the control still falling, and carried next to no
+  // force: the contact peeled off smoothly to zero force and nothing jumped. (A last spring
+  // that still carries a finite tension jumps off; in the continuum a smooth peel ends at
+  // F -> 0, which the row approaches as x_1 -> 0.)
+  constexpr double kNegligibleForce = 1e-3;  ///< of the largest |F| on the path
+  const bool smooth = cascade.size == 1 && track.last().springs_in_contact == 1 &&
+                      std::abs(track.last_force()) <= kNegligibleForce * track.largest_force();
+  result.status = smooth             ? RunStatus::no_instability
+                  : cascade.by_shear ? RunStatus::shear_off
                                      : RunStatus::instability;
-  } else {
-    critical = contact.save();
-  }
-  result.critical = contact.snapshot_of(critical);
-  if (result.status == RunStatus::instability && scene.solver.method == SolverMethod::event &&
-      before_critical) {
-    if (const auto fold = refine_fold(contact, *scene.criterion, *before_critical, critical)) {
-      result.fold = fold->state;
-      result.fold_force_step = fold->normal_force_step;
+  fill_critical(result, contact, *scene.criterion, track);
+  if (smooth) {
+    result.critical.reset();
+    // A smooth peel ends at F -> 0: a "peak" at the last spring is only that spring's own
+    // tension, which vanishes as the row is refined.
+    if (result.peak_springs == 1) {
+      result.peak.reset();
+      result.refined_peak.reset();
+      result.peak_springs = 0;
     }
   }
-  if (result.status == RunStatus::instability || result.status == RunStatus::shear_off) {
-    observers.emit(
-        {.kind = EventKind::instability, .state = result.critical, .status = result.status});
-  }
-  result.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  observers.emit({.kind = EventKind::finished, .state = result.critical, .status = result.status});
   return result;
 }
 

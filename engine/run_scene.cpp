@@ -1,18 +1,20 @@
-// Resolution choice and extrapolation on top of single pull-off runs.
+// The three ways to run a scene (one row, Richardson, rtol) and the warnings they share.
 #include "engine/run_scene.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
+
+#include "engine/adaptive_resolution.hpp"
+#include "engine/row_sequence.hpp"
 
 namespace mdrsim {
 namespace {
 
-constexpr std::int64_t kPilotSprings = 1024;
-constexpr double kSafety = 1.15;
-constexpr double kMaxSprings = 1e9;
+/// Fewer springs than this in contact at the critical point do not resolve it.
+constexpr std::int64_t kResolvedSprings = 100;
 
 void add_counts(RunCounts& total, const RunCounts& more) {
   total.events += more.events;
@@ -21,86 +23,80 @@ void add_counts(RunCounts& total, const RunCounts& more) {
   total.root_iterations += more.root_iterations;
 }
 
-/// The row's estimate of the continuum critical point: its fold between springs where
-/// there is one, else its last equilibrium.
-const ContactSnapshot& best(const RunResult& r) { return r.fold ? *r.fold : r.critical; }
-
-ContactSnapshot extrapolate(const ContactSnapshot& coarse, const ContactSnapshot& fine) {
-  const auto twice_minus = [](double c, double f) { return 2.0 * f - c; };
-  ContactSnapshot out = fine;
-  out.normal_control = twice_minus(coarse.normal_control, fine.normal_control);
-  out.indentation = twice_minus(coarse.indentation, fine.indentation);
-  out.normal_force = twice_minus(coarse.normal_force, fine.normal_force);
-  out.contact_radius = twice_minus(coarse.contact_radius, fine.contact_radius);
-  out.tangential_displacement =
-      twice_minus(coarse.tangential_displacement, fine.tangential_displacement);
-  out.tangential_force = twice_minus(coarse.tangential_force, fine.tangential_force);
-  return out;
-}
-
-/// Richardson over rows of n and 2n springs; the finer row's status and springs.
-RunResult richardson(const Scene& scene, std::int64_t n, const ObserverList& observers) {
-  const RunResult coarse = run_pull_off(scene, n, ObserverList{});
-  RunResult fine = run_pull_off(scene, 2 * n, observers);
-  add_counts(fine.counts, coarse.counts);
-  fine.resolutions = {n, 2 * n};
-  if (coarse.status == fine.status && coarse.status != RunStatus::step_limit) {
-    fine.critical = extrapolate(best(coarse), best(fine));
+/// Rows of N/2, N and 2N springs across the glued radius; the finest row's events.
+RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
+  const std::int64_t n = scene.springs;
+  RowSequence seq(Target::critical);
+  RunCounts counts;
+  for (const std::int64_t springs : {n / 2, n}) {
+    seq.add(run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, {}));
+    add_counts(counts, seq.last().counts);
   }
-  fine.fold.reset();
-  return fine;
+  seq.add(run_row(scene, {.springs = 2 * n, .outer_radius = scene.glued_radius}, observers));
+  add_counts(counts, seq.last().counts);
+
+  RunResult result = seq.last();
+  result.counts = counts;
+  result.accuracy.route = Accuracy::Route::richardson;
+  result.accuracy.rows = {n / 2, n, 2 * n};
+  if (const auto value = seq.value(Accuracy::Route::richardson)) {
+    result.critical = value;
+    result.accuracy.critical_error_estimate = seq.estimate(Accuracy::Route::richardson);
+  } else if (result.critical) {
+    result.warnings.push_back(fmt::format(
+        "richardson: the rows of {}, {} and {} springs end differently ({}, {}, {}); the finest "
+        "row is reported as it is",
+        n / 2, n, 2 * n, to_string(seq.rows()[0].status), to_string(seq.rows()[1].status),
+        to_string(seq.rows()[2].status)));
+  }
+  const RowSequence peaks(Target::peak, seq.rows());
+  if (const auto value = peaks.value(Accuracy::Route::richardson)) {
+    result.peak = value;
+    result.accuracy.peak_error_estimate = peaks.estimate(Accuracy::Route::richardson);
+  }
+  return result;
 }
 
-std::int64_t clamp_springs(double n) {
-  if (!(n < kMaxSprings)) return static_cast<std::int64_t>(kMaxSprings);
-  return std::max<std::int64_t>(2, static_cast<std::int64_t>(std::ceil(n)));
+void warn_resolution(const Scene& scene, RunResult& result) {
+  if (scene.discretization.rtol) return;  // the zoom resolves the critical point
+  const std::int64_t springs = result.springs;
+  const double glued = scene.glued_radius;
+  if (result.status == RunStatus::no_instability && springs > 1) {
+    result.warnings.push_back(fmt::format(
+        "the contact peeled off down to its last spring (a = {:.6g} m of {:.6g} m, {} springs): "
+        "a fold below it is not resolved; discretization.rtol zooms in on it",
+        glued / static_cast<double>(springs), glued, springs));
+  } else if (result.critical && result.critical->springs_in_contact < kResolvedSprings &&
+             result.critical->springs_in_contact < springs) {
+    result.warnings.push_back(fmt::format(
+        "the critical point has only {} springs in contact (a = {:.6g} m of the glued {:.6g} m, "
+        "{} springs): the row does not resolve it; discretization.rtol zooms in on it",
+        result.critical->springs_in_contact, result.critical->contact_radius, glued, springs));
+  }
 }
 
 }  // namespace
 
-std::int64_t springs_for_rtol(const Scene& scene, double rtol, bool use_richardson,
-                              RunCounts& counts) {
-  const ObserverList quiet;
-  const RunResult r1 = run_pull_off(scene, kPilotSprings, quiet);
-  const RunResult r2 = run_pull_off(scene, 2 * kPilotSprings, quiet);
-  add_counts(counts, r1.counts);
-  add_counts(counts, r2.counts);
-  const double q1 = best(r1).normal_force;
-  const double q2 = best(r2).normal_force;
-  const double limit = 2.0 * q2 - q1;
-  const double scale = std::abs(limit);
-  if (!(scale > 0.0)) return kPilotSprings;
-  if (!use_richardson) {
-    const double smooth = std::abs(q1 - limit) * static_cast<double>(kPilotSprings);
-    const double quantization =
-        r2.fold ? 0.5 * r2.fold_force_step * static_cast<double>(2 * kPilotSprings) : 0.0;
-    return clamp_springs(kSafety * (smooth + quantization) / (rtol * scale));
-  }
-  const RunResult r4 = run_pull_off(scene, 4 * kPilotSprings, quiet);
-  add_counts(counts, r4.counts);
-  const double q4 = best(r4).normal_force;
-  // Successive extrapolations differ by 3/4 of the coarser one's C2/N^2 error.
-  const double c2 = std::abs((2.0 * q2 - q1) - (2.0 * q4 - q2)) * 4.0 / 3.0 *
-                    static_cast<double>(kPilotSprings) * static_cast<double>(kPilotSprings);
-  return clamp_springs(std::sqrt(kSafety * c2 / (rtol * scale)));
-}
-
 RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   const auto started = std::chrono::steady_clock::now();
-  RunCounts pilot;
-  std::int64_t springs = scene.springs;
+  using Extrapolation = DiscretizationOptions::Extrapolation;
+  RunResult result;
   if (scene.discretization.rtol) {
-    springs =
-        springs_for_rtol(scene, *scene.discretization.rtol, scene.discretization.richardson, pilot);
-    spdlog::info("rtol {}: {} springs{}", *scene.discretization.rtol, springs,
-                 scene.discretization.richardson ? " per row (richardson)" : "");
+    std::optional<Accuracy::Route> route;
+    if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;
+    if (scene.discretization.richardson()) route = Accuracy::Route::richardson;
+    result = run_adaptive(scene, *scene.discretization.rtol, route, observers);
+  } else if (scene.discretization.richardson()) {
+    result = run_richardson(scene, observers);
+  } else {
+    result =
+        run_row(scene, {.springs = scene.springs, .outer_radius = scene.glued_radius}, observers);
   }
-  RunResult result = scene.discretization.richardson ? richardson(scene, springs, observers)
-                                                     : run_pull_off(scene, springs, observers);
-  add_counts(result.counts, pilot);
-  result.springs = springs;
+  warn_resolution(scene, result);
+  for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  emit_closing_events(result, observers);
   return result;
 }
 

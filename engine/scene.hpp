@@ -24,12 +24,22 @@ struct SolverOptions {
   std::int64_t max_steps = 100'000'000;
 };
 
+/// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends
+/// are too coarse for their errors to follow C/N.
+inline constexpr std::int64_t kMinRichardsonSprings = 64;
+
 /// How the spring row is chosen and its results combined across resolutions.
 struct DiscretizationOptions {
   /// Requested relative accuracy of the critical force; picks the springs (run_scene.hpp).
   std::optional<double> rtol;
-  /// Report the Richardson extrapolation of the row's fold from N and 2N springs.
-  bool richardson = false;
+  /// `extrapolation`: not given (rtol picks the cheaper route; without rtol, none),
+  /// "none" (the plain row) or "richardson" (across rows of N and 2N springs).
+  enum class Extrapolation { automatic, none, richardson };
+  Extrapolation extrapolation = Extrapolation::automatic;
+  /// The largest row rtol may run before it gives up and says so (not a scene key: a cap
+  /// for harnesses such as the fuzzer).
+  std::int64_t max_row_springs = std::int64_t{1} << 25;
+  bool richardson() const { return extrapolation == Extrapolation::richardson; }
 };
 
 /// One axis of the loading machine: its controller and, on the tangential axis, the value

@@ -341,20 +341,31 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                                          .help = "relative accuracy of the critical force",
                                          .lower = Bound{1e-12, true},
                                          .upper = Bound{0.1, true}});
-    const std::string extrapolation =
-        discretization->name("extrapolation", {"none", "richardson"}, std::string("none"));
-    scene.discretization.richardson = extrapolation == "richardson";
+    using Extrapolation = DiscretizationOptions::Extrapolation;
+    if (discretization->has("extrapolation")) {
+      scene.discretization.extrapolation =
+          discretization->name("extrapolation", {"none", "richardson"}, std::string("none")) ==
+                  "richardson"
+              ? Extrapolation::richardson
+              : Extrapolation::none;
+    }
     if (discretization->has("springs")) {
       scene.springs = discretization->integer({.key = "springs",
                                                .help = "springs across the glued radius",
                                                .lower = Bound{1, true},
                                                .upper = Bound{1e9, true}});
+      if (scene.discretization.richardson() && scene.springs < kMinRichardsonSprings) {
+        discretization->fail_at(
+            "springs", fmt::format("{} springs are too few to extrapolate (richardson needs at "
+                                   "least {})",
+                                   scene.springs, kMinRichardsonSprings));
+      }
     }
     discretization->finish();
   }
 
   if (auto solver = root.optional_table("solver")) read_solver(*solver, scene.solver);
-  if (scene.discretization.richardson && scene.solver.method != SolverMethod::event) {
+  if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
   }

@@ -23,7 +23,10 @@ struct AdvanceOutcome {
   /// detachment happened at the control value the contact already had (a cascade goes on).
   std::optional<Contact::State> equilibrium_before;
   bool first_by_shear = false;  ///< the first spring let go at zero elongation (margin < 0)
-  double first_stretch = 0.0;   ///< stretch of the first detached spring at that equilibrium [m]
+  /// The second spring of this advance (the first one due at the same control value) was
+  /// broken at zero elongation: a cascade started by shear, not by a fold.
+  bool second_by_shear = false;
+  double first_stretch = 0.0;  ///< stretch of the first detached spring at that equilibrium [m]
 };
 
 class PullOffMethod {

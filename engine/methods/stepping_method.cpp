@@ -34,9 +34,10 @@ AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriteri
     pending_.clear();
     AdvanceOutcome out;
     while (contact.springs_in_contact() > 0 && boundary_lets_go_now(contact, criterion)) {
-      if (out.detached == 0) {
-        out.first_by_shear = criterion.margin({0.0, contact.tangential_displacement(),
-                                               contact.contact_radius()}) < 0.0;
+      if (out.detached < 2) {
+        const bool by_shear = criterion.margin({0.0, contact.tangential_displacement(),
+                                                contact.contact_radius()}) < 0.0;
+        (out.detached == 0 ? out.first_by_shear : out.second_by_shear) = by_shear;
       }
       if (emit) {
         Event e{.kind = EventKind::spring_detached,

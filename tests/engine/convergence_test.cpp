@@ -20,7 +20,7 @@ double critical_force_error(const std::string& normal, std::int64_t springs, dou
   const auto r = mdrsim::test::run_quietly(s.build());
   const double exact = normal == "fixed-load" ? ref::fixed_load_critical(u).normal_force
                                               : ref::fixed_grips_critical(u).normal_force;
-  return std::abs(r.critical.normal_force / s.scales().force - exact);
+  return std::abs(r.critical->normal_force / s.scales().force - exact);
 }
 
 }  // namespace

@@ -128,7 +128,7 @@ TEST(CriteriaAgree, ModeMixedDeformationAndStressCoincideAtNuZero) {
     s.criterion = criterion;
     s.tangential_displacement = 2.0;
     s.springs = 2000;
-    forces[i++] = mdrsim::test::run_quietly(s.build()).critical.normal_force;
+    forces[i++] = mdrsim::test::run_quietly(s.build()).critical->normal_force;
   }
   EXPECT_DOUBLE_EQ(forces[0], forces[1]);
   EXPECT_DOUBLE_EQ(forces[0], forces[2]);
@@ -150,9 +150,9 @@ TEST(CriteriaAgree, ModeDependentReachesModeMixedAndNormalOnly) {
   const auto at_one = run("mode-dependent", "lambda = 1.0");
   const auto at_zero = run("mode-dependent", "lambda = 0.0");
   EXPECT_GT(at_one.counts.root_iterations, 0);
-  EXPECT_NEAR(at_one.critical.normal_force, mixed.critical.normal_force,
-              1e-12 * std::abs(mixed.critical.normal_force));
-  EXPECT_NEAR(at_zero.critical.normal_force, normal_only.critical.normal_force,
-              1e-12 * std::abs(normal_only.critical.normal_force));
-  EXPECT_NE(mixed.critical.normal_force, normal_only.critical.normal_force);
+  EXPECT_NEAR(at_one.critical->normal_force, mixed.critical->normal_force,
+              1e-12 * std::abs(mixed.critical->normal_force));
+  EXPECT_NEAR(at_zero.critical->normal_force, normal_only.critical->normal_force,
+              1e-12 * std::abs(normal_only.critical->normal_force));
+  EXPECT_NE(mixed.critical->normal_force, normal_only.critical->normal_force);
 }

@@ -50,11 +50,11 @@ TEST_P(SceneAgainstBranch, CriticalForceWithinOnePerMille) {
   const br::Critical want = branch_critical(scene);
   ASSERT_EQ(result.status, RunStatus::instability);
   ASSERT_EQ(want.kind, br::Critical::Kind::fold);
-  const double error = relative_error(result.critical.normal_force, want.point.normal_force);
+  const double error = relative_error(result.critical->normal_force, want.point.normal_force);
   EXPECT_LT(error, 1e-3);
-  EXPECT_LT(relative_error(result.critical.contact_radius, want.point.contact_radius), 1e-3);
+  EXPECT_LT(relative_error(result.critical->contact_radius, want.point.contact_radius), 1e-3);
   std::printf("%-40s simulated %.9e N, branch %.9e N, relative error %.1e\n", GetParam().c_str(),
-              result.critical.normal_force, want.point.normal_force, error);
+              result.critical->normal_force, want.point.normal_force, error);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -81,10 +81,10 @@ TEST(ProfilesPullOff, ConeScenesMatchTheClosedForms) {
     const bool load_control = std::string(name) == "cone_fixed_load.toml";
     const double want = -(load_control ? 54.0 : 6.0) * dg * dg / (kPi * e * t * t * t);
     const auto result = run_quietly(scene);
-    const double error = relative_error(result.critical.normal_force, want);
+    const double error = relative_error(result.critical->normal_force, want);
     EXPECT_LT(error, 1e-3) << name;
     std::printf("%-40s simulated %.9e N, closed form %.9e N, relative error %.1e\n", name,
-                result.critical.normal_force, want, error);
+                result.critical->normal_force, want, error);
   }
 }
 
@@ -105,9 +105,9 @@ TEST(ProfilesPullOff, FlatPunchIsKendallInOneCascade) {
       observers.add(recorder);
       const auto result = mdrsim::run_pull_off(scene, observers);
       EXPECT_EQ(result.status, RunStatus::instability);
-      EXPECT_NEAR(result.critical.normal_force, kendall, 1e-12 * std::abs(kendall)) << name;
-      EXPECT_EQ(result.critical.contact_radius, 1e-4);
-      EXPECT_EQ(result.critical.springs_in_contact, scene.springs);
+      EXPECT_NEAR(result.critical->normal_force, kendall, 1e-12 * std::abs(kendall)) << name;
+      EXPECT_EQ(result.critical->contact_radius, 1e-4);
+      EXPECT_EQ(result.critical->springs_in_contact, scene.springs);
       int equilibria = 0, in_cascade = 0;
       for (const auto& e : recorder.events()) {
         if (e.kind != mdrsim::EventKind::spring_detached) continue;
@@ -139,8 +139,8 @@ TEST(ProfilesPullOff, TablesReproduceTheirAnalyticProfiles) {
     for (const auto& [table, analytic] : pairs) {
       ASSERT_EQ(table.springs, analytic.springs);
       ASSERT_EQ(table.glued_radius, analytic.glued_radius);
-      const double got = run_quietly(table).critical.normal_force;
-      const double want = run_quietly(analytic).critical.normal_force;
+      const double got = run_quietly(table).critical->normal_force;
+      const double want = run_quietly(analytic).critical->normal_force;
       EXPECT_LT(relative_error(got, want), 1e-4) << table.title;
       std::printf("%-55s %.12e N against %.12e N: %.1e\n", table.title.c_str(), got, want,
                   relative_error(got, want));
@@ -178,8 +178,8 @@ TEST(ProfilesPullOff, SphereConvergesToTheParabolaForSmallContacts) {
       }
       previous = difference;
       if (std::string(control) == "fixed-load") {
-        const double simulated = (run_quietly(sphere).critical.normal_force -
-                                  run_quietly(parabola).critical.normal_force) /
+        const double simulated = (run_quietly(sphere).critical->normal_force -
+                                  run_quietly(parabola).critical->normal_force) /
                                  k.force;
         std::printf(" (simulated %.3e)", simulated);
         EXPECT_NEAR(simulated, difference, 0.01 * difference);
@@ -205,8 +205,8 @@ TEST(ProfilesPullOff, SphereDepartsFromTheParabolaForLargeContacts) {
     const Scene parabola = as_parabola.build(mdrsim::Registries::builtin());
     const auto k = *mdrsim::JkrScales::of(1e-3, sphere.material.effective_modulus,
                                           sphere.material.work_of_adhesion);
-    const double fs = run_quietly(sphere).critical.normal_force / k.force;
-    const double fp = run_quietly(parabola).critical.normal_force / k.force;
+    const double fs = run_quietly(sphere).critical->normal_force / k.force;
+    const double fp = run_quietly(parabola).critical->normal_force / k.force;
     EXPECT_GT(fs - fp, std::string(name).find("load") != std::string::npos ? 0.05 : 0.0105) << name;
     std::printf("%-40s F/F0 sphere %.5f, parabola %.5f\n", name, fs, fp);
   }
@@ -222,7 +222,7 @@ TEST(ProfilesPullOff, ConeConvergesAtFirstOrder) {
     auto doc = document("cone_fixed_load.toml");
     doc.set_value("discretization.springs", springs);
     const double error =
-        run_quietly(doc.build(mdrsim::Registries::builtin())).critical.normal_force - want;
+        run_quietly(doc.build(mdrsim::Registries::builtin())).critical->normal_force - want;
     if (previous != 0.0) {
       EXPECT_NEAR(std::log2(previous / error), 1.0, 0.15) << springs;
     }

@@ -21,8 +21,8 @@ struct Dimensionless {
 
 Dimensionless dimensionless(const JkrScenario& s, const RunResult& r) {
   const auto k = s.scales();
-  return {r.critical.normal_force / k.force, r.critical.tangential_force / k.force,
-          r.critical.contact_radius / k.radius, r.critical.indentation / k.depth};
+  return {r.critical->normal_force / k.force, r.critical->tangential_force / k.force,
+          r.critical->contact_radius / k.radius, r.critical->indentation / k.depth};
 }
 
 double gamma_of(double nu) { return (2.0 - 2.0 * nu) / (2.0 - nu); }  // paper eq. 9
@@ -115,22 +115,22 @@ TEST_P(SteppingAgainstEvent, SameCriticalForceWithinTheStepTolerance) {
   const RunResult stepping = mdrsim::run_pull_off(scene, observers);
   ASSERT_EQ(stepping.status, RunStatus::instability);
   EXPECT_GT(stepping.counts.halvings, 0);
-  EXPECT_EQ(stepping.critical.springs_in_contact, event.critical.springs_in_contact);
+  EXPECT_EQ(stepping.critical->springs_in_contact, event.critical->springs_in_contact);
 
   // Default base increment: 1e-3 of the control value at the preload; at the fold it has
   // been halved max_halvings times.
   const double preload_control = recorder.events().front().state.normal_control;
   const double finest = 1e-3 * std::abs(preload_control) * std::ldexp(1.0, -max_halvings);
-  const double above = stepping.critical.normal_control - event.critical.normal_control;
+  const double above = stepping.critical->normal_control - event.critical->normal_control;
   EXPECT_GE(above, -1e-12 * finest);
   EXPECT_LE(above, finest * (1.0 + 1e-9));
   // In force: the control itself under fixed load, the spring row's stiffness times the
   // depth difference under fixed grips.
   const double stiffness = 2.0 * scene.material.effective_modulus * scene.glued_radius /
                            static_cast<double>(scene.springs) *
-                           static_cast<double>(event.critical.springs_in_contact);
+                           static_cast<double>(event.critical->springs_in_contact);
   const double force_tolerance = normal == "fixed-load" ? finest : stiffness * finest;
-  EXPECT_NEAR(stepping.critical.normal_force, event.critical.normal_force,
+  EXPECT_NEAR(stepping.critical->normal_force, event.critical->normal_force,
               force_tolerance * (1.0 + 1e-9) + 1e-15);
 }
 

@@ -20,9 +20,11 @@ double exact_force(const std::string& normal, double u = 0.0) {
                                 : ref::fixed_grips_critical(u).normal_force;
 }
 
-double relative_error(const JkrScenario& s, const mdrsim::ContactSnapshot& c, double u = 0.0) {
+double relative_error(const JkrScenario& s, const std::optional<mdrsim::ContactSnapshot>& c,
+                      double u = 0.0) {
+  if (!c) return INFINITY;
   const double exact = exact_force(s.normal, u);
-  return std::abs(c.normal_force / s.scales().force - exact) / std::abs(exact);
+  return std::abs(c->normal_force / s.scales().force - exact) / std::abs(exact);
 }
 
 }  // namespace
@@ -37,8 +39,9 @@ TEST(FoldRefinement, FixedGripsFoldErrorIsSmoothFirstOrder) {
     s.normal = "fixed-grips";
     s.springs = n;
     const auto r = mdrsim::test::run_quietly(s.build());
-    ASSERT_TRUE(r.fold.has_value()) << n;
-    const double error = r.fold->normal_force / s.scales().force - exact_force(s.normal);
+    ASSERT_TRUE(r.refined_critical.has_value()) << n;
+    const double error =
+        r.refined_critical->normal_force / s.scales().force - exact_force(s.normal);
     if (previous != 0.0) {
       EXPECT_NEAR(std::log2(previous / error), 1.0, 0.1) << n;
     }
@@ -62,7 +65,7 @@ TEST(Richardson, SecondOrderForBothControls) {
         if (u > 0) s.tangential_displacement = u;
         s.richardson = true;
         const auto r = mdrsim::run_scene(s.build(), {});
-        EXPECT_EQ(r.resolutions, (std::vector<std::int64_t>{n, 2 * n}));
+        EXPECT_EQ(r.accuracy.rows, (std::vector<std::int64_t>{n / 2, n, 2 * n}));
         const double error = relative_error(s, r.critical, u);
         const double nn = static_cast<double>(n);
         EXPECT_LT(error, 3.0 / (nn * nn)) << normal << " u " << u << " n " << n;
@@ -87,21 +90,23 @@ TEST(Richardson, JkrPullOffToOnePartPerMillion) {
   }
 }
 
-// rtol picks the springs from the measured convergence and lands inside the accuracy.
-// Under fixed load the error is 1.5/N exactly (Convergence tests), so the springs needed
-// are 1.5/rtol and the choice may not exceed twice that.
+// rtol refines until the a posteriori estimate meets it: the error is within the estimate
+// and the estimate within rtol, for both controls and both routes.
 TEST(Rtol, LandsWithinTheRequestedAccuracy) {
   for (const char* normal : {"fixed-load", "fixed-grips"}) {
-    for (const double rtol : {1e-3, 1e-4}) {
+    for (const double rtol : {1e-3, 1e-4, 1e-6}) {
       JkrScenario s;
       s.normal = normal;
       s.rtol = rtol;
       const auto r = mdrsim::run_scene(s.build(), {});
-      EXPECT_LE(relative_error(s, r.critical), rtol) << normal << " " << rtol;
-      if (std::string(normal) == "fixed-load") {
-        EXPECT_LE(r.springs, 2.0 * 1.5 / rtol) << rtol;
-        EXPECT_GE(r.springs, 1.5 / rtol) << rtol;
-      }
+      const double error = relative_error(s, r.critical);
+      EXPECT_LE(error, rtol) << normal << " " << rtol;
+      ASSERT_TRUE(r.accuracy.critical_error_estimate.has_value());
+      const double estimate =
+          *r.accuracy.critical_error_estimate / std::abs(r.critical->normal_force);
+      EXPECT_LE(error, estimate) << normal << " " << rtol;
+      EXPECT_LE(estimate, rtol) << normal << " " << rtol;
+      EXPECT_TRUE(r.accuracy.rtol_met);
     }
   }
 }

@@ -30,13 +30,13 @@ TEST(RunStatus, NoAdhesionPeelsOffSmoothly) {
     for (const char* method : {"event", "stepping"}) {
       const auto r = run_quietly(mdrsim::test::build_scene_text(without_adhesion(normal, method)));
       EXPECT_EQ(r.status, RunStatus::no_instability) << normal << " " << method;
-      EXPECT_EQ(r.critical.springs_in_contact, 1);
+      EXPECT_EQ(r.critical->springs_in_contact, 1);
       // Against the preload's Hertz force 4 E* a^3/(3R), a = sqrt(R d): zero up to rounding
       // for the event method; stepping's last equilibrium is one base step (1e-3 of the
       // preload control) before the spring leaves, so at most 1e-3 of it.
       const double preload_force = 4.0 / 3.0 * 1e6 * std::pow(1e-5 * 0.01, 1.5) / 0.01;
       const double tolerance = std::string(method) == "event" ? 1e-9 : 1e-3;
-      EXPECT_LE(std::abs(r.critical.normal_force), tolerance * preload_force);
+      EXPECT_LE(std::abs(r.critical->normal_force), tolerance * preload_force);
     }
   }
 }
@@ -50,7 +50,19 @@ TEST(RunStatus, TangentialDisplacementBeyondTheGlueShearsOffAtThePreload) {
   s.tangential_displacement = std::sqrt(32.0) * 1.01;
   const auto off = run_quietly(s.build());
   EXPECT_EQ(off.status, RunStatus::shear_off);
-  EXPECT_EQ(off.critical.springs_in_contact, s.springs);
+  // The requested load was never an equilibrium: no critical point, but the contact's
+  // strength, F_x = sqrt(8 pi G* a^3 dgamma) = sqrt(4 (a/a0)^3) F0 = sqrt(32) F0 (1e-12: a
+  // root search to full precision).
+  EXPECT_FALSE(off.critical.has_value());
+  ASSERT_TRUE(off.tangential_strength.has_value());
+  EXPECT_NEAR(*off.tangential_strength / s.scales().force, std::sqrt(32.0), 1e-12);
+  // With no adhesion the glue has no strength at all (the 1 mN for dgamma = 0).
+  JkrScenario weak = s;
+  weak.work_of_adhesion = 0.0;
+  weak.springs = 200;
+  const auto none = run_quietly(weak.build());
+  EXPECT_EQ(none.status, RunStatus::shear_off);
+  EXPECT_EQ(none.tangential_strength.value_or(-1.0), 0.0);
   s.tangential_displacement = std::sqrt(32.0) * 0.99;
   EXPECT_EQ(run_quietly(s.build()).status, RunStatus::instability);
 }
@@ -81,8 +93,8 @@ TEST(RunStatus, SmallPreloadComesOffAtItsGluedRadius) {
     s.glued_radius = glued;
     const auto r = run_quietly(s.build());
     EXPECT_EQ(r.status, RunStatus::instability);
-    EXPECT_EQ(r.critical.springs_in_contact, s.springs) << normal << " " << glued;
-    EXPECT_NEAR(r.critical.normal_force / s.scales().force, ref::normal_force(glued), 1e-3)
+    EXPECT_EQ(r.critical->springs_in_contact, s.springs) << normal << " " << glued;
+    EXPECT_NEAR(r.critical->normal_force / s.scales().force, ref::normal_force(glued), 1e-3)
         << normal << " " << glued;
   }
 }
@@ -101,10 +113,10 @@ TEST(RunStatus, OneTwoAndThreeSprings) {
       s.springs = n;
       const auto r = run_quietly(s.build());
       EXPECT_EQ(r.status, RunStatus::instability) << normal << " " << n;
-      EXPECT_TRUE(std::isfinite(r.critical.normal_force));
-      EXPECT_GE(r.critical.springs_in_contact, 1);
+      EXPECT_TRUE(std::isfinite(r.critical->normal_force));
+      EXPECT_GE(r.critical->springs_in_contact, 1);
       if (n == 1) {
-        EXPECT_NEAR(r.critical.normal_force, -2.0 * s.youngs_modulus * a * dl, 1e-12);
+        EXPECT_NEAR(r.critical->normal_force, -2.0 * s.youngs_modulus * a * dl, 1e-12);
       }
     }
   }

@@ -78,7 +78,7 @@ TEST_P(TrajectoryOnCurve, EveryEquilibriumEventLiesOnEquations18And19) {
     ++checked;
   }
   // Every spring down to the fold is an equilibrium event, one row each.
-  EXPECT_EQ(checked, s.springs - result.critical.springs_in_contact + 2);
+  EXPECT_EQ(checked, s.springs - result.critical->springs_in_contact + 2);
   EXPECT_LE(worst, 1e-3);
   EXPECT_GT(worst, 0.0);  // the spring row is not the continuum: a zero would mean no check
 }

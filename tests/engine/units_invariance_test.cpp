@@ -90,7 +90,7 @@ Dimensionless run_at(const DimensionlessScene& d, double radius, double modulus,
   }
   const RunResult r = run_quietly(s.build());
   EXPECT_EQ(r.status, mdrsim::RunStatus::instability) << d.name;
-  const auto& c = r.critical;
+  const auto c = r.critical.value_or(mdrsim::ContactSnapshot{});
   return {
       c.normal_force / k.force, c.tangential_force / k.force,        c.contact_radius / k.radius,
       c.indentation / k.depth,  c.tangential_displacement / k.depth, c.springs_in_contact};

@@ -82,14 +82,14 @@ TEST(UserParts, RegisteredCriterionIsUsableFromAScene) {
       replace(s.toml(), "criterion = \"normal-only\"", "criterion = \"scaled-hess\"\nfactor = 1.0"),
       registries));
   EXPECT_GT(user.counts.root_iterations, 0);
-  EXPECT_EQ(user.critical.springs_in_contact, builtin.critical.springs_in_contact);
-  EXPECT_NEAR(user.critical.normal_force, builtin.critical.normal_force,
-              1e-12 * std::abs(builtin.critical.normal_force));
+  EXPECT_EQ(user.critical->springs_in_contact, builtin.critical->springs_in_contact);
+  EXPECT_NEAR(user.critical->normal_force, builtin.critical->normal_force,
+              1e-12 * std::abs(builtin.critical->normal_force));
   // A stronger interface holds on longer and pulls off harder.
   const auto strong = mdrsim::test::run_quietly(build(
       replace(s.toml(), "criterion = \"normal-only\"", "criterion = \"scaled-hess\"\nfactor = 1.5"),
       registries));
-  EXPECT_LT(strong.critical.normal_force, user.critical.normal_force);
+  EXPECT_LT(strong.critical->normal_force, user.critical->normal_force);
 }
 
 // The Profile defaults (root search for the Hertz radius, quadrature for the Hertz force)
@@ -105,8 +105,8 @@ TEST(UserParts, ProfileWithOnlyRequiredOperationsMatchesTheParabola) {
       build(replace(by_force, "type = \"parabolic\"", "type = \"bare-parabola\""), registries);
   EXPECT_NEAR(bare.glued_radius, parabola.glued_radius, 1e-12 * parabola.glued_radius);
   EXPECT_NEAR(bare.preload_depth, parabola.preload_depth, 1e-10 * parabola.preload_depth);
-  EXPECT_NEAR(mdrsim::test::run_quietly(bare).critical.normal_force,
-              mdrsim::test::run_quietly(parabola).critical.normal_force, 1e-9);
+  EXPECT_NEAR(mdrsim::test::run_quietly(bare).critical->normal_force,
+              mdrsim::test::run_quietly(parabola).critical->normal_force, 1e-9);
 }
 
 TEST(UserParts, NamesMustBeUnique) {

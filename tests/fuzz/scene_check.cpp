@@ -53,6 +53,7 @@ SceneCheck check_scene_text(std::string_view text) {
   if (scene.discretization.rtol) {
     scene.discretization.rtol = std::max(*scene.discretization.rtol, kMinRtol);
   }
+  scene.discretization.max_row_springs = kMaxSprings;
   RunResult result;
   try {
     result = run_scene(scene, ObserverList{});
@@ -61,27 +62,45 @@ SceneCheck check_scene_text(std::string_view text) {
     return {Outcome::broken, fmt::format("the run of an accepted scene threw: {}", e.what())};
   }
   // SPEC: numbers are finite. The reader refuses values that overflow the run.
-  const ContactSnapshot& c = result.critical;
-  if (const std::string bad =
-          first_not_finite({{"normal_force", c.normal_force},
-                            {"tangential_force", c.tangential_force},
-                            {"contact_radius", c.contact_radius},
-                            {"indentation", c.indentation},
-                            {"tangential_displacement", c.tangential_displacement}});
-      !bad.empty()) {
-    return {Outcome::broken, "critical." + bad};
-  }
-  // The dimensionless values of the JSON result, as apps/finite_result.cpp checks them.
-  if (const auto s = dimensionless_scales(scene)) {
+  const auto s = dimensionless_scales(scene);
+  for (const auto& [what, snapshot] :
+       {std::pair{"critical", &result.critical}, std::pair{"peak_adhesion", &result.peak}}) {
+    if (!*snapshot) continue;
+    const ContactSnapshot& c = **snapshot;
     if (const std::string bad =
-            first_not_finite({{"normal_force", c.normal_force / s->force},
-                              {"tangential_force", c.tangential_force / s->force},
-                              {"contact_radius", c.contact_radius / s->radius},
-                              {"indentation", c.indentation / s->depth},
-                              {"tangential_displacement", c.tangential_displacement / s->depth}});
+            first_not_finite({{"normal_force", c.normal_force},
+                              {"tangential_force", c.tangential_force},
+                              {"contact_radius", c.contact_radius},
+                              {"indentation", c.indentation},
+                              {"tangential_displacement", c.tangential_displacement}});
         !bad.empty()) {
-      return {Outcome::broken, "dimensionless." + bad};
+      return {Outcome::broken, std::string(what) + "." + bad};
     }
+    // The dimensionless values of the JSON result, as apps/finite_result.cpp checks them.
+    if (s) {
+      if (const std::string bad =
+              first_not_finite({{"normal_force", c.normal_force / s->force},
+                                {"tangential_force", c.tangential_force / s->force},
+                                {"contact_radius", c.contact_radius / s->radius},
+                                {"indentation", c.indentation / s->depth},
+                                {"tangential_displacement", c.tangential_displacement / s->depth}});
+          !bad.empty()) {
+        return {Outcome::broken, std::string(what) + ".dimensionless." + bad};
+      }
+    }
+  }
+  if (const std::string bad = first_not_finite(
+          {{"tangential_strength", result.tangential_strength.value_or(0.0)},
+           {"critical_error_estimate", result.accuracy.critical_error_estimate.value_or(0.0)},
+           {"peak_error_estimate", result.accuracy.peak_error_estimate.value_or(0.0)}});
+      !bad.empty()) {
+    return {Outcome::broken, bad};
+  }
+  // SPEC: an instability has its critical point; a status without one has none.
+  if ((result.status == RunStatus::instability) != result.critical.has_value() &&
+      result.status != RunStatus::shear_off) {
+    return {Outcome::broken, fmt::format("status {} with{} a critical point",
+                                         to_string(result.status), result.critical ? "" : "out")};
   }
   return {Outcome::ran, {}};
 }
