@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "bench/bench_cases.hpp"
 #include "bench/timing.hpp"
 #include "engine/run_scene.hpp"
+#include "tests/support/random_scenes.hpp"
 
 namespace {
 
@@ -80,6 +82,46 @@ RtolCheck check_rtol(const BenchCase& c, double rtol) {
   const double force = r.critical ? std::abs(r.critical->normal_force) : INFINITY;
   return {r.springs, r.counts.events, relative_error(c, r),
           r.accuracy.critical_error_estimate.value_or(INFINITY) / force, seconds};
+}
+
+/// A scene text's run: its result and its own engine time (wall_time_s, best of three).
+mdrsim::RunResult timed_run(const std::string& text, double& seconds) {
+  const mdrsim::Scene scene = mdrsim::test::build_scene_text(text);
+  mdrsim::RunResult r = mdrsim::run_scene(scene, {});
+  seconds = r.wall_time_s;
+  for (int i = 0; i < 2 && r.wall_time_s < 1.0; ++i) {
+    r = mdrsim::run_scene(scene, {});
+    seconds = std::min(seconds, r.wall_time_s);
+  }
+  return r;
+}
+
+std::string cone_text(double theta, const char* normal) {
+  return fmt::format(
+      "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"cone\"\nslope_angle_deg = {}\n[loading]\npreload = {{ "
+      "contact_radius = 1e-4 }}\nnormal = {{ control = \"{}\" }}\n[discretization]\nrtol = "
+      "1e-4\n",
+      theta, normal);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? NAN : v[v.size() / 2];
+}
+
+/// ns per event of an event-method pull-off at 1e6 springs (Fig. 3a scene, u = d0).
+double ns_per_event(const std::string& criterion, const std::string& extra) {
+  mdrsim::test::JkrScenario s;
+  s.normal = "fixed-grips";
+  s.tangential_displacement = 1.0;
+  s.criterion = criterion;
+  s.criterion_extra = extra;
+  s.springs = 1'000'000;
+  const mdrsim::Scene scene = s.build();
+  mdrsim::RunResult r;
+  const double seconds = seconds_per_run([&] { r = mdrsim::run_scene(scene, {}); });
+  return 1e9 * seconds / static_cast<double>(r.counts.events);
 }
 
 double peak_rss_mb() {
@@ -234,6 +276,75 @@ int main(int argc, char** argv) {
                          check.events, check.seconds));
     }
   }
+  // Issue 8: folds far below the glued radius in seconds, not with 1e9 uniform springs.
+  const double e_star = 1e6, dgamma = 0.05;
+  for (const double theta : {45.0, 55.0, 65.0, 75.0, 85.0}) {
+    const double t3 = std::pow(std::tan(theta * std::numbers::pi / 180.0), 3);
+    for (const char* normal : {"fixed-load", "fixed-grips"}) {
+      const double exact = (std::strcmp(normal, "fixed-load") == 0 ? -54.0 : -6.0) * dgamma *
+                           dgamma / (std::numbers::pi * e_star * t3);
+      double seconds = 0.0;
+      const mdrsim::RunResult r = timed_run(cone_text(theta, normal), seconds);
+      const double error = r.critical ? std::abs(r.critical->normal_force / exact - 1.0) : 1.0;
+      report(error <= 1e-4 && seconds < 10.0,
+             fmt::format("6. cone {} deg glued at 0.1 mm, {}, rtol 1e-4: error {:.1e}, fold at "
+                         "{:.1e} of the glued radius, {:.2e} s (< 10 s)",
+                         theta, normal, error, r.critical ? r.critical->contact_radius / 1e-4 : NAN,
+                         seconds));
+    }
+  }
+  for (const BenchCase& c : mdrsim::bench::paper_cases()) {
+    if (c.name != "jkr") continue;
+    mdrsim::test::JkrScenario far = c.scenario;
+    far.glued_radius = 1000.0;
+    far.rtol = 1e-4;
+    double seconds = 0.0;
+    const mdrsim::RunResult r = timed_run(far.toml(), seconds);
+    const double error = relative_error(c, r);
+    report(
+        error <= 1e-4 && seconds < 10.0,
+        fmt::format("6. parabola glued at 1000 a0, {}, rtol 1e-4: error {:.1e}, {:.2e} s (< 10 s)",
+                    c.scenario.normal, error, seconds));
+    mdrsim::test::JkrScenario fig2 = c.scenario;
+    fig2.rtol = 1e-6;
+    const mdrsim::RunResult precise = timed_run(fig2.toml(), seconds);
+    report(relative_error(c, precise) <= 1e-6 && seconds < 1e-3,
+           fmt::format(
+               "6. Fig. 2 {} with rtol = 1e-6 alone: error {:.1e} by {}, engine time "
+               "{:.2e} s (< 1 ms)",
+               c.scenario.normal, relative_error(c, precise),
+               precise.accuracy.route == mdrsim::Accuracy::Route::richardson ? "richardson" : "row",
+               seconds));
+  }
+  // The cost of rtol over the random set of the guarantee test.
+  const auto set = mdrsim::test::random_scenes(20240611, 120);
+  for (const double rtol : {1e-4, 1e-6}) {
+    std::vector<double> times, events;
+    int misses = 0;
+    for (const auto& scene : set) {
+      double seconds = 0.0;
+      const mdrsim::RunResult r = timed_run(
+          scene.toml_without_discretization + fmt::format("[discretization]\nrtol = {}\n", rtol),
+          seconds);
+      times.push_back(seconds);
+      events.push_back(static_cast<double>(r.counts.events));
+      const double exact = scene.reference.point.normal_force;
+      if (!r.critical || std::abs(r.critical->normal_force / exact - 1.0) > rtol) ++misses;
+    }
+    report(misses == 0,
+           fmt::format("7. random set, {} scenes, rtol {}: {} misses; engine time median {:.2e} s, "
+                       "worst {:.2e} s; events median {:.0f}, worst {:.0f}",
+                       set.size(), rtol, misses, median(times),
+                       *std::max_element(times.begin(), times.end()), median(events),
+                       *std::max_element(events.begin(), events.end())));
+  }
+  // mode-dependent against the closed-form criteria, per event.
+  const double mixed = ns_per_event("mode-mixed", "");
+  const double dependent = ns_per_event("mode-dependent", "lambda = 0.5");
+  report(dependent <= 2.0 * mixed,
+         fmt::format("8. per event at 1e6 springs: mode-dependent (lambda 0.5) {:.1f} ns, "
+                     "mode-mixed {:.1f} ns: {:.2f}x (<= 2x)",
+                     dependent, mixed, dependent / mixed));
   fmt::print("rows written to {}\n", out_path);
   return all_met ? 0 : 1;
 }

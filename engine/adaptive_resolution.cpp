@@ -37,9 +37,12 @@ struct Zoom {
   double outer_radius;  ///< [m]
 };
 
-Zoom zoom_onto(const Scene& scene, RunResult row, Target target, RunCounts& counts) {
-  double outer = scene.glued_radius;
+/// The rows of a zoom, outermost first; the last is the one to refine.
+std::vector<Zoom> zoom_onto(const Scene& scene, Zoom start, Target target, RunCounts& counts) {
+  std::vector<Zoom> chain{std::move(start)};
   for (int round = 0; round < 64; ++round) {
+    const RunResult& row = chain.back().row;
+    const double outer = chain.back().outer_radius;
     const std::int64_t k = target_springs(row, target);
     if (k <= 0 || outer <= kZoomFloor * scene.glued_radius) break;
     // A peak before an earlier jump is out of the zoom's reach: the path jumped past it.
@@ -47,7 +50,7 @@ Zoom zoom_onto(const Scene& scene, RunResult row, Target target, RunCounts& coun
     std::int64_t index = std::min(row.stable_run_top, k + std::max<std::int64_t>(4, k / 8));
     // Zoom while it gains at least 1.5x in spacing: the rows' error scales with it.
     if (3 * index > 2 * row.springs) break;
-    bool accepted = false;
+    std::optional<Zoom> accepted;
     while (index < row.springs) {
       const double radius = outer * static_cast<double>(index) / static_cast<double>(row.springs);
       RunResult candidate =
@@ -58,18 +61,17 @@ Zoom zoom_onto(const Scene& scene, RunResult row, Target target, RunCounts& coun
                     candidate.springs, radius, k, index, to_string(candidate.status), found);
       if (found <= 0) break;
       if (found < candidate.springs) {
-        row = std::move(candidate);
-        outer = radius;
-        accepted = true;
+        accepted = Zoom{std::move(candidate), radius};
         break;
       }
-      // The row's first let-go is its critical point: it was glued inside the jump.
+      // The row's first let-go is its target: it was glued inside the jump.
       if (index == row.stable_run_top) break;
       index = std::min(row.stable_run_top, 2 * index);
     }
     if (!accepted) break;
+    chain.push_back(std::move(*accepted));
   }
-  return {std::move(row), outer};
+  return chain;
 }
 
 bool meets(const RowSequence& seq, Accuracy::Route route, double rtol) {
@@ -140,25 +142,36 @@ Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
   return out;
 }
 
-/// Whether every row's peak lies inside it: a zoomed row's outermost let-go is no peak of
-/// the path, which goes on outside it.
-bool peak_inside(const RowSequence& seq, double outer, const Scene& scene) {
-  if (!(outer < scene.glued_radius)) return true;
-  return std::all_of(seq.rows().begin(), seq.rows().end(),
-                     [](const RunResult& r) { return r.peak && r.peak_springs < r.springs; });
+/// Whether a row's peak lies inside it: not at a zoomed row's outermost let-go (the path
+/// goes on outside it) and not the tension of its last spring.
+bool peak_inside(const RunResult& row, bool zoomed) {
+  if (!row.peak || row.peak_springs <= 1) return false;
+  return !zoomed || row.peak_springs < row.springs;
 }
 
 /// The peak adhesive force: from the critical point's rows where it lies inside them, else
-/// from its own zoom and rows.
-void refine_peak(const Scene& scene, const RunResult& pilot, double outer,
+/// zoomed from the deepest row of the critical point's zoom that holds it.
+void refine_peak(const Scene& scene, const std::vector<Zoom>& chain, double outer,
                  const std::vector<RunResult>& rows, double rtol,
                  std::optional<Accuracy::Route> route, RunResult& result, RunCounts& counts) {
+  const bool zoomed = outer < scene.glued_radius;
+  const bool inside = std::all_of(rows.begin(), rows.end(),
+                                  [&](const RunResult& r) { return peak_inside(r, zoomed); });
   RowSequence peak_rows(Target::peak, rows);
   double peak_outer = outer;
-  if (!peak_inside(peak_rows, peak_outer, scene)) {
-    Zoom peak_zoom = zoom_onto(scene, pilot, Target::peak, counts);
-    peak_outer = peak_zoom.outer_radius;
-    peak_rows = RowSequence(Target::peak, {std::move(peak_zoom.row)});
+  if (!inside) {
+    auto holder = chain.rbegin();
+    while (holder != chain.rend() &&
+           !peak_inside(holder->row, holder->outer_radius < scene.glued_radius)) {
+      ++holder;
+    }
+    if (holder == chain.rend()) {
+      result.peak.reset();  // no row holds a peak of the path: none is reported
+      return;
+    }
+    std::vector<Zoom> peak_chain = zoom_onto(scene, *holder, Target::peak, counts);
+    peak_outer = peak_chain.back().outer_radius;
+    peak_rows = RowSequence(Target::peak, {std::move(peak_chain.back().row)});
   }
   const Refined p = refine(scene, std::move(peak_rows), peak_outer, rtol, route, counts);
   result.peak = p.value;
@@ -188,7 +201,9 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
     return pilot;
   }
 
-  Zoom zoom = zoom_onto(scene, pilot, Target::critical, counts);
+  const std::vector<Zoom> chain =
+      zoom_onto(scene, {pilot, scene.glued_radius}, Target::critical, counts);
+  const Zoom& zoom = chain.back();
   RunResult result = zoom.row;
   RowSpec finest{.springs = zoom.row.springs,
                  .outer_radius = zoom.outer_radius,
@@ -214,12 +229,7 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
     }
   }
   result.accuracy.outer_radius = zoom.outer_radius;
-
-  if (!pilot.peak) {
-    result.peak.reset();
-  } else {
-    refine_peak(scene, pilot, zoom.outer_radius, rows, rtol, route, result, counts);
-  }
+  refine_peak(scene, chain, zoom.outer_radius, rows, rtol, route, result, counts);
 
   if (observers.wants(EventKind::spring_detached) || observers.wants(EventKind::step_accepted)) {
     PhaseFilter pull_off_events(observers, PhaseFilter::Phase::pull_off);

@@ -16,9 +16,11 @@
 #include <utility>
 #include <vector>
 
+#include "detachment/mode_mixed_criterion.hpp"
 #include "engine/event_recorder.hpp"
 #include "engine/parabolic_reference.hpp"
 #include "engine/registries.hpp"
+#include "engine/scene_document.hpp"
 #include "tests/support/jkr_scenario.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
@@ -274,12 +276,42 @@ TEST(EdgeCases, ForcePreloadAtAbsurdTipRadii) {
   }
 }
 
-// Without tangential load every criterion reduces to the rule of Hess (eq. 12), so the
-// mode-dependent criterion, whose let-go is root-searched (TOMS 748 on its margin), must give
-// the critical point of mode-mixed, whose let-go is a closed form: to 1e-9 (the search ends
-// within a few eps). Also where the margin's own size, 2 pi a dgamma, nears the largest double:
-// dgamma up to 5.1e306 J/m^2 (all values of the run stay finite: F0 = 1.2e308 N).
+// Without tangential load every criterion reduces to the rule of Hess (eq. 12), so mode-mixed's
+// margin with its let-go root-searched (TOMS 748 on the margin, a test-only criterion) and the
+// mode-dependent criterion (its own let-go table) must give the critical point of mode-mixed,
+// whose let-go is a closed form: to 1e-9 (the search ends within a few eps). Also where the
+// margin's own size, 2 pi a dgamma, nears the largest double: dgamma up to 5.1e306 J/m^2 (all
+// values of the run stay finite: F0 = 1.2e308 N).
+namespace {
+
+/// mode-mixed's margin without its closed form, so that the engine root-finds the let-go
+/// (detachment/let_go.cpp: TOMS 748, and bisection where the margin overflows). mode-dependent
+/// has its own let-go now and no longer exercises that path.
+class MarginOnlyModeMixed : public mdrsim::DetachmentCriterion {
+ public:
+  explicit MarginOnlyModeMixed(const mdrsim::InterfaceProperties& p) : inner_(p) {}
+  double margin(const mdrsim::BoundarySpring& s) const override { return inner_.margin(s); }
+
+ private:
+  mdrsim::ModeMixedCriterion inner_;
+};
+
+mdrsim::Registries with_margin_only_criterion() {
+  auto registries = mdrsim::Registries::builtin();
+  registries.criteria.add(
+      {.name = "margin-only",
+       .summary = "mode-mixed, root-found",
+       .create = [](const mdrsim::ParameterValues&, const mdrsim::InterfaceProperties& p)
+           -> std::unique_ptr<mdrsim::DetachmentCriterion> {
+         return std::make_unique<MarginOnlyModeMixed>(p);
+       }});
+  return registries;
+}
+
+}  // namespace
+
 TEST(EdgeCases, RootSearchAtHugeWorkOfAdhesion) {
+  const mdrsim::Registries registries = with_margin_only_criterion();
   for (const double work : {0.05, 1e100, 1e300, 5.1e306}) {
     const auto scene_text = [&](const char* criterion) {
       return fmt::format(
@@ -290,8 +322,14 @@ TEST(EdgeCases, RootSearchAtHugeWorkOfAdhesion) {
           work, criterion, std::string(criterion) == "mode-dependent" ? "lambda = 0.4\n" : "");
     };
     const RunResult closed = run_quietly(mdrsim::test::build_scene_text(scene_text("mode-mixed")));
-    const RunResult searched =
+    const RunResult dependent =
         run_quietly(mdrsim::test::build_scene_text(scene_text("mode-dependent")));
+    const RunResult searched = run_quietly(
+        mdrsim::SceneDocument::from_text(scene_text("margin-only"), "test.toml").build(registries));
+    EXPECT_GT(searched.counts.root_iterations, 0);
+    EXPECT_EQ(dependent.critical->springs_in_contact, closed.critical->springs_in_contact) << work;
+    EXPECT_NEAR(dependent.critical->normal_force / closed.critical->normal_force, 1.0, 1e-9)
+        << "dgamma = " << work;
     ASSERT_TRUE(std::isfinite(closed.critical->normal_force)) << work;
     EXPECT_EQ(searched.critical->springs_in_contact, closed.critical->springs_in_contact) << work;
     EXPECT_NEAR(searched.critical->normal_force / closed.critical->normal_force, 1.0, 1e-9)

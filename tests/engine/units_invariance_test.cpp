@@ -56,7 +56,7 @@ std::vector<DimensionlessScene> scenes() {
        .poisson_ratio = 0.3,
        .tangential_displacement = 2.5,
        .criterion = "stress"},
-      {.name = "mode-dependent (root search), nu = 0.3",
+      {.name = "mode-dependent, nu = 0.3",
        .normal = "fixed-grips",
        .poisson_ratio = 0.3,
        .tangential_displacement = 2.5,
