@@ -1,0 +1,161 @@
+// What run and sweep print for each status: no critical point that was never an equilibrium.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/run_command.hpp"
+
+using mdrsim::test::run_mdrsim;
+
+namespace {
+
+// JKR: R = 1 cm, E* = 1 MPa, dgamma = 0.05, glued at 2 a0. The glue holds a tangential
+// displacement below sqrt(2 pi a_g dgamma / G*) = 1.28e-5 m at a_g.
+constexpr const char* kScene = R"(
+[material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[loading]
+preload = { contact_radius = 5.209397078678047e-4 }
+tangential = { control = "fixed-grips", displacement = 0.0 }
+normal = { control = "fixed-grips" }
+[discretization]
+springs = 2000
+)";
+
+class ResultOutputs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = mdrsim::test::make_temp_dir();
+    scene_ = dir_ + "/scene.toml";
+    std::ofstream(scene_) << kScene;
+  }
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+  }
+  nlohmann::json run_json(const std::string& sets) {
+    const auto r = run_mdrsim(fmt::format("run {} {} --json - --log-level off", scene_, sets));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  }
+  std::string dir_;
+  std::string scene_;
+};
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> fields;
+    std::string field;
+    std::istringstream cells(line);
+    while (std::getline(cells, field, ',')) fields.push_back(field);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+}  // namespace
+
+// A fixed-grips JKR pull-off: the jump at -5/9 F0, the peak adhesive force -F0 at a0
+// (1.5/N with 2000 springs: within 2e-3).
+TEST_F(ResultOutputs, InstabilityHasItsCriticalPointAndThePeak) {
+  const nlohmann::json j = run_json("");
+  EXPECT_EQ(j["status"], "instability");
+  EXPECT_NEAR(j["dimensionless"]["normal_force"].get<double>(), -5.0 / 9.0, 2e-3);
+  EXPECT_NEAR(j["peak_adhesion"]["dimensionless"]["normal_force"].get<double>(), -1.0, 2e-3);
+  EXPECT_NEAR(j["peak_adhesion"]["dimensionless"]["contact_radius"].get<double>(), 1.0, 2e-3);
+  EXPECT_TRUE(j["warnings"].empty());
+  EXPECT_FALSE(j.contains("accuracy"));
+  const auto r = run_mdrsim(fmt::format("run {} --log-level off", scene_));
+  EXPECT_NE(r.out.find("\npeak adhesion: F = "), std::string::npos) << r.out;
+}
+
+// Beyond the glue's limit the tangential load breaks it as it is applied: no equilibrium, no
+// critical point, but the strength sqrt(8 pi G* a_g^3 dgamma) = sqrt(32) F0.
+TEST_F(ResultOutputs, ShearOffAtApplicationReportsTheStrength) {
+  const nlohmann::json j = run_json("--set loading.tangential.displacement=2e-5");
+  EXPECT_EQ(j["status"], "shear-off");
+  EXPECT_FALSE(j.contains("critical"));
+  EXPECT_FALSE(j.contains("dimensionless"));
+  EXPECT_NEAR(j["dimensionless_tangential_strength"].get<double>(), std::sqrt(32.0), 1e-9);
+  const auto r = run_mdrsim(
+      fmt::format("run {} --set loading.tangential.displacement=2e-5 --log-level off", scene_));
+  EXPECT_NE(r.out.find("critical: none: the tangential load broke the glue as it was applied\n"),
+            std::string::npos)
+      << r.out;
+}
+
+// The step limit: exit 0, a warning on standard error and in the JSON, no critical point.
+TEST_F(ResultOutputs, StepLimitWarnsAndHasNoCriticalPoint) {
+  const std::string sets =
+      "--set 'solver={method=\"stepping\",step=1e-30,max_steps=100}' --set "
+      "discretization.springs=100";
+  const auto r = run_mdrsim(fmt::format("run {} {} --json -", scene_, sets));
+  EXPECT_EQ(r.exit_code, 0);
+  const std::string warning =
+      "the stepping method reached solver.max_steps = 100 before the contact was lost: there is "
+      "no critical point";
+  EXPECT_NE(r.err.find("[warning] " + warning), std::string::npos) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "step-limit");
+  EXPECT_FALSE(j.contains("critical"));
+  EXPECT_EQ(j["warnings"], nlohmann::json::array({warning}));
+}
+
+// rtol's JSON says how it got there.
+TEST_F(ResultOutputs, RtolReportsItsRouteRowsAndEstimate) {
+  const nlohmann::json j = run_json("--set 'discretization={rtol=1e-6}'");
+  const auto& a = j["accuracy"];
+  EXPECT_EQ(a["route"], "richardson");
+  EXPECT_EQ(a["rtol_met"], true);
+  EXPECT_EQ(j["springs"], a["rows"].back());
+  const double force = std::abs(j["critical"]["normal_force"].get<double>());
+  EXPECT_LE(a["critical_error_estimate"].get<double>(), 1e-6 * force);
+  EXPECT_NEAR(j["dimensionless"]["normal_force"].get<double>(), -5.0 / 9.0, 1e-6 * 5.0 / 9.0);
+}
+
+// A sweep across the glue's limit: the status leads every row, and the rows that sheared off
+// as the load was applied leave the critical columns empty.
+TEST_F(ResultOutputs, SweepRowsWithoutCriticalPointLeaveItEmpty) {
+  const auto r = run_mdrsim(fmt::format(
+      "sweep {} --vary loading.tangential.displacement=1e-5:2e-5:3 --csv - --log-level off",
+      scene_));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(r.out);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0][0], "status");
+  EXPECT_EQ(rows[0][1], "loading.tangential.displacement");
+  const std::size_t columns = rows[0].size();
+  std::size_t strength = 0;
+  for (std::size_t c = 0; c < columns; ++c) {
+    if (rows[0][c] == "tangential_strength") strength = c;
+  }
+  ASSERT_GT(strength, 0u);
+  EXPECT_EQ(rows[1][0], "instability");
+  EXPECT_FALSE(rows[1][2].empty());
+  EXPECT_TRUE(rows[1][strength].empty());
+  for (const std::size_t i : {2u, 3u}) {
+    ASSERT_EQ(rows[i].size(), columns);
+    EXPECT_EQ(rows[i][0], "shear-off");
+    for (std::size_t c = 2; c < strength; ++c) {
+      if (rows[0][c].find("peak") == std::string::npos) {
+        EXPECT_TRUE(rows[i][c].empty()) << rows[0][c];
+      }
+    }
+    EXPECT_FALSE(rows[i][strength].empty());
+  }
+}
