@@ -56,11 +56,14 @@ TEST(RunStatus, TangentialDisplacementBeyondTheGlueShearsOffAtThePreload) {
   EXPECT_FALSE(off.critical.has_value());
   ASSERT_TRUE(off.tangential_strength.has_value());
   EXPECT_NEAR(*off.tangential_strength / s.scales().force, std::sqrt(32.0), 1e-12);
-  // With no adhesion the glue has no strength at all (the 1 mN for dgamma = 0).
-  JkrScenario weak = s;
-  weak.work_of_adhesion = 0.0;
-  weak.springs = 200;
-  const auto none = run_quietly(weak.build());
+  // With no adhesion the glue has no strength at all (the 1 mN for dgamma = 0). Written
+  // out: JkrScenario's lengths are in a0, which is 0 there.
+  const auto none = run_quietly(mdrsim::test::build_scene_text(
+      "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.0\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[loading]\npreload = { contact_radius = 5e-4 }\n"
+      "tangential = { control = \"fixed-grips\", displacement = 1e-3 }\n"
+      "normal = { control = \"fixed-grips\" }\n[discretization]\nsprings = 200\n"));
   EXPECT_EQ(none.status, RunStatus::shear_off);
   EXPECT_EQ(none.tangential_strength.value_or(-1.0), 0.0);
   s.tangential_displacement = std::sqrt(32.0) * 0.99;

@@ -1,6 +1,8 @@
 // TOML text of the JKR test scenes, at full precision.
 #include "tests/support/jkr_scenario.hpp"
 
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "engine/material.hpp"
@@ -11,7 +13,9 @@ namespace mdrsim::test {
 
 JkrScales JkrScenario::scales() const {
   const Material m = Material::from_youngs_modulus(youngs_modulus, poisson_ratio, work_of_adhesion);
-  return *JkrScales::of(radius, m.effective_modulus, work_of_adhesion);
+  const auto s = JkrScales::of(radius, m.effective_modulus, work_of_adhesion);
+  if (!s) throw std::invalid_argument("JkrScenario: no JKR scales without adhesion");
+  return *s;
 }
 
 std::string JkrScenario::toml() const {
