@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "engine/result_json.hpp"
+#include "engine/events/result_json.hpp"
 
 namespace mdrsim::cli {
 

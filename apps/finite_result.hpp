@@ -1,8 +1,8 @@
 // A run's reported numbers must be finite (SPEC): a NaN or infinity is a failure, not a result.
 #pragma once
 
-#include "engine/pull_off.hpp"
-#include "engine/scene.hpp"
+#include "engine/run/pull_off.hpp"
+#include "engine/scene/scene.hpp"
 
 namespace mdrsim::cli {
 

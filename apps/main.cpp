@@ -13,7 +13,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/usage_error.hpp"
-#include "engine/scene_error.hpp"
+#include "engine/scene/scene_error.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "apps/usage_error.hpp"
-#include "engine/scene_error.hpp"
+#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim::cli {
 namespace {

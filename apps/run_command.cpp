@@ -15,10 +15,10 @@
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/usage_error.hpp"
-#include "engine/log_observer.hpp"
-#include "engine/result_json.hpp"
-#include "engine/run_scene.hpp"
-#include "engine/trajectory_csv.hpp"
+#include "engine/events/log_observer.hpp"
+#include "engine/events/result_json.hpp"
+#include "engine/events/trajectory_csv.hpp"
+#include "engine/run/run_scene.hpp"
 
 namespace mdrsim::cli {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/scene_document.hpp"
+#include "engine/scene/scene_document.hpp"
 
 namespace mdrsim::cli {
 

@@ -18,8 +18,8 @@
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/vary_spec.hpp"
-#include "engine/result_json.hpp"
-#include "engine/run_scene.hpp"
+#include "engine/events/result_json.hpp"
+#include "engine/run/run_scene.hpp"
 
 namespace mdrsim::cli {
 namespace {

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "apps/usage_error.hpp"
-#include "engine/scene_error.hpp"
+#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim::cli {
 namespace {

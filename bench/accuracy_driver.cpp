@@ -15,7 +15,7 @@
 #include "apps/commands.hpp"
 #include "bench/bench_cases.hpp"
 #include "bench/timing.hpp"
-#include "engine/run_scene.hpp"
+#include "engine/run/run_scene.hpp"
 #include "tests/support/random_scenes.hpp"
 
 namespace {
@@ -166,7 +166,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  spdlog::set_level(spdlog::level::err);  // under-resolved rows on purpose: their warnings are noise here
+  spdlog::set_level(
+      spdlog::level::err);  // under-resolved rows on purpose: their warnings are noise here
   std::vector<Row> rows;
   const std::vector<std::int64_t> event_springs{100,   300,    1000,   3000,    10000,
                                                 30000, 100000, 300000, 1000000, 10000000};

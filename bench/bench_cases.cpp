@@ -1,7 +1,7 @@
 // JKR (eqs. 19, 33) and one tangential point of Fig. 3a (eqs. 29, 31-33) at u = 2 d0.
 #include "bench/bench_cases.hpp"
 
-#include "engine/parabolic_reference.hpp"
+#include "engine/reference/parabolic_reference.hpp"
 
 namespace mdrsim::bench {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "engine/run_scene.hpp"
+#include "engine/run/run_scene.hpp"
 #include "tests/support/jkr_scenario.hpp"
 
 namespace {

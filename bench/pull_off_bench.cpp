@@ -7,8 +7,8 @@
 #include <string>
 
 #include "bench/bench_cases.hpp"
-#include "engine/registries.hpp"
-#include "engine/run_scene.hpp"
+#include "engine/run/run_scene.hpp"
+#include "engine/scene/registries.hpp"
 
 namespace {
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "controllers/controller.hpp"
-#include "engine/part_registry.hpp"
+#include "engine/base/part_registry.hpp"
 
 namespace mdrsim {
 

@@ -5,14 +5,9 @@
 #include <numbers>
 #include <optional>
 
-namespace mdrsim {
+#include "engine/base/material.hpp"
 
-/// The interface's elastic and adhesive properties that every criterion sees.
-struct InterfaceProperties {
-  double effective_modulus;        ///< E* [Pa] (paper eq. 8)
-  double effective_shear_modulus;  ///< G* [Pa] (paper eq. 8)
-  double work_of_adhesion;         ///< dgamma [J/m^2]
-};
+namespace mdrsim {
 
 /// The state of the boundary spring of the glued contact.
 struct BoundarySpring {
@@ -54,5 +49,19 @@ class DetachmentCriterion {
     return std::nullopt;
   }
 };
+
+/// The margin of an unstretched boundary spring at radius a [m] under u_x [m]: where it is
+/// negative the tangential load alone breaks the glue (eq. 20 with u_z = 0). The one place
+/// that rule is written; its sign decides `now` let-gos, shear-off statuses and a_s.
+inline double margin_at_rest(const DetachmentCriterion& criterion, double tangential_displacement,
+                             double contact_radius) {
+  return criterion.margin({0.0, tangential_displacement, contact_radius});
+}
+
+/// Whether the tangential load alone breaks the unstretched boundary spring.
+inline bool broken_at_rest(const DetachmentCriterion& criterion, double tangential_displacement,
+                           double contact_radius) {
+  return margin_at_rest(criterion, tangential_displacement, contact_radius) < 0.0;
+}
 
 }  // namespace mdrsim

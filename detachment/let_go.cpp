@@ -1,16 +1,17 @@
 // Let-go location: a closed form where the criterion has one, else TOMS 748 on the margin.
 #include "detachment/let_go.hpp"
 
-#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include "engine/base/bracketed_root.hpp"
 
 namespace mdrsim {
 
 LetGo locate_let_go(const DetachmentCriterion& criterion, double a, double ux,
                     double elongation_scale) {
-  const double at_zero = criterion.margin({0.0, ux, a});
+  const double at_zero = margin_at_rest(criterion, ux, a);
   if (at_zero < 0.0) return {LetGo::Kind::now};
   if (const auto closed = criterion.critical_elongation(a, ux)) {
     return {LetGo::Kind::at_elongation, *closed > 0.0 ? *closed : 0.0};
@@ -39,13 +40,10 @@ LetGo locate_let_go(const DetachmentCriterion& criterion, double a, double ux,
     }
     return {LetGo::Kind::at_elongation, hi, halvings + doublings};
   }
-  std::uintmax_t iterations = 100;
-  const auto bracket = boost::math::tools::toms748_solve(
-      relative_margin, lo, hi,
-      boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 3),
-      iterations);
+  const RootBracket bracket =
+      bracket_root(relative_margin, lo, hi, std::numeric_limits<double>::digits - 3);
   // The upper end: the spring surely lets go there (the margin is non-increasing).
-  return {LetGo::Kind::at_elongation, bracket.second, static_cast<int>(iterations) + doublings};
+  return {LetGo::Kind::at_elongation, bracket.hi, bracket.iterations + doublings};
 }
 
 }  // namespace mdrsim

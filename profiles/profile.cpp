@@ -2,11 +2,13 @@
 #include "profiles/profile.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
-#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "engine/base/bracketed_root.hpp"
 
 namespace mdrsim {
 namespace {
@@ -47,12 +49,9 @@ double invert_increasing(Fn fn, double target, double outer, const char* what) {
       hi = half;  // ends: fn(0) < target
     lo = 0.5 * hi;
   }
-  std::uintmax_t iterations = 200;
-  const auto bracket = boost::math::tools::toms748_solve(
-      [&](double x) { return fn(x) - target; }, lo, hi,
-      boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 2),
-      iterations);
-  return bracket.second;
+  return bracket_root([&](double x) { return fn(x) - target; }, lo, hi,
+                      std::numeric_limits<double>::digits - 2)
+      .hi;
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The registry of indenter profiles, filled by name from a scene's [profile] table.
 #pragma once
 
-#include "engine/part_registry.hpp"
+#include "engine/base/part_registry.hpp"
 #include "profiles/profile.hpp"
 
 namespace mdrsim {

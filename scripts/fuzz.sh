@@ -4,7 +4,7 @@
 # corpus seeded from scenes/*.toml, tests/fuzz/seeds/ and tests/fuzz/regressions/. Exits
 # non-zero on a crash, a leak, a sanitizer report or a timeout; the input that did it is left in
 # $FUZZ_BUILD_DIR/artifacts/ and the line to reproduce it is printed. Copied into
-# tests/fuzz/regressions/, an input becomes a test (tests/engine/fuzz_regressions_test.cpp).
+# tests/fuzz/regressions/, an input becomes a test (tests/engine/scene/fuzz_regressions_test.cpp).
 # Usage: bash scripts/fuzz.sh [SECONDS]
 # FUZZ_BUILD_DIR overrides the build directory (default: build-fuzz). Works from any directory.
 set -euo pipefail

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it (.ci/run), in three stages:
-#   1. build (Release, warnings as errors) and run every test with ctest;
+#   1. check the layout's include rule (scripts/check_includes.sh), build (Release, warnings as
+#      errors) and run every test with ctest;
 #   2. build again with clang, AddressSanitizer + UndefinedBehaviorSanitizer (leak checks on)
 #      and run the same tests there, except the 10^7-spring case (EdgeCasesLarge: minutes under
 #      ASan) and the plain-route rtol 1e-6 runs of the random set (rows of up to 2^25
@@ -37,6 +38,7 @@ totals() {
 if [ "$quick" -eq 1 ]; then bash scripts/setup.sh; else bash scripts/setup.sh fuzz; fi
 
 stage "1/3 build and test ($build_dir)"
+bash scripts/check_includes.sh
 BUILD_DIR="$build_dir" bash scripts/build.sh
 ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" | tee "$logs/1.log"
 if [ "$quick" -eq 1 ]; then

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/boundary_let_go.hpp"
+#include "engine/methods/boundary_let_go.hpp"
 
 namespace mdrsim {
 

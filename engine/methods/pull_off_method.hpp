@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "detachment/criterion.hpp"
-#include "engine/contact.hpp"
-#include "engine/observer.hpp"
+#include "engine/events/observer.hpp"
+#include "engine/model/contact.hpp"
 
 namespace mdrsim {
 

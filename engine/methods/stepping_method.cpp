@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "engine/boundary_let_go.hpp"
+#include "engine/methods/boundary_let_go.hpp"
 
 namespace mdrsim {
 
@@ -35,8 +35,8 @@ AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriteri
     AdvanceOutcome out;
     while (contact.springs_in_contact() > 0 && boundary_lets_go_now(contact, criterion)) {
       if (out.detached < 2) {
-        const bool by_shear = criterion.margin({0.0, contact.tangential_displacement(),
-                                                contact.contact_radius()}) < 0.0;
+        const bool by_shear =
+            broken_at_rest(criterion, contact.tangential_displacement(), contact.contact_radius());
         (out.detached == 0 ? out.first_by_shear : out.second_by_shear) = by_shear;
       }
       if (emit) {

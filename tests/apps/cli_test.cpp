@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/registries.hpp"
+#include "engine/scene/registries.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace mdrsim::test {
@@ -340,7 +340,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 // Every key of SPEC's scene file through --set, each way a value can be wrong: of the wrong
 // type, out of range, missing (a --set table without it) and unknown (a typo in each table).
-// The file itself is checked key by key in tests/engine/scene_loading_test.cpp; this checks
+// The file itself is checked key by key in tests/engine/scene/scene_loading_test.cpp; this checks
 // that the command line turns each into exit code 2, exactly one line naming --set and the
 // key, nothing on standard output and no JSON file left behind.
 TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {

@@ -9,11 +9,11 @@
 #include <exception>
 #include <utility>
 
-#include "engine/registries.hpp"
-#include "engine/result_json.hpp"
-#include "engine/run_scene.hpp"
-#include "engine/scene_document.hpp"
-#include "engine/scene_error.hpp"
+#include "engine/events/result_json.hpp"
+#include "engine/run/run_scene.hpp"
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim::test {
 namespace {

@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
-#include "engine/material.hpp"
-#include "engine/registries.hpp"
-#include "engine/scene_document.hpp"
+#include "engine/base/material.hpp"
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
 
 namespace mdrsim::test {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <string_view>
 
-#include "engine/jkr_scales.hpp"
-#include "engine/pull_off.hpp"
-#include "engine/scene.hpp"
+#include "engine/model/jkr_scales.hpp"
+#include "engine/run/pull_off.hpp"
+#include "engine/scene/scene.hpp"
 
 namespace mdrsim::test {
 

@@ -1,0 +1,40 @@
+// Names of statuses and event kinds, as they appear in JSON, CSV and logs.
+#include "engine/events/event.hpp"
+
+namespace mdrsim {
+
+const char* to_string(RunStatus status) {
+  switch (status) {
+    case RunStatus::instability:
+      return "instability";
+    case RunStatus::shear_off:
+      return "shear-off";
+    case RunStatus::no_instability:
+      return "no-instability";
+    case RunStatus::step_limit:
+      return "step-limit";
+  }
+  return "?";
+}
+
+const char* to_string(EventKind kind) {
+  switch (kind) {
+    case EventKind::preload_reached:
+      return "preload";
+    case EventKind::tangential_applied:
+      return "tangential";
+    case EventKind::spring_detached:
+      return "detached";
+    case EventKind::step_accepted:
+      return "step";
+    case EventKind::step_halved:
+      return "halved";
+    case EventKind::instability:
+      return "instability";
+    case EventKind::finished:
+      return "finished";
+  }
+  return "?";
+}
+
+}  // namespace mdrsim

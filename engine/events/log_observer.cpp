@@ -1,0 +1,42 @@
+// Levels chosen so that info shows the preload, the tangential load and the critical point.
+#include "engine/events/log_observer.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "engine/events/event_format.hpp"
+
+namespace mdrsim {
+
+void LogObserver::on_event(const Event& event) {
+  switch (event.kind) {
+    case EventKind::preload_reached:
+    case EventKind::tangential_applied:
+    case EventKind::instability:
+      spdlog::info("{}", event);
+      break;
+    case EventKind::finished:
+      if (event.status != RunStatus::instability) spdlog::info("{}", event);
+      break;
+    case EventKind::spring_detached:
+      spdlog::debug("{}", event);
+      break;
+    case EventKind::step_accepted:
+    case EventKind::step_halved:
+      spdlog::trace("{}", event);
+      break;
+  }
+}
+
+bool LogObserver::wants(EventKind kind) const {
+  switch (kind) {
+    case EventKind::spring_detached:
+      return spdlog::should_log(spdlog::level::debug);
+    case EventKind::step_accepted:
+    case EventKind::step_halved:
+      return spdlog::should_log(spdlog::level::trace);
+    default:
+      return true;
+  }
+}
+
+}  // namespace mdrsim

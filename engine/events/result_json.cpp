@@ -1,0 +1,87 @@
+// Field names and order as in SPEC; dimensionless values only where the JKR scales exist.
+#include "engine/events/result_json.hpp"
+
+namespace mdrsim {
+namespace {
+
+nlohmann::ordered_json snapshot_json(const ContactSnapshot& c) {
+  return {{"normal_force", c.normal_force},
+          {"tangential_force", c.tangential_force},
+          {"contact_radius", c.contact_radius},
+          {"indentation", c.indentation},
+          {"tangential_displacement", c.tangential_displacement},
+          {"springs_in_contact", c.springs_in_contact}};
+}
+
+nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const JkrScales& s) {
+  return {{"normal_force", c.normal_force / s.force},
+          {"tangential_force", c.tangential_force / s.force},
+          {"contact_radius", c.contact_radius / s.radius},
+          {"indentation", c.indentation / s.depth},
+          {"tangential_displacement", c.tangential_displacement / s.depth}};
+}
+
+const char* route_name(Accuracy::Route route) {
+  return route == Accuracy::Route::richardson ? "richardson" : "row";
+}
+
+}  // namespace
+
+std::optional<JkrScales> dimensionless_scales(const Scene& scene) {
+  const auto radius = scene.profile->jkr_scale_radius();
+  if (!radius) return std::nullopt;
+  return JkrScales::of(*radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
+}
+
+nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result) {
+  using nlohmann::ordered_json;
+  const auto scales = dimensionless_scales(scene);
+  const Accuracy& accuracy = result.accuracy;
+  ordered_json j;
+  j["status"] = to_string(result.status);
+  j["control"] = {{"normal", scene.normal.control},
+                  {"tangential", scene.tangential ? scene.tangential->control : "fixed-grips"}};
+  j["criterion"] = scene.criterion_name;
+  j["method"] = scene.solver.method == SolverMethod::event ? "event" : "stepping";
+  j["springs"] = result.springs;
+  if (scene.discretization.rtol) j["rtol"] = *scene.discretization.rtol;
+  if (accuracy.route == Accuracy::Route::richardson) {
+    j["extrapolation"] = {{"method", "richardson"}, {"springs", accuracy.rows}};
+  }
+  if (scene.discretization.rtol || accuracy.critical_error_estimate ||
+      accuracy.peak_error_estimate) {
+    ordered_json a;
+    a["route"] = route_name(accuracy.route);
+    a["rows"] = accuracy.rows;
+    a["outer_radius"] = accuracy.outer_radius;
+    if (accuracy.critical_error_estimate) {
+      a["critical_error_estimate"] = *accuracy.critical_error_estimate;
+    }
+    if (accuracy.peak_error_estimate) a["peak_error_estimate"] = *accuracy.peak_error_estimate;
+    if (scene.discretization.rtol) a["rtol_met"] = accuracy.rtol_met;
+    j["accuracy"] = a;
+  }
+  if (result.critical) {
+    j["critical"] = snapshot_json(*result.critical);
+    if (scales) j["dimensionless"] = dimensionless_json(*result.critical, *scales);
+  }
+  if (result.peak) {
+    ordered_json p = snapshot_json(*result.peak);
+    if (scales) p["dimensionless"] = dimensionless_json(*result.peak, *scales);
+    j["peak_adhesion"] = p;
+  }
+  if (result.tangential_strength) {
+    j["tangential_strength"] = *result.tangential_strength;
+    if (scales)
+      j["dimensionless_tangential_strength"] = *result.tangential_strength / scales->force;
+  }
+  j["warnings"] = result.warnings;
+  j["counts"] = {{"events", result.counts.events},
+                 {"steps", result.counts.steps},
+                 {"halvings", result.counts.halvings},
+                 {"root_iterations", result.counts.root_iterations}};
+  j["wall_time_s"] = result.wall_time_s;
+  return j;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,18 @@
+// The JSON result of `mdrsim run` (SPEC "JSON result of run").
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "engine/model/jkr_scales.hpp"
+#include "engine/run/pull_off.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace mdrsim {
+
+/// Scales of the dimensionless output; only for profiles with a parabolic tip and adhesion.
+std::optional<JkrScales> dimensionless_scales(const Scene& scene);
+
+nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result);
+
+}  // namespace mdrsim

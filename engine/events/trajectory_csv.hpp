@@ -1,0 +1,21 @@
+// The trajectory observer: one CSV row per event, written to a stream.
+#pragma once
+
+#include <ostream>
+
+#include "engine/events/observer.hpp"
+
+namespace mdrsim {
+
+/// Columns: event, in_cascade, indentation, normal_force, contact_radius,
+/// tangential_displacement, tangential_force, springs_in_contact (SI units).
+class TrajectoryCsvWriter final : public Observer {
+ public:
+  explicit TrajectoryCsvWriter(std::ostream& out);
+  void on_event(const Event& event) override;
+
+ private:
+  std::ostream* out_;
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,34 @@
+// Let-go of the boundary spring, in elongation (criterion) and in control value (constraint).
+#include "engine/methods/boundary_let_go.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mdrsim {
+
+BoundaryLetGo locate_boundary_let_go(const Contact& contact, const DetachmentCriterion& criterion) {
+  const double a = contact.contact_radius();
+  const double ux = contact.tangential_displacement();
+  // Only a root search needs the scale, and it widens its bracket from there.
+  const double scale = std::abs(ux) + contact.foundation().spacing();
+  BoundaryLetGo out{locate_let_go(criterion, a, ux, scale)};
+  if (out.let_go.kind == LetGo::Kind::at_elongation) {
+    out.normal_control =
+        contact.normal_control_at(contact.boundary_image() - out.let_go.elongation);
+  }
+  return out;
+}
+
+double boundary_elongation(const Contact& contact) {
+  return std::max(0.0, contact.boundary_image() - contact.indentation());
+}
+
+bool boundary_lets_go_now(const Contact& contact, const DetachmentCriterion& criterion) {
+  const double a = contact.contact_radius();
+  const double ux = contact.tangential_displacement();
+  if (broken_at_rest(criterion, ux, a)) return true;
+  const double stretch = contact.boundary_image() - contact.indentation();
+  return stretch >= 0.0 && criterion.margin({stretch, ux, a}) <= 0.0;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,27 @@
+// The spring row: spacing and the one O(N) pass that sums the profile's image.
+#include "engine/model/spring_foundation.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/model/compensated_sum.hpp"
+
+namespace mdrsim {
+
+SpringFoundation::SpringFoundation(const Profile& profile, double glued_radius,
+                                   std::int64_t springs)
+    : profile_(&profile),
+      glued_radius_(glued_radius),
+      springs_(springs),
+      spacing_(glued_radius / static_cast<double>(springs)),
+      total_image_(0.0) {
+  if (springs < 1) throw std::invalid_argument("the foundation needs at least one spring");
+  if (!(glued_radius > 0.0) || !std::isfinite(glued_radius)) {
+    throw std::invalid_argument("the glued contact radius must be positive and finite");
+  }
+  CompensatedSum sum;
+  for (std::int64_t i = 1; i <= springs; ++i) sum.add(image(i));
+  total_image_ = sum.value();
+}
+
+}  // namespace mdrsim

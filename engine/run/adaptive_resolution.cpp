@@ -1,0 +1,245 @@
+// Zoom onto the critical point, then refine rows until the a posteriori estimate meets rtol.
+#include "engine/run/adaptive_resolution.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "engine/run/row_sequence.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr std::int64_t kRowSprings = 512;
+constexpr double kZoomFloor = 1e-12;  ///< deepest zoom, relative to the glued radius
+
+void add_counts(RunCounts& total, const RunCounts& more) {
+  total.events += more.events;
+  total.steps += more.steps;
+  total.halvings += more.halvings;
+  total.root_iterations += more.root_iterations;
+}
+
+/// The springs in contact at what a zoom must resolve; 0 where the row has nothing there.
+std::int64_t target_springs(const RunResult& row, Target target) {
+  if (target == Target::critical) {
+    if (row.status == RunStatus::no_instability) return 1;  // is there a fold below x_1?
+    return row.critical ? row.critical->springs_in_contact : 0;
+  }
+  return row.peak ? row.peak_springs : 0;
+}
+
+struct Zoom {
+  RunResult row;
+  double outer_radius;  ///< [m]
+};
+
+/// The rows of a zoom, outermost first; the last is the one to refine.
+std::vector<Zoom> zoom_onto(const Scene& scene, Zoom start, Target target, RunCounts& counts) {
+  std::vector<Zoom> chain{std::move(start)};
+  for (int round = 0; round < 64; ++round) {
+    const RunResult& row = chain.back().row;
+    const double outer = chain.back().outer_radius;
+    const std::int64_t k = target_springs(row, target);
+    if (k <= 0 || outer <= kZoomFloor * scene.glued_radius) break;
+    // A peak before an earlier jump is out of the zoom's reach: the path jumped past it.
+    if (k > row.stable_run_top) break;
+    std::int64_t index = std::min(row.stable_run_top, k + std::max<std::int64_t>(4, k / 8));
+    // Zoom while it gains at least 1.5x in spacing: the rows' error scales with it.
+    if (3 * index > 2 * row.springs) break;
+    std::optional<Zoom> accepted;
+    while (index < row.springs) {
+      const double radius = outer * static_cast<double>(index) / static_cast<double>(row.springs);
+      RunResult candidate =
+          run_row(scene, {.springs = kRowSprings, .outer_radius = radius, .zoomed = true}, {});
+      add_counts(counts, candidate.counts);
+      const std::int64_t found = target_springs(candidate, target);
+      spdlog::debug("rtol zoom: row of {} springs across {:.6g} m ({} -> {}): {} at spring {}",
+                    candidate.springs, radius, k, index, to_string(candidate.status), found);
+      if (found <= 0) break;
+      if (found < candidate.springs) {
+        accepted = Zoom{std::move(candidate), radius};
+        break;
+      }
+      // The row's first let-go is its target: it was glued inside the jump.
+      if (index == row.stable_run_top) break;
+      index = std::min(row.stable_run_top, 2 * index);
+    }
+    if (!accepted) break;
+    chain.push_back(std::move(*accepted));
+  }
+  return chain;
+}
+
+bool meets(const RowSequence& seq, Accuracy::Route route, double rtol) {
+  const auto value = seq.value(route);
+  const auto estimate = seq.estimate(route);
+  return value && estimate && *estimate <= rtol * std::abs(value->normal_force);
+}
+
+/// The route predicted to meet rtol with the fewest springs: the plain row's error falls
+/// like 1/N, the extrapolated one's like 1/N^2.
+Accuracy::Route cheaper_route(const RowSequence& seq, double rtol) {
+  using Route = Accuracy::Route;
+  if (meets(seq, Route::richardson, rtol)) return Route::richardson;
+  if (meets(seq, Route::row, rtol)) return Route::row;
+  const auto value = seq.value(Route::row);
+  const auto plain = seq.estimate(Route::row);
+  const auto extrapolated = seq.estimate(Route::richardson);
+  if (!value || !plain || !extrapolated) return Route::richardson;
+  const double wanted = rtol * std::abs(value->normal_force);
+  return std::sqrt(*extrapolated / wanted) <= *plain / wanted ? Route::richardson : Route::row;
+}
+
+struct Refined {
+  std::optional<ContactSnapshot> value;
+  std::optional<double> estimate;
+  Accuracy::Route route = Accuracy::Route::richardson;
+  bool met = false;
+  std::vector<std::int64_t> rows;
+  RowSpec finest;
+  RowSequence sequence{Target::critical};
+};
+
+/// Adds rows of doubling springs across `outer` to `seq` until its estimate meets rtol.
+Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
+               std::optional<Accuracy::Route> forced, RunCounts& counts) {
+  Refined out;
+  const bool zoomed = outer < scene.glued_radius;
+  for (;;) {
+    if (!seq.usable()) {
+      // The rows disagree on how the contact ends (a resolution decides it): start over
+      // from the finest, which sees the most.
+      RowSequence restart(seq.target());
+      restart.add(seq.last());
+      seq = std::move(restart);
+    }
+    // Four rows before anything is accepted: each estimate then has its guard term, the
+    // difference one resolution back (a single lucky agreement of two rows is not enough).
+    if (seq.rows().size() >= 4) {
+      out.route = forced ? *forced : cheaper_route(seq, rtol);
+      if (meets(seq, out.route, rtol)) {
+        out.met = true;
+        break;
+      }
+    }
+    if (seq.next_springs() > scene.discretization.max_row_springs) break;
+    RunResult next = run_row(
+        scene, {.springs = seq.next_springs(), .outer_radius = outer, .zoomed = zoomed}, {});
+    add_counts(counts, next.counts);
+    seq.add(std::move(next));
+  }
+  if (seq.rows().size() < 3 && !forced) out.route = Accuracy::Route::row;
+  out.value = seq.value(out.route);
+  if (!out.value) out.value = seq.value(Accuracy::Route::row);
+  out.estimate = seq.estimate(out.route);
+  for (const RunResult& row : seq.rows()) out.rows.push_back(row.springs);
+  out.finest = {.springs = seq.last().springs, .outer_radius = outer, .zoomed = zoomed};
+  out.sequence = std::move(seq);
+  return out;
+}
+
+/// Whether a row's peak lies inside it: not at a zoomed row's outermost let-go (the path
+/// goes on outside it) and not the tension of its last spring.
+bool peak_inside(const RunResult& row, bool zoomed) {
+  if (!row.peak || row.peak_springs <= 1) return false;
+  return !zoomed || row.peak_springs < row.springs;
+}
+
+/// The peak adhesive force: from the critical point's rows where it lies inside them, else
+/// zoomed from the deepest row of the critical point's zoom that holds it.
+void refine_peak(const Scene& scene, const std::vector<Zoom>& chain, double outer,
+                 const std::vector<RunResult>& rows, double rtol,
+                 std::optional<Accuracy::Route> route, RunResult& result, RunCounts& counts) {
+  const bool zoomed = outer < scene.glued_radius;
+  const bool inside = std::all_of(rows.begin(), rows.end(),
+                                  [&](const RunResult& r) { return peak_inside(r, zoomed); });
+  RowSequence peak_rows(Target::peak, rows);
+  double peak_outer = outer;
+  if (!inside) {
+    auto holder = chain.rbegin();
+    while (holder != chain.rend() &&
+           !peak_inside(holder->row, holder->outer_radius < scene.glued_radius)) {
+      ++holder;
+    }
+    if (holder == chain.rend()) {
+      result.peak.reset();  // no row holds a peak of the path: none is reported
+      return;
+    }
+    std::vector<Zoom> peak_chain = zoom_onto(scene, *holder, Target::peak, counts);
+    peak_outer = peak_chain.back().outer_radius;
+    peak_rows = RowSequence(Target::peak, {std::move(peak_chain.back().row)});
+  }
+  const Refined p = refine(scene, std::move(peak_rows), peak_outer, rtol, route, counts);
+  result.peak = p.value;
+  result.accuracy.peak_error_estimate = p.estimate;
+  if (!p.met) {
+    result.accuracy.rtol_met = false;
+    result.warnings.push_back(fmt::format(
+        "rtol {} not met for the peak adhesive force: error estimate {:.3g} relative", rtol,
+        p.estimate && p.value ? *p.estimate / std::abs(p.value->normal_force) : 1.0));
+  }
+}
+
+}  // namespace
+
+RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::Route> route,
+                       const ObserverList& observers) {
+  RunCounts counts;
+  PhaseFilter preload_events(observers, PhaseFilter::Phase::preload);
+  ObserverList pilot_observers;
+  pilot_observers.add(preload_events);
+  RunResult pilot =
+      run_row(scene, {.springs = kRowSprings, .outer_radius = scene.glued_radius}, pilot_observers);
+  add_counts(counts, pilot.counts);
+  if (pilot.status == RunStatus::step_limit || pilot.tangential_strength) {
+    // Nothing to refine: no critical point, or a strength found to full precision.
+    pilot.counts = counts;
+    return pilot;
+  }
+
+  const std::vector<Zoom> chain =
+      zoom_onto(scene, {pilot, scene.glued_radius}, Target::critical, counts);
+  const Zoom& zoom = chain.back();
+  RunResult result = zoom.row;
+  RowSpec finest{.springs = zoom.row.springs,
+                 .outer_radius = zoom.outer_radius,
+                 .zoomed = zoom.outer_radius < scene.glued_radius};
+  std::vector<RunResult> rows{zoom.row};
+  if (result.status != RunStatus::no_instability) {
+    Refined c =
+        refine(scene, RowSequence(Target::critical, rows), zoom.outer_radius, rtol, route, counts);
+    result.status = c.sequence.last().status;
+    result.critical = c.value ? c.value : c.sequence.last().critical;
+    result.accuracy.route = c.route;
+    result.accuracy.rows = c.rows;
+    result.accuracy.critical_error_estimate = c.estimate;
+    result.accuracy.rtol_met = c.met;
+    finest = c.finest;
+    rows = c.sequence.rows();
+    if (!c.met) {
+      result.warnings.push_back(fmt::format(
+          "rtol {} not met: the critical force's error estimate is {:.3g} relative with rows of "
+          "up to {} springs across {:.6g} m",
+          rtol, c.estimate && c.value ? *c.estimate / std::abs(c.value->normal_force) : 1.0,
+          c.rows.back(), zoom.outer_radius));
+    }
+  }
+  result.accuracy.outer_radius = zoom.outer_radius;
+  refine_peak(scene, chain, zoom.outer_radius, rows, rtol, route, result, counts);
+
+  if (observers.wants(EventKind::spring_detached) || observers.wants(EventKind::step_accepted)) {
+    PhaseFilter pull_off_events(observers, PhaseFilter::Phase::pull_off);
+    ObserverList finest_observers;
+    finest_observers.add(pull_off_events);
+    add_counts(counts, run_row(scene, finest, finest_observers).counts);
+  }
+  result.springs = finest.springs;
+  result.counts = counts;
+  return result;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,276 @@
+// The pull-off loop: tracks equilibria and cascades, so that the row's end is told by physics.
+#include "engine/run/pull_off.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "controllers/builtin_controllers.hpp"
+#include "engine/methods/boundary_let_go.hpp"
+#include "engine/methods/event_method.hpp"
+#include "engine/methods/stepping_method.hpp"
+#include "engine/model/tangential_strength.hpp"
+#include "engine/run/fold_refinement.hpp"
+
+namespace mdrsim {
+namespace {
+
+/// The default stepping increment: 1e-3 of the control's scale, the larger of its value at
+/// the preload and where the first spring lets go; both are 0 for one unstretched spring
+/// under fixed load, where the glued contact's own scale (E* a_g^2 or a_g) stands in.
+double default_step(const Contact& contact, const DetachmentCriterion& criterion) {
+  double scale = std::abs(contact.normal_control());
+  const BoundaryLetGo first = locate_boundary_let_go(contact, criterion);
+  if (first.let_go.kind == LetGo::Kind::at_elongation) {
+    scale = std::max(scale, std::abs(first.normal_control));
+  }
+  if (!(scale > 0.0)) {
+    const double a = contact.foundation().glued_radius();
+    scale = std::abs(contact.normal_control_at(a)) + contact.material().effective_modulus * a * a;
+  }
+  return 1e-3 * scale;
+}
+
+std::unique_ptr<PullOffMethod> make_method(const SolverOptions& solver, const Contact& contact,
+                                           const DetachmentCriterion& criterion) {
+  if (solver.method == SolverMethod::event) return std::make_unique<EventMethod>();
+  const double step = solver.step ? *solver.step : default_step(contact, criterion);
+  return std::make_unique<SteppingMethod>(step, solver.max_halvings);
+}
+
+/// Logs progress every few seconds on long runs; cheap to call each iteration.
+class ProgressLog {
+ public:
+  explicit ProgressLog(std::int64_t springs) : springs_(springs) {}
+  void tick(const Contact& contact, const RunCounts& counts) {
+    if ((++calls_ & 0xFFFF) != 0) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::seconds(2)) return;
+    last_ = now;
+    spdlog::info("pull-off running: {} of {} springs attached, {} steps, {} halvings",
+                 contact.springs_in_contact(), springs_, counts.steps, counts.halvings);
+  }
+
+ private:
+  std::int64_t springs_;
+  std::uint64_t calls_ = 0;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+/// The equilibria of the path as they come, O(1) memory: the last three of the unbroken run
+/// of single let-gos, and the most tensile one with its neighbours.
+class EquilibriumTrack {
+ public:
+  explicit EquilibriumTrack(const Contact& contact) : contact_(&contact) {}
+
+  /// A new equilibrium; `after_jump` when more than one spring left since the previous one.
+  void add(const Contact::State& state, bool after_jump) {
+    if (after_jump || count_ == 0) {
+      run_length_ = 0;
+      run_top_ = state.springs_in_contact;
+    }
+    recent_[2] = recent_[1];
+    recent_[1] = recent_[0];
+    recent_[0] = state;
+    ++run_length_;
+    ++count_;
+    if (peak_waits_for_inner_ && !after_jump) {
+      peak_inner_ = state;
+      peak_waits_for_inner_ = false;
+    }
+    const double force = contact_->normal_force_of(state);
+    last_force_ = force;
+    largest_force_ = std::max(largest_force_, std::abs(force));
+    if (count_ == 1 || force < peak_force_) {
+      peak_force_ = force;
+      peak_ = state;
+      peak_outer_.reset();
+      if (run_length_ >= 2) peak_outer_ = recent_[1];
+      peak_inner_.reset();
+      peak_waits_for_inner_ = true;
+    } else {
+      peak_waits_for_inner_ = false;
+    }
+  }
+
+  bool empty() const { return count_ == 0; }
+  const Contact::State& last() const { return recent_[0]; }
+  /// The k-th equilibrium before the last in the unbroken run (k = 1, 2), if there is one.
+  std::optional<Contact::State> before_last(int k) const {
+    if (run_length_ <= k) return std::nullopt;
+    return recent_[static_cast<std::size_t>(k)];
+  }
+  std::int64_t run_top() const { return run_top_; }
+  double last_force() const { return last_force_; }        ///< [N]
+  double largest_force() const { return largest_force_; }  ///< largest |F| on the path [N]
+  const Contact::State& peak() const { return peak_; }
+  std::optional<Contact::State> peak_outer() const { return peak_outer_; }
+  std::optional<Contact::State> peak_inner() const { return peak_inner_; }
+
+ private:
+  const Contact* contact_;
+  std::array<Contact::State, 3> recent_{};
+  int run_length_ = 0;
+  std::int64_t count_ = 0;
+  std::int64_t run_top_ = 0;
+  Contact::State peak_{};
+  double peak_force_ = 0.0;
+  double last_force_ = 0.0;
+  double largest_force_ = 0.0;
+  std::optional<Contact::State> peak_outer_;
+  std::optional<Contact::State> peak_inner_;
+  bool peak_waits_for_inner_ = false;
+};
+
+/// How the last cascade began: the spring let go at the critical point and the first one
+/// due after it.
+struct CascadeStart {
+  std::int64_t size = 0;  ///< springs detached since the last equilibrium
+  bool by_shear = false;  ///< the first spring due after it was broken at zero stretch
+};
+
+void fill_critical(RunResult& result, const Contact& contact, const DetachmentCriterion& criterion,
+                   const EquilibriumTrack& track) {
+  const Contact::State& critical = track.last();
+  result.critical = contact.snapshot_of(critical);
+  result.stable_run_top = track.run_top();
+  if (const auto outer = track.before_last(1)) {
+    if (result.status == RunStatus::instability) {
+      if (const auto fold = refine_fold(contact, criterion, *outer, critical)) {
+        result.refined_critical = fold->state;
+        result.critical_force_step = fold->normal_force_step;
+      }
+    } else if (const auto outer2 = track.before_last(2)) {
+      result.refined_critical = refine_shear_off(contact, criterion, *outer2, *outer, critical);
+      result.critical_force_step =
+          std::abs(contact.normal_force_of(*outer) - contact.normal_force_of(critical));
+    }
+  }
+  result.peak = contact.snapshot_of(track.peak());
+  result.peak_springs = track.peak().springs_in_contact;
+  if (track.peak().springs_in_contact == critical.springs_in_contact) {
+    // The most tensile equilibrium is the critical one: the force still falls at the end.
+    if (result.refined_critical) result.refined_peak = *result.refined_critical;
+  } else if (track.peak_outer() && track.peak_inner()) {
+    result.refined_peak =
+        refine_peak(contact, *track.peak_outer(), track.peak(), *track.peak_inner());
+  }
+}
+
+}  // namespace
+
+RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
+  return run_pull_off(scene, scene.springs, observers);
+}
+
+RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverList& observers) {
+  const auto started = std::chrono::steady_clock::now();
+  RunResult result =
+      run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, observers);
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  emit_closing_events(result, observers);
+  return result;
+}
+
+void emit_closing_events(const RunResult& result, const ObserverList& observers) {
+  if (result.critical) {
+    observers.emit(
+        {.kind = EventKind::instability, .state = *result.critical, .status = result.status});
+  }
+  observers.emit({.kind = EventKind::finished,
+                  .state = result.critical.value_or(ContactSnapshot{}),
+                  .status = result.status});
+}
+
+RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& observers) {
+  const SpringFoundation foundation(*scene.profile, row.outer_radius, row.springs);
+  const AffineConstraint tangential_constraint = scene.tangential
+                                                     ? scene.tangential->controller->constraint()
+                                                     : FixedGripsController().constraint();
+  Contact contact(foundation, scene.material, scene.normal.controller->constraint(),
+                  tangential_constraint);
+
+  contact.set_normal_control(contact.normal_control_at(scene.preload_depth));
+  if (!row.zoomed)
+    observers.emit({.kind = EventKind::preload_reached, .state = contact.snapshot()});
+  if (scene.tangential) {
+    contact.set_tangential_held(scene.tangential->held_value);
+    if (!row.zoomed) {
+      observers.emit({.kind = EventKind::tangential_applied, .state = contact.snapshot()});
+    }
+  }
+  const Contact::State applied = contact.save();
+
+  const std::unique_ptr<PullOffMethod> method =
+      make_method(scene.solver, contact, *scene.criterion);
+  RunResult result;
+  result.springs = row.springs;
+  result.accuracy.rows = {row.springs};
+  result.accuracy.outer_radius = row.outer_radius;
+  EquilibriumTrack track(contact);
+  CascadeStart cascade;
+  ProgressLog progress(row.springs);
+  while (contact.springs_in_contact() > 0) {
+    if (result.counts.steps >= scene.solver.max_steps) {
+      result.status = RunStatus::step_limit;
+      break;
+    }
+    const AdvanceOutcome out = method->advance(contact, *scene.criterion, observers, result.counts);
+    progress.tick(contact, result.counts);
+    if (out.detached == 0) continue;
+    // Broken by the tangential load as it was applied: the state before is no equilibrium.
+    const bool broken_at_start = track.empty() && cascade.size == 0 && out.first_by_shear;
+    if (out.equilibrium_before && !broken_at_start) {
+      track.add(*out.equilibrium_before, cascade.size > 1);
+      cascade = {.size = out.detached, .by_shear = out.detached > 1 && out.second_by_shear};
+    } else {
+      if (cascade.size == 1) cascade.by_shear = out.first_by_shear;
+      cascade.size += out.detached;
+    }
+  }
+  if (result.status == RunStatus::step_limit) {
+    result.warnings.push_back(fmt::format(
+        "the stepping method reached solver.max_steps = {} before the contact was lost: there is "
+        "no critical point",
+        scene.solver.max_steps));
+    return result;
+  }
+  if (track.empty()) {
+    // Not one equilibrium: the tangential load broke the glue as it was applied.
+    result.status = RunStatus::shear_off;
+    Contact at_application = contact;
+    at_application.restore(applied);
+    result.tangential_strength = tangential_strength(at_application, *scene.criterion);
+    return result;
+  }
+  // The last spring let go on its own, the control still falling, and carried next to no
+  // force: the contact peeled off smoothly to zero force and nothing jumped. (A last spring
+  // that still carries a finite tension jumps off; in the continuum a smooth peel ends at
+  // F -> 0, which the row approaches as x_1 -> 0.)
+  constexpr double kNegligibleForce = 1e-3;  ///< of the largest |F| on the path
+  const bool smooth = cascade.size == 1 && track.last().springs_in_contact == 1 &&
+                      std::abs(track.last_force()) <= kNegligibleForce * track.largest_force();
+  result.status = smooth             ? RunStatus::no_instability
+                  : cascade.by_shear ? RunStatus::shear_off
+                                     : RunStatus::instability;
+  fill_critical(result, contact, *scene.criterion, track);
+  if (smooth) {
+    result.critical.reset();
+    // A smooth peel ends at F -> 0: a "peak" at the last spring is only that spring's own
+    // tension, which vanishes as the row is refined.
+    if (result.peak_springs == 1) {
+      result.peak.reset();
+      result.refined_peak.reset();
+      result.peak_springs = 0;
+    }
+  }
+  return result;
+}
+
+}  // namespace mdrsim

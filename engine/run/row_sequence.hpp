@@ -1,0 +1,56 @@
+// Rows of doubling springs over one radius, combined plainly or by Richardson, with estimates.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "engine/run/pull_off.hpp"
+
+namespace mdrsim {
+
+/// What a sequence combines: the critical point or the peak adhesive force of each row.
+enum class Target { critical, peak };
+
+/// Rows of N, 2N, 4N, ... springs across the same radius. Each row's value Q_j is its end
+/// located between springs (fold_refinement.hpp), whose error is C/N_j + O(1/N_j^2).
+/// - Plain: Q_j, with error estimate 2 max(|Q_j - Q_{j-1}|, |Q_{j-1} - Q_{j-2}|/2): the first
+///   difference is C/N_j itself, and the factor 2 and the earlier difference guard against
+///   two rows that agree by chance.
+/// - Richardson: R_j = 2 Q_j - Q_{j-1}, with estimate 2 max(|R_j - R_{j-1}|,
+///   |R_{j-1} - R_{j-2}|/2): for order p the difference is (2^p - 1) times R_j's error, 3
+///   times at p = 2; the factor 2 covers the irregular O(dx^2) part of a fold or shear-off
+///   located between springs, which made the plain difference fall short by 1.5x in the
+///   random set.
+class RowSequence {
+ public:
+  explicit RowSequence(Target target) : target_(target) {}
+
+  /// The same rows, read for another target.
+  RowSequence(Target target, std::vector<RunResult> rows)
+      : target_(target), rows_(std::move(rows)) {}
+
+  Target target() const { return target_; }
+  void add(RunResult row) { rows_.push_back(std::move(row)); }
+  const std::vector<RunResult>& rows() const { return rows_; }
+  bool empty() const { return rows_.empty(); }
+  const RunResult& last() const { return rows_.back(); }
+  std::int64_t next_springs() const { return 2 * rows_.back().springs; }
+
+  /// Whether row j has a value between springs (every row must, for either route).
+  bool usable() const;
+  std::optional<ContactSnapshot> value(Accuracy::Route route) const;
+  std::optional<double> estimate(Accuracy::Route route) const;
+
+ private:
+  const ContactSnapshot* between_springs(std::size_t j) const;
+  double q(std::size_t j) const { return between_springs(j)->normal_force; }
+  double r(std::size_t j) const { return 2.0 * q(j) - q(j - 1); }
+
+  Target target_;
+  std::vector<RunResult> rows_;
+};
+
+/// 2 fine - coarse, field by field; springs in contact from `fine`.
+ContactSnapshot extrapolate(const ContactSnapshot& coarse, const ContactSnapshot& fine);
+
+}  // namespace mdrsim

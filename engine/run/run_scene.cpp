@@ -1,0 +1,103 @@
+// The three ways to run a scene (one row, Richardson, rtol) and the warnings they share.
+#include "engine/run/run_scene.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "engine/run/adaptive_resolution.hpp"
+#include "engine/run/row_sequence.hpp"
+
+namespace mdrsim {
+namespace {
+
+/// Fewer springs than this in contact at the critical point do not resolve it.
+constexpr std::int64_t kResolvedSprings = 100;
+
+void add_counts(RunCounts& total, const RunCounts& more) {
+  total.events += more.events;
+  total.steps += more.steps;
+  total.halvings += more.halvings;
+  total.root_iterations += more.root_iterations;
+}
+
+/// Rows of N/2, N and 2N springs across the glued radius; the finest row's events.
+RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
+  const std::int64_t n = scene.springs;
+  RowSequence seq(Target::critical);
+  RunCounts counts;
+  for (const std::int64_t springs : {n / 2, n}) {
+    seq.add(run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, {}));
+    add_counts(counts, seq.last().counts);
+  }
+  seq.add(run_row(scene, {.springs = 2 * n, .outer_radius = scene.glued_radius}, observers));
+  add_counts(counts, seq.last().counts);
+
+  RunResult result = seq.last();
+  result.counts = counts;
+  result.accuracy.route = Accuracy::Route::richardson;
+  result.accuracy.rows = {n / 2, n, 2 * n};
+  if (const auto value = seq.value(Accuracy::Route::richardson)) {
+    result.critical = value;
+    result.accuracy.critical_error_estimate = seq.estimate(Accuracy::Route::richardson);
+  } else if (result.critical) {
+    result.warnings.push_back(fmt::format(
+        "richardson: the rows of {}, {} and {} springs end differently ({}, {}, {}); the finest "
+        "row is reported as it is",
+        n / 2, n, 2 * n, to_string(seq.rows()[0].status), to_string(seq.rows()[1].status),
+        to_string(seq.rows()[2].status)));
+  }
+  const RowSequence peaks(Target::peak, seq.rows());
+  if (const auto value = peaks.value(Accuracy::Route::richardson)) {
+    result.peak = value;
+    result.accuracy.peak_error_estimate = peaks.estimate(Accuracy::Route::richardson);
+  }
+  return result;
+}
+
+void warn_resolution(const Scene& scene, RunResult& result) {
+  if (scene.discretization.rtol) return;  // the zoom resolves the critical point
+  const std::int64_t springs = result.springs;
+  const double glued = scene.glued_radius;
+  if (result.status == RunStatus::no_instability && springs > 1) {
+    result.warnings.push_back(fmt::format(
+        "the contact peeled off down to its last spring (a = {:.6g} m of {:.6g} m, {} springs): "
+        "a fold below it is not resolved; discretization.rtol zooms in on it",
+        glued / static_cast<double>(springs), glued, springs));
+  } else if (result.critical && result.critical->springs_in_contact < kResolvedSprings &&
+             result.critical->springs_in_contact < springs) {
+    result.warnings.push_back(fmt::format(
+        "the critical point has only {} springs in contact (a = {:.6g} m of the glued {:.6g} m, "
+        "{} springs): the row does not resolve it; discretization.rtol zooms in on it",
+        result.critical->springs_in_contact, result.critical->contact_radius, glued, springs));
+  }
+}
+
+}  // namespace
+
+RunResult run_scene(const Scene& scene, const ObserverList& observers) {
+  const auto started = std::chrono::steady_clock::now();
+  using Extrapolation = DiscretizationOptions::Extrapolation;
+  RunResult result;
+  if (scene.discretization.rtol) {
+    std::optional<Accuracy::Route> route;
+    if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;
+    if (scene.discretization.richardson()) route = Accuracy::Route::richardson;
+    result = run_adaptive(scene, *scene.discretization.rtol, route, observers);
+  } else if (scene.discretization.richardson()) {
+    result = run_richardson(scene, observers);
+  } else {
+    result =
+        run_row(scene, {.springs = scene.springs, .outer_radius = scene.glued_radius}, observers);
+  }
+  warn_resolution(scene, result);
+  for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  emit_closing_events(result, observers);
+  return result;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,69 @@
+// A loaded scene: the parts and numbers of one pull-off run, checked and resolved.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "controllers/controller.hpp"
+#include "detachment/criterion.hpp"
+#include "engine/base/material.hpp"
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+enum class SolverMethod { event, stepping };
+
+struct SolverOptions {
+  SolverMethod method = SolverMethod::event;
+  /// Stepping increment of the normal control [m for fixed-grips and compliant, N for
+  /// fixed-load]; default 1e-3 of the control value at the preload.
+  std::optional<double> step;
+  int max_halvings = 30;
+  std::int64_t max_steps = 100'000'000;
+};
+
+/// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends
+/// are too coarse for their errors to follow C/N.
+inline constexpr std::int64_t kMinRichardsonSprings = 64;
+
+/// How the spring row is chosen and its results combined across resolutions.
+struct DiscretizationOptions {
+  /// Requested relative accuracy of the critical force; picks the springs (run_scene.hpp).
+  std::optional<double> rtol;
+  /// `extrapolation`: not given (rtol picks the cheaper route; without rtol, none),
+  /// "none" (the plain row) or "richardson" (across rows of N and 2N springs).
+  enum class Extrapolation { automatic, none, richardson };
+  Extrapolation extrapolation = Extrapolation::automatic;
+  /// The largest row rtol may run before it gives up and says so (not a scene key: a cap
+  /// for harnesses such as the fuzzer).
+  std::int64_t max_row_springs = std::int64_t{1} << 25;
+  bool richardson() const { return extrapolation == Extrapolation::richardson; }
+};
+
+/// One axis of the loading machine: its controller and, on the tangential axis, the value
+/// it holds during the pull-off.
+struct AxisLoading {
+  std::string control;  ///< the controller's registered name
+  std::unique_ptr<AxisController> controller;
+  double held_value = 0.0;  ///< [m] or [N], see AxisController::held_value_key
+};
+
+struct Scene {
+  std::string title;
+  Material material{};
+  std::string profile_name;
+  std::unique_ptr<Profile> profile;
+  double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
+  double preload_depth = 0.0;  ///< indentation at the preload [m]
+  AxisLoading normal;
+  std::optional<AxisLoading> tangential;
+  std::string criterion_name;
+  std::unique_ptr<DetachmentCriterion> criterion;
+  std::int64_t springs = 0;  ///< springs across the glued radius (one half)
+  DiscretizationOptions discretization;
+  SolverOptions solver;
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,376 @@
+// Reads a scene table into a Scene: every key checked, parts created by name, preload resolved.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/model/jkr_scales.hpp"
+#include "engine/scene/scene_document_impl.hpp"
+#include "engine/scene/scene_error.hpp"
+#include "engine/scene/toml_reader.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr Bound kPositive{0.0, false};
+
+/// Runs a part's factory, turning its complaints into SceneErrors at the right key.
+template <class Make>
+auto create_part(TomlReader& table, std::string_view name_key, Make make) {
+  try {
+    return make();
+  } catch (const ParameterError& e) {
+    table.fail_at(e.key(), e.what());
+  } catch (const std::invalid_argument& e) {
+    table.fail_at(name_key, e.what());
+  }
+}
+
+/// The keys of a part's table: its name key and the chosen part's parameters. A key that
+/// only another part declares is reported as belonging to that part.
+template <class Registry>
+void check_part_keys(TomlReader& t, const std::string& name_key, const std::string& chosen,
+                     const Registry& registry, std::vector<std::string> extra = {}) {
+  std::vector<std::string> known{name_key};
+  for (const ParameterSpec& spec : registry.find(chosen)->parameters) known.push_back(spec.key);
+  known.insert(known.end(), extra.begin(), extra.end());
+  t.check_keys(known, [&](std::string_view key) -> std::optional<std::string> {
+    std::string owners;
+    for (const std::string& name : registry.names()) {
+      for (const ParameterSpec& spec : registry.find(name)->parameters) {
+        if (spec.key == key) owners += fmt::format("{}\"{}\"", owners.empty() ? "" : " or ", name);
+      }
+    }
+    if (owners.empty()) return std::nullopt;
+    return fmt::format("applies to {} = {} only", name_key, owners);
+  });
+}
+
+Material read_material(TomlReader& t) {
+  t.check_keys({"youngs_modulus", "poisson_ratio", "work_of_adhesion", "effective_modulus",
+                "effective_shear_modulus"});
+  const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
+  const bool effective = t.has("effective_modulus") || t.has("effective_shear_modulus");
+  if (youngs && effective) {
+    t.fail_at(t.has("effective_modulus") ? "effective_modulus" : "effective_shear_modulus",
+              "give youngs_modulus and poisson_ratio, or effective_modulus (and "
+              "effective_shear_modulus), not both");
+  }
+  const double dgamma = t.number({.key = "work_of_adhesion",
+                                  .help = "work of adhesion dgamma [J/m^2], >= 0",
+                                  .lower = Bound{0.0, true}});
+  if (effective) {
+    const double e_star =
+        t.number({.key = "effective_modulus", .help = "E* [Pa], > 0", .lower = kPositive});
+    const auto g_star = t.optional_number(
+        {.key = "effective_shear_modulus", .help = "G* [Pa], > 0", .lower = kPositive});
+    return {e_star, g_star.value_or(e_star), dgamma};
+  }
+  const double e = t.number({.key = "youngs_modulus",
+                             .help = "Young's modulus E [Pa], > 0; or give effective_modulus",
+                             .lower = kPositive});
+  const double nu = t.number({.key = "poisson_ratio",
+                              .help = "Poisson's ratio nu in (-1, 0.5]",
+                              .lower = Bound{-1.0, false},
+                              .upper = Bound{0.5, true}});
+  const Material m = Material::from_youngs_modulus(e, nu, dgamma);
+  // Extreme E and nu near -1 overflow G = E/(2(1+nu)) (paper eq. 8).
+  for (const double modulus : {m.effective_modulus, m.effective_shear_modulus}) {
+    if (!std::isfinite(modulus) || !(modulus > 0.0)) {
+      t.fail(
+          fmt::format("youngs_modulus = {} and poisson_ratio = {} give E* = {} Pa, G* = {} Pa; "
+                      "expected finite positive moduli",
+                      e, nu, m.effective_modulus, m.effective_shear_modulus));
+    }
+  }
+  return m;
+}
+
+/// The controller's constraint a_u u + a_F F = rhs against the contact's stiffness k [N/m]:
+/// a_u + a_F k must be finite, or the equilibrium of every step is NaN.
+void check_constraint(TomlReader& t, const AxisLoading& axis, double contact_stiffness) {
+  const AffineConstraint c = axis.controller->constraint();
+  const double combined = c.displacement_coefficient + c.force_coefficient * contact_stiffness;
+  if (!std::isfinite(c.displacement_coefficient) || !std::isfinite(c.force_coefficient) ||
+      !std::isfinite(combined)) {
+    t.fail(fmt::format(
+        "control = \"{}\" is degenerate with these values (constraint a_u = {}, a_F = {} m/N "
+        "against a contact stiffness of {} N/m)",
+        axis.control, c.displacement_coefficient, c.force_coefficient, contact_stiffness));
+  }
+}
+
+AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool holds_value) {
+  AxisLoading axis;
+  axis.control = t.name("control", controllers.names());
+  const auto* entry = controllers.find(axis.control);
+  // A controller names its held value only once created, so keys are checked against both
+  // quantities an axis can hold, and the one this controller does not hold is refused below.
+  const std::vector<std::string> held_keys{"displacement", "force"};
+  check_part_keys(t, "control", axis.control, controllers,
+                  holds_value ? held_keys : std::vector<std::string>{});
+  const ParameterValues values = t.read_all(entry->parameters);
+  axis.controller = create_part(t, "control", [&] { return entry->create(values); });
+  if (holds_value) {
+    const std::string key(axis.controller->held_value_key());
+    for (const std::string& other : held_keys) {
+      if (other != key && t.has(other)) {
+        t.fail_at(other,
+                  fmt::format("control = \"{}\" holds {}, not {}", axis.control, key, other));
+      }
+    }
+    const char* unit = key == "force" ? "N" : key == "displacement" ? "m" : "SI";
+    axis.held_value = t.number({.key = key, .help = fmt::format("the held {} [{}]", key, unit)});
+  }
+  t.finish();
+  return axis;
+}
+
+/// The glued radius and the preload depth, from the one preload quantity given.
+void resolve_preload(TomlReader& t, Scene& scene) {
+  const std::vector<std::string> keys{"depth", "force", "contact_radius"};
+  t.check_keys(keys);
+  int given = 0;
+  for (const std::string& k : keys) given += t.has(k) ? 1 : 0;
+  if (given != 1) t.fail("give exactly one of depth [m], force [N] or contact_radius [m]");
+  const Profile& profile = *scene.profile;
+  const double e_star = scene.material.effective_modulus;
+  const auto fixed = profile.fixed_contact_radius();
+  // A profile with an edge (a table's last point) reaches only so far; a sphere's image
+  // diverges at its edge instead, so any depth or force is reached inside it.
+  const double edge = profile.outer_radius();
+  const double edge_image = std::isfinite(edge) ? profile.mdr_image(edge) : INFINITY;
+  try {
+    if (const auto d = t.optional_number({.key = "depth", .help = "[m]", .lower = kPositive})) {
+      if (!fixed && *d > edge_image) {
+        t.fail_range("depth",
+                     fmt::format("= {} is beyond the profile's reach: its image is g = {:.6g} "
+                                 "m at its edge r = {} m",
+                                 *d, edge_image, edge));
+      }
+      scene.glued_radius = fixed ? *fixed : profile.contact_radius_at_depth(*d);
+      scene.preload_depth = *d;
+    } else if (const auto f =
+                   t.optional_number({.key = "force", .help = "[N]", .lower = kPositive})) {
+      // The dimensionless output divides forces by F0 (paper eq. 16).
+      if (const auto tip = profile.jkr_scale_radius()) {
+        if (const auto scales = JkrScales::of(*tip, e_star, scene.material.work_of_adhesion);
+            scales && !std::isfinite(*f / scales->force)) {
+          t.fail_range("force", fmt::format("= {} overflows F/F0 (the JKR scale is {} N)", *f,
+                                            scales->force));
+        }
+      }
+      if (!fixed && std::isfinite(edge_image)) {
+        const double edge_force = e_star * profile.nonadhesive_force_per_modulus(edge);
+        if (*f > edge_force) {
+          t.fail_range("force",
+                       fmt::format("= {} is beyond the profile's reach: {:.6g} N press it in "
+                                   "up to its edge r = {} m",
+                                   *f, edge_force, edge));
+        }
+      }
+      const double a = contact_radius_at_force(profile, *f, e_star);
+      scene.glued_radius = a;
+      // Depth that carries the force over radius a: F = 2 E* (a d - integral_0^a g).
+      const double image_integral =
+          a * profile.mdr_image(a) - 0.5 * profile.nonadhesive_force_per_modulus(a);
+      scene.preload_depth = (*f / (2.0 * e_star) + image_integral) / a;
+    } else {
+      const double a = t.number({.key = "contact_radius", .help = "[m]", .lower = kPositive});
+      if (fixed && std::abs(a - *fixed) > 1e-12 * *fixed) {
+        t.fail_range(
+            "contact_radius",
+            fmt::format("= {} differs from the profile's fixed contact radius {}", a, *fixed));
+      }
+      if (a > edge) {
+        t.fail_range("contact_radius",
+                     fmt::format("= {} is beyond the profile's edge at {}", a, edge));
+      }
+      if (!std::isfinite(profile.mdr_image(a))) {
+        t.fail_range("contact_radius",
+                     fmt::format("= {} is at the profile's edge, where its image diverges", a));
+      }
+      scene.glued_radius = a;
+      scene.preload_depth = profile.mdr_image(a);
+    }
+  } catch (const std::domain_error& e) {
+    t.fail(e.what());
+  }
+  if (!(scene.glued_radius > 0.0) || !std::isfinite(scene.glued_radius)) {
+    t.fail(fmt::format("the preload gives no glued contact (radius {} m)", scene.glued_radius));
+  }
+  // Extreme but in-range values overflow the force and elongation scales of the run.
+  const double normal_stiffness = 2.0 * e_star * scene.glued_radius;
+  const double shear_stiffness = 2.0 * scene.material.effective_shear_modulus * scene.glued_radius;
+  if (!std::isfinite(normal_stiffness) || !(normal_stiffness > 0.0) ||
+      !std::isfinite(shear_stiffness) || !(shear_stiffness > 0.0)) {
+    t.fail(fmt::format(
+        "the contact stiffnesses 2 E* a = {} N/m and 2 G* a = {} N/m at contact radius {} m are "
+        "not finite and positive",
+        normal_stiffness, shear_stiffness, scene.glued_radius));
+  }
+  const double force_scale = e_star * scene.glued_radius * std::abs(scene.preload_depth);
+  const double adhesion_scale =
+      2.0 * std::numbers::pi * scene.glued_radius * scene.material.work_of_adhesion;
+  if (!std::isfinite(scene.preload_depth) || !std::isfinite(force_scale) ||
+      !std::isfinite(adhesion_scale)) {
+    t.fail(fmt::format(
+        "the preload overflows (contact radius {} m, depth {} m, E* a d = {} N, 2 pi a dgamma "
+        "= {} N)",
+        scene.glued_radius, scene.preload_depth, force_scale, adhesion_scale));
+  }
+  t.finish();
+}
+
+/// The held tangential value must leave the tangential force and displacement of the glued
+/// contact, Fx ~ 2 G* a ux, finite.
+void check_tangential_scale(TomlReader& t, const Scene& scene) {
+  const AxisLoading& axis = *scene.tangential;
+  const std::string key(axis.controller->held_value_key());
+  const double stiffness = 2.0 * scene.material.effective_shear_modulus * scene.glued_radius;
+  const double other = key == "force" ? std::abs(axis.held_value) / stiffness
+                                      : std::abs(axis.held_value) * stiffness;
+  if (!std::isfinite(other)) {
+    t.fail_range(key, fmt::format("= {} overflows the tangential {} of the glued contact",
+                                  axis.held_value, key == "force" ? "displacement" : "force"));
+  }
+  // The dimensionless output divides the held value by F0 or d0 (paper eq. 16).
+  const auto radius = scene.profile->jkr_scale_radius();
+  if (!radius) return;
+  const auto scales =
+      JkrScales::of(*radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
+  if (!scales) return;
+  const double unit = key == "force" ? scales->force : scales->depth;
+  if (!std::isfinite(axis.held_value / unit)) {
+    t.fail_range(key,
+                 fmt::format("= {} overflows {} (the JKR scale is {} {})", axis.held_value,
+                             key == "force" ? "F/F0" : "u/d0", unit, key == "force" ? "N" : "m"));
+  }
+}
+
+void read_solver(TomlReader& t, SolverOptions& solver) {
+  t.check_keys({"method", "step", "max_halvings", "max_steps"});
+  const std::string method = t.name("method", {"event", "stepping"}, "event");
+  solver.method = method == "event" ? SolverMethod::event : SolverMethod::stepping;
+  if (solver.method == SolverMethod::event) {
+    for (const char* k : {"step", "max_halvings", "max_steps"}) {
+      if (t.has(k)) t.fail_at(k, "applies to method = \"stepping\" only");
+    }
+  } else {
+    solver.step = t.optional_number(
+        {.key = "step", .help = "increment of the normal control (SI)", .lower = kPositive});
+    if (t.has("max_halvings")) {
+      solver.max_halvings = static_cast<int>(
+          t.integer({.key = "max_halvings", .lower = Bound{0, true}, .upper = Bound{60, true}}));
+    }
+    if (t.has("max_steps")) {
+      solver.max_steps =
+          t.integer({.key = "max_steps", .lower = Bound{1, true}, .upper = Bound{1e15, true}});
+    }
+  }
+  t.finish();
+}
+
+}  // namespace
+
+Scene build_scene(const toml::table& root_table, const std::string& source_name,
+                  const std::filesystem::path& base_dir, const Registries& registries) {
+  TomlReader root(root_table, "", source_name, base_dir);
+  root.check_keys(
+      {"title", "material", "profile", "loading", "detachment", "discretization", "solver"});
+  Scene scene;
+  scene.title = root.optional_text("title").value_or("");
+
+  TomlReader material = root.table("material");
+  scene.material = read_material(material);
+  material.finish();
+
+  TomlReader profile = root.table("profile");
+  scene.profile_name = profile.name("type", registries.profiles.names());
+  check_part_keys(profile, "type", scene.profile_name, registries.profiles);
+  {
+    const auto* entry = registries.profiles.find(scene.profile_name);
+    const ParameterValues values = profile.read_all(entry->parameters);
+    scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
+  }
+  profile.finish();
+
+  TomlReader loading = root.table("loading");
+  loading.check_keys({"preload", "tangential", "normal"});
+  TomlReader preload = loading.table("preload");
+  resolve_preload(preload, scene);
+  if (auto tangential = loading.optional_table("tangential")) {
+    scene.tangential = read_axis(*tangential, registries.controllers, true);
+    check_tangential_scale(*tangential, scene);
+    check_constraint(*tangential, *scene.tangential,
+                     2.0 * scene.material.effective_shear_modulus * scene.glued_radius);
+  }
+  TomlReader normal = loading.table("normal");
+  scene.normal = read_axis(normal, registries.controllers, false);
+  check_constraint(normal, scene.normal,
+                   2.0 * scene.material.effective_modulus * scene.glued_radius);
+  loading.finish();
+
+  const InterfaceProperties interface = scene.material.interface_properties();
+  scene.criterion_name = "mode-mixed";
+  if (auto detachment = root.optional_table("detachment")) {
+    scene.criterion_name =
+        detachment->name("criterion", registries.criteria.names(), scene.criterion_name);
+    check_part_keys(*detachment, "criterion", scene.criterion_name, registries.criteria);
+    const auto* entry = registries.criteria.find(scene.criterion_name);
+    const ParameterValues values = detachment->read_all(entry->parameters);
+    scene.criterion =
+        create_part(*detachment, "criterion", [&] { return entry->create(values, interface); });
+    detachment->finish();
+  } else {
+    const auto* entry = registries.criteria.find(scene.criterion_name);
+    scene.criterion = entry->create(ParameterValues{}, interface);
+  }
+
+  scene.springs = 2000;
+  if (auto discretization = root.optional_table("discretization")) {
+    discretization->check_keys({"springs", "rtol", "extrapolation"});
+    if (discretization->has("rtol") && discretization->has("springs")) {
+      discretization->fail_at("rtol", "give springs or rtol, not both");
+    }
+    scene.discretization.rtol =
+        discretization->optional_number({.key = "rtol",
+                                         .help = "relative accuracy of the critical force",
+                                         .lower = Bound{1e-12, true},
+                                         .upper = Bound{0.1, true}});
+    using Extrapolation = DiscretizationOptions::Extrapolation;
+    if (discretization->has("extrapolation")) {
+      scene.discretization.extrapolation =
+          discretization->name("extrapolation", {"none", "richardson"}, std::string("none")) ==
+                  "richardson"
+              ? Extrapolation::richardson
+              : Extrapolation::none;
+    }
+    if (discretization->has("springs")) {
+      scene.springs = discretization->integer({.key = "springs",
+                                               .help = "springs across the glued radius",
+                                               .lower = Bound{1, true},
+                                               .upper = Bound{1e9, true}});
+      if (scene.discretization.richardson() && scene.springs < kMinRichardsonSprings) {
+        discretization->fail_at(
+            "springs", fmt::format("{} springs are too few to extrapolate (richardson needs at "
+                                   "least {})",
+                                   scene.springs, kMinRichardsonSprings));
+      }
+    }
+    discretization->finish();
+  }
+
+  if (auto solver = root.optional_table("solver")) read_solver(*solver, scene.solver);
+  if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
+    TomlReader discretization = root.table("discretization");
+    discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
+  }
+  root.finish();
+  return scene;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,217 @@
+// Parsing scene files and applying --set / --vary overrides at dotted keys.
+#include "engine/scene/scene_document.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "engine/scene/scene_document_impl.hpp"
+#include "engine/scene/scene_error.hpp"
+
+namespace mdrsim {
+namespace {
+
+/// Scene files are small; the cap keeps /dev/zero or a mistyped data file from eating memory.
+constexpr std::size_t kMaxSceneBytes = 16u << 20;
+
+std::string lowercase_first(std::string text) {
+  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+  return text;
+}
+
+std::string_view trim(std::string_view text) {
+  const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  while (!text.empty() && blank(text.front())) text.remove_prefix(1);
+  while (!text.empty() && blank(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+std::vector<std::string> split_key(std::string_view origin, std::string_view dotted) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = dotted.find('.', start);
+    const std::string_view part =
+        dotted.substr(start, dot == std::string_view::npos ? dotted.npos : dot - start);
+    if (part.empty()) {
+      throw SceneError(fmt::format("{}: '{}' is not a dotted scene key like material.poisson_ratio",
+                                   origin, printable(dotted)));
+    }
+    parts.emplace_back(part);
+    if (dot == std::string_view::npos) return parts;
+    start = dot + 1;
+  }
+}
+
+std::string join_key(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : ".") + p;
+  return out;
+}
+
+/// The table that holds the last part of a dotted key, created as needed.
+toml::table& parent_table(toml::table& root, const std::vector<std::string>& parts,
+                          std::string_view origin) {
+  toml::table* table = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* next = table->get(parts[i]);
+    if (!next) next = &table->insert_or_assign(parts[i], toml::table{}).first->second;
+    table = next->as_table();
+    if (!table) {
+      throw SceneError(fmt::format("{}: {}: '{}' is not a table", origin,
+                                   printable(join_key(parts)), printable(parts[i])));
+    }
+  }
+  return *table;
+}
+
+/// Parses "v = VALUE" with `origin` as the source of its nodes; throws toml::parse_error.
+toml::table parse_value(const std::string& value_toml, const std::string& origin) {
+  return toml::parse("v = " + value_toml, origin);
+}
+
+void apply(toml::table& root, const SceneOverride& o) {
+  toml::table& parent = parent_table(root, o.parts, o.origin);
+  toml::table parsed = parse_value(o.value_toml, o.origin);
+  // Moved, not copied: a moved node keeps its source, so messages name the flag.
+  parsed.get("v")->visit(
+      [&](auto&& node) { parent.insert_or_assign(o.parts.back(), std::move(node)); });
+}
+
+toml::table parse_scene(const std::string& text, const std::string& source_name) {
+  try {
+    return toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    const auto& begin = e.source().begin;
+    const std::string where = begin.line == 0
+                                  ? source_name + ":"
+                                  : fmt::format("{}:{}:{}:", source_name, begin.line, begin.column);
+    throw SceneError(fmt::format("{} malformed TOML: {}", where,
+                                 printable(lowercase_first(std::string(e.description())), 200)));
+  }
+}
+
+}  // namespace
+
+SceneDocument::SceneDocument(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+// toml++ does not copy source regions, so a copy re-parses the text and replays the
+// overrides: messages from a copy still name the line or the flag.
+SceneDocument::SceneDocument(const SceneDocument& other) : impl_(std::make_unique<Impl>()) {
+  impl_->text = other.impl_->text;
+  impl_->source_name = other.impl_->source_name;
+  impl_->base_dir = other.impl_->base_dir;
+  impl_->overrides = other.impl_->overrides;
+  impl_->root = parse_scene(impl_->text, impl_->source_name);
+  for (const auto& o : impl_->overrides) apply(impl_->root, o);
+}
+
+SceneDocument& SceneDocument::operator=(const SceneDocument& other) {
+  if (this != &other) *this = SceneDocument(other);
+  return *this;
+}
+SceneDocument::SceneDocument(SceneDocument&&) noexcept = default;
+SceneDocument& SceneDocument::operator=(SceneDocument&&) noexcept = default;
+SceneDocument::~SceneDocument() = default;
+
+const std::string& SceneDocument::source_name() const { return impl_->source_name; }
+
+SceneDocument SceneDocument::from_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  const auto fail = [&](const std::string& why) {
+    throw SceneError(fmt::format("{}: cannot read the scene file ({})", name, why));
+  };
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail("it is a directory");
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) fail(lowercase_first(std::strerror(errno)));
+  std::string text;
+  char buffer[1 << 16];
+  while (true) {
+    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
+    text.append(buffer, n);
+    if (text.size() > kMaxSceneBytes) fail("it is larger than 16 MiB");
+    if (n < sizeof buffer) break;
+  }
+  if (std::ferror(file.get())) fail(lowercase_first(std::strerror(errno)));
+  return from_text(text, name, path.parent_path().empty() ? "." : path.parent_path());
+}
+
+SceneDocument SceneDocument::from_text(std::string_view text, const std::string& source_name,
+                                       const std::filesystem::path& base_dir) {
+  auto impl = std::make_unique<Impl>();
+  impl->text = std::string(text);
+  impl->source_name = source_name;
+  impl->base_dir = base_dir;
+  impl->root = parse_scene(impl->text, source_name);
+  return SceneDocument(std::move(impl));
+}
+
+void SceneDocument::set_value(std::string_view dotted_key, std::string_view value_text) {
+  const std::string origin = "--set";
+  const auto parts = split_key(origin, trim(dotted_key));
+  const std::string key = printable(join_key(parts));
+  const std::string_view value = trim(value_text);
+  if (value.empty()) throw SceneError(fmt::format("{}: {}: the value is empty", origin, key));
+  if (std::any_of(value.begin(), value.end(), [](char c) {
+        return (static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f;
+      })) {
+    throw SceneError(fmt::format("{}: {}: the value must be one line of text", origin, key));
+  }
+  std::string value_toml(value);
+  try {
+    const toml::table parsed = parse_value(value_toml, origin);
+    if (parsed.size() != 1) throw SceneError(fmt::format("{}: {}: not one value", origin, key));
+  } catch (const toml::parse_error&) {
+    // A bare word such as fixed-load: read it as a TOML string.
+    std::string quoted(1, '"');
+    for (const char c : value) {
+      if (c == '"' || c == '\\') quoted += '\\';
+      quoted += c;
+    }
+    quoted += '"';
+    value_toml = std::move(quoted);
+    try {
+      parse_value(value_toml, origin);
+    } catch (const toml::parse_error& e) {
+      throw SceneError(fmt::format("{}: {}: cannot read value '{}' ({})", origin, key,
+                                   printable(value), printable(std::string(e.description()))));
+    }
+  }
+  const SceneOverride o{origin, parts, value_toml};
+  apply(impl_->root, o);
+  remember(o);
+}
+
+void SceneDocument::set_number(std::string_view dotted_key, double value, std::string_view origin) {
+  const std::string from(origin);
+  if (!std::isfinite(value)) {
+    throw SceneError(
+        fmt::format("{}: {} = {} is not a finite number", from, printable(dotted_key), value));
+  }
+  const SceneOverride o{from, split_key(from, trim(dotted_key)), fmt::format("{:.17g}", value)};
+  apply(impl_->root, o);
+  remember(o);
+}
+
+void SceneDocument::remember(const SceneOverride& o) {
+  // A later value at the same key replaces an earlier one, so a sweep's copies stay small.
+  auto& list = impl_->overrides;
+  list.erase(std::remove_if(list.begin(), list.end(),
+                            [&](const SceneOverride& x) { return x.parts == o.parts; }),
+             list.end());
+  list.push_back(o);
+}
+
+Scene SceneDocument::build(const Registries& registries) const {
+  return build_scene(impl_->root, impl_->source_name, impl_->base_dir, registries);
+}
+
+}  // namespace mdrsim
