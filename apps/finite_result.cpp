@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "engine/events/result_json.hpp"
+#include "engine/model/snapshot_fields.hpp"
 
 namespace mdrsim::cli {
 
@@ -20,17 +21,14 @@ void require_finite(const Scene& scene, const RunResult& result) {
         "extreme for double precision",
         what, name, value, s ? fmt::format(" (dimensionless scale {})", scale) : std::string()));
   };
-  const double force = s ? s->force : 1.0, radius = s ? s->radius : 1.0, depth = s ? s->depth : 1.0;
   for (const auto& [what, snapshot] :
        {std::pair{"critical", &result.critical}, std::pair{"peak_adhesion", &result.peak}}) {
     if (!*snapshot) continue;
-    const ContactSnapshot& c = **snapshot;
-    check(what, "normal_force", c.normal_force, force);
-    check(what, "tangential_force", c.tangential_force, force);
-    check(what, "contact_radius", c.contact_radius, radius);
-    check(what, "indentation", c.indentation, depth);
-    check(what, "tangential_displacement", c.tangential_displacement, depth);
+    for (const SnapshotField& f : kSnapshotFields) {
+      check(what, f.name, (**snapshot).*f.member, s ? scale_of(*s, f.scale) : 1.0);
+    }
   }
+  const double force = s ? s->force : 1.0;
   if (result.tangential_strength) {
     check("result", "tangential_strength", *result.tangential_strength, force);
   }

@@ -18,6 +18,7 @@
 #include "engine/events/log_observer.hpp"
 #include "engine/events/result_json.hpp"
 #include "engine/events/trajectory_csv.hpp"
+#include "engine/model/snapshot_fields.hpp"
 #include "engine/run/run_scene.hpp"
 
 namespace mdrsim::cli {
@@ -65,18 +66,18 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
   const auto s = dimensionless_scales(scene);
   if (r.critical) {
     const ContactSnapshot& c = *r.critical;
-    fmt::print(out,
-               "critical: F = {:.8g} N, Fx = {:.8g} N, a = {:.8g} m, d = {:.8g} m, ux = {:.8g} m, "
-               "{} springs in contact\n",
-               c.normal_force, c.tangential_force, c.contact_radius, c.indentation,
-               c.tangential_displacement, c.springs_in_contact);
+    std::string line;
+    for (const SnapshotField& f : kSnapshotFields) {
+      line += fmt::format("{} = {:.8g} {}, ", f.symbol, c.*f.member, f.unit);
+    }
+    fmt::print(out, "critical: {}{} springs in contact\n", line, c.springs_in_contact);
     if (s) {
-      fmt::print(out,
-                 "dimensionless: F/F0 = {:.8g}, Fx/F0 = {:.8g}, a/a0 = {:.8g}, d/d0 = {:.8g}, "
-                 "ux/d0 = {:.8g}\n",
-                 c.normal_force / s->force, c.tangential_force / s->force,
-                 c.contact_radius / s->radius, c.indentation / s->depth,
-                 c.tangential_displacement / s->depth);
+      line.clear();
+      for (const SnapshotField& f : kSnapshotFields) {
+        line += fmt::format("{}{}/{} = {:.8g}", line.empty() ? "" : ", ", f.symbol,
+                            scale_symbol(f.scale), c.*f.member / scale_of(*s, f.scale));
+      }
+      fmt::print(out, "dimensionless: {}\n", line);
     } else if (!scene.profile->jkr_scale_radius()) {
       fmt::print(out, "dimensionless: not defined for profile \"{}\" (parabolic and sphere only)\n",
                  scene.profile_name);

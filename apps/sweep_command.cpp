@@ -19,6 +19,7 @@
 #include "apps/scene_input.hpp"
 #include "apps/vary_spec.hpp"
 #include "engine/events/result_json.hpp"
+#include "engine/model/snapshot_fields.hpp"
 #include "engine/run/run_scene.hpp"
 
 namespace mdrsim::cli {
@@ -36,15 +37,11 @@ void write_csv(std::ostream& out, const VarySpec& vary, const std::vector<Scene>
   const bool dimensionless = std::any_of(scenes.begin(), scenes.end(), [](const Scene& s) {
     return dimensionless_scales(s).has_value();
   });
-  fmt::print(out,
-             "status,{},normal_force,tangential_force,contact_radius,indentation,"
-             "tangential_displacement,springs_in_contact",
-             vary.key);
+  out << "status," << vary.key;
+  for (const SnapshotField& f : kSnapshotFields) out << ',' << f.name;
+  out << ",springs_in_contact";
   if (dimensionless) {
-    fmt::print(out,
-               ",dimensionless_normal_force,dimensionless_tangential_force,"
-               "dimensionless_contact_radius,dimensionless_indentation,"
-               "dimensionless_tangential_displacement");
+    for (const SnapshotField& f : kSnapshotFields) out << ",dimensionless_" << f.name;
   }
   out << ",peak_normal_force";
   if (dimensionless) out << ",dimensionless_peak_normal_force";
@@ -53,20 +50,16 @@ void write_csv(std::ostream& out, const VarySpec& vary, const std::vector<Scene>
     const RunResult& r = results[i];
     const auto s = dimensionless_scales(scenes[i]);
     fmt::print(out, "{},{}", to_string(r.status), vary.values[i]);
-    if (const auto& c = r.critical) {
-      fmt::print(out, ",{},{},{},{},{},{}", c->normal_force, c->tangential_force, c->contact_radius,
-                 c->indentation, c->tangential_displacement, c->springs_in_contact);
-    } else {
-      out << ",,,,,,";
+    // One field per column, empty where the run has no critical point.
+    for (const SnapshotField& f : kSnapshotFields) {
+      out << ',' << (r.critical ? fmt::format("{}", *r.critical.*f.member) : std::string());
     }
+    out << ',' << (r.critical ? fmt::format("{}", r.critical->springs_in_contact) : std::string());
     if (dimensionless) {
-      if (s && r.critical) {
-        const ContactSnapshot& c = *r.critical;
-        fmt::print(out, ",{},{},{},{},{}", c.normal_force / s->force, c.tangential_force / s->force,
-                   c.contact_radius / s->radius, c.indentation / s->depth,
-                   c.tangential_displacement / s->depth);
-      } else {
-        out << ",,,,,";
+      for (const SnapshotField& f : kSnapshotFields) {
+        out << ','
+            << (s && r.critical ? fmt::format("{}", *r.critical.*f.member / scale_of(*s, f.scale))
+                                : std::string());
       }
     }
     out << ',' << (r.peak ? fmt::format("{}", r.peak->normal_force) : std::string());

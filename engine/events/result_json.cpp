@@ -1,24 +1,22 @@
 // Field names and order as in SPEC; dimensionless values only where the JKR scales exist.
 #include "engine/events/result_json.hpp"
 
+#include "engine/model/snapshot_fields.hpp"
+
 namespace mdrsim {
 namespace {
 
 nlohmann::ordered_json snapshot_json(const ContactSnapshot& c) {
-  return {{"normal_force", c.normal_force},
-          {"tangential_force", c.tangential_force},
-          {"contact_radius", c.contact_radius},
-          {"indentation", c.indentation},
-          {"tangential_displacement", c.tangential_displacement},
-          {"springs_in_contact", c.springs_in_contact}};
+  nlohmann::ordered_json j;
+  for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member;
+  j["springs_in_contact"] = c.springs_in_contact;
+  return j;
 }
 
 nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const JkrScales& s) {
-  return {{"normal_force", c.normal_force / s.force},
-          {"tangential_force", c.tangential_force / s.force},
-          {"contact_radius", c.contact_radius / s.radius},
-          {"indentation", c.indentation / s.depth},
-          {"tangential_displacement", c.tangential_displacement / s.depth}};
+  nlohmann::ordered_json j;
+  for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member / scale_of(s, f.scale);
+  return j;
 }
 
 const char* route_name(Accuracy::Route route) {

@@ -6,6 +6,7 @@
 
 #include "engine/base/bracketed_root.hpp"
 #include "engine/methods/boundary_let_go.hpp"
+#include "engine/model/snapshot_fields.hpp"
 
 namespace mdrsim {
 namespace {
@@ -27,13 +28,9 @@ std::optional<double> vertex(double inner, double at, double outer) {
 ContactSnapshot interpolate_snapshots(const ContactSnapshot& in, const ContactSnapshot& at,
                                       const ContactSnapshot& out, double s) {
   ContactSnapshot q = at;
-  q.normal_control = quadratic(in.normal_control, at.normal_control, out.normal_control, s);
-  q.indentation = quadratic(in.indentation, at.indentation, out.indentation, s);
-  q.normal_force = quadratic(in.normal_force, at.normal_force, out.normal_force, s);
-  q.contact_radius = quadratic(in.contact_radius, at.contact_radius, out.contact_radius, s);
-  q.tangential_displacement = quadratic(in.tangential_displacement, at.tangential_displacement,
-                                        out.tangential_displacement, s);
-  q.tangential_force = quadratic(in.tangential_force, at.tangential_force, out.tangential_force, s);
+  for (const auto member : kBranchQuantities) {
+    q.*member = quadratic(in.*member, at.*member, out.*member, s);
+  }
   return q;
 }
 

@@ -1,6 +1,8 @@
 // Combination of a row sequence and its a posteriori error estimates.
 #include "engine/run/row_sequence.hpp"
 
+#include "engine/model/snapshot_fields.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,15 +15,8 @@ double rounding(double value) { return 1e-13 * std::abs(value); }
 }  // namespace
 
 ContactSnapshot extrapolate(const ContactSnapshot& coarse, const ContactSnapshot& fine) {
-  const auto twice_minus = [](double c, double f) { return 2.0 * f - c; };
   ContactSnapshot out = fine;
-  out.normal_control = twice_minus(coarse.normal_control, fine.normal_control);
-  out.indentation = twice_minus(coarse.indentation, fine.indentation);
-  out.normal_force = twice_minus(coarse.normal_force, fine.normal_force);
-  out.contact_radius = twice_minus(coarse.contact_radius, fine.contact_radius);
-  out.tangential_displacement =
-      twice_minus(coarse.tangential_displacement, fine.tangential_displacement);
-  out.tangential_force = twice_minus(coarse.tangential_force, fine.tangential_force);
+  for (const auto member : kBranchQuantities) out.*member = 2.0 * fine.*member - coarse.*member;
   return out;
 }
 

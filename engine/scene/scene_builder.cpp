@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/model/jkr_scales.hpp"
+#include "engine/model/preload.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/scene/toml_reader.hpp"
@@ -138,66 +139,34 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   if (given != 1) t.fail("give exactly one of depth [m], force [N] or contact_radius [m]");
   const Profile& profile = *scene.profile;
   const double e_star = scene.material.effective_modulus;
-  const auto fixed = profile.fixed_contact_radius();
-  // A profile with an edge (a table's last point) reaches only so far; a sphere's image
-  // diverges at its edge instead, so any depth or force is reached inside it.
-  const double edge = profile.outer_radius();
-  const double edge_image = std::isfinite(edge) ? profile.mdr_image(edge) : INFINITY;
-  try {
-    if (const auto d = t.optional_number({.key = "depth", .help = "[m]", .lower = kPositive})) {
-      if (!fixed && *d > edge_image) {
-        t.fail_range("depth",
-                     fmt::format("= {} is beyond the profile's reach: its image is g = {:.6g} "
-                                 "m at its edge r = {} m",
-                                 *d, edge_image, edge));
-      }
-      scene.glued_radius = fixed ? *fixed : profile.contact_radius_at_depth(*d);
-      scene.preload_depth = *d;
-    } else if (const auto f =
-                   t.optional_number({.key = "force", .help = "[N]", .lower = kPositive})) {
-      // The dimensionless output divides forces by F0 (paper eq. 16).
-      if (const auto tip = profile.jkr_scale_radius()) {
-        if (const auto scales = JkrScales::of(*tip, e_star, scene.material.work_of_adhesion);
-            scales && !std::isfinite(*f / scales->force)) {
-          t.fail_range("force", fmt::format("= {} overflows F/F0 (the JKR scale is {} N)", *f,
-                                            scales->force));
-        }
-      }
-      if (!fixed && std::isfinite(edge_image)) {
-        const double edge_force = e_star * profile.nonadhesive_force_per_modulus(edge);
-        if (*f > edge_force) {
-          t.fail_range("force",
-                       fmt::format("= {} is beyond the profile's reach: {:.6g} N press it in "
-                                   "up to its edge r = {} m",
-                                   *f, edge_force, edge));
-        }
-      }
-      const double a = contact_radius_at_force(profile, *f, e_star);
-      scene.glued_radius = a;
-      // Depth that carries the force over radius a: F = 2 E* (a d - integral_0^a g).
-      const double image_integral =
-          a * profile.mdr_image(a) - 0.5 * profile.nonadhesive_force_per_modulus(a);
-      scene.preload_depth = (*f / (2.0 * e_star) + image_integral) / a;
-    } else {
-      const double a = t.number({.key = "contact_radius", .help = "[m]", .lower = kPositive});
-      if (fixed && std::abs(a - *fixed) > 1e-12 * *fixed) {
-        t.fail_range(
-            "contact_radius",
-            fmt::format("= {} differs from the profile's fixed contact radius {}", a, *fixed));
-      }
-      if (a > edge) {
-        t.fail_range("contact_radius",
-                     fmt::format("= {} is beyond the profile's edge at {}", a, edge));
-      }
-      if (!std::isfinite(profile.mdr_image(a))) {
-        t.fail_range("contact_radius",
-                     fmt::format("= {} is at the profile's edge, where its image diverges", a));
-      }
-      scene.glued_radius = a;
-      scene.preload_depth = profile.mdr_image(a);
+  // The solve is the model's (engine/model/preload); here its keys and their locations.
+  const auto solved = [&](const char* key, const auto& solve) {
+    try {
+      const PreloadState p = solve();
+      scene.glued_radius = p.glued_radius;
+      scene.preload_depth = p.depth;
+    } catch (const PreloadOutOfReach& e) {
+      t.fail_range(key, e.what());
+    } catch (const std::domain_error& e) {
+      t.fail(e.what());
     }
-  } catch (const std::domain_error& e) {
-    t.fail(e.what());
+  };
+  if (const auto d = t.optional_number({.key = "depth", .help = "[m]", .lower = kPositive})) {
+    solved("depth", [&] { return preload_at_depth(profile, *d); });
+  } else if (const auto f =
+                 t.optional_number({.key = "force", .help = "[N]", .lower = kPositive})) {
+    // The dimensionless output divides forces by F0 (paper eq. 16).
+    if (const auto tip = profile.jkr_scale_radius()) {
+      if (const auto scales = JkrScales::of(*tip, e_star, scene.material.work_of_adhesion);
+          scales && !std::isfinite(*f / scales->force)) {
+        t.fail_range("force",
+                     fmt::format("= {} overflows F/F0 (the JKR scale is {} N)", *f, scales->force));
+      }
+    }
+    solved("force", [&] { return preload_at_force(profile, *f, e_star); });
+  } else {
+    const double a = t.number({.key = "contact_radius", .help = "[m]", .lower = kPositive});
+    solved("contact_radius", [&] { return preload_at_radius(profile, a); });
   }
   if (!(scene.glued_radius > 0.0) || !std::isfinite(scene.glued_radius)) {
     t.fail(fmt::format("the preload gives no glued contact (radius {} m)", scene.glued_radius));

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "engine/events/result_json.hpp"
+#include "engine/model/snapshot_fields.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
@@ -66,26 +67,16 @@ SceneCheck check_scene_text(std::string_view text) {
   for (const auto& [what, snapshot] :
        {std::pair{"critical", &result.critical}, std::pair{"peak_adhesion", &result.peak}}) {
     if (!*snapshot) continue;
-    const ContactSnapshot& c = **snapshot;
-    if (const std::string bad =
-            first_not_finite({{"normal_force", c.normal_force},
-                              {"tangential_force", c.tangential_force},
-                              {"contact_radius", c.contact_radius},
-                              {"indentation", c.indentation},
-                              {"tangential_displacement", c.tangential_displacement}});
-        !bad.empty()) {
-      return {Outcome::broken, std::string(what) + "." + bad};
-    }
-    // The dimensionless values of the JSON result, as apps/finite_result.cpp checks them.
-    if (s) {
-      if (const std::string bad =
-              first_not_finite({{"normal_force", c.normal_force / s->force},
-                                {"tangential_force", c.tangential_force / s->force},
-                                {"contact_radius", c.contact_radius / s->radius},
-                                {"indentation", c.indentation / s->depth},
-                                {"tangential_displacement", c.tangential_displacement / s->depth}});
-          !bad.empty()) {
-        return {Outcome::broken, std::string(what) + ".dimensionless." + bad};
+    // SI values, and the dimensionless ones of the JSON result, as apps/finite_result.cpp
+    // checks them.
+    for (const SnapshotField& f : kSnapshotFields) {
+      const double value = (**snapshot).*f.member;
+      if (!std::isfinite(value)) {
+        return {Outcome::broken, fmt::format("{}.{} = {}", what, f.name, value)};
+      }
+      if (s && !std::isfinite(value / scale_of(*s, f.scale))) {
+        return {Outcome::broken, fmt::format("{}.dimensionless.{} = {}", what, f.name,
+                                             value / scale_of(*s, f.scale))};
       }
     }
   }

@@ -1,0 +1,64 @@
+// The critical point's quantities in one table: names, symbols, units and scales for every output.
+#pragma once
+
+#include <array>
+
+#include "engine/model/contact_snapshot.hpp"
+#include "engine/model/jkr_scales.hpp"
+
+namespace mdrsim {
+
+/// Which JKR scale makes a quantity dimensionless (paper eq. 16).
+enum class ScaleKind { force, radius, depth };
+
+inline double scale_of(const JkrScales& s, ScaleKind kind) {
+  switch (kind) {
+    case ScaleKind::force:
+      return s.force;
+    case ScaleKind::radius:
+      return s.radius;
+    case ScaleKind::depth:
+      break;
+  }
+  return s.depth;
+}
+
+inline const char* scale_symbol(ScaleKind kind) {
+  switch (kind) {
+    case ScaleKind::force:
+      return "F0";
+    case ScaleKind::radius:
+      return "a0";
+    case ScaleKind::depth:
+      break;
+  }
+  return "d0";
+}
+
+struct SnapshotField {
+  const char* name;    ///< JSON key and CSV column (SPEC)
+  const char* symbol;  ///< in the run summary
+  const char* unit;    ///< SI
+  ScaleKind scale;
+  double ContactSnapshot::*member;
+};
+
+/// The physical quantities of a snapshot, in SPEC's order: the JSON's `critical` and
+/// `dimensionless`, the sweep's columns, the summary, the finiteness checks.
+inline constexpr std::array<SnapshotField, 5> kSnapshotFields{{
+    {"normal_force", "F", "N", ScaleKind::force, &ContactSnapshot::normal_force},
+    {"tangential_force", "Fx", "N", ScaleKind::force, &ContactSnapshot::tangential_force},
+    {"contact_radius", "a", "m", ScaleKind::radius, &ContactSnapshot::contact_radius},
+    {"indentation", "d", "m", ScaleKind::depth, &ContactSnapshot::indentation},
+    {"tangential_displacement", "ux", "m", ScaleKind::depth,
+     &ContactSnapshot::tangential_displacement},
+}};
+
+/// Every quantity that varies smoothly along the branch: the fields above and the normal
+/// control value. Interpolation between springs and extrapolation across rows use these.
+inline constexpr std::array<double ContactSnapshot::*, 6> kBranchQuantities{
+    &ContactSnapshot::normal_control,   &ContactSnapshot::normal_force,
+    &ContactSnapshot::tangential_force, &ContactSnapshot::contact_radius,
+    &ContactSnapshot::indentation,      &ContactSnapshot::tangential_displacement};
+
+}  // namespace mdrsim
