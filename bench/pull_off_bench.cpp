@@ -9,6 +9,7 @@
 #include "bench/bench_cases.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
+#include "tests/support/part_examples.hpp"
 
 namespace {
 
@@ -18,9 +19,7 @@ void pull_off(benchmark::State& state, std::string normal, std::string method, d
   s.normal = normal;
   s.springs = springs;
   s.method = method;
-  if (normal == "compliant") {
-    s.normal_extra = "stiffness = " + std::to_string(s.scales().force / s.scales().depth);
-  }
+  s.normal_extra = mdrsim::test::example_keys("controller", normal, ", ");
   mdrsim::Scene scene = mdrsim::test::build_scene_text(s.toml());
   if (method == "stepping") scene.solver.step = increment * scene.preload_depth;
   mdrsim::RunResult result;

@@ -23,7 +23,8 @@ void register_builtin_controllers(ControllerRegistry& registry) {
                 .summary = "drives the axis through a machine spring of stiffness k",
                 .parameters = {{.key = "stiffness",
                                 .help = "machine stiffness k [N/m]",
-                                .lower = Bound{0.0, false}}},
+                                .lower = Bound{0.0, false},
+                                .example = 1000.0}},  // about F0/d0 of the JKR test scene
                 .create = [](const ParameterValues& p) -> std::unique_ptr<AxisController> {
                   return std::make_unique<CompliantController>(p.number("stiffness"));
                 }});

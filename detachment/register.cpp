@@ -33,7 +33,8 @@ void register_builtin_criteria(CriterionRegistry& registry) {
                 .parameters = {{.key = "lambda",
                                 .help = "mode sensitivity: 0 = normal-only, 1 = mode-mixed",
                                 .lower = Bound{0.0, true},
-                                .upper = Bound{1.0, true}}},
+                                .upper = Bound{1.0, true},
+                                .example = 0.5}},
                 .create = [](const ParameterValues& v,
                              const InterfaceProperties& p) -> std::unique_ptr<DetachmentCriterion> {
                   return std::make_unique<ModeDependentCriterion>(p, v.number("lambda"));

@@ -70,17 +70,20 @@ std::unique_ptr<Profile> make_tabulated(const ParameterValues& p) {
 }  // namespace
 
 void register_builtin_profiles(ProfileRegistry& registry) {
-  registry.add(
-      {.name = "parabolic",
-       .summary = "f = r^2/(2R), the paper's profile (eq. 6)",
-       .parameters = {{.key = "radius", .help = "radius of curvature R [m]", .lower = kPositive}},
-       .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
-         return std::make_unique<ParabolicProfile>(p.number("radius"));
-       }});
+  registry.add({.name = "parabolic",
+                .summary = "f = r^2/(2R), the paper's profile (eq. 6)",
+                .parameters = {{.key = "radius",
+                                .help = "radius of curvature R [m]",
+                                .lower = kPositive,
+                                .example = 0.01}},
+                .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
+                  return std::make_unique<ParabolicProfile>(p.number("radius"));
+                }});
   registry.add(
       {.name = "sphere",
        .summary = "f = R - sqrt(R^2 - r^2), the exact spherical cap",
-       .parameters = {{.key = "radius", .help = "sphere radius R [m]", .lower = kPositive}},
+       .parameters =
+           {{.key = "radius", .help = "sphere radius R [m]", .lower = kPositive, .example = 0.01}},
        .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
          return std::make_unique<SphereProfile>(p.number("radius"));
        }});
@@ -89,21 +92,28 @@ void register_builtin_profiles(ProfileRegistry& registry) {
                 .parameters = {{.key = "slope_angle_deg",
                                 .help = "angle theta between flank and surface [degrees]",
                                 .lower = kPositive,
-                                .upper = Bound{90.0, false}}},
+                                .upper = Bound{90.0, false},
+                                .example = 10.0}},
                 .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
                   return std::make_unique<ConeProfile>(p.number("slope_angle_deg"));
                 }});
-  registry.add({.name = "flat_punch",
-                .summary = "f = 0 for r <= A, a wall outside",
-                .parameters = {{.key = "radius", .help = "punch radius A [m]", .lower = kPositive}},
-                .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
-                  return std::make_unique<FlatPunchProfile>(p.number("radius"));
-                }});
+  registry.add(
+      {.name = "flat_punch",
+       .summary = "f = 0 for r <= A, a wall outside",
+       .parameters =
+           {{.key = "radius", .help = "punch radius A [m]", .lower = kPositive, .example = 5e-4}},
+       .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
+         return std::make_unique<FlatPunchProfile>(p.number("radius"));
+       }});
   registry.add(
       {.name = "power_law",
        .summary = "f = c r^n",
-       .parameters = {{.key = "coefficient", .help = "coefficient c [m^(1-n)]", .lower = kPositive},
-                      {.key = "exponent", .help = "exponent n [1]", .lower = kPositive}},
+       .parameters =
+           {{.key = "coefficient",
+             .help = "coefficient c [m^(1-n)]",
+             .lower = kPositive,
+             .example = 0.8},
+            {.key = "exponent", .help = "exponent n [1]", .lower = kPositive, .example = 1.5}},
        .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
          try {
            return std::make_unique<PowerLawProfile>(p.number("coefficient"), p.number("exponent"));

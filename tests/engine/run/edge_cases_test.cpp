@@ -22,6 +22,7 @@
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "tests/support/jkr_scenario.hpp"
+#include "tests/support/part_examples.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::Event;
@@ -424,7 +425,7 @@ TEST_P(FewSprings, EndInAnInstabilityWithFiniteNumbers) {
   const FewSpringsCase& c = GetParam();
   JkrScenario s = scenario(c.normal, c.springs);
   s.criterion = c.criterion;
-  if (c.criterion == "mode-dependent") s.criterion_extra = "lambda = 0.5";
+  s.criterion_extra = mdrsim::test::example_keys("criterion", c.criterion, "\n");
   if (c.tangential == "fixed-grips") s.tangential_displacement = 1.5;
   if (c.tangential == "fixed-load") s.tangential_force = 1.5;
   std::string text = s.toml();
@@ -719,14 +720,17 @@ INSTANTIATE_TEST_SUITE_P(UpToTheShearLimit, NoShearOffDuringThePullOff,
 
 // ---- no adhesion ----
 
+/// ", keys" for an inline table, or nothing.
+std::string with_separator(const std::string& keys) { return keys.empty() ? "" : ", " + keys; }
+
 std::string no_adhesion_scene(const std::string& normal, const std::string& tangential,
                               const std::string& criterion, const std::string& method) {
   return "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.0\n"
          "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
          "[loading]\npreload = { depth = 1e-5 }\nnormal = { control = \"" +
-         normal + "\"" + (normal == "compliant" ? ", stiffness = 1000.0" : "") + " }\n" +
-         tangential + "[detachment]\ncriterion = \"" + criterion + "\"\n" +
-         (criterion == "mode-dependent" ? "lambda = 0.5\n" : "") +
+         normal + "\"" + with_separator(mdrsim::test::example_keys("controller", normal, ", ")) +
+         " }\n" + tangential + "[detachment]\ncriterion = \"" + criterion + "\"\n" +
+         mdrsim::test::example_keys("criterion", criterion, "\n") + "\n" +
          "[discretization]\nsprings = 500\n[solver]\nmethod = \"" + method + "\"\n";
 }
 

@@ -9,6 +9,7 @@
 #include "engine/events/event_recorder.hpp"
 #include "engine/scene/registries.hpp"
 #include "tests/support/jkr_scenario.hpp"
+#include "tests/support/part_examples.hpp"
 
 using mdrsim::Event;
 using mdrsim::EventKind;
@@ -20,11 +21,9 @@ JkrScenario scenario_for(const std::string& criterion, const std::string& normal
   JkrScenario s;
   s.springs = 300;
   s.criterion = criterion;
-  if (criterion == "mode-dependent") s.criterion_extra = "lambda = 0.5";
+  s.criterion_extra = mdrsim::test::example_keys("criterion", criterion, "\n");
   s.normal = normal;
-  if (normal == "compliant") {
-    s.normal_extra = "stiffness = " + std::to_string(s.scales().force / s.scales().depth);
-  }
+  s.normal_extra = mdrsim::test::example_keys("controller", normal, ", ");
   s.tangential_displacement = 1.5;
   s.poisson_ratio = 0.3;  // G* != E*, so that the criteria differ
   return s;

@@ -6,6 +6,7 @@
 
 #include "engine/reference/parabolic_reference.hpp"
 #include "tests/support/jkr_scenario.hpp"
+#include "tests/support/part_examples.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::RunStatus;
@@ -111,7 +112,7 @@ TEST(RunStatus, OneTwoAndThreeSprings) {
   const double dl = std::sqrt(2.0 * std::numbers::pi * a * s.work_of_adhesion / s.youngs_modulus);
   for (const char* normal : {"fixed-grips", "fixed-load", "compliant"}) {
     s.normal = normal;
-    s.normal_extra = std::string(normal) == "compliant" ? "stiffness = 100.0" : "";
+    s.normal_extra = mdrsim::test::example_keys("controller", normal, ", ");
     for (const std::int64_t n : {1, 2, 3}) {
       s.springs = n;
       const auto r = run_quietly(s.build());
