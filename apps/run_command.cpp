@@ -42,6 +42,14 @@ const char* missing_critical(const RunResult& r) {
 void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
   const Accuracy& a = r.accuracy;
   if (!scene.discretization.rtol && !a.critical_error_estimate) return;
+  if (r.status == RunStatus::no_instability) {
+    // rtol followed the peel down to the zoom's floor and found no fold on the way.
+    fmt::print(out,
+               "accuracy: no fold down to the last spring at a = {:.6g} m (a row of {} springs "
+               "zoomed to {:.6g} m)\n",
+               a.outer_radius / static_cast<double>(r.springs), r.springs, a.outer_radius);
+    return;
+  }
   std::string line =
       a.route == Accuracy::Route::richardson ? "richardson over rows of " : "plain row; rows of ";
   line += fmt::format("{} springs across {:.6g} m", fmt::join(a.rows, ", "), a.outer_radius);

@@ -159,3 +159,19 @@ TEST_F(ResultOutputs, SweepRowsWithoutCriticalPointLeaveItEmpty) {
     EXPECT_FALSE(rows[i][strength].empty());
   }
 }
+
+// A smooth peel (power law n = 0.5, normal-only, fixed grips: d(a) falls like sqrt(a) to 0):
+// no critical point, and rtol says how deep it looked for a fold.
+TEST_F(ResultOutputs, SmoothPeelUnderRtolSaysHowDeepItLooked) {
+  const auto r = run_mdrsim(
+      "run scenes/power_law_fixed_grips.toml --set profile.coefficient=0.01 --set "
+      "profile.exponent=0.5 --set detachment.criterion=normal-only --set "
+      "'discretization={rtol=1e-4}' --log-level off");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("status: no-instability"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("accuracy: no fold down to the last spring at a = "), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("critical: none: the contact peeled off smoothly, nothing jumped\n"),
+            std::string::npos)
+      << r.out;
+}
