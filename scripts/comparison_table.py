@@ -111,6 +111,15 @@ def main(argv=None):
             problems.append(f"{path}: status {run.get('status')!r}, expected 'instability'")
         rows.append((f"Fig. {panel} JKR pull-off {control.replace('_', '-')}, F/F0", analytic, sim,
                      run.get("wall_time_s")))
+        # The most tensile force on the path: -F0 at a = a0 under either control (eq. 19's
+        # minimum), what an experiment under displacement control reads as the pull-off.
+        peak = run.get("peak_adhesion")
+        if peak is None:
+            problems.append(f"{path}: no peak_adhesion")
+        else:
+            rows.append((f"Fig. {panel} peak adhesive force {control.replace('_', '-')}, F/F0",
+                         -1.0, peak["normal_force"] / scale.f0 if scale.f0
+                         else peak["dimensionless"]["normal_force"], None))
 
     # ---- Fig. 3a sweeps
     sweeps = (("fixed-grips", "fig3a_fixed_grips.csv", "fig3a_fixed_grips.toml", None),
