@@ -215,3 +215,15 @@ TEST(Richardson, RefusesTooFewSpringsAndReportsTheFinestRow) {
   EXPECT_LE(relative_error(s, r.critical),
             *r.accuracy.critical_error_estimate / std::abs(r.critical->normal_force));
 }
+
+// Below 1e-8 the estimates are not validated (README): the run says so, whatever it finds.
+TEST(Rtol, BelowTheValidatedRangeWarns) {
+  JkrScenario s;
+  s.rtol = 1e-9;
+  const auto r = mdrsim::run_scene(s.build(), {});
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_EQ(r.warnings[0].rfind("rtol 1e-09 is below 1e-08, the smallest at which", 0), 0u)
+      << r.warnings[0];
+  s.rtol = 1e-8;
+  EXPECT_TRUE(mdrsim::run_scene(s.build(), {}).warnings.empty());
+}
