@@ -262,6 +262,8 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   fill_critical(result, contact, *scene.criterion, track);
   if (smooth) {
     result.critical.reset();
+    result.refined_critical.reset();  // Richardson and rtol must not find one either
+    result.critical_force_step = 0.0;
     // A smooth peel ends at F -> 0: a "peak" at the last spring is only that spring's own
     // tension, which vanishes as the row is refined.
     if (result.peak_springs == 1) {

@@ -61,7 +61,9 @@ void warn_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // the zoom resolves the critical point
   const std::int64_t springs = result.springs;
   const double glued = scene.glued_radius;
-  if (result.status == RunStatus::no_instability && springs > 1) {
+  // Without adhesion nothing can fold: a smooth peel is all there is.
+  const bool adhesive = scene.material.work_of_adhesion > 0.0;
+  if (result.status == RunStatus::no_instability && springs > 1 && adhesive) {
     result.warnings.push_back(fmt::format(
         "the contact peeled off down to its last spring (a = {:.6g} m of {:.6g} m, {} springs): "
         "a fold below it is not resolved; discretization.rtol zooms in on it",
