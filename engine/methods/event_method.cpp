@@ -27,12 +27,9 @@ AdvanceOutcome EventMethod::advance(Contact& contact, const DetachmentCriterion&
   const double tolerance = 4.0 * std::numeric_limits<double>::epsilon() *
                            std::max(std::abs(held), std::abs(go.normal_control));
   const bool due = out.first_by_shear || go.normal_control >= held - tolerance;
-  if (due) {
-    out.first_stretch = boundary_elongation(contact);
-  } else {
+  if (!due) {
     contact.set_normal_control(go.normal_control);
     out.equilibrium_before = contact.save();
-    out.first_stretch = go.let_go.elongation;
   }
   if (observers.wants(EventKind::spring_detached)) {
     observers.emit({.kind = EventKind::spring_detached,

@@ -15,6 +15,14 @@ struct RunCounts {
   std::int64_t steps = 0;            ///< stepping increments taken
   std::int64_t halvings = 0;         ///< stepping increments halved
   std::int64_t root_iterations = 0;  ///< iterations of let-go root searches
+
+  RunCounts& operator+=(const RunCounts& more) {
+    events += more.events;
+    steps += more.steps;
+    halvings += more.halvings;
+    root_iterations += more.root_iterations;
+    return *this;
+  }
 };
 
 struct AdvanceOutcome {
@@ -26,7 +34,6 @@ struct AdvanceOutcome {
   /// The second spring of this advance (the first one due at the same control value) was
   /// broken at zero elongation: a cascade started by shear, not by a fold.
   bool second_by_shear = false;
-  double first_stretch = 0.0;  ///< stretch of the first detached spring at that equilibrium [m]
 };
 
 class PullOffMethod {

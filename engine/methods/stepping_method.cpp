@@ -18,7 +18,6 @@ SteppingMethod::SteppingMethod(double step, int max_halvings)
 AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriterion& criterion,
                                        const ObserverList& observers, RunCounts& counts) {
   const Contact::State start = contact.save();
-  const double stretch_before = boundary_elongation(contact);
   const bool emit = observers.wants(EventKind::spring_detached);
   double step = step_;
   for (int halvings = 0;; ++halvings) {
@@ -71,7 +70,6 @@ AdvanceOutcome SteppingMethod::advance(Contact& contact, const DetachmentCriteri
     }
     if (out.detached > 0) {
       out.equilibrium_before = start;
-      out.first_stretch = stretch_before;
     }
     return out;
   }

@@ -22,20 +22,13 @@ constexpr double kZoomFloor = 1e-12;  ///< deepest zoom, relative to the glued r
 /// were checked by hand, see the README).
 constexpr double kValidatedRtol = 1e-8;
 
-void add_counts(RunCounts& total, const RunCounts& more) {
-  total.events += more.events;
-  total.steps += more.steps;
-  total.halvings += more.halvings;
-  total.root_iterations += more.root_iterations;
-}
-
 /// The springs in contact at what a zoom must resolve; 0 where the row has nothing there.
 std::int64_t target_springs(const RunResult& row, Target target) {
   if (target == Target::critical) {
     if (row.status == RunStatus::no_instability) return 1;  // is there a fold below x_1?
     return row.critical ? row.critical->springs_in_contact : 0;
   }
-  return row.peak ? row.peak_springs : 0;
+  return row.peak ? row.peak->springs_in_contact : 0;
 }
 
 struct Zoom {
@@ -61,7 +54,7 @@ std::vector<Zoom> zoom_onto(const Scene& scene, Zoom start, Target target, RunCo
       const double radius = outer * static_cast<double>(index) / static_cast<double>(row.springs);
       RunResult candidate =
           run_row(scene, {.springs = kRowSprings, .outer_radius = radius, .zoomed = true}, {});
-      add_counts(counts, candidate.counts);
+      counts += candidate.counts;
       const std::int64_t found = target_springs(candidate, target);
       spdlog::debug("rtol zoom: row of {} springs across {:.6g} m ({} -> {}): {} at spring {}",
                     candidate.springs, radius, k, index, to_string(candidate.status), found);
@@ -105,7 +98,6 @@ struct Refined {
   std::optional<double> estimate;
   Accuracy::Route route = Accuracy::Route::richardson;
   bool met = false;
-  std::vector<std::int64_t> rows;
   RowSpec finest;
   RowSequence sequence{Target::critical};
 };
@@ -135,14 +127,13 @@ Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
     if (seq.next_springs() > scene.discretization.max_row_springs) break;
     RunResult next = run_row(
         scene, {.springs = seq.next_springs(), .outer_radius = outer, .zoomed = zoomed}, {});
-    add_counts(counts, next.counts);
+    counts += next.counts;
     seq.add(std::move(next));
   }
   if (seq.rows().size() < 3 && !forced) out.route = Accuracy::Route::row;
   out.value = seq.value(out.route);
   if (!out.value) out.value = seq.value(Accuracy::Route::row);
   out.estimate = seq.estimate(out.route);
-  for (const RunResult& row : seq.rows()) out.rows.push_back(row.springs);
   out.finest = {.springs = seq.last().springs, .outer_radius = outer, .zoomed = zoomed};
   out.sequence = std::move(seq);
   return out;
@@ -151,8 +142,8 @@ Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
 /// Whether a row's peak lies inside it: not at a zoomed row's outermost let-go (the path
 /// goes on outside it) and not the tension of its last spring.
 bool peak_inside(const RunResult& row, bool zoomed) {
-  if (!row.peak || row.peak_springs <= 1) return false;
-  return !zoomed || row.peak_springs < row.springs;
+  if (!row.peak || row.peak->springs_in_contact <= 1) return false;
+  return !zoomed || row.peak->springs_in_contact < row.springs;
 }
 
 /// The peak adhesive force: from the critical point's rows where it lies inside them, else
@@ -208,7 +199,7 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
   pilot_observers.add(preload_events);
   RunResult pilot =
       run_row(scene, {.springs = kRowSprings, .outer_radius = scene.glued_radius}, pilot_observers);
-  add_counts(counts, pilot.counts);
+  counts += pilot.counts;
   if (pilot.status == RunStatus::step_limit || pilot.tangential_strength) {
     // Nothing to refine: no critical point, or a strength found to full precision.
     pilot.counts = counts;
@@ -230,7 +221,8 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
     result.status = c.sequence.last().status;
     result.critical = c.value ? c.value : c.sequence.last().critical;
     result.accuracy.route = c.route;
-    result.accuracy.rows = c.rows;
+    result.accuracy.rows.clear();
+    for (const RunResult& row : c.sequence.rows()) result.accuracy.rows.push_back(row.springs);
     result.accuracy.critical_error_estimate = c.estimate;
     result.accuracy.rtol_met = c.met;
     finest = c.finest;
@@ -240,7 +232,7 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
           "rtol {} not met: the critical force's error estimate is {:.3g} relative with rows of "
           "up to {} springs across {:.6g} m",
           rtol, c.estimate && c.value ? *c.estimate / std::abs(c.value->normal_force) : 1.0,
-          c.rows.back(), zoom.outer_radius));
+          c.finest.springs, zoom.outer_radius));
     }
   }
   result.accuracy.outer_radius = zoom.outer_radius;
@@ -250,7 +242,7 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
     PhaseFilter pull_off_events(observers, PhaseFilter::Phase::pull_off);
     ObserverList finest_observers;
     finest_observers.add(pull_off_events);
-    add_counts(counts, run_row(scene, finest, finest_observers).counts);
+    counts += run_row(scene, finest, finest_observers).counts;
   }
   result.springs = finest.springs;
   result.counts = counts;

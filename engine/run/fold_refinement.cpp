@@ -34,9 +34,10 @@ ContactSnapshot interpolate_snapshots(const ContactSnapshot& in, const ContactSn
   return q;
 }
 
-std::optional<RefinedFold> refine_fold(const Contact& contact, const DetachmentCriterion& criterion,
-                                       const Contact::State& outer,
-                                       const Contact::State& critical) {
+std::optional<ContactSnapshot> refine_fold(const Contact& contact,
+                                           const DetachmentCriterion& criterion,
+                                           const Contact::State& outer,
+                                           const Contact::State& critical) {
   const std::int64_t n = critical.springs_in_contact;
   if (n < 2 || outer.springs_in_contact != n + 1) return std::nullopt;
   Contact probe = contact;
@@ -50,8 +51,7 @@ std::optional<RefinedFold> refine_fold(const Contact& contact, const DetachmentC
   if (!s) return std::nullopt;
   const ContactSnapshot in = probe.snapshot();
   const ContactSnapshot out = contact.snapshot_of(outer);
-  return RefinedFold{interpolate_snapshots(in, contact.snapshot_of(critical), out, *s),
-                     0.5 * std::abs(out.normal_force - in.normal_force)};
+  return interpolate_snapshots(in, contact.snapshot_of(critical), out, *s);
 }
 
 std::optional<ContactSnapshot> refine_shear_off(const Contact& contact,

@@ -24,13 +24,10 @@ ContactSnapshot interpolate_snapshots(const ContactSnapshot& inner, const Contac
 /// `outer` and `critical` are the saved equilibria at n_c + 1 and n_c springs; returns
 /// nothing where the branch is not smooth there (a jump just before, a shear-driven
 /// let-go next, fewer than two springs).
-struct RefinedFold {
-  ContactSnapshot state;     ///< every quantity interpolated at the fold
-  double normal_force_step;  ///< |dF/dn| at the fold: the force change per spring [N]
-};
-
-std::optional<RefinedFold> refine_fold(const Contact& contact, const DetachmentCriterion& criterion,
-                                       const Contact::State& outer, const Contact::State& critical);
+std::optional<ContactSnapshot> refine_fold(const Contact& contact,
+                                           const DetachmentCriterion& criterion,
+                                           const Contact::State& outer,
+                                           const Contact::State& critical);
 
 /// A cascade started by shear: below some radius a_s the criterion breaks the boundary spring
 /// even unstretched (margin < 0 at zero elongation), so the branch ends at a_s, between the

@@ -141,18 +141,12 @@ void fill_critical(RunResult& result, const Contact& contact, const DetachmentCr
   result.stable_run_top = track.run_top();
   if (const auto outer = track.before_last(1)) {
     if (result.status == RunStatus::instability) {
-      if (const auto fold = refine_fold(contact, criterion, *outer, critical)) {
-        result.refined_critical = fold->state;
-        result.critical_force_step = fold->normal_force_step;
-      }
+      result.refined_critical = refine_fold(contact, criterion, *outer, critical);
     } else if (const auto outer2 = track.before_last(2)) {
       result.refined_critical = refine_shear_off(contact, criterion, *outer2, *outer, critical);
-      result.critical_force_step =
-          std::abs(contact.normal_force_of(*outer) - contact.normal_force_of(critical));
     }
   }
   result.peak = contact.snapshot_of(track.peak());
-  result.peak_springs = track.peak().springs_in_contact;
   if (track.peak().springs_in_contact == critical.springs_in_contact) {
     // The most tensile equilibrium is the critical one: the force still falls at the end.
     if (result.refined_critical) result.refined_peak = *result.refined_critical;
@@ -263,13 +257,11 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   if (smooth) {
     result.critical.reset();
     result.refined_critical.reset();  // Richardson and rtol must not find one either
-    result.critical_force_step = 0.0;
     // A smooth peel ends at F -> 0: a "peak" at the last spring is only that spring's own
     // tension, which vanishes as the row is refined.
-    if (result.peak_springs == 1) {
+    if (result.peak && result.peak->springs_in_contact == 1) {
       result.peak.reset();
       result.refined_peak.reset();
-      result.peak_springs = 0;
     }
   }
   return result;

@@ -47,11 +47,9 @@ struct RunResult {
   /// smooth enough for that; else empty.
   std::optional<ContactSnapshot> refined_critical;
   std::optional<ContactSnapshot> refined_peak;
-  double critical_force_step = 0.0;  ///< |dF/dn| at the critical spring [N]
   /// Springs in contact at the first equilibrium of the unbroken run of single let-gos that
   /// ends at the critical point: the zoom may restart anywhere in that run.
   std::int64_t stable_run_top = 0;
-  std::int64_t peak_springs = 0;  ///< springs in contact at the (unrefined) peak
 
   Accuracy accuracy;
   std::vector<std::string> warnings;  ///< what the run cannot vouch for, one line each

@@ -16,13 +16,6 @@ namespace {
 /// Fewer springs than this in contact at the critical point do not resolve it.
 constexpr std::int64_t kResolvedSprings = 100;
 
-void add_counts(RunCounts& total, const RunCounts& more) {
-  total.events += more.events;
-  total.steps += more.steps;
-  total.halvings += more.halvings;
-  total.root_iterations += more.root_iterations;
-}
-
 /// Rows of N/2, N and 2N springs across the glued radius; the finest row's events.
 RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
   const std::int64_t n = scene.springs;
@@ -30,10 +23,10 @@ RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
   RunCounts counts;
   for (const std::int64_t springs : {n / 2, n}) {
     seq.add(run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, {}));
-    add_counts(counts, seq.last().counts);
+    counts += seq.last().counts;
   }
   seq.add(run_row(scene, {.springs = 2 * n, .outer_radius = scene.glued_radius}, observers));
-  add_counts(counts, seq.last().counts);
+  counts += seq.last().counts;
 
   RunResult result = seq.last();
   result.counts = counts;
