@@ -9,6 +9,7 @@
 #include "controllers/controller.hpp"
 #include "detachment/criterion.hpp"
 #include "engine/base/material.hpp"
+#include "engine/scene/program.hpp"
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -53,6 +54,10 @@ struct AxisLoading {
 struct Scene {
   std::string title;
   Material material{};
+  /// A loading program ([[loading.stage]]); empty for the shorthand (preload, tangential,
+  /// normal), whose fields below it leaves unset (glued_radius, preload_depth, normal,
+  /// tangential).
+  std::optional<Program> program;
   std::string profile_name;
   std::unique_ptr<Profile> profile;
   double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
