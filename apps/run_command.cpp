@@ -32,7 +32,9 @@ const char* missing_critical(const RunResult& r) {
     case RunStatus::shear_off:
       return "none: the tangential load broke the glue as it was applied";
     case RunStatus::step_limit:
-      return "none: the stepping method reached solver.max_steps first";
+      return "none: the run stopped at a limit first (see the warning)";
+    case RunStatus::completed:
+      return "none: the contact was never lost";
     case RunStatus::instability:
       break;
   }
@@ -64,12 +66,38 @@ void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
   fmt::print(out, "accuracy: {}\n", line);
 }
 
+/// A program's stages and jumps, one line each.
+void print_program(std::FILE* out, const RunResult& r) {
+  for (const StageRecord& stage : r.stages) {
+    const ContactSnapshot& e = stage.end;
+    fmt::print(out,
+               "stage {}: ends at d = {:.6g} m, F = {:.6g} N, ux = {:.6g} m, Fx = {:.6g} N, "
+               "{} springs in contact; work {:.6g} J normal, {:.6g} J tangential\n",
+               stage.name, e.indentation, e.normal_force, e.tangential_displacement,
+               e.tangential_force, e.springs_in_contact, stage.work.normal, stage.work.tangential);
+  }
+  for (const JumpRecord& jump : r.jumps) {
+    fmt::print(out,
+               "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N ({} springs) to d = {:.6g} "
+               "m, F = {:.6g} N ({} springs)\n",
+               jump.inward ? "in" : "out", jump.stage, jump.by_shear ? " (by shear)" : "",
+               jump.critical.indentation, jump.critical.normal_force,
+               jump.critical.springs_in_contact, jump.after.indentation, jump.after.normal_force,
+               jump.after.springs_in_contact);
+  }
+  if (r.work) {
+    fmt::print(out, "work: {:.6g} J normal, {:.6g} J tangential\n", r.work->normal,
+               r.work->tangential);
+  }
+}
+
 /// The human summary; on standard error when standard output carries the trajectory CSV.
 void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
+  const auto [normal_control, tangential_control] = final_controls(scene);
   fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
-             to_string(r.status), scene.normal.control,
-             scene.tangential ? scene.tangential->control : "fixed-grips", scene.criterion_name,
+             to_string(r.status), normal_control, tangential_control, scene.criterion_name,
              r.springs);
+  print_program(out, r);
   print_accuracy(out, scene, r);
   const auto s = dimensionless_scales(scene);
   if (r.critical) {

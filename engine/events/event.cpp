@@ -13,6 +13,8 @@ const char* to_string(RunStatus status) {
       return "no-instability";
     case RunStatus::step_limit:
       return "step-limit";
+    case RunStatus::completed:
+      return "completed";
   }
   return "?";
 }
@@ -33,6 +35,16 @@ const char* to_string(EventKind kind) {
       return "instability";
     case EventKind::finished:
       return "finished";
+    case EventKind::spring_glued:
+      return "glued";
+    case EventKind::spring_touched:
+      return "touched";
+    case EventKind::spring_lifted:
+      return "lifted";
+    case EventKind::stage_end:
+      return "stage-end";
+    case EventKind::jump:
+      return "jump";
   }
   return "?";
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 #include "engine/model/contact_snapshot.hpp"
 
@@ -11,7 +12,9 @@ enum class RunStatus {
   instability,     ///< the contact jumps off; the critical point is its last equilibrium
   shear_off,       ///< the tangential load alone breaks the glued contact
   no_instability,  ///< the contact peels off smoothly to zero force
-  step_limit,      ///< stepping reached solver.max_steps before the contact came off
+  step_limit,      ///< stepping reached solver.max_steps before the contact came off (or a
+                   ///< program stopped at a limit before the contact was lost)
+  completed,       ///< a program's last stage ran to its end with the contact in place
 };
 
 enum class EventKind {
@@ -22,6 +25,12 @@ enum class EventKind {
   step_halved,         ///< stepping: an increment detached several springs and is halved
   instability,         ///< the critical point: the last equilibrium before the final jump
   finished,            ///< the run ends, with its status
+  // Loading programs (SPEC "Loading programs"):
+  spring_glued,    ///< the spring just outside the glued contact glues (the advancing front)
+  spring_touched,  ///< a spring without glue is pressed against the indenter
+  spring_lifted,   ///< a spring without glue leaves the indenter
+  stage_end,       ///< a stage reaches its end (or separation)
+  jump,            ///< a cascade at one value of the stage parameter; state after it
 };
 
 struct Event {
@@ -33,6 +42,9 @@ struct Event {
   bool in_cascade = false;  ///< spring_detached: at the control value of the previous detachment
   double step = 0.0;        ///< step_accepted, step_halved: the increment [control units]
   RunStatus status = RunStatus::instability;  ///< instability, finished
+  /// The stage the event belongs to; empty for the shorthand, whose writers name the stage
+  /// by the event kind.
+  std::string_view stage;
 };
 
 const char* to_string(RunStatus status);

@@ -17,7 +17,14 @@ void LogObserver::on_event(const Event& event) {
     case EventKind::finished:
       if (event.status != RunStatus::instability) spdlog::info("{}", event);
       break;
+    case EventKind::stage_end:
+    case EventKind::jump:
+      spdlog::info("{}", event);
+      break;
     case EventKind::spring_detached:
+    case EventKind::spring_glued:
+    case EventKind::spring_touched:
+    case EventKind::spring_lifted:
       spdlog::debug("{}", event);
       break;
     case EventKind::step_accepted:
@@ -30,6 +37,9 @@ void LogObserver::on_event(const Event& event) {
 bool LogObserver::wants(EventKind kind) const {
   switch (kind) {
     case EventKind::spring_detached:
+    case EventKind::spring_glued:
+    case EventKind::spring_touched:
+    case EventKind::spring_lifted:
       return spdlog::should_log(spdlog::level::debug);
     case EventKind::step_accepted:
     case EventKind::step_halved:

@@ -19,6 +19,33 @@ nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const JkrSca
   return j;
 }
 
+/// A snapshot with its dimensionless values nested, where the scales exist.
+nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<JkrScales>& s) {
+  nlohmann::ordered_json j = snapshot_json(c);
+  if (s) j["dimensionless"] = dimensionless_json(c, *s);
+  return j;
+}
+
+nlohmann::ordered_json work_json(const AxisWork& w) {
+  return {{"normal", w.normal}, {"tangential", w.tangential}};
+}
+
+}  // namespace
+
+std::pair<std::string, std::string> final_controls(const Scene& scene) {
+  if (!scene.program) {
+    return {scene.normal.control, scene.tangential ? scene.tangential->control : "fixed-grips"};
+  }
+  std::pair<std::string, std::string> controls{"fixed-grips", "fixed-grips"};
+  for (const Stage& stage : scene.program->stages) {
+    if (stage.normal) controls.first = stage.normal->control;
+    if (stage.tangential) controls.second = stage.tangential->control;
+  }
+  return controls;
+}
+
+namespace {
+
 const char* route_name(Accuracy::Route route) {
   return route == Accuracy::Route::richardson ? "richardson" : "row";
 }
@@ -37,8 +64,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const Accuracy& accuracy = result.accuracy;
   ordered_json j;
   j["status"] = to_string(result.status);
-  j["control"] = {{"normal", scene.normal.control},
-                  {"tangential", scene.tangential ? scene.tangential->control : "fixed-grips"}};
+  const auto [normal_control, tangential_control] = final_controls(scene);
+  j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
   j["criterion"] = scene.criterion_name;
   j["method"] = scene.solver.method == SolverMethod::event ? "event" : "stepping";
   j["springs"] = result.springs;
@@ -72,6 +99,27 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     j["tangential_strength"] = *result.tangential_strength;
     if (scales)
       j["dimensionless_tangential_strength"] = *result.tangential_strength / scales->force;
+  }
+  if (result.work) {
+    ordered_json stages = ordered_json::array();
+    for (const StageRecord& stage : result.stages) {
+      stages.push_back({{"name", stage.name},
+                        {"end", state_json(stage.end, scales)},
+                        {"work", work_json(stage.work)}});
+    }
+    j["stages"] = stages;
+    ordered_json jumps = ordered_json::array();
+    for (const JumpRecord& jump : result.jumps) {
+      jumps.push_back({{"stage", jump.stage},
+                       {"kind", jump.inward ? "in" : "out"},
+                       {"critical", state_json(jump.critical, scales)},
+                       {"after", state_json(jump.after, scales)},
+                       {"springs", jump.springs},
+                       {"glued_springs", jump.glued_springs},
+                       {"by_shear", jump.by_shear}});
+    }
+    j["jumps"] = jumps;
+    j["work"] = work_json(*result.work);
   }
   j["warnings"] = result.warnings;
   j["counts"] = {{"events", result.counts.events},

@@ -3,12 +3,18 @@
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "engine/model/jkr_scales.hpp"
 #include "engine/run/pull_off.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {
+
+/// The controllers on each axis (normal, tangential): the shorthand's, or those a program
+/// ends with.
+std::pair<std::string, std::string> final_controls(const Scene& scene);
 
 /// Scales of the dimensionless output; only for profiles with a parabolic tip and adhesion.
 std::optional<JkrScales> dimensionless_scales(const Scene& scene);

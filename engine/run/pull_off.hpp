@@ -9,6 +9,7 @@
 #include "engine/events/event.hpp"
 #include "engine/events/observer.hpp"
 #include "engine/methods/pull_off_method.hpp"
+#include "engine/run/program_records.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {
@@ -50,6 +51,11 @@ struct RunResult {
   /// Springs in contact at the first equilibrium of the unbroken run of single let-gos that
   /// ends at the critical point: the zoom may restart anywhere in that run.
   std::int64_t stable_run_top = 0;
+
+  /// Loading programs: every stage's end and work, every jump, and the total work.
+  std::vector<StageRecord> stages;
+  std::vector<JumpRecord> jumps;
+  std::optional<AxisWork> work;
 
   Accuracy accuracy;
   std::vector<std::string> warnings;  ///< what the run cannot vouch for, one line each

@@ -9,6 +9,7 @@
 
 #include "engine/run/adaptive_resolution.hpp"
 #include "engine/run/row_sequence.hpp"
+#include "engine/run/run_program.hpp"
 
 namespace mdrsim {
 namespace {
@@ -76,7 +77,9 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   const auto started = std::chrono::steady_clock::now();
   using Extrapolation = DiscretizationOptions::Extrapolation;
   RunResult result;
-  if (scene.discretization.rtol) {
+  if (scene.program) {
+    result = run_program(scene, observers);
+  } else if (scene.discretization.rtol) {
     std::optional<Accuracy::Route> route;
     if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;
     if (scene.discretization.richardson()) route = Accuracy::Route::richardson;
@@ -87,7 +90,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
     result =
         run_row(scene, {.springs = scene.springs, .outer_radius = scene.glued_radius}, observers);
   }
-  warn_resolution(scene, result);
+  if (!scene.program) warn_resolution(scene, result);
   for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -1,4 +1,5 @@
-// Reads a scene table into a Scene: every key checked, parts created by name, preload resolved.
+// Reads a scene table into a Scene: every key checked, parts created by name, preload resolved
+// (the loading programs' stages: program_reader.cpp).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "engine/model/jkr_scales.hpp"
 #include "engine/model/preload.hpp"
+#include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/scene/toml_reader.hpp"
@@ -18,41 +20,23 @@ namespace {
 
 constexpr Bound kPositive{0.0, false};
 
-/// Runs a part's factory, turning its complaints into SceneErrors at the right key.
-template <class Make>
-auto create_part(TomlReader& table, std::string_view name_key, Make make) {
-  try {
-    return make();
-  } catch (const ParameterError& e) {
-    table.fail_at(e.key(), e.what());
-  } catch (const std::invalid_argument& e) {
-    table.fail_at(name_key, e.what());
+/// dgamma_a [J/m^2] of the advancing front: 0 <= dgamma_a <= dgamma (SPEC "Loading programs").
+double read_approach_work(TomlReader& t, double dgamma) {
+  const double approach = t.optional_number({.key = "approach_work_of_adhesion",
+                                             .help = "dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma",
+                                             .lower = Bound{0.0, true}})
+                              .value_or(0.0);
+  if (approach > dgamma) {
+    t.fail_range("approach_work_of_adhesion",
+                 fmt::format("= {} is above work_of_adhesion = {} (0 <= dgamma_a <= dgamma)",
+                             approach, dgamma));
   }
-}
-
-/// The keys of a part's table: its name key and the chosen part's parameters. A key that
-/// only another part declares is reported as belonging to that part.
-template <class Registry>
-void check_part_keys(TomlReader& t, const std::string& name_key, const std::string& chosen,
-                     const Registry& registry, std::vector<std::string> extra = {}) {
-  std::vector<std::string> known{name_key};
-  for (const ParameterSpec& spec : registry.find(chosen)->parameters) known.push_back(spec.key);
-  known.insert(known.end(), extra.begin(), extra.end());
-  t.check_keys(known, [&](std::string_view key) -> std::optional<std::string> {
-    std::string owners;
-    for (const std::string& name : registry.names()) {
-      for (const ParameterSpec& spec : registry.find(name)->parameters) {
-        if (spec.key == key) owners += fmt::format("{}\"{}\"", owners.empty() ? "" : " or ", name);
-      }
-    }
-    if (owners.empty()) return std::nullopt;
-    return fmt::format("applies to {} = {} only", name_key, owners);
-  });
+  return approach;
 }
 
 Material read_material(TomlReader& t) {
   t.check_keys({"youngs_modulus", "poisson_ratio", "work_of_adhesion", "effective_modulus",
-                "effective_shear_modulus"});
+                "effective_shear_modulus", "approach_work_of_adhesion"});
   const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
   const bool effective = t.has("effective_modulus") || t.has("effective_shear_modulus");
   if (youngs && effective) {
@@ -63,12 +47,13 @@ Material read_material(TomlReader& t) {
   const double dgamma = t.number({.key = "work_of_adhesion",
                                   .help = "work of adhesion dgamma [J/m^2], >= 0",
                                   .lower = Bound{0.0, true}});
+  const double approach = read_approach_work(t, dgamma);
   if (effective) {
     const double e_star =
         t.number({.key = "effective_modulus", .help = "E* [Pa], > 0", .lower = kPositive});
     const auto g_star = t.optional_number(
         {.key = "effective_shear_modulus", .help = "G* [Pa], > 0", .lower = kPositive});
-    return {e_star, g_star.value_or(e_star), dgamma};
+    return {e_star, g_star.value_or(e_star), dgamma, approach};
   }
   const double e = t.number({.key = "youngs_modulus",
                              .help = "Young's modulus E [Pa], > 0; or give effective_modulus",
@@ -77,7 +62,8 @@ Material read_material(TomlReader& t) {
                               .help = "Poisson's ratio nu in (-1, 0.5]",
                               .lower = Bound{-1.0, false},
                               .upper = Bound{0.5, true}});
-  const Material m = Material::from_youngs_modulus(e, nu, dgamma);
+  Material m = Material::from_youngs_modulus(e, nu, dgamma);
+  m.approach_work_of_adhesion = approach;
   // Extreme E and nu near -1 overflow G = E/(2(1+nu)) (paper eq. 8).
   for (const double modulus : {m.effective_modulus, m.effective_shear_modulus}) {
     if (!std::isfinite(modulus) || !(modulus > 0.0)) {
@@ -220,6 +206,23 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
   }
 }
 
+/// The paper's one path: the preload, the tangential load held during the pull-off, and the
+/// pull-off's control.
+void read_shorthand(TomlReader& loading, const ControllerRegistry& controllers, Scene& scene) {
+  TomlReader preload = loading.table("preload");
+  resolve_preload(preload, scene);
+  if (auto tangential = loading.optional_table("tangential")) {
+    scene.tangential = read_axis(*tangential, controllers, true);
+    check_tangential_scale(*tangential, scene);
+    check_constraint(*tangential, *scene.tangential,
+                     2.0 * scene.material.effective_shear_modulus * scene.glued_radius);
+  }
+  TomlReader normal = loading.table("normal");
+  scene.normal = read_axis(normal, controllers, false);
+  check_constraint(normal, scene.normal,
+                   2.0 * scene.material.effective_modulus * scene.glued_radius);
+}
+
 void read_solver(TomlReader& t, SolverOptions& solver) {
   t.check_keys({"method", "step", "max_halvings", "max_steps"});
   const std::string method = t.name("method", {"event", "stepping"}, "event");
@@ -268,19 +271,12 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   profile.finish();
 
   TomlReader loading = root.table("loading");
-  loading.check_keys({"preload", "tangential", "normal"});
-  TomlReader preload = loading.table("preload");
-  resolve_preload(preload, scene);
-  if (auto tangential = loading.optional_table("tangential")) {
-    scene.tangential = read_axis(*tangential, registries.controllers, true);
-    check_tangential_scale(*tangential, scene);
-    check_constraint(*tangential, *scene.tangential,
-                     2.0 * scene.material.effective_shear_modulus * scene.glued_radius);
+  if (is_program(loading)) {
+    scene.program = read_program(loading, registries.controllers);
+  } else {
+    check_shorthand_keys(loading, material, scene.material);
+    read_shorthand(loading, registries.controllers, scene);
   }
-  TomlReader normal = loading.table("normal");
-  scene.normal = read_axis(normal, registries.controllers, false);
-  check_constraint(normal, scene.normal,
-                   2.0 * scene.material.effective_modulus * scene.glued_radius);
   loading.finish();
 
   const InterfaceProperties interface = scene.material.interface_properties();
@@ -334,6 +330,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
 
   if (auto solver = root.optional_table("solver")) read_solver(*solver, scene.solver);
+  if (scene.program) refuse_options_not_yet_for_programs(root, scene);
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");

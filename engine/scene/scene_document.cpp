@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <system_error>
 
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -55,20 +58,79 @@ std::string join_key(const std::vector<std::string>& parts) {
   return out;
 }
 
-/// The table that holds the last part of a dotted key, created as needed.
-toml::table& parent_table(toml::table& root, const std::vector<std::string>& parts,
-                          std::string_view origin) {
-  toml::table* table = &root;
+/// The dotted key of the first `count` parts.
+std::string key_prefix(const std::vector<std::string>& parts, std::size_t count) {
+  return join_key(std::vector<std::string>(parts.begin(), parts.begin() + count));
+}
+
+/// An element number as loading.stage.N writes it: digits only.
+bool is_element_number(std::string_view part) {
+  return !part.empty() && std::all_of(part.begin(), part.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+  });
+}
+
+/// An array that a dotted key may index by element number: an array of tables, such as
+/// [[loading.stage]] (an empty one, so that the message can say it has none).
+bool is_indexable(const toml::node& node) {
+  const auto* array = node.as_array();
+  return array != nullptr && (array->empty() || array->is_array_of_tables());
+}
+
+/// The index of the element that parts[i] names (N from 1) in the array at parts[0..i).
+std::size_t element_index(const toml::array& array, const std::vector<std::string>& parts,
+                          std::size_t i, std::string_view origin) {
+  const std::string array_key = printable(key_prefix(parts, i));
+  const auto fail = [&](const std::string& why) {
+    throw SceneError(fmt::format("{}: {}: {}", origin, printable(join_key(parts)), why));
+  };
+  if (array.empty()) fail(fmt::format("the scene has no [[{}]]", array_key));
+  const std::size_t count = array.size();
+  const std::string noun = printable(parts[i - 1]) + (count == 1 ? "" : "s");
+  const std::string range = count == 1 ? fmt::format("{}.1", array_key)
+                                       : fmt::format("{}.1 to {}.{}", array_key, array_key, count);
+  const std::string has = fmt::format("the scene has {} {} ({})", count, noun, range);
+  const std::string& part = parts[i];
+  if (!is_element_number(part)) {
+    fail(fmt::format("'{}' is not a {} number; {}", printable(part), printable(parts[i - 1]), has));
+  }
+  std::size_t number = 0;
+  const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), number);
+  if (error != std::errc{} || end != part.data() + part.size() || number < 1 || number > count) {
+    fail(has);
+  }
+  return number - 1;
+}
+
+/// Walks to the node that holds the last part of a dotted key: a table, or an array of tables
+/// when the last part is an element number. With `create`, missing tables are inserted;
+/// without, the walk only checks, so that a refused key leaves the document unchanged.
+toml::node* walk_to_parent(toml::table& root, const std::vector<std::string>& parts,
+                           std::string_view origin, bool create) {
+  toml::node* node = &root;  // nullptr below a table that is not there yet
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
-    toml::node* next = table->get(parts[i]);
-    if (!next) next = &table->insert_or_assign(parts[i], toml::table{}).first->second;
-    table = next->as_table();
-    if (!table) {
+    toml::node* next = nullptr;
+    if (auto* array = node ? node->as_array() : nullptr) {
+      next = array->get(element_index(*array, parts, i, origin));
+    } else if (node) {
+      next = node->as_table()->get(parts[i]);
+    }
+    if (!next) {
+      // A table made at a key followed by a number would hide a missing [[key]].
+      if (is_element_number(parts[i + 1])) {
+        throw SceneError(fmt::format("{}: {}: the scene has no [[{}]]", origin,
+                                     printable(join_key(parts)),
+                                     printable(key_prefix(parts, i + 1))));
+      }
+      if (create) next = &node->as_table()->insert_or_assign(parts[i], toml::table{}).first->second;
+    }
+    if (next && !next->is_table() && !is_indexable(*next)) {
       throw SceneError(fmt::format("{}: {}: '{}' is not a table", origin,
                                    printable(join_key(parts)), printable(parts[i])));
     }
+    node = next;
   }
-  return *table;
+  return node;
 }
 
 /// Parses "v = VALUE" with `origin` as the source of its nodes; throws toml::parse_error.
@@ -77,11 +139,19 @@ toml::table parse_value(const std::string& value_toml, const std::string& origin
 }
 
 void apply(toml::table& root, const SceneOverride& o) {
-  toml::table& parent = parent_table(root, o.parts, o.origin);
+  walk_to_parent(root, o.parts, o.origin, false);
+  toml::node& parent = *walk_to_parent(root, o.parts, o.origin, true);
   toml::table parsed = parse_value(o.value_toml, o.origin);
   // Moved, not copied: a moved node keeps its source, so messages name the flag.
-  parsed.get("v")->visit(
-      [&](auto&& node) { parent.insert_or_assign(o.parts.back(), std::move(node)); });
+  if (auto* array = parent.as_array()) {
+    const auto index = element_index(*array, o.parts, o.parts.size() - 1, o.origin);
+    parsed.get("v")->visit([&](auto&& node) {
+      array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(index), std::move(node));
+    });
+  } else {
+    parsed.get("v")->visit(
+        [&](auto&& node) { parent.as_table()->insert_or_assign(o.parts.back(), std::move(node)); });
+  }
 }
 
 toml::table parse_scene(const std::string& text, const std::string& source_name) {

@@ -223,6 +223,14 @@ std::optional<std::string> TomlReader::optional_text(std::string_view key) {
   return std::get<std::string>(*v);
 }
 
+std::optional<bool> TomlReader::optional_boolean(std::string_view key) {
+  const toml::node* node = find(key);
+  if (!node) return std::nullopt;
+  const auto* flag = node->as_boolean();
+  if (!flag) fail_at(key, fmt::format("expected true or false, got {}", describe(*node)));
+  return flag->get();
+}
+
 std::string TomlReader::name(std::string_view key, const std::vector<std::string>& known,
                              std::optional<std::string> fallback) {
   const auto v = read({.key = std::string(key),
@@ -249,6 +257,37 @@ std::optional<TomlReader> TomlReader::optional_table(std::string_view key) {
   const auto* t = node->as_table();
   if (!t) fail_at(key, fmt::format("expected a table, got {}", describe(*node)));
   return TomlReader(*t, key_path(key), file_, base_dir_);
+}
+
+std::optional<std::vector<TomlReader>> TomlReader::optional_table_array(std::string_view key,
+                                                                        std::size_t max_size) {
+  const toml::node* node = find(key);
+  if (!node) return std::nullopt;
+  const std::string shown = key_path(key);
+  const auto* array = node->as_array();
+  if (!array) {
+    fail_at(key,
+            fmt::format("expected an array of tables ([[{}]]), got {}", shown, describe(*node)));
+  }
+  if (array->empty()) {
+    fail_at(key, fmt::format("expected at least one [[{}]] table, got an empty array", shown));
+  }
+  if (array->size() > max_size) {
+    fail_at(key, fmt::format("has {} tables, at most {}", array->size(), max_size));
+  }
+  std::vector<TomlReader> tables;
+  tables.reserve(array->size());
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = *array->get(i);
+    const std::string element_path = fmt::format("{}.{}", shown, i + 1);
+    const auto* table = element.as_table();
+    if (!table) {
+      throw SceneError(fmt::format("{} {}: expected a table, got {}", where(element), element_path,
+                                   describe(element)));
+    }
+    tables.emplace_back(*table, element_path, file_, base_dir_);
+  }
+  return tables;
 }
 
 std::optional<std::pair<const toml::key*, const toml::node*>> TomlReader::first_key_outside(

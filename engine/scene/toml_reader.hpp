@@ -2,13 +2,16 @@
 // and keys never read reported as unknown.
 #pragma once
 
+#include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -36,12 +39,17 @@ class TomlReader {
   std::optional<double> optional_number(const ParameterSpec& spec);
   std::int64_t integer(const ParameterSpec& spec);
   std::optional<std::string> optional_text(std::string_view key);
+  std::optional<bool> optional_boolean(std::string_view key);
   /// A name from `known`; `fallback` when absent (nullopt makes it required).
   std::string name(std::string_view key, const std::vector<std::string>& known,
                    std::optional<std::string> fallback = std::nullopt);
 
   TomlReader table(std::string_view key);
   std::optional<TomlReader> optional_table(std::string_view key);
+  /// A non-empty array of tables ([[key]]) of at most `max_size` tables: a reader for each,
+  /// at the path key.N with N from 1 (as --set names them); nullopt when absent.
+  std::optional<std::vector<TomlReader>> optional_table_array(std::string_view key,
+                                                              std::size_t max_size);
 
   /// Declares every key this table may hold and fails on the first other key (in file order),
   /// so that a typo is reported before any value is checked.
@@ -78,5 +86,37 @@ class TomlReader {
   std::set<std::string, std::less<>> asked_;  ///< keys asked for, present or not
   std::set<std::string, std::less<>> known_;  ///< keys declared by check_keys
 };
+
+/// Runs a part's factory, turning its complaints into SceneErrors at the right key.
+template <class Make>
+auto create_part(TomlReader& table, std::string_view name_key, Make make) {
+  try {
+    return make();
+  } catch (const ParameterError& e) {
+    table.fail_at(e.key(), e.what());
+  } catch (const std::invalid_argument& e) {
+    table.fail_at(name_key, e.what());
+  }
+}
+
+/// The keys of a part's table: its name key and the chosen part's parameters. A key that
+/// only another part declares is reported as belonging to that part.
+template <class Registry>
+void check_part_keys(TomlReader& t, const std::string& name_key, const std::string& chosen,
+                     const Registry& registry, std::vector<std::string> extra = {}) {
+  std::vector<std::string> known{name_key};
+  for (const ParameterSpec& spec : registry.find(chosen)->parameters) known.push_back(spec.key);
+  known.insert(known.end(), extra.begin(), extra.end());
+  t.check_keys(known, [&](std::string_view key) -> std::optional<std::string> {
+    std::string owners;
+    for (const std::string& name : registry.names()) {
+      for (const ParameterSpec& spec : registry.find(name)->parameters) {
+        if (spec.key == key) owners += fmt::format("{}\"{}\"", owners.empty() ? "" : " or ", name);
+      }
+    }
+    if (owners.empty()) return std::nullopt;
+    return fmt::format("applies to {} = {} only", name_key, owners);
+  });
+}
 
 }  // namespace mdrsim

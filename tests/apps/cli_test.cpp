@@ -43,7 +43,8 @@ springs = 100
 )";
 
 constexpr const char* kMaterialKeys =
-    "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
+    "approach_work_of_adhesion, effective_modulus, effective_shear_modulus, poisson_ratio, "
+    "work_of_adhesion, "
     "youngs_modulus";
 
 /// `text` as one single-quoted shell word.

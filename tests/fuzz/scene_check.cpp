@@ -9,8 +9,7 @@
 #include <exception>
 #include <utility>
 
-#include "engine/events/result_json.hpp"
-#include "engine/model/snapshot_fields.hpp"
+#include "engine/events/finite_check.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
@@ -28,14 +27,6 @@ constexpr std::int64_t kMaxSprings = 100'000;
 constexpr std::int64_t kMaxSteps = 100'000;
 constexpr double kMinRtol = 1e-3;  // rtol picks the springs: 1e-3 keeps them near 10^4
 
-/// The first value that is not finite, as "name = value", or empty.
-std::string first_not_finite(std::initializer_list<std::pair<const char*, double>> values) {
-  for (const auto& [name, value] : values) {
-    if (!std::isfinite(value)) return fmt::format("{} = {}", name, value);
-  }
-  return {};
-}
-
 }  // namespace
 
 SceneCheck check_scene_text(std::string_view text) {
@@ -50,6 +41,12 @@ SceneCheck check_scene_text(std::string_view text) {
     return {Outcome::broken, fmt::format("the reader threw a non-SceneError: {}", e.what())};
   }
   if (scene.springs > kMaxSprings) return {Outcome::ran, "skipped: springs above the cap"};
+  // A program's cost grows with its stages times its springs (each stage may sweep the row).
+  if (scene.program &&
+      static_cast<double>(scene.program->stages.size()) * static_cast<double>(scene.springs) >
+          static_cast<double>(kMaxSprings)) {
+    return {Outcome::ran, "skipped: stages x springs above the cap"};
+  }
   scene.solver.max_steps = std::min(scene.solver.max_steps, kMaxSteps);
   if (scene.discretization.rtol) {
     scene.discretization.rtol = std::max(*scene.discretization.rtol, kMinRtol);
@@ -63,33 +60,11 @@ SceneCheck check_scene_text(std::string_view text) {
     return {Outcome::broken, fmt::format("the run of an accepted scene threw: {}", e.what())};
   }
   // SPEC: numbers are finite. The reader refuses values that overflow the run.
-  const auto s = dimensionless_scales(scene);
-  for (const auto& [what, snapshot] :
-       {std::pair{"critical", &result.critical}, std::pair{"peak_adhesion", &result.peak}}) {
-    if (!*snapshot) continue;
-    // SI values, and the dimensionless ones of the JSON result, as apps/finite_result.cpp
-    // checks them.
-    for (const SnapshotField& f : kSnapshotFields) {
-      const double value = (**snapshot).*f.member;
-      if (!std::isfinite(value)) {
-        return {Outcome::broken, fmt::format("{}.{} = {}", what, f.name, value)};
-      }
-      if (s && !std::isfinite(value / scale_of(*s, f.scale))) {
-        return {Outcome::broken, fmt::format("{}.dimensionless.{} = {}", what, f.name,
-                                             value / scale_of(*s, f.scale))};
-      }
-    }
-  }
-  if (const std::string bad = first_not_finite(
-          {{"tangential_strength", result.tangential_strength.value_or(0.0)},
-           {"critical_error_estimate", result.accuracy.critical_error_estimate.value_or(0.0)},
-           {"peak_error_estimate", result.accuracy.peak_error_estimate.value_or(0.0)}});
-      !bad.empty()) {
-    return {Outcome::broken, bad};
-  }
+  if (const auto bad = first_not_finite(scene, result)) return {Outcome::broken, *bad};
   // SPEC: an instability has its critical point; a status without one has none.
+  // (A completed program reports the last loss of contact, if there was one.)
   if ((result.status == RunStatus::instability) != result.critical.has_value() &&
-      result.status != RunStatus::shear_off) {
+      result.status != RunStatus::shear_off && result.status != RunStatus::completed) {
     return {Outcome::broken, fmt::format("status {} with{} a critical point",
                                          to_string(result.status), result.critical ? "" : "out")};
   }

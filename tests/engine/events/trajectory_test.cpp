@@ -26,17 +26,18 @@ std::vector<Row> parse_csv(const std::string& text) {
   std::istringstream in(text);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line,
-            "event,in_cascade,indentation,normal_force,contact_radius,tangential_displacement,"
-            "tangential_force,springs_in_contact");
+  EXPECT_EQ(
+      line,
+      "stage,event,in_cascade,indentation,normal_force,contact_radius,tangential_displacement,"
+      "tangential_force,springs_in_contact");
   std::vector<Row> rows;
   while (std::getline(in, line)) {
     std::vector<std::string> cells;
     std::stringstream cs(line);
     for (std::string cell; std::getline(cs, cell, ',');) cells.push_back(cell);
-    EXPECT_EQ(cells.size(), 8u) << line;
+    EXPECT_EQ(cells.size(), 9u) << line;
     rows.push_back(
-        {cells[0], cells[1] == "1", std::stod(cells[2]), std::stod(cells[3]), std::stod(cells[4])});
+        {cells[1], cells[2] == "1", std::stod(cells[3]), std::stod(cells[4]), std::stod(cells[5])});
   }
   return rows;
 }

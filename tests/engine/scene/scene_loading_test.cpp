@@ -89,7 +89,8 @@ std::string help(const Registry& registry, std::string_view part, std::string_vi
 }
 
 constexpr const char* kMaterialKeys =
-    "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
+    "approach_work_of_adhesion, effective_modulus, effective_shear_modulus, poisson_ratio, "
+    "work_of_adhesion, "
     "youngs_modulus";
 constexpr const char* kRootKeys =
     "detachment, discretization, loading, material, profile, solver, title";

@@ -1,0 +1,145 @@
+// Equilibrium of a program's spring row from running sums; O(1) changes at its edges.
+#include "engine/model/program_row.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace mdrsim {
+
+ProgramRow::ProgramRow(const Profile& profile, const Material& material, double reference_radius,
+                       std::int64_t reference_springs, double reference_image, bool rebinding)
+    : profile_(&profile),
+      material_(material),
+      reference_radius_(reference_radius),
+      reference_springs_(reference_springs),
+      reference_image_(reference_image),
+      spacing_(reference_radius / static_cast<double>(reference_springs)),
+      front_coefficient_(2.0 * std::numbers::pi *
+                         (material.approach_work_of_adhesion / material.effective_modulus)),
+      rebinding_(rebinding) {}
+
+double ProgramRow::image(std::int64_t i) const {
+  return i == reference_springs_ ? reference_image_ : profile_->mdr_image(position(i));
+}
+
+double ProgramRow::front_limit(std::int64_t i) const {
+  return std::sqrt(front_coefficient_ * position(i));
+}
+
+namespace {
+/// Whether the constraint fixes the displacement against this stiffness [N/m].
+bool has_stiffness(const AffineConstraint& c, double stiffness) {
+  return c.displacement_coefficient + c.force_coefficient * stiffness > 0.0;
+}
+}  // namespace
+
+bool ProgramRow::normal_has_stiffness() const {
+  return has_stiffness(normal.constraint, static_cast<double>(in_contact_));
+}
+
+bool ProgramRow::tangential_has_stiffness() const {
+  return has_stiffness(tangential.constraint, static_cast<double>(glued_));
+}
+
+double ProgramRow::normal_force_at(double d) const {
+  const double per_spring = 2.0 * material_.effective_modulus * spacing_;
+  return per_spring * (static_cast<double>(in_contact_) * d - contact_images_.value());
+}
+
+double ProgramRow::tangential_force_at(double u) const {
+  const double per_spring = 2.0 * material_.effective_shear_modulus * spacing_;
+  return per_spring * (static_cast<double>(glued_) * u - glued_offsets_.value());
+}
+
+double ProgramRow::indentation() const {
+  if (!normal_has_stiffness()) return normal.rest;
+  const double per_spring = 2.0 * material_.effective_modulus * spacing_;
+  const LinearResponse r{per_spring * static_cast<double>(in_contact_),
+                         per_spring * contact_images_.value()};
+  return displacement_under(normal.constraint, r, normal.held);
+}
+
+double ProgramRow::tangential_displacement() const {
+  if (!tangential_has_stiffness()) return tangential.rest;
+  const double per_spring = 2.0 * material_.effective_shear_modulus * spacing_;
+  const LinearResponse r{per_spring * static_cast<double>(glued_),
+                         per_spring * glued_offsets_.value()};
+  return displacement_under(tangential.constraint, r, tangential.held);
+}
+
+double ProgramRow::indentation_per_held() const {
+  if (!normal_has_stiffness()) return 0.0;
+  const AffineConstraint& c = normal.constraint;
+  const double k = 2.0 * material_.effective_modulus * spacing_ * static_cast<double>(in_contact_);
+  return 1.0 / (c.displacement_coefficient + c.force_coefficient * k);
+}
+
+double ProgramRow::tangential_per_held() const {
+  if (!tangential_has_stiffness()) return 0.0;
+  const AffineConstraint& c = tangential.constraint;
+  const double k = 2.0 * material_.effective_shear_modulus * spacing_ * static_cast<double>(glued_);
+  return 1.0 / (c.displacement_coefficient + c.force_coefficient * k);
+}
+
+double ProgramRow::held_value_of_normal(const AffineConstraint& c) const {
+  const double d = indentation();
+  return c.displacement_coefficient * d + c.force_coefficient * normal_force_at(d);
+}
+
+double ProgramRow::held_value_of_tangential(const AffineConstraint& c) const {
+  const double u = tangential_displacement();
+  return c.displacement_coefficient * u + c.force_coefficient * tangential_force_at(u);
+}
+
+void ProgramRow::glue_next() {
+  // The displacements before the change: an axis without stiffness rests where it was.
+  normal.rest = indentation();
+  tangential.rest = tangential_displacement();
+  const double u = tangential.rest;
+  ++glued_;
+  if (glued_ > ever_glued_) ever_glued_ = glued_;
+  if (glued_ > in_contact_) {
+    in_contact_ = glued_;
+    contact_images_.add(image(glued_));
+  }
+  if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_, u});
+  glued_offsets_.add(u);
+}
+
+void ProgramRow::let_go_boundary(bool pressed) {
+  normal.rest = indentation();
+  tangential.rest = tangential_displacement();
+  glued_offsets_.add(-runs_.back().offset);
+  if (runs_.back().first == glued_) runs_.pop_back();
+  if (!pressed && in_contact_ == glued_) {
+    contact_images_.add(-image(in_contact_));
+    --in_contact_;
+  }
+  --glued_;
+}
+
+void ProgramRow::touch_next() {
+  normal.rest = indentation();
+  ++in_contact_;
+  contact_images_.add(image(in_contact_));
+}
+
+void ProgramRow::lift_outer() {
+  normal.rest = indentation();
+  contact_images_.add(-image(in_contact_));
+  --in_contact_;
+}
+
+ContactSnapshot ProgramRow::snapshot() const {
+  ContactSnapshot s;
+  s.indentation = indentation();
+  s.normal_force = normal_force_at(s.indentation);
+  s.normal_control = normal.held;
+  s.contact_radius = in_contact_ > 0 ? position(in_contact_) : 0.0;
+  s.tangential_displacement = tangential_displacement();
+  s.tangential_force = tangential_force_at(s.tangential_displacement);
+  s.springs_in_contact = in_contact_;
+  return s;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,101 @@
+// The spring row of a loading program: glued springs in runs of one tangential offset, pressed
+// springs outside them, and the running sums that give the equilibrium in O(1).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "controllers/controller.hpp"
+#include "engine/base/material.hpp"
+#include "engine/model/compensated_sum.hpp"
+#include "engine/model/contact_snapshot.hpp"
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+/// One axis of the loading machine: the constraint a_u u + a_F F = held and, where the axis
+/// carries no stiffness (fixed load, nothing attached), the displacement it rests at.
+struct MachineAxis {
+  AffineConstraint constraint{1.0, 0.0};
+  double held = 0.0;  ///< [m] or [N]
+  double rest = 0.0;  ///< displacement while the axis has no stiffness [m]
+};
+
+/// Springs i = 1, 2, ... at x_i = i dx; spring N sits exactly at the reference radius a_ref.
+/// Springs 1..k are glued; springs 1..m (m >= k) are in contact: the glued ones and, outside
+/// them, springs pressed without glue (compression only, frictionless). A glued spring
+/// carries the tangential stretch u_x - s, s the indenter's u_x when it glued; springs glue
+/// in runs at one s, so a stack of (first spring, s) runs and two sums replace per-spring
+/// state. Normal force 2 E* dx sum_{i<=m} (d - g_i), tangential 2 G* dx sum_{i<=k} (u_x - s_i).
+class ProgramRow {
+ public:
+  /// `reference_image` is g at spring N: the front value the program reaches there, which
+  /// equals g(a_ref) up to rounding (so that spring N is reached whatever the rounding).
+  ProgramRow(const Profile& profile, const Material& material, double reference_radius,
+             std::int64_t reference_springs, double reference_image, bool rebinding);
+
+  double position(std::int64_t i) const {  ///< x_i [m]
+    return i == reference_springs_ ? reference_radius_ : spacing_ * static_cast<double>(i);
+  }
+  double image(std::int64_t i) const;        ///< g(x_i) [m]
+  double front_limit(std::int64_t i) const;  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
+  double spacing() const { return spacing_; }
+  std::int64_t reference_springs() const { return reference_springs_; }
+
+  std::int64_t glued() const { return glued_; }            ///< k
+  std::int64_t in_contact() const { return in_contact_; }  ///< m
+  std::int64_t ever_glued() const { return ever_glued_; }  ///< outermost spring ever glued
+  bool can_glue(std::int64_t i) const { return rebinding_ || i > ever_glued_; }
+  double boundary_offset() const { return runs_.back().offset; }  ///< s of spring k [m]
+  bool adhesive() const { return material_.work_of_adhesion > 0.0; }
+  const Material& material() const { return material_; }
+
+  MachineAxis normal;
+  MachineAxis tangential;
+
+  /// Equilibrium: the axis has stiffness (else it rests, see MachineAxis::rest).
+  bool normal_has_stiffness() const;
+  bool tangential_has_stiffness() const;
+  double indentation() const;              ///< d [m]
+  double tangential_displacement() const;  ///< u_x [m]
+  double normal_force_at(double indentation) const;
+  double tangential_force_at(double displacement) const;
+  /// d(d)/d(held) and d(u_x)/d(held) while the springs stay as they are.
+  double indentation_per_held() const;
+  double tangential_per_held() const;
+  /// The held value that the present state satisfies under `constraint`.
+  double held_value_of_normal(const AffineConstraint& constraint) const;
+  double held_value_of_tangential(const AffineConstraint& constraint) const;
+
+  /// Spring k+1 glues at the present u_x; it was pressed (m > k) or becomes the new edge.
+  void glue_next();
+  /// The boundary spring k lets go; it stays in contact, pressed, when `pressed`.
+  void let_go_boundary(bool pressed);
+  void touch_next();  ///< spring m+1 is pressed
+  void lift_outer();  ///< spring m (not glued) leaves
+
+  ContactSnapshot snapshot() const;
+
+ private:
+  struct Run {
+    std::int64_t first;  ///< innermost spring of the run
+    double offset;       ///< s [m]
+  };
+  const Profile* profile_;
+  Material material_;
+  double reference_radius_;
+  std::int64_t reference_springs_;
+  double reference_image_;
+  double spacing_;
+  double front_coefficient_;  ///< 2 pi dgamma_a / E* [m]
+  bool rebinding_;
+
+  std::int64_t glued_ = 0;
+  std::int64_t in_contact_ = 0;
+  std::int64_t ever_glued_ = 0;
+  CompensatedSum contact_images_;  ///< sum of g_i, i <= m [m]
+  CompensatedSum glued_offsets_;   ///< sum of s_i, i <= k [m]
+  std::vector<Run> runs_;
+};
+
+}  // namespace mdrsim

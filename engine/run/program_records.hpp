@@ -1,0 +1,40 @@
+// What a loading program reports besides the critical point: stage ends, jumps and work.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "engine/model/contact_snapshot.hpp"
+
+namespace mdrsim {
+
+/// The work done by the machine on each axis [J]: the integral of the force over the
+/// displacement of the machine's driving point (SPEC "Loading programs").
+struct AxisWork {
+  double normal = 0.0;
+  double tangential = 0.0;
+  AxisWork& operator+=(const AxisWork& more) {
+    normal += more.normal;
+    tangential += more.tangential;
+    return *this;
+  }
+};
+
+struct StageRecord {
+  std::string name;
+  ContactSnapshot end;  ///< the state at the stage's end (or where the contact was lost)
+  AxisWork work;
+};
+
+/// A cascade of springs gluing or letting go at one value of the stage parameter.
+struct JumpRecord {
+  std::string stage;
+  bool inward = false;             ///< "in": the contact grew; "out": it shrank
+  ContactSnapshot critical;        ///< the last equilibrium before the jump
+  ContactSnapshot after;           ///< the equilibrium after it
+  std::int64_t springs = 0;        ///< change of the springs in contact
+  std::int64_t glued_springs = 0;  ///< change of the glued springs
+  bool by_shear = false;  ///< the first spring due after the critical point broke at zero stretch
+};
+
+}  // namespace mdrsim

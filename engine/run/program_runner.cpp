@@ -1,0 +1,548 @@
+// The program loop: per stage, find the next change of the spring row exactly in the stage
+// parameter, move there (the equilibrium is affine in between, so the work is exact), apply
+// it and every change it makes due at the same parameter (a cascade: a jump when it moves
+// more than one spring).
+#include "engine/run/program_runner.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "detachment/let_go.hpp"
+#include "engine/base/bracketed_root.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// A last spring carrying less than this share of the path's largest |F| peels off smoothly.
+constexpr double kNegligibleForce = 1e-3;
+
+enum class Change { fall_in, let_go, glue, touch, lift };
+
+/// The force on one axis and the displacement of the machine's driving point: the indenter
+/// under fixed grips and fixed load, the machine end (the held value) under compliant.
+struct AxisPoint {
+  double force;
+  double driving;
+};
+
+bool drives_through_spring(const AffineConstraint& c) {
+  return c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0;
+}
+
+/// A cascade: the changes at one value of the stage parameter after the one that was found.
+struct Cascade {
+  ContactSnapshot before;
+  std::int64_t in_contact = 0;  ///< m before
+  std::int64_t glued = 0;       ///< k before
+  std::int64_t changes = 0;
+  bool second_by_shear = false;
+  bool first_by_shear = false;
+};
+
+class ProgramRunner {
+ public:
+  ProgramRunner(const Scene& scene, const ProgramRowSpec& spec, const ObserverList& observers,
+                LargestContact* largest)
+      : scene_(scene),
+        criterion_(*scene.criterion),
+        row_(*scene.profile, scene.material, spec.reference_radius, spec.reference_springs,
+             spec.reference_image, scene.program->rebinding),
+        max_springs_(spec.max_springs),
+        observers_(observers),
+        largest_(largest) {}
+
+  RunResult run();
+
+ private:
+  void start_stage(const Stage& stage);
+  void run_stage(const Stage& stage);
+  void set_parameter(double t);
+  AxisPoint normal_point() const;
+  AxisPoint tangential_point() const;
+  void advance_to(double t);
+  std::optional<Change> due();
+  std::optional<std::pair<double, Change>> next_change(double t_end);
+  LetGo boundary_let_go(double d, double u);
+  void apply(Change change, Cascade& cascade);
+  void finish_cascade(const Cascade& cascade);
+  bool cannot_hold() const;
+  void observe(const ContactSnapshot& s);
+  void emit(EventKind kind, const ContactSnapshot& state, std::int64_t spring = 0,
+            bool in_cascade = false);
+  void finish(RunResult& result);
+
+  const Scene& scene_;
+  const DetachmentCriterion& criterion_;
+  ProgramRow row_;
+  std::int64_t max_springs_;
+  const ObserverList& observers_;
+  LargestContact* largest_;
+  RunResult result_;
+
+  // The stage under way: held = start + rate * t on each axis.
+  const Stage* stage_ = nullptr;
+  double t_ = 0.0;
+  double normal_start_ = 0.0, normal_rate_ = 0.0;
+  double tangential_start_ = 0.0, tangential_rate_ = 0.0;
+  AxisWork stage_work_;
+  AxisWork total_work_;
+
+  // Guards at the present t, so that nothing flips back at the same parameter value: springs
+  // glued at it (index >= fresh_from_), let go (<= released_to_), lifted (<= lifted_to_).
+  std::int64_t fresh_from_ = std::numeric_limits<std::int64_t>::max();
+  std::int64_t released_to_ = 0;
+  std::int64_t lifted_to_ = 0;
+  bool in_cascade_ = false;
+
+  // Path record.
+  double largest_force_ = 0.0;
+  std::optional<ContactSnapshot> peak_;
+  std::optional<Cascade> last_contact_loss_;
+  std::optional<Cascade> last_glue_loss_;
+  bool ever_in_contact_ = false;
+  enum class Stop { none, cannot_hold_normal, cannot_hold_tangential, outgrew, no_end };
+  Stop stop_ = Stop::none;
+};
+
+void ProgramRunner::set_parameter(double t) {
+  row_.normal.held = normal_start_ + normal_rate_ * t;
+  row_.tangential.held = tangential_start_ + tangential_rate_ * t;
+  if (t == 1.0 && stage_ && !stage_->until_separation) {
+    // `to` lands exactly on its value.
+    if (stage_->normal && stage_->normal->motion == StageAxis::Motion::to) {
+      row_.normal.held = stage_->normal->value;
+    }
+    if (stage_->tangential && stage_->tangential->motion == StageAxis::Motion::to) {
+      row_.tangential.held = stage_->tangential->value;
+    }
+  }
+}
+
+AxisPoint ProgramRunner::normal_point() const {
+  const double d = row_.indentation();
+  const bool spring = drives_through_spring(row_.normal.constraint);
+  return {row_.normal_force_at(d), spring ? row_.normal.held : d};
+}
+
+AxisPoint ProgramRunner::tangential_point() const {
+  const double u = row_.tangential_displacement();
+  const bool spring = drives_through_spring(row_.tangential.constraint);
+  return {row_.tangential_force_at(u), spring ? row_.tangential.held : u};
+}
+
+void ProgramRunner::advance_to(double t) {
+  const AxisPoint n0 = normal_point();
+  const AxisPoint x0 = tangential_point();
+  set_parameter(t);
+  const AxisPoint n1 = normal_point();
+  const AxisPoint x1 = tangential_point();
+  stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
+  stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
+  t_ = t;
+  fresh_from_ = std::numeric_limits<std::int64_t>::max();
+  released_to_ = 0;
+  lifted_to_ = 0;
+}
+
+void ProgramRunner::observe(const ContactSnapshot& s) {
+  largest_force_ = std::max(largest_force_, std::abs(s.normal_force));
+  if (s.springs_in_contact > 0 && s.normal_force < 0.0 &&
+      (!peak_ || s.normal_force < peak_->normal_force)) {
+    peak_ = s;
+  }
+  if (s.springs_in_contact > 0) ever_in_contact_ = true;
+  if (largest_ && s.springs_in_contact > 0) {
+    largest_->most_springs = std::max(largest_->most_springs, s.springs_in_contact);
+    if (largest_->springs == 0 || s.indentation > largest_->indentation) {
+      largest_->springs = s.springs_in_contact;
+      largest_->indentation = s.indentation;
+      largest_->glued_edge = row_.glued() == row_.in_contact();
+    }
+  }
+}
+
+void ProgramRunner::emit(EventKind kind, const ContactSnapshot& state, std::int64_t spring,
+                         bool in_cascade) {
+  observers_.emit({.kind = kind,
+                   .state = state,
+                   .spring = spring,
+                   .in_cascade = in_cascade,
+                   .stage = stage_ ? std::string_view(stage_->name) : std::string_view()});
+}
+
+LetGo ProgramRunner::boundary_let_go(double /*d*/, double u) {
+  const double a = row_.position(row_.glued());
+  const double stretch_x = u - row_.boundary_offset();
+  const LetGo go = locate_let_go(criterion_, a, stretch_x, std::abs(stretch_x) + row_.spacing());
+  result_.counts.root_iterations += go.root_iterations;
+  if (go.kind == LetGo::Kind::never) {
+    throw std::runtime_error(fmt::format(
+        "the detachment criterion never lets go of the boundary spring at a = {} m", a));
+  }
+  return go;
+}
+
+bool ProgramRunner::cannot_hold() const {
+  const bool normal = !row_.normal_has_stiffness() && row_.in_contact() == 0 &&
+                      (row_.normal.held < 0.0 || (row_.normal.held == 0.0 && normal_rate_ < 0.0));
+  const bool tangential =
+      !row_.tangential_has_stiffness() && (row_.tangential.held != 0.0 || tangential_rate_ != 0.0);
+  return normal || tangential;
+}
+
+std::optional<Change> ProgramRunner::due() {
+  const std::int64_t k = row_.glued();
+  const std::int64_t m = row_.in_contact();
+  if (m == 0 && !row_.normal_has_stiffness() &&
+      (row_.normal.held > 0.0 || (row_.normal.held == 0.0 && normal_rate_ > 0.0)) &&
+      row_.normal.rest < row_.image(1)) {
+    return Change::fall_in;  // a compressive load with nothing to hold it: the indenter falls in
+  }
+  const double d = row_.indentation();
+  if (k > 0 && k < fresh_from_) {
+    const LetGo go = boundary_let_go(d, row_.tangential_displacement());
+    if (go.kind == LetGo::Kind::now || row_.image(k) - d >= go.elongation) return Change::let_go;
+  }
+  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1);
+  if (front_glues) {
+    const double gap = row_.image(k + 1) - d;
+    const double limit = k == 0 ? 0.0 : row_.front_limit(k + 1);
+    if (k + 1 <= released_to_ ? gap < limit : gap <= limit) {
+      if (k + 1 > max_springs_) {
+        stop_ = Stop::outgrew;
+        return std::nullopt;
+      }
+      return Change::glue;
+    }
+  }
+  if (!(m == k && front_glues)) {
+    const double gap = row_.image(m + 1) - d;
+    if (m + 1 <= lifted_to_ ? gap < 0.0 : gap <= 0.0) {
+      if (m + 1 > max_springs_) {
+        stop_ = Stop::outgrew;
+        return std::nullopt;
+      }
+      return Change::touch;
+    }
+  }
+  if (m > k && row_.image(m) - d > 0.0) return Change::lift;
+  return std::nullopt;
+}
+
+std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end) {
+  const std::int64_t k = row_.glued();
+  const std::int64_t m = row_.in_contact();
+  const double d = row_.indentation();
+  const double u = row_.tangential_displacement();
+  const double vd = row_.indentation_per_held() * normal_rate_;
+  const double vu = row_.tangential_per_held() * tangential_rate_;
+  const double soonest = std::nextafter(t_, kInfinity);
+  double best = t_end;
+  std::optional<Change> change;
+  const auto consider = [&](double t, Change c) {
+    t = std::max(t, soonest);
+    if (t < best || (t == best && !change)) {
+      best = t;
+      change = c;
+    }
+  };
+  const auto when_indentation = [&](double target) { return t_ + (target - d) / vd; };
+
+  if (m == 0 && !row_.normal_has_stiffness() && normal_rate_ > 0.0) {
+    consider(-normal_start_ / normal_rate_, Change::fall_in);
+  }
+  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1);
+  if (front_glues && vd > 0.0) {
+    consider(when_indentation(row_.image(k + 1) - (k == 0 ? 0.0 : row_.front_limit(k + 1))),
+             Change::glue);
+  }
+  if (!(m == k && front_glues) && vd > 0.0) {
+    consider(when_indentation(row_.image(m + 1)), Change::touch);
+  }
+  if (m > k && vd < 0.0) consider(when_indentation(row_.image(m)), Change::lift);
+  if (k > 0) {
+    if (vu == 0.0) {
+      const LetGo go = boundary_let_go(d, u);
+      if (go.kind == LetGo::Kind::now) {
+        consider(soonest, Change::let_go);
+      } else if (vd < 0.0) {
+        consider(when_indentation(row_.image(k) - go.elongation), Change::let_go);
+      }
+    } else {
+      // Both displacements move: root-find the margin along the line. For a criterion
+      // whose failure set is convex in (stretch, |u_x|), as every built-in one is, the
+      // margin along a line is positive on one interval, so one sign change brackets the
+      // first let-go.
+      const double a = row_.position(k);
+      const double g = row_.image(k);
+      const double s = row_.boundary_offset();
+      const auto margin = [&](double t) {
+        const double stretch = std::max(0.0, g - (d + vd * (t - t_)));
+        return criterion_.margin({stretch, u + vu * (t - t_) - s, a});
+      };
+      const double now = margin(t_);
+      if (now <= 0.0) {
+        consider(soonest, Change::let_go);
+      } else {
+        double hi = best;
+        if (!std::isfinite(hi)) {
+          hi = t_ + 1.0;
+          for (int i = 0; i < 1100 && margin(hi) > 0.0; ++i) hi = t_ + 2.0 * (hi - t_);
+        }
+        if (margin(hi) <= 0.0) {
+          const RootBracket b = bracket_root([&](double t) { return margin(t) / now; }, t_, hi);
+          result_.counts.root_iterations += b.iterations;
+          consider(b.hi, Change::let_go);
+        }
+      }
+    }
+  }
+  if (!change) return std::nullopt;
+  return std::make_pair(best, *change);
+}
+
+void ProgramRunner::apply(Change change, Cascade& cascade) {
+  const AxisPoint n0 = normal_point();
+  const AxisPoint x0 = tangential_point();
+  const bool observe_springs = observers_.wants(EventKind::spring_detached);
+  const std::int64_t k = row_.glued();
+  const std::int64_t m = row_.in_contact();
+  bool by_shear = false;
+  switch (change) {
+    case Change::fall_in:
+      row_.normal.rest = row_.image(1);
+      break;
+    case Change::glue:
+      row_.glue_next();
+      fresh_from_ = std::min(fresh_from_, k + 1);
+      if (observe_springs) emit(EventKind::spring_glued, row_.snapshot(), k + 1, in_cascade_);
+      break;
+    case Change::let_go: {
+      const double d = row_.indentation();
+      const double u = row_.tangential_displacement();
+      by_shear = broken_at_rest(criterion_, u - row_.boundary_offset(), row_.position(k));
+      if (observe_springs) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
+      row_.let_go_boundary(row_.image(k) <= d);
+      released_to_ = std::max(released_to_, k);
+      break;
+    }
+    case Change::touch:
+      row_.touch_next();
+      if (observe_springs) emit(EventKind::spring_touched, row_.snapshot(), m + 1, in_cascade_);
+      break;
+    case Change::lift:
+      if (observe_springs) emit(EventKind::spring_lifted, row_.snapshot(), m, in_cascade_);
+      row_.lift_outer();
+      lifted_to_ = std::max(lifted_to_, m);
+      break;
+  }
+  const AxisPoint n1 = normal_point();
+  const AxisPoint x1 = tangential_point();
+  stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
+  stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
+  if (change != Change::fall_in) {
+    ++cascade.changes;
+    ++result_.counts.events;
+    if (cascade.changes == 1) cascade.first_by_shear = by_shear;
+    if (cascade.changes == 2) cascade.second_by_shear = by_shear;
+  }
+}
+
+void ProgramRunner::finish_cascade(const Cascade& cascade) {
+  const ContactSnapshot after = row_.snapshot();
+  observe(after);
+  if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
+  if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
+  if (cascade.changes < 2) return;
+  JumpRecord jump;
+  jump.stage = stage_->name;
+  jump.springs = row_.in_contact() - cascade.in_contact;
+  jump.glued_springs = row_.glued() - cascade.glued;
+  jump.inward = jump.springs > 0 || (jump.springs == 0 && jump.glued_springs > 0);
+  jump.critical = cascade.before;
+  jump.after = after;
+  jump.by_shear = cascade.second_by_shear;
+  result_.jumps.push_back(jump);
+  emit(EventKind::jump, after);
+}
+
+void ProgramRunner::start_stage(const Stage& stage) {
+  stage_ = &stage;
+  stage_work_ = {};
+  const auto start_axis = [&](const std::optional<StageAxis>& axis, MachineAxis& machine,
+                              bool normal, double& start, double& rate) {
+    if (axis) {
+      // A new controller takes its held value from the present state: nothing jumps.
+      const AffineConstraint c = axis->controller->constraint();
+      machine.rest = normal ? row_.indentation() : row_.tangential_displacement();
+      machine.held = normal ? row_.held_value_of_normal(c) : row_.held_value_of_tangential(c);
+      machine.constraint = c;
+    }
+    start = machine.held;
+    rate = 0.0;
+    if (axis && axis->motion == StageAxis::Motion::to) rate = axis->value - start;
+    if (axis && axis->motion == StageAxis::Motion::by) rate = axis->value;
+  };
+  start_axis(stage.normal, row_.normal, true, normal_start_, normal_rate_);
+  start_axis(stage.tangential, row_.tangential, false, tangential_start_, tangential_rate_);
+  t_ = 0.0;
+  fresh_from_ = std::numeric_limits<std::int64_t>::max();
+  released_to_ = 0;
+  lifted_to_ = 0;
+}
+
+void ProgramRunner::run_stage(const Stage& stage) {
+  start_stage(stage);
+  const double t_end = stage.until_separation ? kInfinity : 1.0;
+  const auto cascade_from = [&](std::optional<Change> first) {
+    Cascade cascade;
+    cascade.before = row_.snapshot();
+    cascade.in_contact = row_.in_contact();
+    cascade.glued = row_.glued();
+    observe(cascade.before);
+    in_cascade_ = false;
+    if (first) {
+      apply(*first, cascade);
+      in_cascade_ = true;
+    }
+    // Every spring a change makes due at this parameter value goes with it; each spring
+    // changes at most twice per value (the guards), so the loop ends.
+    const std::int64_t cap = 4 * (max_springs_ + 2);
+    while (const auto change = due()) {
+      if (cascade.changes > cap) {
+        throw std::runtime_error("a cascade did not end: the spring row keeps changing at t = " +
+                                 fmt::format("{}", t_));
+      }
+      apply(*change, cascade);
+      in_cascade_ = true;
+    }
+    finish_cascade(cascade);
+  };
+  if (stage.until_separation && row_.in_contact() == 0) {
+    result_.warnings.push_back(fmt::format(
+        "stage '{}' runs until separation but starts with no spring in contact: it ends at once",
+        stage.name));
+  } else {
+    cascade_from(std::nullopt);
+    while (stop_ == Stop::none) {
+      if (stage.until_separation && row_.in_contact() == 0) break;
+      if (cannot_hold()) {
+        stop_ = row_.in_contact() == 0 && !row_.normal_has_stiffness()
+                    ? Stop::cannot_hold_normal
+                    : Stop::cannot_hold_tangential;
+        break;
+      }
+      const auto next = next_change(t_end);
+      if (!next) {
+        if (std::isfinite(t_end)) {
+          advance_to(t_end);
+          observe(row_.snapshot());
+        } else {
+          stop_ = Stop::no_end;
+        }
+        break;
+      }
+      advance_to(next->first);
+      cascade_from(next->second);
+    }
+  }
+  const ContactSnapshot end = row_.snapshot();
+  result_.stages.push_back({stage.name, end, stage_work_});
+  total_work_ += stage_work_;
+  emit(EventKind::stage_end, end);
+}
+
+void ProgramRunner::finish(RunResult& r) {
+  r.work = total_work_;
+  const bool lost = row_.in_contact() == 0 && ever_in_contact_;
+  const auto loss_status = [&](const Cascade& c) {
+    if (c.changes >= 2) {
+      r.status = c.second_by_shear ? RunStatus::shear_off : RunStatus::instability;
+      r.critical = c.before;
+    } else if (std::abs(c.before.normal_force) <= kNegligibleForce * largest_force_ &&
+               c.in_contact <= 1) {
+      r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::no_instability;
+    } else {
+      r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::instability;
+      r.critical = c.before;
+    }
+  };
+  switch (stop_) {
+    case Stop::outgrew:
+      r.status = RunStatus::step_limit;
+      r.warnings.push_back(fmt::format(
+          "stage '{}': the contact outgrew the row of {} springs (radius {:.6g} m): the program "
+          "stops here",
+          stage_->name, max_springs_, row_.position(max_springs_)));
+      return;
+    case Stop::no_end:
+      r.status = RunStatus::step_limit;
+      r.warnings.push_back(fmt::format(
+          "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
+          "springs in contact): the program stops here",
+          stage_->name, row_.in_contact()));
+      return;
+    case Stop::cannot_hold_tangential:
+      if (last_glue_loss_) {
+        loss_status(*last_glue_loss_);
+        if (last_glue_loss_->changes < 2) r.status = RunStatus::shear_off;
+      } else {
+        r.status = RunStatus::no_instability;
+        r.warnings.push_back(fmt::format(
+            "stage '{}': fixed-load holds F_x = {:.6g} N with no glued spring: the program ends "
+            "here",
+            stage_->name, row_.tangential.held));
+      }
+      return;
+    case Stop::cannot_hold_normal:
+      if (!last_contact_loss_) {
+        r.status = RunStatus::no_instability;
+        r.warnings.push_back(fmt::format(
+            "stage '{}': fixed-load holds F = {:.6g} N with no spring in contact: the program "
+            "ends here",
+            stage_->name, row_.normal.held));
+        return;
+      }
+      loss_status(*last_contact_loss_);
+      return;
+    case Stop::none:
+      break;
+  }
+  if (lost && last_contact_loss_) {
+    loss_status(*last_contact_loss_);
+    return;
+  }
+  r.status = RunStatus::completed;
+  if (last_contact_loss_) r.critical = last_contact_loss_->before;
+}
+
+RunResult ProgramRunner::run() {
+  for (const Stage& stage : scene_.program->stages) {
+    run_stage(stage);
+    if (stop_ != Stop::none) break;
+  }
+  finish(result_);
+  result_.jumps.shrink_to_fit();
+  if (peak_) result_.peak = peak_;
+  return std::move(result_);
+}
+
+}  // namespace
+
+RunResult run_program_row(const Scene& scene, const ProgramRowSpec& row,
+                          const ObserverList& observers, LargestContact* largest) {
+  ProgramRunner runner(scene, row, observers, largest);
+  RunResult result = runner.run();
+  result.springs = row.reference_springs;
+  result.accuracy.rows = {row.reference_springs};
+  result.accuracy.outer_radius = row.reference_radius;
+  return result;
+}
+
+}  // namespace mdrsim

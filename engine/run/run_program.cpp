@@ -1,0 +1,122 @@
+// The row of a program: N springs across the largest contact radius a_max it reaches. A pilot
+// row of 256 springs finds where the contact is largest; a_max is then the continuum front at
+// that depth, so that a program pressing to a depth d gets the row of the shorthand's preload.
+#include "engine/run/run_program.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "engine/base/bracketed_root.hpp"
+#include "engine/run/program_runner.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr std::int64_t kPilotSprings = 256;
+/// A pilot row ends at this many times its springs: a guess that far off is rescaled.
+constexpr std::int64_t kPilotReach = 64;
+
+/// A first guess of the largest contact radius [m]: the non-adhesive radius at the deepest
+/// depth or largest force the program names where the held value's unit is known statically.
+double guess_radius(const Scene& scene) {
+  const Profile& profile = *scene.profile;
+  const double e_star = scene.material.effective_modulus;
+  double radius = 0.0;
+  double held = 0.0;  // the normal held value, while its unit is known
+  bool known = true;
+  std::string control = "fixed-grips";
+  for (const Stage& stage : scene.program->stages) {
+    if (!stage.normal) continue;
+    const StageAxis& axis = *stage.normal;
+    if (axis.control != control || axis.control == "compliant") known = false;
+    control = axis.control;
+    if (axis.motion == StageAxis::Motion::to) {
+      held = axis.value;
+      known = true;
+    }
+    if (axis.motion == StageAxis::Motion::by && !stage.until_separation) held += axis.value;
+    if (!known || !(held > 0.0)) continue;
+    try {
+      const bool force = axis.controller->held_value_key() == "force";
+      const double a = force ? contact_radius_at_force(profile, held, e_star)
+                             : profile.contact_radius_at_depth(held);
+      if (std::isfinite(a)) radius = std::max(radius, a);
+    } catch (const std::exception&) {
+      // Out of the profile's reach: the pilot finds out.
+    }
+  }
+  if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
+  if (radius > 0.0) return radius;
+  if (const auto tip = profile.jkr_scale_radius(); tip && scene.material.work_of_adhesion > 0.0) {
+    return std::cbrt(9.0 * std::numbers::pi * *tip * *tip * scene.material.work_of_adhesion /
+                     (8.0 * e_star));
+  }
+  return std::isfinite(profile.outer_radius()) ? 0.5 * profile.outer_radius() : 1e-3;
+}
+
+/// The continuum front at depth d [m]: the x where g(x) - sqrt(2 pi x dgamma_a / E*) = d
+/// for a glued edge, g(x) = d for a pressed one, between the pilot's springs m and m + 1.
+double front_radius(const Scene& scene, const LargestContact& largest, double spacing) {
+  const Profile& profile = *scene.profile;
+  if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
+  const double coefficient =
+      largest.glued_edge
+          ? 2.0 * std::numbers::pi *
+                (scene.material.approach_work_of_adhesion / scene.material.effective_modulus)
+          : 0.0;
+  if (coefficient == 0.0) return profile.contact_radius_at_depth(largest.indentation);
+  const auto excess = [&](double x) {
+    return profile.mdr_image(x) - std::sqrt(coefficient * x) - largest.indentation;
+  };
+  const double lo = spacing * static_cast<double>(largest.springs);
+  double hi = lo + spacing;
+  if (!(excess(lo) <= 0.0) || !(excess(hi) > 0.0) || !std::isfinite(excess(hi))) return lo;
+  return bracketed_root(excess, lo, hi);
+}
+
+}  // namespace
+
+RunResult run_program(const Scene& scene, const ObserverList& observers) {
+  double radius = guess_radius(scene);
+  LargestContact largest;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    largest = {};
+    const ProgramRowSpec pilot{.reference_radius = radius,
+                               .reference_springs = kPilotSprings,
+                               .reference_image = scene.profile->mdr_image(radius),
+                               .max_springs = kPilotSprings * kPilotReach};
+    const RunResult r = run_program_row(scene, pilot, {}, &largest);
+    const bool outgrew =
+        r.status == RunStatus::step_limit && largest.most_springs >= pilot.max_springs;
+    if (outgrew) {
+      radius *= static_cast<double>(kPilotReach);
+      continue;
+    }
+    if (largest.most_springs == 0 || largest.most_springs >= kPilotSprings / 4) break;
+    radius *= static_cast<double>(largest.most_springs) / static_cast<double>(kPilotSprings);
+  }
+  const std::int64_t n = scene.springs;
+  ProgramRowSpec row{.reference_radius = radius,
+                     .reference_springs = n,
+                     .reference_image = scene.profile->mdr_image(radius),
+                     .max_springs = 2 * n + 64};
+  if (largest.springs > 0) {
+    const double a_max = front_radius(scene, largest, radius / kPilotSprings);
+    const double g = scene.profile->mdr_image(a_max);
+    const double front = largest.indentation +
+                         (largest.glued_edge ? std::sqrt(2.0 * std::numbers::pi * a_max *
+                                                         (scene.material.approach_work_of_adhesion /
+                                                          scene.material.effective_modulus))
+                                             : 0.0);
+    row.reference_radius = a_max;
+    // Spring N is reached at the deepest point whatever the rounding of g(a_max) (SPEC).
+    row.reference_image =
+        std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)) ? front : g;
+  }
+  return run_program_row(scene, row, observers);
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,210 @@
+// Reads [[loading.stage]] into a Program; messages name the stage as loading.stage.N, N from 1.
+#include "engine/scene/program_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/scene/scene_error.hpp"
+
+namespace mdrsim {
+namespace {
+
+/// A cap that keeps a generated or corrupted file from building millions of stages.
+constexpr std::size_t kMaxStages = 100'000;
+
+/// SPEC: a program starts with both axes under fixed-grips holding 0.
+constexpr const char* kStartControl = "fixed-grips";
+
+constexpr const char* kEitherShorthandOrStages =
+    "a scene has either the shorthand keys (preload, tangential, normal) or [[loading.stage]], "
+    "not both";
+
+/// The controller an axis is under as the stages go by.
+struct AxisControl {
+  std::string name;
+  std::shared_ptr<const AxisController> controller;
+};
+
+/// A name that reads as one word in the trajectory CSV and the JSON result.
+bool is_stage_name(std::string_view name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_';
+  });
+}
+
+/// A coefficient that is not finite (a compliant stiffness near the smallest double gives
+/// 1/k = inf) makes every equilibrium of the axis NaN.
+void check_finite_constraint(const TomlReader& t, const StageAxis& axis) {
+  const AffineConstraint c = axis.controller->constraint();
+  if (!std::isfinite(c.displacement_coefficient) || !std::isfinite(c.force_coefficient)) {
+    t.fail(
+        fmt::format("control = \"{}\" is degenerate with these values (constraint a_u = {}, "
+                    "a_F = {} m/N)",
+                    axis.control, c.displacement_coefficient, c.force_coefficient));
+  }
+}
+
+/// One axis table of a stage. `current` is the axis's controller before the stage; the stage
+/// leaves in it the controller it ends with.
+StageAxis read_stage_axis(TomlReader& t, const ControllerRegistry& controllers,
+                          bool until_separation, AxisControl& current) {
+  const std::vector<std::string> motion_keys{"to", "by"};
+  StageAxis axis;
+  if (t.has("control")) {
+    axis.control = t.name("control", controllers.names());
+    check_part_keys(t, "control", axis.control, controllers, motion_keys);
+    const auto* entry = controllers.find(axis.control);
+    const ParameterValues values = t.read_all(entry->parameters);
+    axis.controller = create_part(t, "control", [&] { return entry->create(values); });
+    check_finite_constraint(t, axis);
+    current = {axis.control, axis.controller};
+  } else {
+    check_part_keys(t, "control", current.name, controllers, motion_keys);
+    // Without control the axis keeps its controller object; a parameter given alone would
+    // have to make a new one, with the other parameters guessed.
+    for (const ParameterSpec& spec : controllers.find(current.name)->parameters) {
+      if (t.has(spec.key)) {
+        t.fail_at(spec.key, fmt::format("give control = \"{}\" with it: an axis without control "
+                                        "keeps its controller as it was",
+                                        current.name));
+      }
+    }
+    axis.control = current.name;
+    axis.controller = current.controller;
+  }
+  if (t.has("to") && t.has("by")) t.fail_at("by", "give to or by, not both");
+  if (until_separation && t.has("to")) {
+    t.fail_range("to",
+                 "is refused with until = \"separation\": by is the change per unit of the stage "
+                 "parameter");
+  }
+  // In the controller's held unit (m or N), any sign: a stage may press, pull or shear back.
+  if (const auto to = t.optional_number({.key = "to"})) {
+    axis.motion = StageAxis::Motion::to;
+    axis.value = *to;
+  } else if (const auto by = t.optional_number({.key = "by"})) {
+    axis.motion = StageAxis::Motion::by;
+    axis.value = *by;
+  }
+  t.finish();
+  return axis;
+}
+
+/// Whether the axis drives its held value: a stage until separation needs one that does.
+bool moves(const std::optional<StageAxis>& axis) {
+  return axis && axis->motion == StageAxis::Motion::by && axis->value != 0.0;
+}
+
+/// The stage numbers (from 1) of the names the scene gave so far.
+using StageNumbers = std::map<std::string, std::size_t, std::less<>>;
+
+Stage read_stage(TomlReader& t, std::size_t number, const ControllerRegistry& controllers,
+                 AxisControl& normal, AxisControl& tangential, StageNumbers& named) {
+  t.check_keys({"name", "normal", "tangential", "until"});
+  Stage stage;
+  if (const auto name = t.optional_text("name")) {
+    if (!is_stage_name(*name)) {
+      t.fail_at("name", fmt::format("\"{}\" is not a stage name: give letters, digits, '-' and "
+                                    "'_' only, at least one",
+                                    printable(*name)));
+    }
+    // A default name "stage N" holds a space, so only names the scene gives can clash.
+    if (const auto [it, fresh] = named.emplace(*name, number); !fresh) {
+      t.fail_at("name", fmt::format("\"{}\" is the name of loading.stage.{} already; stage names "
+                                    "must differ",
+                                    *name, it->second));
+    }
+    stage.name = *name;
+  } else {
+    stage.name = fmt::format("stage {}", number);
+  }
+  stage.until_separation = t.name("until", {"end", "separation"}, "end") == "separation";
+  if (auto axis = t.optional_table("normal")) {
+    stage.normal = read_stage_axis(*axis, controllers, stage.until_separation, normal);
+  }
+  if (auto axis = t.optional_table("tangential")) {
+    stage.tangential = read_stage_axis(*axis, controllers, stage.until_separation, tangential);
+  }
+  if (stage.until_separation && !moves(stage.normal) && !moves(stage.tangential)) {
+    t.fail_at(
+        "until",
+        "\"separation\" needs a non-zero by on normal or tangential, or the stage never ends");
+  }
+  t.finish();
+  return stage;
+}
+
+}  // namespace
+
+Program read_program(TomlReader& loading, const ControllerRegistry& controllers) {
+  loading.check_keys({"stage", "rebinding"},
+                     [](std::string_view key) -> std::optional<std::string> {
+                       if (key == "preload" || key == "tangential" || key == "normal") {
+                         return kEitherShorthandOrStages;
+                       }
+                       return std::nullopt;
+                     });
+  Program program;
+  program.rebinding = loading.optional_boolean("rebinding").value_or(false);
+  std::vector<TomlReader> stages = *loading.optional_table_array("stage", kMaxStages);
+
+  const auto* start = controllers.find(kStartControl);
+  if (!start) {
+    throw std::logic_error("no fixed-grips controller registered: programs start with it");
+  }
+  const std::shared_ptr<const AxisController> fixed_grips = start->create(ParameterValues{});
+  AxisControl normal{kStartControl, fixed_grips};
+  AxisControl tangential{kStartControl, fixed_grips};
+
+  StageNumbers named;
+  program.stages.reserve(stages.size());
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    program.stages.push_back(read_stage(stages[i], i + 1, controllers, normal, tangential, named));
+  }
+  program.from_shorthand = false;
+  return program;
+}
+
+void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Material& values) {
+  loading.check_keys({"preload", "tangential", "normal"},
+                     [](std::string_view key) -> std::optional<std::string> {
+                       if (key == "rebinding") {
+                         return "applies to loading programs ([[loading.stage]]) only";
+                       }
+                       return std::nullopt;
+                     });
+  if (values.approach_work_of_adhesion > 0.0) {
+    material.fail_at("approach_work_of_adhesion",
+                     "applies to loading programs ([[loading.stage]]) only; the shorthand's "
+                     "preload glues on touch");
+  }
+}
+
+void refuse_options_not_yet_for_programs(TomlReader& root, const Scene& scene) {
+  constexpr const char* kNotYet = "is not yet available for loading programs";
+  if (scene.discretization.rtol) {
+    TomlReader discretization = root.table("discretization");
+    discretization.fail_range("rtol", fmt::format("{}; give discretization.springs", kNotYet));
+  }
+  if (scene.discretization.richardson()) {
+    TomlReader discretization = root.table("discretization");
+    discretization.fail_range("extrapolation", fmt::format("= \"richardson\" {}", kNotYet));
+  }
+  if (scene.solver.method == SolverMethod::stepping) {
+    TomlReader solver = root.table("solver");
+    solver.fail_range("method", fmt::format("= \"stepping\" {}; use \"event\"", kNotYet));
+  }
+}
+
+}  // namespace mdrsim

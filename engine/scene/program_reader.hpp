@@ -1,0 +1,27 @@
+// Reads a loading program ([[loading.stage]], loading.rebinding) and keeps the shorthand and the
+// program apart (SPEC "Loading programs").
+#pragma once
+
+#include "controllers/controller_registry.hpp"
+#include "engine/scene/program.hpp"
+#include "engine/scene/scene.hpp"
+#include "engine/scene/toml_reader.hpp"
+
+namespace mdrsim {
+
+/// Whether the [loading] table is a program: it holds `stage`.
+inline bool is_program(const TomlReader& loading) { return loading.has("stage"); }
+
+/// Reads the program of a [loading] table that holds `stage`: every stage checked, each axis's
+/// controller followed through the stages from fixed-grips at the start.
+Program read_program(TomlReader& loading, const ControllerRegistry& controllers);
+
+/// Declares the shorthand's [loading] keys and refuses what applies to programs only:
+/// loading.rebinding and a positive material.approach_work_of_adhesion.
+void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Material& values);
+
+/// Refuses the options the engine does not yet run for programs: discretization.rtol,
+/// discretization.extrapolation = "richardson" and solver.method = "stepping".
+void refuse_options_not_yet_for_programs(TomlReader& root, const Scene& scene);
+
+}  // namespace mdrsim

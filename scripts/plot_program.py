@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""Draws a loading program's force-displacement loops from `mdrsim run --trajectory`.
+
+Run with Debian's Python, which has matplotlib:
+    /usr/bin/python3 scripts/plot_program.py TRAJECTORY.csv [--out NAME] [--title TEXT]
+
+Two panels: the normal force against the indentation, and the tangential force against the
+tangential displacement, one colour per stage, so that a cycle's hysteresis (the area the loop
+encloses is the energy it dissipated) and its jumps are seen at a glance. Jumps (rows inside a
+cascade) are drawn as dashed lines: the state moves there without passing through equilibria.
+Writes NAME.png and NAME.svg (default: next to the CSV, with its stem).
+"""
+
+import argparse
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+EQUILIBRIA = ("glued", "touched", "lifted", "detached", "stage-end", "jump", "preload",
+              "tangential", "step")
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if rows and "stage" not in rows[0]:
+        sys.exit(f"plot_program: {path} has no 'stage' column: is it an mdrsim trajectory?")
+    return rows
+
+
+def stage_segments(rows):
+    """Rows grouped by stage in order; each stage's points as (d, F, ux, Fx, in_cascade)."""
+    stages = []
+    for r in rows:
+        if r["event"] not in EQUILIBRIA:
+            continue
+        point = (float(r["indentation"]), float(r["normal_force"]),
+                 float(r["tangential_displacement"]), float(r["tangential_force"]),
+                 r["in_cascade"] == "1")
+        if not stages or stages[-1][0] != r["stage"]:
+            stages.append((r["stage"], []))
+        stages[-1][1].append(point)
+    return stages
+
+
+def draw(ax, stages, xi, yi, xlabel, ylabel):
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    last = None
+    for n, (name, points) in enumerate(stages):
+        colour = colours[n % len(colours)]
+        xs, ys = [], []
+        if last is not None:
+            xs.append(last[xi])
+            ys.append(last[yi])
+        for p in points:
+            if p[4] and xs:
+                # A jump: close the solid path, draw the jump dashed from the last equilibrium.
+                ax.plot(xs, ys, color=colour, lw=1.4, label=name if len(xs) > 1 else None)
+                ax.plot([xs[-1], p[xi]], [ys[-1], p[yi]], color=colour, lw=1.0, ls="--")
+                xs, ys = [], []
+            xs.append(p[xi])
+            ys.append(p[yi])
+        if xs:
+            ax.plot(xs, ys, color=colour, lw=1.4, label=name)
+        if points:
+            last = points[-1]
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.axhline(0.0, color="grey", lw=0.5)
+    ax.grid(alpha=0.3)
+    handles, labels = ax.get_legend_handles_labels()
+    unique = dict(zip(labels, handles))
+    ax.legend(unique.values(), unique.keys(), fontsize=8)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("trajectory")
+    parser.add_argument("--out", help="output path without extension")
+    parser.add_argument("--title", default=None)
+    args = parser.parse_args()
+    rows = read_rows(args.trajectory)
+    if not rows:
+        sys.exit(f"plot_program: {args.trajectory} has no rows")
+    stages = stage_segments(rows)
+    fig, (normal, tangential) = plt.subplots(1, 2, figsize=(11, 4.2))
+    draw(normal, stages, 0, 1, "indentation d [m]", "normal force F [N]")
+    draw(tangential, stages, 2, 3, "tangential displacement u_x [m]", "tangential force F_x [N]")
+    fig.suptitle(args.title or os.path.basename(args.trajectory))
+    out = args.out or os.path.splitext(args.trajectory)[0]
+    for ext in ("png", "svg"):
+        fig.savefig(f"{out}.{ext}", dpi=150 if ext == "png" else None, bbox_inches="tight")
+    print(f"plot_program: wrote {out}.png and .svg")
+
+
+if __name__ == "__main__":
+    main()
