@@ -21,10 +21,20 @@ struct LinearResponse {
 };
 
 /// The displacement [m] at which the contact's response meets the constraint's held value.
-double displacement_under(const AffineConstraint& c, const LinearResponse& r, double held_value);
+/// a_u u + a_F (K u - C) = h  =>  u = (h + a_F C) / (a_u + a_F K). Inline: every event of
+/// both engines solves it.
+inline double displacement_under(const AffineConstraint& c, const LinearResponse& r,
+                                 double held_value) {
+  return (held_value + c.force_coefficient * r.offset) /
+         (c.displacement_coefficient + c.force_coefficient * r.stiffness);
+}
 
 /// The held value that puts the axis at `displacement` [m].
-double held_value_at(const AffineConstraint& c, const LinearResponse& r, double displacement);
+inline double held_value_at(const AffineConstraint& c, const LinearResponse& r,
+                            double displacement) {
+  return c.displacement_coefficient * displacement +
+         c.force_coefficient * (r.stiffness * displacement - r.offset);
+}
 
 /// Required: constraint() and held_value_key().
 class AxisController {

@@ -34,11 +34,11 @@ bool has_stiffness(const AffineConstraint& c, double stiffness) {
 }  // namespace
 
 bool ProgramRow::normal_has_stiffness() const {
-  return has_stiffness(normal.constraint, static_cast<double>(in_contact_));
+  return has_stiffness(normal_.constraint, static_cast<double>(in_contact_));
 }
 
 bool ProgramRow::tangential_has_stiffness() const {
-  return has_stiffness(tangential.constraint, static_cast<double>(glued_));
+  return has_stiffness(tangential_.constraint, static_cast<double>(glued_));
 }
 
 double ProgramRow::normal_force_at(double d) const {
@@ -51,51 +51,69 @@ double ProgramRow::tangential_force_at(double u) const {
   return per_spring * (static_cast<double>(glued_) * u - glued_offsets_.value());
 }
 
-double ProgramRow::indentation() const {
-  if (!normal_has_stiffness()) return normal.rest;
+const ProgramRow::AxisEquilibrium& ProgramRow::normal_equilibrium() const {
+  if (!normal_cached_) {
+    normal_equilibrium_.displacement = solve_indentation();
+    normal_equilibrium_.force = normal_force_at(normal_equilibrium_.displacement);
+    normal_cached_ = true;
+  }
+  return normal_equilibrium_;
+}
+
+const ProgramRow::AxisEquilibrium& ProgramRow::tangential_equilibrium() const {
+  if (!tangential_cached_) {
+    tangential_equilibrium_.displacement = solve_tangential_displacement();
+    tangential_equilibrium_.force = tangential_force_at(tangential_equilibrium_.displacement);
+    tangential_cached_ = true;
+  }
+  return tangential_equilibrium_;
+}
+
+double ProgramRow::solve_indentation() const {
+  if (!normal_has_stiffness()) return normal_.rest;
   const double per_spring = 2.0 * material_.effective_modulus * spacing_;
   const LinearResponse r{per_spring * static_cast<double>(in_contact_),
                          per_spring * contact_images_.value()};
-  return displacement_under(normal.constraint, r, normal.held);
+  return displacement_under(normal_.constraint, r, normal_.held);
 }
 
-double ProgramRow::tangential_displacement() const {
-  if (!tangential_has_stiffness()) return tangential.rest;
+double ProgramRow::solve_tangential_displacement() const {
+  if (!tangential_has_stiffness()) return tangential_.rest;
   const double per_spring = 2.0 * material_.effective_shear_modulus * spacing_;
   const LinearResponse r{per_spring * static_cast<double>(glued_),
                          per_spring * glued_offsets_.value()};
-  return displacement_under(tangential.constraint, r, tangential.held);
+  return displacement_under(tangential_.constraint, r, tangential_.held);
 }
 
 double ProgramRow::indentation_per_held() const {
   if (!normal_has_stiffness()) return 0.0;
-  const AffineConstraint& c = normal.constraint;
+  const AffineConstraint& c = normal_.constraint;
   const double k = 2.0 * material_.effective_modulus * spacing_ * static_cast<double>(in_contact_);
   return 1.0 / (c.displacement_coefficient + c.force_coefficient * k);
 }
 
 double ProgramRow::tangential_per_held() const {
   if (!tangential_has_stiffness()) return 0.0;
-  const AffineConstraint& c = tangential.constraint;
+  const AffineConstraint& c = tangential_.constraint;
   const double k = 2.0 * material_.effective_shear_modulus * spacing_ * static_cast<double>(glued_);
   return 1.0 / (c.displacement_coefficient + c.force_coefficient * k);
 }
 
 double ProgramRow::held_value_of_normal(const AffineConstraint& c) const {
-  const double d = indentation();
-  return c.displacement_coefficient * d + c.force_coefficient * normal_force_at(d);
+  return c.displacement_coefficient * indentation() + c.force_coefficient * normal_force();
 }
 
 double ProgramRow::held_value_of_tangential(const AffineConstraint& c) const {
-  const double u = tangential_displacement();
-  return c.displacement_coefficient * u + c.force_coefficient * tangential_force_at(u);
+  return c.displacement_coefficient * tangential_displacement() +
+         c.force_coefficient * tangential_force();
 }
 
 void ProgramRow::glue_next() {
   // The displacements before the change: an axis without stiffness rests where it was.
-  normal.rest = indentation();
-  tangential.rest = tangential_displacement();
-  const double u = tangential.rest;
+  normal_.rest = indentation();
+  tangential_.rest = tangential_displacement();
+  const double u = tangential_.rest;
+  normal_cached_ = tangential_cached_ = false;
   ++glued_;
   if (glued_ > ever_glued_) ever_glued_ = glued_;
   if (glued_ > in_contact_) {
@@ -107,8 +125,9 @@ void ProgramRow::glue_next() {
 }
 
 void ProgramRow::let_go_boundary(bool pressed) {
-  normal.rest = indentation();
-  tangential.rest = tangential_displacement();
+  normal_.rest = indentation();
+  tangential_.rest = tangential_displacement();
+  normal_cached_ = tangential_cached_ = false;
   glued_offsets_.add(-runs_.back().offset);
   if (runs_.back().first == glued_) runs_.pop_back();
   if (!pressed && in_contact_ == glued_) {
@@ -119,13 +138,15 @@ void ProgramRow::let_go_boundary(bool pressed) {
 }
 
 void ProgramRow::touch_next() {
-  normal.rest = indentation();
+  normal_.rest = indentation();
+  normal_cached_ = false;
   ++in_contact_;
   contact_images_.add(image(in_contact_));
 }
 
 void ProgramRow::lift_outer() {
-  normal.rest = indentation();
+  normal_.rest = indentation();
+  normal_cached_ = false;
   contact_images_.add(-image(in_contact_));
   --in_contact_;
 }
@@ -133,11 +154,11 @@ void ProgramRow::lift_outer() {
 ContactSnapshot ProgramRow::snapshot() const {
   ContactSnapshot s;
   s.indentation = indentation();
-  s.normal_force = normal_force_at(s.indentation);
-  s.normal_control = normal.held;
+  s.normal_force = normal_force();
+  s.normal_control = normal_.held;
   s.contact_radius = in_contact_ > 0 ? position(in_contact_) : 0.0;
   s.tangential_displacement = tangential_displacement();
-  s.tangential_force = tangential_force_at(s.tangential_displacement);
+  s.tangential_force = tangential_force();
   s.springs_in_contact = in_contact_;
   return s;
 }

@@ -50,14 +50,27 @@ class ProgramRow {
   bool adhesive() const { return material_.work_of_adhesion > 0.0; }
   const Material& material() const { return material_; }
 
-  MachineAxis normal;
-  MachineAxis tangential;
+  const MachineAxis& normal() const { return normal_; }
+  const MachineAxis& tangential() const { return tangential_; }
+  /// Changing an axis drops the cached equilibrium.
+  MachineAxis& edit_normal() {
+    normal_cached_ = false;
+    return normal_;
+  }
+  MachineAxis& edit_tangential() {
+    tangential_cached_ = false;
+    return tangential_;
+  }
 
   /// Equilibrium: the axis has stiffness (else it rests, see MachineAxis::rest).
   bool normal_has_stiffness() const;
   bool tangential_has_stiffness() const;
-  double indentation() const;              ///< d [m]
-  double tangential_displacement() const;  ///< u_x [m]
+  double indentation() const { return normal_equilibrium().displacement; }  ///< d [m]
+  double tangential_displacement() const {                                  ///< u_x [m]
+    return tangential_equilibrium().displacement;
+  }
+  double normal_force() const { return normal_equilibrium().force; }          ///< F [N]
+  double tangential_force() const { return tangential_equilibrium().force; }  ///< F_x [N]
   double normal_force_at(double indentation) const;
   double tangential_force_at(double displacement) const;
   /// d(d)/d(held) and d(u_x)/d(held) while the springs stay as they are.
@@ -77,6 +90,17 @@ class ProgramRow {
   ContactSnapshot snapshot() const;
 
  private:
+  /// The equilibrium of each axis, computed once per change of the row or of that axis: a
+  /// step asks for it many times.
+  struct AxisEquilibrium {
+    double displacement;
+    double force;
+  };
+  const AxisEquilibrium& normal_equilibrium() const;
+  const AxisEquilibrium& tangential_equilibrium() const;
+  double solve_indentation() const;
+  double solve_tangential_displacement() const;
+
   struct Run {
     std::int64_t first;  ///< innermost spring of the run
     double offset;       ///< s [m]
@@ -96,6 +120,12 @@ class ProgramRow {
   CompensatedSum contact_images_;  ///< sum of g_i, i <= m [m]
   CompensatedSum glued_offsets_;   ///< sum of s_i, i <= k [m]
   std::vector<Run> runs_;
+  MachineAxis normal_;
+  MachineAxis tangential_;
+  mutable AxisEquilibrium normal_equilibrium_{};
+  mutable AxisEquilibrium tangential_equilibrium_{};
+  mutable bool normal_cached_ = false;
+  mutable bool tangential_cached_ = false;
 };
 
 }  // namespace mdrsim

@@ -21,6 +21,8 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// A last spring carrying less than this share of the path's largest |F| peels off smoothly.
 constexpr double kNegligibleForce = 1e-3;
+/// Spring changes per spring of the row a stage may take to reach separation.
+constexpr std::int64_t kSweepsUntilSeparation = 64;
 
 enum class Change { fall_in, let_go, glue, touch, lift };
 
@@ -100,40 +102,49 @@ class ProgramRunner {
   std::int64_t lifted_to_ = 0;
   bool in_cascade_ = false;
 
+  struct LetGoCache {
+    std::int64_t spring;
+    double stretch_x;
+    LetGo go;
+  };
+  std::optional<LetGoCache> let_go_cache_;
+
   // Path record.
   double largest_force_ = 0.0;
   std::optional<ContactSnapshot> peak_;
   std::optional<Cascade> last_contact_loss_;
   std::optional<Cascade> last_glue_loss_;
   bool ever_in_contact_ = false;
-  enum class Stop { none, cannot_hold_normal, cannot_hold_tangential, outgrew, no_end };
+  enum class Stop { none, cannot_hold_normal, cannot_hold_tangential, outgrew, no_end, endless };
   Stop stop_ = Stop::none;
 };
 
 void ProgramRunner::set_parameter(double t) {
-  row_.normal.held = normal_start_ + normal_rate_ * t;
-  row_.tangential.held = tangential_start_ + tangential_rate_ * t;
+  // An axis that does not move keeps its cached equilibrium.
+  if (normal_rate_ != 0.0) row_.edit_normal().held = normal_start_ + normal_rate_ * t;
+  if (tangential_rate_ != 0.0) {
+    row_.edit_tangential().held = tangential_start_ + tangential_rate_ * t;
+  }
   if (t == 1.0 && stage_ && !stage_->until_separation) {
     // `to` lands exactly on its value.
     if (stage_->normal && stage_->normal->motion == StageAxis::Motion::to) {
-      row_.normal.held = stage_->normal->value;
+      row_.edit_normal().held = stage_->normal->value;
     }
     if (stage_->tangential && stage_->tangential->motion == StageAxis::Motion::to) {
-      row_.tangential.held = stage_->tangential->value;
+      row_.edit_tangential().held = stage_->tangential->value;
     }
   }
 }
 
 AxisPoint ProgramRunner::normal_point() const {
-  const double d = row_.indentation();
-  const bool spring = drives_through_spring(row_.normal.constraint);
-  return {row_.normal_force_at(d), spring ? row_.normal.held : d};
+  const bool spring = drives_through_spring(row_.normal().constraint);
+  return {row_.normal_force(), spring ? row_.normal().held : row_.indentation()};
 }
 
 AxisPoint ProgramRunner::tangential_point() const {
-  const double u = row_.tangential_displacement();
-  const bool spring = drives_through_spring(row_.tangential.constraint);
-  return {row_.tangential_force_at(u), spring ? row_.tangential.held : u};
+  const bool spring = drives_through_spring(row_.tangential().constraint);
+  return {row_.tangential_force(),
+          spring ? row_.tangential().held : row_.tangential_displacement()};
 }
 
 void ProgramRunner::advance_to(double t) {
@@ -179,20 +190,28 @@ void ProgramRunner::emit(EventKind kind, const ContactSnapshot& state, std::int6
 LetGo ProgramRunner::boundary_let_go(double /*d*/, double u) {
   const double a = row_.position(row_.glued());
   const double stretch_x = u - row_.boundary_offset();
+  // The same spring at the same tangential stretch lets go at the same elongation: a step
+  // asks twice (what is due, what comes next), and a retract at fixed u_x asks once per spring.
+  if (let_go_cache_ && let_go_cache_->spring == row_.glued() &&
+      let_go_cache_->stretch_x == stretch_x) {
+    return let_go_cache_->go;
+  }
   const LetGo go = locate_let_go(criterion_, a, stretch_x, std::abs(stretch_x) + row_.spacing());
   result_.counts.root_iterations += go.root_iterations;
   if (go.kind == LetGo::Kind::never) {
     throw std::runtime_error(fmt::format(
         "the detachment criterion never lets go of the boundary spring at a = {} m", a));
   }
+  let_go_cache_ = {row_.glued(), stretch_x, go};
   return go;
 }
 
 bool ProgramRunner::cannot_hold() const {
-  const bool normal = !row_.normal_has_stiffness() && row_.in_contact() == 0 &&
-                      (row_.normal.held < 0.0 || (row_.normal.held == 0.0 && normal_rate_ < 0.0));
-  const bool tangential =
-      !row_.tangential_has_stiffness() && (row_.tangential.held != 0.0 || tangential_rate_ != 0.0);
+  const bool normal =
+      !row_.normal_has_stiffness() && row_.in_contact() == 0 &&
+      (row_.normal().held < 0.0 || (row_.normal().held == 0.0 && normal_rate_ < 0.0));
+  const bool tangential = !row_.tangential_has_stiffness() &&
+                          (row_.tangential().held != 0.0 || tangential_rate_ != 0.0);
   return normal || tangential;
 }
 
@@ -200,8 +219,8 @@ std::optional<Change> ProgramRunner::due() {
   const std::int64_t k = row_.glued();
   const std::int64_t m = row_.in_contact();
   if (m == 0 && !row_.normal_has_stiffness() &&
-      (row_.normal.held > 0.0 || (row_.normal.held == 0.0 && normal_rate_ > 0.0)) &&
-      row_.normal.rest < row_.image(1)) {
+      (row_.normal().held > 0.0 || (row_.normal().held == 0.0 && normal_rate_ > 0.0)) &&
+      row_.normal().rest < row_.image(1)) {
     return Change::fall_in;  // a compressive load with nothing to hold it: the indenter falls in
   }
   const double d = row_.indentation();
@@ -308,15 +327,19 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
 }
 
 void ProgramRunner::apply(Change change, Cascade& cascade) {
-  const AxisPoint n0 = normal_point();
-  const AxisPoint x0 = tangential_point();
+  // At one t only a fixed-load axis moves its driving point (the indenter, at constant force);
+  // under fixed grips and compliant the driving point is the held value, which stays.
+  const bool normal_moves = row_.normal().constraint.displacement_coefficient == 0.0;
+  const bool tangential_moves = row_.tangential().constraint.displacement_coefficient == 0.0;
+  const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
+  const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   const bool observe_springs = observers_.wants(EventKind::spring_detached);
   const std::int64_t k = row_.glued();
   const std::int64_t m = row_.in_contact();
   bool by_shear = false;
   switch (change) {
     case Change::fall_in:
-      row_.normal.rest = row_.image(1);
+      row_.edit_normal().rest = row_.image(1);
       break;
     case Change::glue:
       row_.glue_next();
@@ -342,10 +365,14 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       lifted_to_ = std::max(lifted_to_, m);
       break;
   }
-  const AxisPoint n1 = normal_point();
-  const AxisPoint x1 = tangential_point();
-  stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
-  stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
+  if (normal_moves) {
+    const AxisPoint n1 = normal_point();
+    stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
+  }
+  if (tangential_moves) {
+    const AxisPoint x1 = tangential_point();
+    stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
+  }
   if (change != Change::fall_in) {
     ++cascade.changes;
     ++result_.counts.events;
@@ -375,22 +402,23 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
 void ProgramRunner::start_stage(const Stage& stage) {
   stage_ = &stage;
   stage_work_ = {};
-  const auto start_axis = [&](const std::optional<StageAxis>& axis, MachineAxis& machine,
-                              bool normal, double& start, double& rate) {
+  const auto start_axis = [&](const std::optional<StageAxis>& axis, bool normal, double& start,
+                              double& rate) {
     if (axis) {
       // A new controller takes its held value from the present state: nothing jumps.
       const AffineConstraint c = axis->controller->constraint();
-      machine.rest = normal ? row_.indentation() : row_.tangential_displacement();
-      machine.held = normal ? row_.held_value_of_normal(c) : row_.held_value_of_tangential(c);
-      machine.constraint = c;
+      const double rest = normal ? row_.indentation() : row_.tangential_displacement();
+      const double held = normal ? row_.held_value_of_normal(c) : row_.held_value_of_tangential(c);
+      MachineAxis& machine = normal ? row_.edit_normal() : row_.edit_tangential();
+      machine = {c, held, rest};
     }
-    start = machine.held;
+    start = normal ? row_.normal().held : row_.tangential().held;
     rate = 0.0;
     if (axis && axis->motion == StageAxis::Motion::to) rate = axis->value - start;
     if (axis && axis->motion == StageAxis::Motion::by) rate = axis->value;
   };
-  start_axis(stage.normal, row_.normal, true, normal_start_, normal_rate_);
-  start_axis(stage.tangential, row_.tangential, false, tangential_start_, tangential_rate_);
+  start_axis(stage.normal, true, normal_start_, normal_rate_);
+  start_axis(stage.tangential, false, tangential_start_, tangential_rate_);
   t_ = 0.0;
   fresh_from_ = std::numeric_limits<std::int64_t>::max();
   released_to_ = 0;
@@ -430,8 +458,16 @@ void ProgramRunner::run_stage(const Stage& stage) {
         stage.name));
   } else {
     cascade_from(std::nullopt);
+    // Until separation, a contact that slides on without parting (stick-slip with rebinding
+    // under compression) would change springs forever: the stage stops after this many.
+    const std::int64_t event_limit =
+        result_.counts.events + kSweepsUntilSeparation * (max_springs_ + 1);
     while (stop_ == Stop::none) {
       if (stage.until_separation && row_.in_contact() == 0) break;
+      if (stage.until_separation && result_.counts.events > event_limit) {
+        stop_ = Stop::endless;
+        break;
+      }
       if (cannot_hold()) {
         stop_ = row_.in_contact() == 0 && !row_.normal_has_stiffness()
                     ? Stop::cannot_hold_normal
@@ -488,6 +524,15 @@ void ProgramRunner::finish(RunResult& r) {
           "springs in contact): the program stops here",
           stage_->name, row_.in_contact()));
       return;
+    case Stop::endless:
+      r.status = RunStatus::step_limit;
+      r.warnings.push_back(fmt::format(
+          "stage '{}' runs until separation, but after {} changes of the spring row ({} per "
+          "spring) the contact is still there ({} springs in contact, {} glued): the program "
+          "stops here",
+          stage_->name, result_.counts.events, kSweepsUntilSeparation, row_.in_contact(),
+          row_.glued()));
+      return;
     case Stop::cannot_hold_tangential:
       if (last_glue_loss_) {
         loss_status(*last_glue_loss_);
@@ -497,7 +542,7 @@ void ProgramRunner::finish(RunResult& r) {
         r.warnings.push_back(fmt::format(
             "stage '{}': fixed-load holds F_x = {:.6g} N with no glued spring: the program ends "
             "here",
-            stage_->name, row_.tangential.held));
+            stage_->name, row_.tangential().held));
       }
       return;
     case Stop::cannot_hold_normal:
@@ -506,7 +551,7 @@ void ProgramRunner::finish(RunResult& r) {
         r.warnings.push_back(fmt::format(
             "stage '{}': fixed-load holds F = {:.6g} N with no spring in contact: the program "
             "ends here",
-            stage_->name, row_.normal.held));
+            stage_->name, row_.normal().held));
         return;
       }
       loss_status(*last_contact_loss_);

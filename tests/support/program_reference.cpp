@@ -22,7 +22,8 @@ template <class Fn>
 double root(Fn fn, double lo, double hi) {
   std::uintmax_t iterations = 300;
   const auto r = boost::math::tools::toms748_solve(
-      fn, lo, hi, boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 1),
+      fn, lo, hi,
+      boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 1),
       iterations);
   return 0.5 * (r.first + r.second);
 }
@@ -113,8 +114,9 @@ class GluedOnTouchRow {
     double work = 0.0;
     if (!rebinding_ && band_ > glued_) {
       if (to > 3.0 * band_ * band_) {
-        throw std::domain_error("press: springs beyond the let-go band would be pressed against "
-                                "a blocked front; not derived here");
+        throw std::domain_error(
+            "press: springs beyond the let-go band would be pressed against "
+            "a blocked front; not derived here");
       }
       work = integrate_piecewise([&](double d) { return force(d); }, depth_, to,
                                  {3.0 * glued_ * glued_, 3.0 * band_ * band_});
@@ -204,7 +206,9 @@ State jkr_state(double a) { return {a, jkr_indentation(a), paper::normal_force(a
 //   F dd/da = 6 a^4 - 14 a^(5/2) + 4 a,   P(a) = int = (6/5) a^5 - 4 a^(7/2) + 2 a^2,
 // and int F dd from a_from to a_to is P(a_to) - P(a_from).
 double jkr_branch_work(double from, double to) {
-  const auto p = [](double a) { return 1.2 * std::pow(a, 5) - 4.0 * std::pow(a, 3.5) + 2.0 * a * a; };
+  const auto p = [](double a) {
+    return 1.2 * std::pow(a, 5) - 4.0 * std::pow(a, 3.5) + 2.0 * a * a;
+  };
   return p(to) - p(from);
 }
 

@@ -75,14 +75,13 @@ State fixed_load_critical_at_force(double normal_force, double gamma = 1.0);
 State fixed_grips_critical_at_indentation(double indentation, double gamma = 1.0);
 
 struct ShearRamp {
-  State start;          ///< after the normal unload, u = 0
-  State first_let_go;   ///< the boundary spring at start's radius reaches eq. 20
-  State critical;       ///< the last equilibrium before the jump
+  State start;                         ///< after the normal unload, u = 0
+  State first_let_go;                  ///< the boundary spring at start's radius reaches eq. 20
+  State critical;                      ///< the last equilibrium before the jump
   bool jumps_at_first_let_go = false;  ///< start's radius is already below the fold's
 };
 /// Glued on touch to radius a_p, unloaded to normal force F (held, fixed load), u ramped.
-ShearRamp shear_ramp_at_held_force(double preload_radius, double normal_force,
-                                   double gamma = 1.0);
+ShearRamp shear_ramp_at_held_force(double preload_radius, double normal_force, double gamma = 1.0);
 /// Glued on touch to radius a_p, unloaded to depth d (held, fixed grips), u ramped.
 ShearRamp shear_ramp_at_held_indentation(double preload_radius, double indentation,
                                          double gamma = 1.0);
@@ -91,14 +90,14 @@ ShearRamp shear_ramp_at_held_indentation(double preload_radius, double indentati
 
 struct InclinedPull {
   enum class End {
-    fold,           ///< ds/da = 0 on the peeling branch
-    shear_off,      ///< the boundary reaches zero elongation first: the glue shears off
-    first_let_go,   ///< the preload radius is already past the fold
+    fold,          ///< ds/da = 0 on the peeling branch
+    shear_off,     ///< the boundary reaches zero elongation first: the glue shears off
+    first_let_go,  ///< the preload radius is already past the fold
   };
   End end = End::fold;
   State first_let_go;
-  State critical;        ///< the last equilibrium before the jump
-  double path = 0.0;     ///< s at the critical point
+  State critical;     ///< the last equilibrium before the jump
+  double path = 0.0;  ///< s at the critical point
   /// No equilibrium with contact after the jump: d < 0 there and s(a) < s_c below a_c.
   bool contact_lost = false;
 };
@@ -108,8 +107,8 @@ InclinedPull inclined_pull(double preload_indentation, double tangential_per_nor
 // ---- (e) Load, partial unload, reload, unload, pull-off: fixed grips, glue on touch ----
 
 struct ReloadProgram {
-  double glued_radius = 0.0;    ///< a1 = sqrt(d1/3)
-  double peeled_radius = 0.0;   ///< a2: d_JKR(a2) = d2
+  double glued_radius = 0.0;   ///< a1 = sqrt(d1/3)
+  double peeled_radius = 0.0;  ///< a2: d_JKR(a2) = d2
   /// F at the end of load (d1), unload (d2), reload (d1), second unload (d3).
   std::array<double, 4> stage_end_force{};
   /// The machine's work in each of the five stages (the pull-off until separation).
