@@ -18,12 +18,14 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
                          (material.approach_work_of_adhesion / material.effective_modulus)),
       rebinding_(rebinding) {}
 
-double ProgramRow::image(std::int64_t i) const {
-  return i == reference_springs_ ? reference_image_ : profile_->mdr_image(position(i));
-}
-
-double ProgramRow::front_limit(std::int64_t i) const {
-  return std::sqrt(front_coefficient_ * position(i));
+const ProgramRow::SpringValues& ProgramRow::values(std::int64_t i) const {
+  SpringValues& v = recent_[static_cast<std::size_t>(i) & (recent_.size() - 1)];
+  if (v.index != i) {
+    v.index = i;
+    v.image = i == reference_springs_ ? reference_image_ : profile_->mdr_image(position(i));
+    v.front_limit = std::sqrt(front_coefficient_ * position(i));
+  }
+  return v;
 }
 
 namespace {

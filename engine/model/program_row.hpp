@@ -2,6 +2,7 @@
 // springs outside them, and the running sums that give the equilibrium in O(1).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -37,8 +38,9 @@ class ProgramRow {
   double position(std::int64_t i) const {  ///< x_i [m]
     return i == reference_springs_ ? reference_radius_ : spacing_ * static_cast<double>(i);
   }
-  double image(std::int64_t i) const;        ///< g(x_i) [m]
-  double front_limit(std::int64_t i) const;  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
+  double image(std::int64_t i) const { return values(i).image; }  ///< g(x_i) [m]
+  /// sqrt(2 pi x_i dgamma_a / E*) [m]
+  double front_limit(std::int64_t i) const { return values(i).front_limit; }
   double spacing() const { return spacing_; }
   std::int64_t reference_springs() const { return reference_springs_; }
 
@@ -100,6 +102,16 @@ class ProgramRow {
   const AxisEquilibrium& tangential_equilibrium() const;
   double solve_indentation() const;
   double solve_tangential_displacement() const;
+
+  /// g and the front's limit of the springs near the edges, computed once: each step asks
+  /// for springs k, k + 1, m and m + 1 several times.
+  struct SpringValues {
+    std::int64_t index = -1;
+    double image = 0.0;
+    double front_limit = 0.0;
+  };
+  const SpringValues& values(std::int64_t i) const;
+  mutable std::array<SpringValues, 4> recent_{};
 
   struct Run {
     std::int64_t first;  ///< innermost spring of the run

@@ -23,6 +23,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kNegligibleForce = 1e-3;
 /// Spring changes per spring of the row a stage may take to reach separation.
 constexpr std::int64_t kSweepsUntilSeparation = 64;
+/// Stepping: the default increment of the stage parameter.
+constexpr double kDefaultStageStep = 1e-3;
 
 enum class Change { fall_in, let_go, glue, touch, lift };
 
@@ -51,7 +53,9 @@ class ProgramRunner {
  public:
   ProgramRunner(const Scene& scene, const ProgramRowSpec& spec, const ObserverList& observers,
                 LargestContact* largest)
-      : scene_(scene),
+      : stepping_(scene.solver.method == SolverMethod::stepping),
+        step_(scene.solver.step.value_or(kDefaultStageStep)),
+        scene_(scene),
         criterion_(*scene.criterion),
         row_(*scene.profile, scene.material, spec.reference_radius, spec.reference_springs,
              spec.reference_image, scene.program->rebinding),
@@ -72,6 +76,12 @@ class ProgramRunner {
   std::optional<std::pair<double, Change>> next_change(double t_end);
   LetGo boundary_let_go(double d, double u);
   void apply(Change change, Cascade& cascade);
+  /// The state a cascade starts from, observed as an equilibrium.
+  Cascade begin_cascade();
+  /// Applies `first` and every change then due at the same t; stops before the change that
+  /// would exceed `limit` changes and returns true if one was still due.
+  bool run_changes(std::optional<Change> first, Cascade& cascade, std::int64_t limit);
+  void take_step(double t_end);
   void finish_cascade(const Cascade& cascade);
   bool cannot_hold() const;
   void observe(const ContactSnapshot& s);
@@ -79,6 +89,8 @@ class ProgramRunner {
             bool in_cascade = false);
   void finish(RunResult& result);
 
+  bool stepping_;
+  double step_;  ///< stepping: the increment of the stage parameter
   const Scene& scene_;
   const DetachmentCriterion& criterion_;
   ProgramRow row_;
@@ -95,11 +107,17 @@ class ProgramRunner {
   AxisWork stage_work_;
   AxisWork total_work_;
 
-  // Guards at the present t, so that nothing flips back at the same parameter value: springs
-  // glued at it (index >= fresh_from_), let go (<= released_to_), lifted (<= lifted_to_).
-  std::int64_t fresh_from_ = std::numeric_limits<std::int64_t>::max();
-  std::int64_t released_to_ = 0;
-  std::int64_t lifted_to_ = 0;
+  // Guards at the present t, so that nothing flips back at the same parameter value when a
+  // located change leaves its condition met only to rounding (or with equality, as the
+  // reversible front does).
+  struct SameParameterGuards {
+    std::int64_t glued_from = std::numeric_limits<std::int64_t>::max();    ///< do not let go
+    std::int64_t touched_from = std::numeric_limits<std::int64_t>::max();  ///< do not lift
+    std::int64_t released_to = 0;  ///< glue again only if let go with a tangential stretch
+    bool released_with_stretch = false;
+    std::int64_t lifted_to = 0;  ///< do not touch again
+  };
+  SameParameterGuards guards_;
   bool in_cascade_ = false;
 
   struct LetGoCache {
@@ -115,7 +133,25 @@ class ProgramRunner {
   std::optional<Cascade> last_contact_loss_;
   std::optional<Cascade> last_glue_loss_;
   bool ever_in_contact_ = false;
-  enum class Stop { none, cannot_hold_normal, cannot_hold_tangential, outgrew, no_end, endless };
+  enum class Stop {
+    none,
+    cannot_hold_normal,
+    cannot_hold_tangential,
+    outgrew,
+    no_end,
+    endless,
+    step_limit
+  };
+  /// Stepping: what a trial step changes, to take it back.
+  struct Saved {
+    ProgramRow row;
+    AxisWork stage_work;
+    double t;
+    SameParameterGuards guards;
+    RunCounts counts;
+  };
+  std::vector<Event> pending_;  ///< stepping: the events of the trial step
+  bool buffering_ = false;
   Stop stop_ = Stop::none;
 };
 
@@ -156,9 +192,7 @@ void ProgramRunner::advance_to(double t) {
   stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
   stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
   t_ = t;
-  fresh_from_ = std::numeric_limits<std::int64_t>::max();
-  released_to_ = 0;
-  lifted_to_ = 0;
+  guards_ = {};
 }
 
 void ProgramRunner::observe(const ContactSnapshot& s) {
@@ -180,11 +214,16 @@ void ProgramRunner::observe(const ContactSnapshot& s) {
 
 void ProgramRunner::emit(EventKind kind, const ContactSnapshot& state, std::int64_t spring,
                          bool in_cascade) {
-  observers_.emit({.kind = kind,
-                   .state = state,
-                   .spring = spring,
-                   .in_cascade = in_cascade,
-                   .stage = stage_ ? std::string_view(stage_->name) : std::string_view()});
+  const Event e{.kind = kind,
+                .state = state,
+                .spring = spring,
+                .in_cascade = in_cascade,
+                .stage = stage_ ? std::string_view(stage_->name) : std::string_view()};
+  if (buffering_) {
+    pending_.push_back(e);
+  } else {
+    observers_.emit(e);
+  }
 }
 
 LetGo ProgramRunner::boundary_let_go(double /*d*/, double u) {
@@ -224,7 +263,7 @@ std::optional<Change> ProgramRunner::due() {
     return Change::fall_in;  // a compressive load with nothing to hold it: the indenter falls in
   }
   const double d = row_.indentation();
-  if (k > 0 && k < fresh_from_) {
+  if (k > 0 && k < guards_.glued_from) {
     const LetGo go = boundary_let_go(d, row_.tangential_displacement());
     if (go.kind == LetGo::Kind::now || row_.image(k) - d >= go.elongation) return Change::let_go;
   }
@@ -232,7 +271,8 @@ std::optional<Change> ProgramRunner::due() {
   if (front_glues) {
     const double gap = row_.image(k + 1) - d;
     const double limit = k == 0 ? 0.0 : row_.front_limit(k + 1);
-    if (k + 1 <= released_to_ ? gap < limit : gap <= limit) {
+    const bool released_now = k + 1 <= guards_.released_to;
+    if (released_now ? guards_.released_with_stretch && gap < limit : gap <= limit) {
       if (k + 1 > max_springs_) {
         stop_ = Stop::outgrew;
         return std::nullopt;
@@ -242,7 +282,9 @@ std::optional<Change> ProgramRunner::due() {
   }
   if (!(m == k && front_glues)) {
     const double gap = row_.image(m + 1) - d;
-    if (m + 1 <= lifted_to_ ? gap < 0.0 : gap <= 0.0) {
+    // An unglued spring carries no force where it touches or lifts, so nothing at this t
+    // can press it back: only rounding could.
+    if (m + 1 > guards_.lifted_to && gap <= 0.0) {
       if (m + 1 > max_springs_) {
         stop_ = Stop::outgrew;
         return std::nullopt;
@@ -250,7 +292,7 @@ std::optional<Change> ProgramRunner::due() {
       return Change::touch;
     }
   }
-  if (m > k && row_.image(m) - d > 0.0) return Change::lift;
+  if (m > k && m < guards_.touched_from && row_.image(m) - d > 0.0) return Change::lift;
   return std::nullopt;
 }
 
@@ -343,26 +385,29 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       break;
     case Change::glue:
       row_.glue_next();
-      fresh_from_ = std::min(fresh_from_, k + 1);
+      guards_.glued_from = std::min(guards_.glued_from, k + 1);
       if (observe_springs) emit(EventKind::spring_glued, row_.snapshot(), k + 1, in_cascade_);
       break;
     case Change::let_go: {
       const double d = row_.indentation();
       const double u = row_.tangential_displacement();
-      by_shear = broken_at_rest(criterion_, u - row_.boundary_offset(), row_.position(k));
+      const double stretch_x = u - row_.boundary_offset();
+      by_shear = broken_at_rest(criterion_, stretch_x, row_.position(k));
       if (observe_springs) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
       row_.let_go_boundary(row_.image(k) <= d);
-      released_to_ = std::max(released_to_, k);
+      guards_.released_to = std::max(guards_.released_to, k);
+      guards_.released_with_stretch = stretch_x != 0.0;
       break;
     }
     case Change::touch:
       row_.touch_next();
+      guards_.touched_from = std::min(guards_.touched_from, m + 1);
       if (observe_springs) emit(EventKind::spring_touched, row_.snapshot(), m + 1, in_cascade_);
       break;
     case Change::lift:
       if (observe_springs) emit(EventKind::spring_lifted, row_.snapshot(), m, in_cascade_);
       row_.lift_outer();
-      lifted_to_ = std::max(lifted_to_, m);
+      guards_.lifted_to = std::max(guards_.lifted_to, m);
       break;
   }
   if (normal_moves) {
@@ -420,44 +465,98 @@ void ProgramRunner::start_stage(const Stage& stage) {
   start_axis(stage.normal, true, normal_start_, normal_rate_);
   start_axis(stage.tangential, false, tangential_start_, tangential_rate_);
   t_ = 0.0;
-  fresh_from_ = std::numeric_limits<std::int64_t>::max();
-  released_to_ = 0;
-  lifted_to_ = 0;
+  guards_ = {};
+}
+
+Cascade ProgramRunner::begin_cascade() {
+  Cascade cascade;
+  cascade.before = row_.snapshot();
+  cascade.in_contact = row_.in_contact();
+  cascade.glued = row_.glued();
+  observe(cascade.before);
+  return cascade;
+}
+
+bool ProgramRunner::run_changes(std::optional<Change> first, Cascade& cascade, std::int64_t limit) {
+  in_cascade_ = false;
+  if (first) {
+    apply(*first, cascade);
+    in_cascade_ = true;
+  }
+  // Every spring a change makes due at this parameter value goes with it; each spring
+  // changes at most twice per value (the guards), so the loop ends.
+  const std::int64_t cap = 4 * (max_springs_ + 2);
+  while (const auto change = due()) {
+    if (cascade.changes >= limit) return true;
+    if (cascade.changes > cap) {
+      throw std::runtime_error(
+          fmt::format("a cascade did not end: the spring row keeps changing at t = {}", t_));
+    }
+    apply(*change, cascade);
+    in_cascade_ = true;
+  }
+  return false;
+}
+
+void ProgramRunner::take_step(double t_end) {
+  // The paper's increments on the stage parameter: a step that changes more than one spring
+  // is taken back and halved, down to max_halvings (SolverOptions).
+  double step = step_;
+  for (int halvings = 0;; ++halvings) {
+    double target = std::min(t_ + step, t_end);
+    if (!(target > t_)) target = std::nextafter(t_, kInfinity);
+    const bool last_try = halvings >= scene_.solver.max_halvings || t_ + 0.5 * step == t_;
+    const Saved saved{row_, stage_work_, t_, guards_, result_.counts};
+    Cascade cascade = begin_cascade();  // its `before` is the last accepted equilibrium
+    pending_.clear();
+    buffering_ = true;
+    advance_to(target);
+    const bool more =
+        run_changes(std::nullopt, cascade, last_try ? std::numeric_limits<std::int64_t>::max() : 1);
+    buffering_ = false;
+    if (more && !last_try) {
+      row_ = saved.row;
+      stage_work_ = saved.stage_work;
+      t_ = saved.t;
+      guards_ = saved.guards;
+      result_.counts = saved.counts;
+      let_go_cache_.reset();
+      step *= 0.5;
+      ++result_.counts.halvings;
+      if (observers_.wants(EventKind::step_halved)) {
+        observers_.emit({.kind = EventKind::step_halved,
+                         .state = row_.snapshot(),
+                         .step = step,
+                         .stage = stage_->name});
+      }
+      continue;
+    }
+    for (const Event& e : pending_) observers_.emit(e);
+    ++result_.counts.steps;
+    if (observers_.wants(EventKind::step_accepted)) {
+      observers_.emit({.kind = EventKind::step_accepted,
+                       .state = row_.snapshot(),
+                       .step = step,
+                       .stage = stage_->name});
+    }
+    finish_cascade(cascade);
+    return;
+  }
 }
 
 void ProgramRunner::run_stage(const Stage& stage) {
   start_stage(stage);
   const double t_end = stage.until_separation ? kInfinity : 1.0;
-  const auto cascade_from = [&](std::optional<Change> first) {
-    Cascade cascade;
-    cascade.before = row_.snapshot();
-    cascade.in_contact = row_.in_contact();
-    cascade.glued = row_.glued();
-    observe(cascade.before);
-    in_cascade_ = false;
-    if (first) {
-      apply(*first, cascade);
-      in_cascade_ = true;
-    }
-    // Every spring a change makes due at this parameter value goes with it; each spring
-    // changes at most twice per value (the guards), so the loop ends.
-    const std::int64_t cap = 4 * (max_springs_ + 2);
-    while (const auto change = due()) {
-      if (cascade.changes > cap) {
-        throw std::runtime_error("a cascade did not end: the spring row keeps changing at t = " +
-                                 fmt::format("{}", t_));
-      }
-      apply(*change, cascade);
-      in_cascade_ = true;
-    }
-    finish_cascade(cascade);
-  };
   if (stage.until_separation && row_.in_contact() == 0) {
     result_.warnings.push_back(fmt::format(
         "stage '{}' runs until separation but starts with no spring in contact: it ends at once",
         stage.name));
   } else {
-    cascade_from(std::nullopt);
+    {
+      Cascade cascade = begin_cascade();
+      run_changes(std::nullopt, cascade, std::numeric_limits<std::int64_t>::max());
+      finish_cascade(cascade);
+    }
     // Until separation, a contact that slides on without parting (stick-slip with rebinding
     // under compression) would change springs forever: the stage stops after this many.
     const std::int64_t event_limit =
@@ -474,6 +573,15 @@ void ProgramRunner::run_stage(const Stage& stage) {
                     : Stop::cannot_hold_tangential;
         break;
       }
+      if (stepping_) {
+        if (t_ >= t_end) break;
+        if (result_.counts.steps >= scene_.solver.max_steps) {
+          stop_ = Stop::step_limit;
+          break;
+        }
+        take_step(t_end);
+        continue;
+      }
       const auto next = next_change(t_end);
       if (!next) {
         if (std::isfinite(t_end)) {
@@ -485,7 +593,9 @@ void ProgramRunner::run_stage(const Stage& stage) {
         break;
       }
       advance_to(next->first);
-      cascade_from(next->second);
+      Cascade cascade = begin_cascade();
+      run_changes(next->second, cascade, std::numeric_limits<std::int64_t>::max());
+      finish_cascade(cascade);
     }
   }
   const ContactSnapshot end = row_.snapshot();
@@ -523,6 +633,13 @@ void ProgramRunner::finish(RunResult& r) {
           "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
           "springs in contact): the program stops here",
           stage_->name, row_.in_contact()));
+      return;
+    case Stop::step_limit:
+      r.status = RunStatus::step_limit;
+      r.warnings.push_back(fmt::format(
+          "the stepping method reached solver.max_steps = {} in stage '{}' before the program's "
+          "end: there is no critical point",
+          scene_.solver.max_steps, stage_->name));
       return;
     case Stop::endless:
       r.status = RunStatus::step_limit;

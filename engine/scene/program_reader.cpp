@@ -201,10 +201,6 @@ void refuse_options_not_yet_for_programs(TomlReader& root, const Scene& scene) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_range("extrapolation", fmt::format("= \"richardson\" {}", kNotYet));
   }
-  if (scene.solver.method == SolverMethod::stepping) {
-    TomlReader solver = root.table("solver");
-    solver.fail_range("method", fmt::format("= \"stepping\" {}; use \"event\"", kNotYet));
-  }
 }
 
 }  // namespace mdrsim

@@ -19,7 +19,8 @@ enum class SolverMethod { event, stepping };
 struct SolverOptions {
   SolverMethod method = SolverMethod::event;
   /// Stepping increment of the normal control [m for fixed-grips and compliant, N for
-  /// fixed-load]; default 1e-3 of the control value at the preload.
+  /// fixed-load]; default 1e-3 of the control value at the preload. In a loading program:
+  /// the increment of the stage parameter (which runs from 0 to 1), default 1e-3.
   std::optional<double> step;
   int max_halvings = 30;
   std::int64_t max_steps = 100'000'000;

@@ -233,7 +233,9 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
     }
   } else {
     solver.step = t.optional_number(
-        {.key = "step", .help = "increment of the normal control (SI)", .lower = kPositive});
+        {.key = "step",
+         .help = "increment of the normal control (SI), or of the stage parameter in a program",
+         .lower = kPositive});
     if (t.has("max_halvings")) {
       solver.max_halvings = static_cast<int>(
           t.integer({.key = "max_halvings", .lower = Bound{0, true}, .upper = Bound{60, true}}));

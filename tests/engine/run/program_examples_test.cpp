@@ -8,7 +8,8 @@
 // displacements [d0] are held to 2 h (1 + a_max^2), radii [a0] to 2 h. A stage's work is held
 // to that force bound times the depth the stage travels [F0 d0]; the program's, a signed sum
 // whose errors largely cancel between loading and unloading over the same springs, to
-// 3 h sum |W_stage| with the reference's stage works.
+// 3 h sum |W_stage| with the reference's stage works. When written, the engine's errors were
+// at most a third of these bounds (several above a sixth), and one spring (h) in the radii.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,6 +55,11 @@ struct Tolerance {
   double total_work(double gross_stage_work) const { return 3.0 * spacing() * gross_stage_work; }
 };
 
+/// j[key] if j is an object holding it, else null: the checks then say what is missing.
+json member(const json& j, const char* key) {
+  return j.is_object() && j.contains(key) ? j[key] : json();
+}
+
 /// The JSON result of `mdrsim run scenes/programs/NAME.toml`, or null (with a failure) if the
 /// run failed or printed no JSON.
 json run_example(const std::string& name) {
@@ -73,10 +79,10 @@ json run_example(const std::string& name) {
 json stage(const json& result, std::string_view name) {
   if (result.contains("stages") && result["stages"].is_array()) {
     for (const auto& s : result["stages"]) {
-      if (s.value("name", "") == name) return s;
+      if (s.is_object() && s.value("name", "") == name) return s;
     }
   }
-  ADD_FAILURE() << "no stage \"" << name << "\" in " << result.value("stages", json()).dump();
+  ADD_FAILURE() << "no stage \"" << name << "\" in " << member(result, "stages").dump();
   return json();
 }
 
@@ -86,7 +92,7 @@ json biggest_jump(const json& result, std::string_view name, std::string_view ki
   json best;
   if (result.contains("jumps") && result["jumps"].is_array()) {
     for (const auto& j : result["jumps"]) {
-      if (j.value("stage", "") != name || j.value("kind", "") != kind) continue;
+      if (!j.is_object() || j.value("stage", "") != name || j.value("kind", "") != kind) continue;
       if (best.is_null() ||
           std::abs(j.value("springs", 0.0)) > std::abs(best.value("springs", 0.0))) {
         best = j;
@@ -97,42 +103,42 @@ json biggest_jump(const json& result, std::string_view name, std::string_view ki
   return best;
 }
 
-/// Compares the SI field `field` of `state`, divided by `scale`, with `want` (scale units).
-void expect_field(const json& state, const char* field, double want, double scale, double tol,
-                  const std::string& where) {
+/// Compares the SI field `field` of `state`, divided by `scale` (named `unit`), with `want`.
+void expect_field(const json& state, const char* field, double want, double scale, const char* unit,
+                  double tol, const std::string& where) {
   if (!state.is_object() || !state.contains(field) || !state[field].is_number()) {
     ADD_FAILURE() << where << ": no number \"" << field << "\" in " << state.dump();
     return;
   }
   const double got = state[field].get<double>() / scale;
-  EXPECT_NEAR(got, want, tol) << where << "." << field << " in units of F0, a0 or d0: mdrsim "
-                              << got << ", continuum reference " << want << " (SI: mdrsim "
-                              << state[field].get<double>() << ", reference " << want * scale
-                              << ")";
+  EXPECT_NEAR(got, want, tol) << where << "." << field << " [" << unit << "]: mdrsim " << got
+                              << ", continuum reference " << want << ", tolerance " << tol
+                              << " (SI: mdrsim " << state[field].get<double>() << ", reference "
+                              << want * scale << ")";
 }
 
 /// Compares the fields of a state object (critical, after, end) with a reference state.
 void expect_state(const json& state, const pr::State& want, const Tolerance& tol,
                   const std::string& where) {
   const Scales k;
-  expect_field(state, "normal_force", want.normal_force, k.force, tol.value(), where);
-  expect_field(state, "indentation", want.indentation, k.depth, tol.value(), where);
-  expect_field(state, "contact_radius", want.contact_radius, k.radius, tol.radius(), where);
-  expect_field(state, "tangential_displacement", want.tangential_displacement, k.depth, tol.value(),
-               where);
-  expect_field(state, "tangential_force", want.tangential_force, k.force, tol.value(), where);
+  expect_field(state, "normal_force", want.normal_force, k.force, "F0", tol.value(), where);
+  expect_field(state, "indentation", want.indentation, k.depth, "d0", tol.value(), where);
+  expect_field(state, "contact_radius", want.contact_radius, k.radius, "a0", tol.radius(), where);
+  expect_field(state, "tangential_displacement", want.tangential_displacement, k.depth, "d0",
+               tol.value(), where);
+  expect_field(state, "tangential_force", want.tangential_force, k.force, "F0", tol.value(), where);
 }
 
 void expect_work(const json& work, double want, double tol, const std::string& where) {
   const Scales k;
-  expect_field(work, "normal", want, k.work(), tol, where + ".work");
+  expect_field(work, "normal", want, k.work(), "F0 d0", tol, where + ".work");
 }
 
 void expect_lost_at(const json& result, std::string_view last_stage, const pr::State& critical,
                     const Tolerance& tol) {
   EXPECT_EQ(result.value("status", ""), "instability");
-  expect_state(result.value("critical", json()), critical, tol, "critical");
-  expect_state(biggest_jump(result, last_stage, "out").value("critical", json()), critical, tol,
+  expect_state(member(result, "critical"), critical, tol, "critical");
+  expect_state(member(biggest_jump(result, last_stage, "out"), "critical"), critical, tol,
                std::string("jump out of ") + std::string(last_stage) + ".critical");
 }
 
@@ -146,11 +152,10 @@ TEST(ProgramExamples, ReversibleJkrCycleJumpsInAtMinusEightNinthsAndDissipatesWh
   const json result = run_example("jkr_cycle_reversible");
   ASSERT_TRUE(result.is_object());
   const json in = biggest_jump(result, "approach", "in");
-  expect_state(in.value("after", json()), want.jump_in_after, tol, "jump in.after");
-  expect_field(in.value("critical", json()), "indentation", 0.0, Scales{}.depth, tol.value(),
+  expect_state(member(in, "after"), want.jump_in_after, tol, "jump in.after");
+  expect_field(member(in, "critical"), "indentation", 0.0, Scales{}.depth, "d0", tol.value(),
                "jump in.critical");
-  expect_state(stage(result, "approach").value("end", json()), want.approach_end, tol,
-               "approach.end");
+  expect_state(member(stage(result, "approach"), "end"), want.approach_end, tol, "approach.end");
   expect_lost_at(result, "retract", want.retract_critical, tol);
   const double approach_work =
       pr::jkr_branch_work(want.jump_in_after.contact_radius, want.approach_end.contact_radius);
@@ -158,11 +163,11 @@ TEST(ProgramExamples, ReversibleJkrCycleJumpsInAtMinusEightNinthsAndDissipatesWh
       pr::jkr_branch_work(want.approach_end.contact_radius, want.retract_critical.contact_radius);
   const double gross = std::abs(approach_work) + std::abs(retract_work);
   const double fold_depth = -want.retract_critical.indentation;
-  expect_work(stage(result, "approach").value("work", json()), approach_work, tol.stage_work(3.0),
+  expect_work(member(stage(result, "approach"), "work"), approach_work, tol.stage_work(3.0),
               "approach");
-  expect_work(stage(result, "retract").value("work", json()), retract_work,
+  expect_work(member(stage(result, "retract"), "work"), retract_work,
               tol.stage_work(3.0 + fold_depth), "retract");
-  expect_work(result.value("work", json()), want.dissipated_work, tol.total_work(gross),
+  expect_work(member(result, "work"), want.dissipated_work, tol.total_work(gross),
               "the cycle (0.935503 F0 |d_c|)");
 }
 
@@ -173,19 +178,20 @@ TEST(ProgramExamples, GlueOnTouchJkrCycleDissipatesTwoThirdsF0DmaxPlusFourFortyF
   const Tolerance tol{want.max_radius};
   const json result = run_example("jkr_cycle_glue_on_touch");
   ASSERT_TRUE(result.is_object());
-  for (const auto& j : result.value("jumps", json::array())) {
-    EXPECT_NE(j.value("kind", ""), "in") << "gluing on touch has no jump-in: " << j.dump();
+  for (const auto& j : member(result, "jumps")) {
+    EXPECT_FALSE(j.is_object() && j.value("kind", "") == "in")
+        << "gluing on touch has no jump-in: " << j.dump();
   }
-  expect_state(stage(result, "approach").value("end", json()), want.load_end, tol, "approach.end");
+  expect_state(member(stage(result, "approach"), "end"), want.load_end, tol, "approach.end");
   expect_lost_at(result, "retract", want.retract_critical, tol);
   const double retract_work = want.dissipated_work - want.loading_work;
   const double gross = std::abs(want.loading_work) + std::abs(retract_work);
   const double fold_depth = -want.retract_critical.indentation;
-  expect_work(stage(result, "approach").value("work", json()), want.loading_work,
-              tol.stage_work(3.0), "approach");
-  expect_work(stage(result, "retract").value("work", json()), retract_work,
+  expect_work(member(stage(result, "approach"), "work"), want.loading_work, tol.stage_work(3.0),
+              "approach");
+  expect_work(member(stage(result, "retract"), "work"), retract_work,
               tol.stage_work(3.0 + fold_depth), "retract");
-  expect_work(result.value("work", json()), pr::claimed_glue_on_touch_dissipation(3.0),
+  expect_work(member(result, "work"), pr::claimed_glue_on_touch_dissipation(3.0),
               tol.total_work(gross), "the cycle");
 }
 
@@ -196,7 +202,7 @@ TEST(ProgramExamples, ShearRampAtHeldForceEndsOnTheFixedLoadEnvelope) {
   const Tolerance tol{2.0};
   const json result = run_example("shear_ramp_fixed_load");
   ASSERT_TRUE(result.is_object());
-  expect_state(stage(result, "unload").value("end", json()), want.start, tol, "unload.end");
+  expect_state(member(stage(result, "unload"), "end"), want.start, tol, "unload.end");
   expect_lost_at(result, "shear", want.critical, tol);
 }
 
@@ -205,14 +211,14 @@ TEST(ProgramExamples, ShearRampAtHeldDepthEndsOnTheFixedGripsEnvelope) {
   const Tolerance tol{2.0};
   const json result = run_example("shear_ramp_fixed_grips");
   ASSERT_TRUE(result.is_object());
-  expect_state(stage(result, "unload").value("end", json()), want.start, tol, "unload.end");
+  expect_state(member(stage(result, "unload"), "end"), want.start, tol, "unload.end");
   expect_lost_at(result, "shear", want.critical, tol);
   // The paper's eq. 35 at the simulated tangential force.
-  const json critical = result.value("critical", json());
+  const json critical = member(result, "critical");
   if (critical.contains("tangential_force")) {
     const double fx = critical["tangential_force"].get<double>() / Scales{}.force;
-    expect_field(critical, "normal_force", fx * fx / 4.0 - 5.0 / 9.0, Scales{}.force, tol.value(),
-                 "critical on eq. 35");
+    expect_field(critical, "normal_force", fx * fx / 4.0 - 5.0 / 9.0, Scales{}.force, "F0",
+                 tol.value(), "critical on eq. 35");
   }
 }
 
@@ -247,13 +253,13 @@ TEST_P(ReloadExample, StageEndsPullOffAndWorkFollowTheReference) {
   for (int i = 0; i < 5; ++i) {
     const json s = stage(result, names[i]);
     if (i < 4) {
-      expect_field(s.value("end", json()), "normal_force", want.stage_end_force[i], k.force,
+      expect_field(member(s, "end"), "normal_force", want.stage_end_force[i], k.force, "F0",
                    tol.value(), std::string(names[i]) + ".end");
     }
-    expect_work(s.value("work", json()), want.stage_work[i], tol.stage_work(travel[i]), names[i]);
+    expect_work(member(s, "work"), want.stage_work[i], tol.stage_work(travel[i]), names[i]);
   }
   expect_lost_at(result, "pull-off", want.pull_off_critical, tol);
-  expect_work(result.value("work", json()), want.work, tol.total_work(gross), "the program");
+  expect_work(member(result, "work"), want.work, tol.total_work(gross), "the program");
 }
 
 INSTANTIATE_TEST_SUITE_P(Rebinding, ReloadExample, ::testing::Bool(),
@@ -267,8 +273,8 @@ TEST(ProgramExamples, SecondUnloadDependsOnRebinding) {
   const json b = run_example("reload_rebinding_true");
   ASSERT_TRUE(a.is_object() && b.is_object());
   const auto end_force = [](const json& r) {
-    const json end = stage(r, "unload-again").value("end", json());
-    return end.value("normal_force", NAN) / Scales{}.force;
+    const json end = member(stage(r, "unload-again"), "end");
+    return end.is_object() ? end.value("normal_force", NAN) / Scales{}.force : NAN;
   };
   EXPECT_NEAR(end_force(a) - end_force(b), off - on, 2.0 * Tolerance{2.0}.value())
       << "without rebinding " << end_force(a) << " F0, with it " << end_force(b) << " F0";

@@ -374,9 +374,6 @@ std::vector<BadProgram> option_cases() {
       {"Richardson", "springs = 100", "springs = 100\nextrapolation = \"richardson\"",
        "scene.toml:25:17: discretization.extrapolation = \"richardson\" is not yet available for "
        "loading programs"},
-      {"Stepping", "springs = 100\n", "springs = 100\n[solver]\nmethod = \"stepping\"\n",
-       "scene.toml:26:10: solver.method = \"stepping\" is not yet available for loading programs; "
-       "use \"event\""},
   };
 }
 INSTANTIATE_TEST_SUITE_P(Options, BadProgramTest, ::testing::ValuesIn(option_cases()), case_name);
