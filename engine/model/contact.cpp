@@ -45,6 +45,14 @@ double Contact::normal_force_of(const State& state) const {
   return r.stiffness * displacement_under(normal_, r, state.normal_control) - r.offset;
 }
 
+std::pair<double, double> Contact::normal_state_of(const State& state) const {
+  const double per_spring = 2.0 * material_.effective_modulus * foundation_->spacing();
+  const LinearResponse r{per_spring * static_cast<double>(state.springs_in_contact),
+                         per_spring * state.image_sum.value()};
+  const double d = displacement_under(normal_, r, state.normal_control);
+  return {d, r.stiffness * d - r.offset};
+}
+
 double Contact::tangential_displacement_at_radius(double a) const {
   const LinearResponse r{2.0 * material_.effective_shear_modulus * a, 0.0};
   return displacement_under(tangential_, r, state_.tangential_held);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "controllers/controller.hpp"
 #include "engine/base/material.hpp"
@@ -45,6 +46,8 @@ class Contact {
   double normal_control_at(double indentation) const;
   /// The normal force of a saved state, without a snapshot [N].
   double normal_force_of(const State& state) const;
+  /// The indentation [m] and normal force [N] of a saved state with springs attached.
+  std::pair<double, double> normal_state_of(const State& state) const;
   /// The tangential displacement [m] of a contact whose boundary sat at radius `a` [m]:
   /// the held value under the constraint with the continuum stiffness 2 G* a, so that it
   /// equals tangential_displacement() at every spring position and is continuous between.

@@ -18,14 +18,36 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
                          (material.approach_work_of_adhesion / material.effective_modulus)),
       rebinding_(rebinding) {}
 
-const ProgramRow::SpringValues& ProgramRow::values(std::int64_t i) const {
+void ProgramRow::springs_changed(bool normal, bool tangential) {
+  // Under fixed grips (a_F = 0) d(displacement)/d(held) = 1/a_u does not depend on the springs.
+  if (normal) {
+    normal_cached_ = false;
+    if (normal_.constraint.force_coefficient != 0.0 || normal_per_held_ == 0.0) {
+      normal_response_cached_ = false;
+    }
+  }
+  if (tangential) {
+    tangential_cached_ = false;
+    if (tangential_.constraint.force_coefficient != 0.0 || tangential_per_held_ == 0.0) {
+      tangential_response_cached_ = false;
+    }
+  }
+}
+
+ProgramRow::SpringValues& ProgramRow::values(std::int64_t i) const {
   SpringValues& v = recent_[static_cast<std::size_t>(i) & (recent_.size() - 1)];
   if (v.index != i) {
     v.index = i;
     v.image = i == reference_springs_ ? reference_image_ : profile_->mdr_image(position(i));
-    v.front_limit = std::sqrt(front_coefficient_ * position(i));
+    v.front_limit = -1.0;
   }
   return v;
+}
+
+double ProgramRow::front_limit(std::int64_t i) const {
+  SpringValues& v = values(i);
+  if (v.front_limit < 0.0) v.front_limit = std::sqrt(front_coefficient_ * position(i));
+  return v.front_limit;
 }
 
 namespace {
@@ -72,33 +94,42 @@ const ProgramRow::AxisEquilibrium& ProgramRow::tangential_equilibrium() const {
 }
 
 double ProgramRow::solve_indentation() const {
-  if (!normal_has_stiffness()) return normal_.rest;
-  const double per_spring = 2.0 * material_.effective_modulus * spacing_;
-  const LinearResponse r{per_spring * static_cast<double>(in_contact_),
-                         per_spring * contact_images_.value()};
-  return displacement_under(normal_.constraint, r, normal_.held);
+  const double per_held = indentation_per_held();
+  if (per_held == 0.0) return normal_.rest;
+  const double offset = 2.0 * material_.effective_modulus * spacing_ * contact_images_.value();
+  return (normal_.held + normal_.constraint.force_coefficient * offset) * per_held;
 }
 
 double ProgramRow::solve_tangential_displacement() const {
-  if (!tangential_has_stiffness()) return tangential_.rest;
-  const double per_spring = 2.0 * material_.effective_shear_modulus * spacing_;
-  const LinearResponse r{per_spring * static_cast<double>(glued_),
-                         per_spring * glued_offsets_.value()};
-  return displacement_under(tangential_.constraint, r, tangential_.held);
+  const double per_held = tangential_per_held();
+  if (per_held == 0.0) return tangential_.rest;
+  const double offset = 2.0 * material_.effective_shear_modulus * spacing_ * glued_offsets_.value();
+  return (tangential_.held + tangential_.constraint.force_coefficient * offset) * per_held;
 }
 
 double ProgramRow::indentation_per_held() const {
-  if (!normal_has_stiffness()) return 0.0;
-  const AffineConstraint& c = normal_.constraint;
-  const double k = 2.0 * material_.effective_modulus * spacing_ * static_cast<double>(in_contact_);
-  return 1.0 / (c.displacement_coefficient + c.force_coefficient * k);
+  if (!normal_response_cached_) {
+    const AffineConstraint& c = normal_.constraint;
+    const double k =
+        2.0 * material_.effective_modulus * spacing_ * static_cast<double>(in_contact_);
+    normal_per_held_ =
+        normal_has_stiffness() ? 1.0 / (c.displacement_coefficient + c.force_coefficient * k) : 0.0;
+    normal_response_cached_ = true;
+  }
+  return normal_per_held_;
 }
 
 double ProgramRow::tangential_per_held() const {
-  if (!tangential_has_stiffness()) return 0.0;
-  const AffineConstraint& c = tangential_.constraint;
-  const double k = 2.0 * material_.effective_shear_modulus * spacing_ * static_cast<double>(glued_);
-  return 1.0 / (c.displacement_coefficient + c.force_coefficient * k);
+  if (!tangential_response_cached_) {
+    const AffineConstraint& c = tangential_.constraint;
+    const double k =
+        2.0 * material_.effective_shear_modulus * spacing_ * static_cast<double>(glued_);
+    tangential_per_held_ = tangential_has_stiffness()
+                               ? 1.0 / (c.displacement_coefficient + c.force_coefficient * k)
+                               : 0.0;
+    tangential_response_cached_ = true;
+  }
+  return tangential_per_held_;
 }
 
 double ProgramRow::held_value_of_normal(const AffineConstraint& c) const {
@@ -115,7 +146,7 @@ void ProgramRow::glue_next() {
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
   const double u = tangential_.rest;
-  normal_cached_ = tangential_cached_ = false;
+  springs_changed(true, true);
   ++glued_;
   if (glued_ > ever_glued_) ever_glued_ = glued_;
   if (glued_ > in_contact_) {
@@ -129,7 +160,7 @@ void ProgramRow::glue_next() {
 void ProgramRow::let_go_boundary(bool pressed) {
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
-  normal_cached_ = tangential_cached_ = false;
+  springs_changed(true, true);
   glued_offsets_.add(-runs_.back().offset);
   if (runs_.back().first == glued_) runs_.pop_back();
   if (!pressed && in_contact_ == glued_) {
@@ -141,14 +172,14 @@ void ProgramRow::let_go_boundary(bool pressed) {
 
 void ProgramRow::touch_next() {
   normal_.rest = indentation();
-  normal_cached_ = false;
+  springs_changed(true, false);
   ++in_contact_;
   contact_images_.add(image(in_contact_));
 }
 
 void ProgramRow::lift_outer() {
   normal_.rest = indentation();
-  normal_cached_ = false;
+  springs_changed(true, false);
   contact_images_.add(-image(in_contact_));
   --in_contact_;
 }

@@ -39,8 +39,7 @@ class ProgramRow {
     return i == reference_springs_ ? reference_radius_ : spacing_ * static_cast<double>(i);
   }
   double image(std::int64_t i) const { return values(i).image; }  ///< g(x_i) [m]
-  /// sqrt(2 pi x_i dgamma_a / E*) [m]
-  double front_limit(std::int64_t i) const { return values(i).front_limit; }
+  double front_limit(std::int64_t i) const;  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
   double spacing() const { return spacing_; }
   std::int64_t reference_springs() const { return reference_springs_; }
 
@@ -54,14 +53,23 @@ class ProgramRow {
 
   const MachineAxis& normal() const { return normal_; }
   const MachineAxis& tangential() const { return tangential_; }
-  /// Changing an axis drops the cached equilibrium.
+  /// Changing an axis drops what is cached of it.
   MachineAxis& edit_normal() {
-    normal_cached_ = false;
+    normal_cached_ = normal_response_cached_ = false;
     return normal_;
   }
   MachineAxis& edit_tangential() {
-    tangential_cached_ = false;
+    tangential_cached_ = tangential_response_cached_ = false;
     return tangential_;
+  }
+  /// A new held value keeps the response (the springs and the constraint).
+  void set_normal_held(double held) {
+    normal_.held = held;
+    normal_cached_ = false;
+  }
+  void set_tangential_held(double held) {
+    tangential_.held = held;
+    tangential_cached_ = false;
   }
 
   /// Equilibrium: the axis has stiffness (else it rests, see MachineAxis::rest).
@@ -108,9 +116,11 @@ class ProgramRow {
   struct SpringValues {
     std::int64_t index = -1;
     double image = 0.0;
-    double front_limit = 0.0;
+    double front_limit = -1.0;  ///< computed when first asked for; < 0 before
   };
-  const SpringValues& values(std::int64_t i) const;
+  SpringValues& values(std::int64_t i) const;
+  /// Drops what the change of the springs on each axis makes stale.
+  void springs_changed(bool normal, bool tangential);
   mutable std::array<SpringValues, 4> recent_{};
 
   struct Run {
@@ -138,6 +148,12 @@ class ProgramRow {
   mutable AxisEquilibrium tangential_equilibrium_{};
   mutable bool normal_cached_ = false;
   mutable bool tangential_cached_ = false;
+  // d(displacement)/d(held) of each axis: one division per change of the springs, none per
+  // change of the held value.
+  mutable double normal_per_held_ = 0.0;
+  mutable double tangential_per_held_ = 0.0;
+  mutable bool normal_response_cached_ = false;
+  mutable bool tangential_response_cached_ = false;
 };
 
 }  // namespace mdrsim

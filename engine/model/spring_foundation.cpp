@@ -1,4 +1,4 @@
-// The spring row: spacing and the one O(N) pass that sums the profile's image.
+// The spring row: spacing and the one O(N) pass that sums the profile's image (and its square).
 #include "engine/model/spring_foundation.hpp"
 
 #include <cmath>
@@ -20,8 +20,14 @@ SpringFoundation::SpringFoundation(const Profile& profile, double glued_radius,
     throw std::invalid_argument("the glued contact radius must be positive and finite");
   }
   CompensatedSum sum;
-  for (std::int64_t i = 1; i <= springs; ++i) sum.add(image(i));
+  CompensatedSum squares;
+  for (std::int64_t i = 1; i <= springs; ++i) {
+    const double g = image(i);
+    sum.add(g);
+    squares.add(g * g);
+  }
   total_image_ = sum.value();
+  total_image_squares_ = squares.value();
 }
 
 }  // namespace mdrsim

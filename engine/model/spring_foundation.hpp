@@ -23,6 +23,8 @@ class SpringFoundation {
   }
   double image(std::int64_t i) const { return profile_->mdr_image(position(i)); }  ///< g(x_i) [m]
   double total_image() const { return total_image_; }  ///< sum of g(x_i), i = 1..N [m]
+  /// sum of g(x_i)^2, i = 1..N [m^2]: the work of pressing the row in (pull_off.cpp).
+  double total_image_squares() const { return total_image_squares_; }
   const Profile& profile() const { return *profile_; }
 
  private:
@@ -31,6 +33,7 @@ class SpringFoundation {
   std::int64_t springs_;
   double spacing_;
   double total_image_;
+  double total_image_squares_ = 0.0;
 };
 
 }  // namespace mdrsim

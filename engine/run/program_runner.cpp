@@ -157,17 +157,17 @@ class ProgramRunner {
 
 void ProgramRunner::set_parameter(double t) {
   // An axis that does not move keeps its cached equilibrium.
-  if (normal_rate_ != 0.0) row_.edit_normal().held = normal_start_ + normal_rate_ * t;
+  if (normal_rate_ != 0.0) row_.set_normal_held(normal_start_ + normal_rate_ * t);
   if (tangential_rate_ != 0.0) {
-    row_.edit_tangential().held = tangential_start_ + tangential_rate_ * t;
+    row_.set_tangential_held(tangential_start_ + tangential_rate_ * t);
   }
   if (t == 1.0 && stage_ && !stage_->until_separation) {
     // `to` lands exactly on its value.
     if (stage_->normal && stage_->normal->motion == StageAxis::Motion::to) {
-      row_.edit_normal().held = stage_->normal->value;
+      row_.set_normal_held(stage_->normal->value);
     }
     if (stage_->tangential && stage_->tangential->motion == StageAxis::Motion::to) {
-      row_.edit_tangential().held = stage_->tangential->value;
+      row_.set_tangential_held(stage_->tangential->value);
     }
   }
 }
@@ -184,13 +184,20 @@ AxisPoint ProgramRunner::tangential_point() const {
 }
 
 void ProgramRunner::advance_to(double t) {
-  const AxisPoint n0 = normal_point();
-  const AxisPoint x0 = tangential_point();
+  // While the row stays as it is, an axis whose held value does not move stays where it is.
+  const bool normal_moves = normal_rate_ != 0.0;
+  const bool tangential_moves = tangential_rate_ != 0.0;
+  const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
+  const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   set_parameter(t);
-  const AxisPoint n1 = normal_point();
-  const AxisPoint x1 = tangential_point();
-  stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
-  stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
+  if (normal_moves) {
+    const AxisPoint n1 = normal_point();
+    stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
+  }
+  if (tangential_moves) {
+    const AxisPoint x1 = tangential_point();
+    stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
+  }
   t_ = t;
   guards_ = {};
 }
@@ -301,8 +308,8 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
   const std::int64_t m = row_.in_contact();
   const double d = row_.indentation();
   const double u = row_.tangential_displacement();
-  const double vd = row_.indentation_per_held() * normal_rate_;
-  const double vu = row_.tangential_per_held() * tangential_rate_;
+  const double vd = normal_rate_ != 0.0 ? row_.indentation_per_held() * normal_rate_ : 0.0;
+  const double vu = tangential_rate_ != 0.0 ? row_.tangential_per_held() * tangential_rate_ : 0.0;
   const double soonest = std::nextafter(t_, kInfinity);
   double best = t_end;
   std::optional<Change> change;
@@ -313,7 +320,8 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
       change = c;
     }
   };
-  const auto when_indentation = [&](double target) { return t_ + (target - d) / vd; };
+  const double per_indentation = vd != 0.0 ? 1.0 / vd : 0.0;  // one division per step
+  const auto when_indentation = [&](double target) { return t_ + (target - d) * per_indentation; };
 
   if (m == 0 && !row_.normal_has_stiffness() && normal_rate_ > 0.0) {
     consider(-normal_start_ / normal_rate_, Change::fall_in);
@@ -329,11 +337,15 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
   if (m > k && vd < 0.0) consider(when_indentation(row_.image(m)), Change::lift);
   if (k > 0) {
     if (vu == 0.0) {
-      const LetGo go = boundary_let_go(d, u);
-      if (go.kind == LetGo::Kind::now) {
-        consider(soonest, Change::let_go);
-      } else if (vd < 0.0) {
-        consider(when_indentation(row_.image(k) - go.elongation), Change::let_go);
+      // u_x stays: the spring lets go only as d falls to g - e*(u_x). (Broken at rest, it
+      // would be due already.)
+      if (vd < 0.0) {
+        const LetGo go = boundary_let_go(d, u);
+        if (go.kind == LetGo::Kind::now) {
+          consider(soonest, Change::let_go);
+        } else {
+          consider(when_indentation(row_.image(k) - go.elongation), Change::let_go);
+        }
       }
     } else {
       // Both displacements move: root-find the margin along the line. For a criterion

@@ -16,6 +16,7 @@
 #include "engine/methods/stepping_method.hpp"
 #include "engine/model/tangential_strength.hpp"
 #include "engine/run/fold_refinement.hpp"
+#include "engine/run/shorthand_path.hpp"
 
 namespace mdrsim {
 namespace {
@@ -191,13 +192,26 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
                   tangential_constraint);
 
   contact.set_normal_control(contact.normal_control_at(scene.preload_depth));
-  if (!row.zoomed)
+  // A zoomed row starts past the preload: only a row across the glued radius runs the path.
+  std::optional<ShorthandPath> path;
+  if (!row.zoomed) {
+    const AffineConstraint c = scene.normal.controller->constraint();
+    path.emplace(c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0);
+    path->preload(contact);
     observers.emit({.kind = EventKind::preload_reached, .state = contact.snapshot()});
+  }
   if (scene.tangential) {
     contact.set_tangential_held(scene.tangential->held_value);
     if (!row.zoomed) {
       observers.emit({.kind = EventKind::tangential_applied, .state = contact.snapshot()});
     }
+  }
+  if (path) {
+    const bool spring = tangential_constraint.displacement_coefficient > 0.0 &&
+                        tangential_constraint.force_coefficient > 0.0;
+    path->tangential(contact,
+                     spring ? std::optional<double>(1.0 / tangential_constraint.force_coefficient)
+                            : std::nullopt);
   }
   const Contact::State applied = contact.save();
 
@@ -220,6 +234,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
     if (out.detached == 0) continue;
     // Broken by the tangential load as it was applied: the state before is no equilibrium.
     const bool broken_at_start = track.empty() && cascade.size == 0 && out.first_by_shear;
+    if (path) path->advanced(contact, out, out.equilibrium_before && !broken_at_start);
     if (out.equilibrium_before && !broken_at_start) {
       track.add(*out.equilibrium_before, cascade.size > 1);
       cascade = {.size = out.detached, .by_shear = out.detached > 1 && out.second_by_shear};
@@ -228,6 +243,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
       cascade.size += out.detached;
     }
   }
+  if (path) path->finish(contact, result.stages, result.jumps, result.work);
   if (result.status == RunStatus::step_limit) {
     result.warnings.push_back(fmt::format(
         "the stepping method reached solver.max_steps = {} before the contact was lost: there is "

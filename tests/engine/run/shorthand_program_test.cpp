@@ -75,9 +75,35 @@ TEST_P(ShorthandAsProgram, GivesTheSameCriticalPoint) {
   }
   ASSERT_TRUE(a.peak && b.peak);
   EXPECT_NEAR(b.peak->normal_force, a.peak->normal_force, 1e-10 * std::abs(a.peak->normal_force));
-  // The program also reports the stages' ends and the work.
+  // Both report the same stages, jumps and work (SPEC: "every run, shorthand included").
+  ASSERT_EQ(a.stages.size(), 3u);
   ASSERT_EQ(b.stages.size(), 3u);
   EXPECT_EQ(b.stages[0].end.springs_in_contact, program.springs);
+  const auto near = [](double x, double y, double scale) {
+    return std::abs(x - y) <= 1e-9 * scale + 1e-300;
+  };
+  ASSERT_TRUE(a.work && b.work);
+  const double work_scale = std::abs(a.stages[0].work.normal);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(a.stages[i].name, b.stages[i].name);
+    EXPECT_EQ(a.stages[i].end.springs_in_contact, b.stages[i].end.springs_in_contact) << i;
+    EXPECT_TRUE(near(a.stages[i].end.normal_force, b.stages[i].end.normal_force,
+                     std::abs(a.stages[0].end.normal_force)))
+        << a.stages[i].name << ": " << a.stages[i].end.normal_force << " against "
+        << b.stages[i].end.normal_force;
+    EXPECT_TRUE(near(a.stages[i].work.normal, b.stages[i].work.normal, work_scale))
+        << a.stages[i].name << ": " << a.stages[i].work.normal << " J against "
+        << b.stages[i].work.normal << " J";
+    EXPECT_TRUE(near(a.stages[i].work.tangential, b.stages[i].work.tangential, work_scale))
+        << a.stages[i].name;
+  }
+  ASSERT_EQ(a.jumps.size(), b.jumps.size());
+  for (std::size_t i = 0; i < a.jumps.size(); ++i) {
+    EXPECT_EQ(a.jumps[i].springs, b.jumps[i].springs) << i;
+    EXPECT_EQ(a.jumps[i].by_shear, b.jumps[i].by_shear) << i;
+    EXPECT_TRUE(near(a.jumps[i].critical.normal_force, b.jumps[i].critical.normal_force,
+                     std::abs(a.critical->normal_force)));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
