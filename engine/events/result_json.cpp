@@ -103,9 +103,15 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   if (result.work) {
     ordered_json stages = ordered_json::array();
     for (const StageRecord& stage : result.stages) {
-      stages.push_back({{"name", stage.name},
-                        {"end", state_json(stage.end, scales)},
-                        {"work", work_json(stage.work)}});
+      ordered_json record = {{"name", stage.name},
+                             {"end", state_json(stage.end, scales)},
+                             {"work", work_json(stage.work)}};
+      if (stage.normal_force_error_estimate) {
+        record["end_error_estimate"] = {
+            {"normal_force", *stage.normal_force_error_estimate},
+            {"tangential_force", stage.tangential_force_error_estimate.value_or(0.0)}};
+      }
+      stages.push_back(record);
     }
     j["stages"] = stages;
     ordered_json jumps = ordered_json::array();
@@ -117,6 +123,10 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
                        {"springs", jump.springs},
                        {"glued_springs", jump.glued_springs},
                        {"by_shear", jump.by_shear}});
+      if (jump.critical_error_estimate) {
+        jumps.back()["critical_error_estimate"] = *jump.critical_error_estimate;
+        jumps.back()["after_error_estimate"] = jump.after_error_estimate.value_or(0.0);
+      }
     }
     j["jumps"] = jumps;
     j["work"] = work_json(*result.work);

@@ -13,6 +13,11 @@ struct ContactSnapshot {
   double tangential_displacement = 0.0;  ///< u_x [m]
   double tangential_force = 0.0;         ///< F_x [N]
   std::int64_t springs_in_contact = 0;   ///< attached springs of one half
+  /// The normal and tangential force of the outermost spring in contact (both halves) [N]:
+  /// how far the row's force can sit from the continuum's for the front's place between two
+  /// springs. Set by loading programs' rows; rtol adds it to its estimates.
+  double edge_normal_force = 0.0;
+  double edge_tangential_force = 0.0;
 };
 
 }  // namespace mdrsim

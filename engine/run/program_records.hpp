@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "engine/model/contact_snapshot.hpp"
@@ -24,6 +25,9 @@ struct StageRecord {
   std::string name;
   ContactSnapshot end;  ///< the state at the stage's end (or where the contact was lost)
   AxisWork work;
+  /// With rtol: a posteriori bounds on |reported - continuum| of the end's forces [N].
+  std::optional<double> normal_force_error_estimate;
+  std::optional<double> tangential_force_error_estimate;
 };
 
 /// A cascade of springs gluing or letting go at one value of the stage parameter.
@@ -35,6 +39,10 @@ struct JumpRecord {
   std::int64_t springs = 0;        ///< change of the springs in contact
   std::int64_t glued_springs = 0;  ///< change of the glued springs
   bool by_shear = false;  ///< the first spring due after the critical point broke at zero stretch
+  /// With rtol: a posteriori bounds on |reported - continuum| of the normal force at the
+  /// critical point and after the jump [N].
+  std::optional<double> critical_error_estimate;
+  std::optional<double> after_error_estimate;
 };
 
 }  // namespace mdrsim

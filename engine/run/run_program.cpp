@@ -79,11 +79,13 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
 
 }  // namespace
 
-RunResult run_program(const Scene& scene, const ObserverList& observers) {
+ProgramRowFrame program_row_frame(const Scene& scene) {
   double radius = guess_radius(scene);
+  double pilot_radius = radius;  // the radius of the pilot that found `largest`
   LargestContact largest;
   for (int attempt = 0; attempt < 6; ++attempt) {
     largest = {};
+    pilot_radius = radius;
     const ProgramRowSpec pilot{.reference_radius = radius,
                                .reference_springs = kPilotSprings,
                                .reference_image = scene.profile->mdr_image(radius),
@@ -98,25 +100,27 @@ RunResult run_program(const Scene& scene, const ObserverList& observers) {
     if (largest.most_springs == 0 || largest.most_springs >= kPilotSprings / 4) break;
     radius *= static_cast<double>(largest.most_springs) / static_cast<double>(kPilotSprings);
   }
-  const std::int64_t n = scene.springs;
-  ProgramRowSpec row{.reference_radius = radius,
-                     .reference_springs = n,
-                     .reference_image = scene.profile->mdr_image(radius),
-                     .max_springs = 2 * n + 64};
-  if (largest.springs > 0) {
-    const double a_max = front_radius(scene, largest, radius / kPilotSprings);
-    const double g = scene.profile->mdr_image(a_max);
-    const double front = largest.indentation +
-                         (largest.glued_edge ? std::sqrt(2.0 * std::numbers::pi * a_max *
-                                                         (scene.material.approach_work_of_adhesion /
-                                                          scene.material.effective_modulus))
-                                             : 0.0);
-    row.reference_radius = a_max;
-    // Spring N is reached at the deepest point whatever the rounding of g(a_max) (SPEC).
-    row.reference_image =
-        std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)) ? front : g;
-  }
-  return run_program_row(scene, row, observers);
+  if (largest.springs == 0) return {radius, scene.profile->mdr_image(radius)};
+  const double a_max = front_radius(scene, largest, pilot_radius / kPilotSprings);
+  const double g = scene.profile->mdr_image(a_max);
+  const double front = largest.indentation +
+                       (largest.glued_edge ? std::sqrt(2.0 * std::numbers::pi * a_max *
+                                                       (scene.material.approach_work_of_adhesion /
+                                                        scene.material.effective_modulus))
+                                           : 0.0);
+  // Spring N is reached at the deepest point whatever the rounding of g(a_max) (SPEC).
+  return {a_max, std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)) ? front : g};
+}
+
+ProgramRowSpec program_row(const ProgramRowFrame& frame, std::int64_t springs) {
+  return {.reference_radius = frame.radius,
+          .reference_springs = springs,
+          .reference_image = frame.image,
+          .max_springs = 2 * springs + 64};
+}
+
+RunResult run_program(const Scene& scene, const ObserverList& observers) {
+  return run_program_row(scene, program_row(program_row_frame(scene), scene.springs), observers);
 }
 
 }  // namespace mdrsim

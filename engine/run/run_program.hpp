@@ -2,10 +2,23 @@
 #pragma once
 
 #include "engine/events/observer.hpp"
+#include "engine/run/program_runner.hpp"
 #include "engine/run/pull_off.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {
+
+/// Where a program's rows put their springs: spring N of any row sits at `radius`, the
+/// largest contact radius the program reaches, with g there taken as `image`.
+struct ProgramRowFrame {
+  double radius;  ///< a_max [m]
+  double image;   ///< g(a_max), or the front value it equals up to rounding [m]
+};
+
+/// Runs a 256-spring pilot to find a_max (the continuum front at the deepest indentation).
+ProgramRowFrame program_row_frame(const Scene& scene);
+/// The row of `springs` springs in that frame.
+ProgramRowSpec program_row(const ProgramRowFrame& frame, std::int64_t springs);
 
 /// Runs scene.program (which must be set) on scene.springs springs across the largest
 /// contact radius the program reaches (SPEC "Discretization"), and emits every event but

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "engine/run/adaptive_resolution.hpp"
+#include "engine/run/program_resolution.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"
 
@@ -78,7 +79,9 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   using Extrapolation = DiscretizationOptions::Extrapolation;
   RunResult result;
   if (scene.program) {
-    result = run_program(scene, observers);
+    result = scene.discretization.rtol
+                 ? run_program_rtol(scene, *scene.discretization.rtol, observers)
+                 : run_program(scene, observers);
   } else if (scene.discretization.rtol) {
     std::optional<Accuracy::Route> route;
     if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;

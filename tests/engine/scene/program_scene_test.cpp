@@ -368,9 +368,6 @@ INSTANTIATE_TEST_SUITE_P(Stages, BadProgramTest, ::testing::ValuesIn(stage_cases
 
 std::vector<BadProgram> option_cases() {
   return {
-      {"Rtol", "springs = 100", "rtol = 1e-3",
-       "scene.toml:24:8: discretization.rtol is not yet available for loading programs; give "
-       "discretization.springs"},
       {"Richardson", "springs = 100", "springs = 100\nextrapolation = \"richardson\"",
        "scene.toml:25:17: discretization.extrapolation = \"richardson\" is not yet available for "
        "loading programs"},

@@ -1,0 +1,302 @@
+// mdrsim._core: scene documents, runs and their results, for the Python package mdrsim.
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <spdlog/sinks/stdout_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/events/finite_check.hpp"
+#include "engine/events/result_json.hpp"
+#include "engine/run/run_scene.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "engine/scene/scene_error.hpp"
+#include "python/src/python_parts.hpp"
+#include "python/src/trajectory_recorder.hpp"
+
+namespace py = pybind11;
+
+namespace mdrsim::python {
+namespace {
+
+/// A scene document and the Scene it builds, shared with the results of its runs. Built as
+/// soon as the document is made, so that bad input fails where it was given.
+struct SceneHandle {
+  SceneDocument document;
+  std::shared_ptr<const Scene> scene;
+};
+
+/// Builds without the GIL; Python parts take it back in their factories.
+SceneHandle built(SceneDocument document) {
+  const auto registries = current_registries();
+  SceneHandle handle{std::move(document), nullptr};
+  py::gil_scoped_release release;
+  handle.scene = std::make_shared<const Scene>(handle.document.build(*registries));
+  return handle;
+}
+
+struct ResultHandle {
+  std::shared_ptr<const Scene> scene;
+  RunResult result;
+  /// The recorded trajectory until its arrays take the columns over; null without one.
+  std::unique_ptr<TrajectoryColumns> columns;
+  py::object trajectory;  ///< the dict of arrays, made on first access
+};
+
+/// SPEC: messages are one line, as the command prints them.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+std::unique_ptr<ResultHandle> run(const SceneHandle& handle, bool trajectory) {
+  auto out = std::make_unique<ResultHandle>();
+  out->scene = handle.scene;
+  std::optional<std::string> not_finite;
+  {
+    py::gil_scoped_release release;
+    TrajectoryRecorder recorder;
+    ObserverList observers;
+    if (trajectory) observers.add(recorder);
+    out->result = run_scene(*out->scene, observers);
+    not_finite = first_not_finite(*out->scene, out->result);
+    if (trajectory) out->columns = std::make_unique<TrajectoryColumns>(std::move(recorder.columns()));
+  }
+  if (not_finite) {
+    throw std::runtime_error(fmt::format(
+        "the run gave {}, not a finite number; the scene's values may be too extreme for double "
+        "precision",
+        *not_finite));
+  }
+  return out;
+}
+
+/// A NumPy array over the column's own buffer: the capsule owns it, nothing is copied.
+template <class T>
+py::array take_column(std::vector<T>& column, const py::dtype& dtype) {
+  if (column.empty()) return py::array(dtype, std::vector<py::ssize_t>{0});
+  auto* owned = new std::vector<T>(std::move(column));
+  const py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  py::array array(dtype, {static_cast<py::ssize_t>(owned->size())}, {sizeof(T)}, owned->data(),
+                  owner);
+  // One array per column and result: writes through it would change the result itself.
+  array.attr("flags").attr("writeable") = false;
+  return array;
+}
+
+py::dict take_trajectory(TrajectoryColumns& c) {
+  std::vector<py::str> stage_names;
+  for (const std::string& name : c.stage_names) stage_names.emplace_back(name);
+  py::list stage(c.stage.size());
+  for (std::size_t i = 0; i < c.stage.size(); ++i) {
+    stage[i] = stage_names[static_cast<std::size_t>(c.stage[i])];
+  }
+  std::vector<py::object> kind_names(static_cast<std::size_t>(EventKind::jump) + 1);
+  py::list event(c.event.size());
+  for (std::size_t i = 0; i < c.event.size(); ++i) {
+    py::object& name = kind_names[static_cast<std::size_t>(c.event[i])];
+    if (!name) name = py::str(to_string(c.event[i]));
+    event[i] = name;
+  }
+  const auto f8 = py::dtype::of<double>();
+  py::dict t;
+  t["stage"] = stage;
+  t["event"] = event;
+  t["in_cascade"] = take_column(c.in_cascade, py::dtype::of<bool>());
+  t["indentation"] = take_column(c.indentation, f8);
+  t["normal_force"] = take_column(c.normal_force, f8);
+  t["contact_radius"] = take_column(c.contact_radius, f8);
+  t["tangential_displacement"] = take_column(c.tangential_displacement, f8);
+  t["tangential_force"] = take_column(c.tangential_force, f8);
+  t["springs_in_contact"] = take_column(c.springs_in_contact, py::dtype::of<std::int64_t>());
+  t["normal_control"] = take_column(c.normal_control, f8);
+  return t;
+}
+
+py::dict snapshot(const ContactSnapshot& s) {
+  py::dict d;
+  d["normal_control"] = s.normal_control;
+  d["indentation"] = s.indentation;
+  d["normal_force"] = s.normal_force;
+  d["contact_radius"] = s.contact_radius;
+  d["tangential_displacement"] = s.tangential_displacement;
+  d["tangential_force"] = s.tangential_force;
+  d["springs_in_contact"] = s.springs_in_contact;
+  return d;
+}
+
+py::object optional_snapshot(const std::optional<ContactSnapshot>& s) {
+  return s ? py::object(snapshot(*s)) : py::object(py::none());
+}
+
+py::dict work(const AxisWork& w) {
+  py::dict d;
+  d["normal"] = w.normal;
+  d["tangential"] = w.tangential;
+  return d;
+}
+
+void bind_scenes(py::module_& m) {
+  py::class_<SceneHandle>(m, "Document", "A parsed scene and the Scene it builds (internal).")
+      .def_static(
+          "from_file", [](const std::string& path) { return built(SceneDocument::from_file(path)); },
+          py::arg("path"))
+      .def_static(
+          "from_text",
+          [](const std::string& text, const std::string& source_name, const std::string& base_dir) {
+            return built(SceneDocument::from_text(text, source_name, base_dir));
+          },
+          py::arg("text"), py::arg("source_name"), py::arg("base_dir"))
+      .def(
+          "with_values",
+          [](const SceneHandle& h, const std::vector<std::pair<std::string, std::string>>& values) {
+            SceneDocument document = h.document;
+            for (const auto& [key, value] : values) document.set_value(key, value);
+            return built(std::move(document));
+          },
+          py::arg("values"), "Overrides as (dotted key, TOML value text), checked like --set.")
+      .def_property_readonly("source_name",
+                             [](const SceneHandle& h) { return h.document.source_name(); })
+      .def_property_readonly("title", [](const SceneHandle& h) { return h.scene->title; })
+      .def_property_readonly("springs", [](const SceneHandle& h) { return h.scene->springs; })
+      .def_property_readonly("material",
+                             [](const SceneHandle& h) { return h.scene->material; })
+      .def_property_readonly("profile", [](const SceneHandle& h) { return h.scene->profile_name; })
+      .def_property_readonly("criterion",
+                             [](const SceneHandle& h) { return h.scene->criterion_name; })
+      .def_property_readonly("control", [](const SceneHandle& h) {
+        return final_controls(*h.scene);
+      });
+}
+
+void bind_results(py::module_& m) {
+  py::class_<ResultHandle>(m, "RunResult", "The engine's result of one run (internal).")
+      .def_property_readonly("status",
+                             [](const ResultHandle& r) { return to_string(r.result.status); })
+      .def_property_readonly("critical",
+                             [](const ResultHandle& r) { return optional_snapshot(r.result.critical); })
+      .def_property_readonly("peak",
+                             [](const ResultHandle& r) { return optional_snapshot(r.result.peak); })
+      .def_property_readonly(
+          "tangential_strength",
+          [](const ResultHandle& r) { return r.result.tangential_strength; })
+      .def_property_readonly("stages",
+                             [](const ResultHandle& r) {
+                               py::list out;
+                               for (const StageRecord& s : r.result.stages) {
+                                 py::dict d;
+                                 d["name"] = s.name;
+                                 d["end"] = snapshot(s.end);
+                                 d["work"] = work(s.work);
+                                 out.append(d);
+                               }
+                               return out;
+                             })
+      .def_property_readonly("jumps",
+                             [](const ResultHandle& r) {
+                               py::list out;
+                               for (const JumpRecord& j : r.result.jumps) {
+                                 py::dict d;
+                                 d["stage"] = j.stage;
+                                 d["kind"] = j.inward ? "in" : "out";
+                                 d["critical"] = snapshot(j.critical);
+                                 d["after"] = snapshot(j.after);
+                                 d["springs"] = j.springs;
+                                 d["glued_springs"] = j.glued_springs;
+                                 d["by_shear"] = j.by_shear;
+                                 out.append(d);
+                               }
+                               return out;
+                             })
+      .def_property_readonly("work",
+                             [](const ResultHandle& r) {
+                               return r.result.work ? py::object(work(*r.result.work))
+                                                    : py::object(py::none());
+                             })
+      .def_property_readonly("warnings", [](const ResultHandle& r) { return r.result.warnings; })
+      .def_property_readonly("has_warnings",
+                             [](const ResultHandle& r) { return !r.result.warnings.empty(); })
+      .def_property_readonly("counts",
+                             [](const ResultHandle& r) {
+                               py::dict d;
+                               d["events"] = r.result.counts.events;
+                               d["steps"] = r.result.counts.steps;
+                               d["halvings"] = r.result.counts.halvings;
+                               d["root_iterations"] = r.result.counts.root_iterations;
+                               return d;
+                             })
+      .def_property_readonly("springs", [](const ResultHandle& r) { return r.result.springs; })
+      .def_property_readonly("wall_time_s",
+                             [](const ResultHandle& r) { return r.result.wall_time_s; })
+      .def_property_readonly("scales",
+                             [](const ResultHandle& r) -> py::object {
+                               const auto s = dimensionless_scales(*r.scene);
+                               if (!s) return py::none();
+                               py::dict d;
+                               d["force"] = s->force;
+                               d["radius"] = s->radius;
+                               d["depth"] = s->depth;
+                               return d;
+                             })
+      .def("json",
+           [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })
+      .def("trajectory", [](ResultHandle& r) -> py::object {
+        if (!r.trajectory && r.columns) {
+          r.trajectory = take_trajectory(*r.columns);
+          r.columns.reset();
+        }
+        return r.trajectory ? r.trajectory : py::object(py::none());
+      });
+  m.def("run", &run, py::arg("scene"), py::arg("trajectory"),
+        "Runs the scene with the GIL released; Python parts take it back for each call.");
+}
+
+}  // namespace
+}  // namespace mdrsim::python
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "The C++ engine of mdrsim; use the package mdrsim, not this module.";
+  // Never freed: a static py::object would be released after the interpreter is gone.
+  static PyObject* scene_error =
+      (new py::exception<mdrsim::SceneError>(m, "SceneError", PyExc_ValueError))->ptr();
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const mdrsim::SceneError& e) {
+      PyErr_SetString(scene_error, mdrsim::python::one_line(e.what()).c_str());
+    }
+  });
+
+  // The engine logs through spdlog's default logger: to standard error, silent until
+  // mdrsim.set_log_level; a run's warnings reach Python in its result.
+  auto logger = std::make_shared<spdlog::logger>(
+      "mdrsim", std::make_shared<spdlog::sinks::stderr_sink_mt>());
+  logger->set_pattern("[mdrsim %l] %v");
+  spdlog::set_default_logger(logger);
+  spdlog::set_level(spdlog::level::off);
+  m.def(
+      "set_log_level",
+      [](const std::string& level) {
+        const auto parsed = spdlog::level::from_str(level);
+        if (level != "off" && parsed == spdlog::level::off) {
+          throw py::value_error(fmt::format(
+              "unknown log level '{}' (known: trace, debug, info, warn, error, off)", level));
+        }
+        spdlog::set_level(parsed);
+      },
+      py::arg("level"));
+
+  mdrsim::python::bind_parts(m);
+  mdrsim::python::bind_scenes(m);
+  mdrsim::python::bind_results(m);
+}
