@@ -192,6 +192,8 @@ ContactSnapshot ProgramRow::snapshot() const {
   s.contact_radius = in_contact_ > 0 ? position(in_contact_) : 0.0;
   s.tangential_displacement = tangential_displacement();
   s.tangential_force = tangential_force();
+  s.springs_in_contact = in_contact_;
+  if (!edge_forces_) return s;
   if (in_contact_ > 0) {
     s.edge_normal_force =
         2.0 * material_.effective_modulus * spacing_ * std::abs(s.indentation - image(in_contact_));
@@ -200,7 +202,6 @@ ContactSnapshot ProgramRow::snapshot() const {
     s.edge_tangential_force = 2.0 * material_.effective_shear_modulus * spacing_ *
                               std::abs(s.tangential_displacement - runs_.back().offset);
   }
-  s.springs_in_contact = in_contact_;
   return s;
 }
 

@@ -98,6 +98,8 @@ class ProgramRow {
   void lift_outer();  ///< spring m (not glued) leaves
 
   ContactSnapshot snapshot() const;
+  /// Whether snapshots carry the edge springs' forces (for rtol's estimates).
+  void record_edge_forces(bool on) { edge_forces_ = on; }
 
  private:
   /// The equilibrium of each axis, computed once per change of the row or of that axis: a
@@ -146,6 +148,7 @@ class ProgramRow {
   MachineAxis tangential_;
   mutable AxisEquilibrium normal_equilibrium_{};
   mutable AxisEquilibrium tangential_equilibrium_{};
+  bool edge_forces_ = false;
   mutable bool normal_cached_ = false;
   mutable bool tangential_cached_ = false;
   // d(displacement)/d(held) of each axis: one division per change of the springs, none per

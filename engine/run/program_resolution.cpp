@@ -99,7 +99,9 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
   bool met = false;
   std::string why;
   for (std::int64_t n = kFirstRow;; n *= 2) {
-    rows.push_back(run_program_row(scene, program_row(frame, n), {}));
+    ProgramRowSpec spec = program_row(frame, n);
+    spec.edge_forces = true;
+    rows.push_back(run_program_row(scene, spec, {}));
     springs.push_back(n);
     counts += rows.back().counts;
     if (rows.size() > 3) rows.erase(rows.begin());

@@ -61,7 +61,9 @@ class ProgramRunner {
              spec.reference_image, scene.program->rebinding),
         max_springs_(spec.max_springs),
         observers_(observers),
-        largest_(largest) {}
+        largest_(largest) {
+    row_.record_edge_forces(spec.edge_forces);
+  }
 
   RunResult run();
 

@@ -24,6 +24,7 @@ struct ProgramRowSpec {
   std::int64_t reference_springs = 0;  ///< N
   double reference_image = 0.0;        ///< g at spring N (see ProgramRow)
   std::int64_t max_springs = 0;        ///< the row ends here: the run stops if it needs more
+  bool edge_forces = false;  ///< snapshots carry the edge springs' forces (rtol's estimates)
 };
 
 /// Runs every stage of scene.program on one row. Emits every event but `finished`.

@@ -1,0 +1,169 @@
+"""The result of a run: status, critical point, stages, jumps, work and the trajectory."""
+
+import json
+from dataclasses import dataclass
+from functools import cached_property
+
+# The dimensionless fields (SPEC, paper eq. 16) and the JKR scale each is divided by.
+_SCALED = (("normal_force", "force"), ("tangential_force", "force"),
+           ("contact_radius", "radius"), ("indentation", "depth"),
+           ("tangential_displacement", "depth"))
+
+
+@dataclass(frozen=True)
+class State:
+    """An equilibrium of the contact in SI units; `dimensionless` has F/F0, a/a0, d/d0 and
+    ux/d0 where the JKR scales exist (parabolic and sphere profiles), else None."""
+
+    normal_force: float  # F [N], negative when adhesion holds the indenter
+    tangential_force: float  # Fx [N]
+    contact_radius: float  # a [m]
+    indentation: float  # d [m]
+    tangential_displacement: float  # ux [m]
+    springs_in_contact: int
+    normal_control: float  # the value the normal controller holds [m or N]
+    dimensionless: dict = None
+
+    @classmethod
+    def _of(cls, snapshot, scales):
+        if snapshot is None:
+            return None
+        scaled = None if scales is None else {
+            name: snapshot[name] / scales[scale] for name, scale in _SCALED}
+        return cls(dimensionless=scaled, **snapshot)
+
+
+@dataclass(frozen=True)
+class Work:
+    """Work done by the machine on each axis [J]."""
+
+    normal: float
+    tangential: float
+
+
+@dataclass(frozen=True)
+class StageEnd:
+    name: str
+    end: State
+    work: Work
+
+
+@dataclass(frozen=True)
+class Jump:
+    """A cascade at one value of a stage's parameter: `kind` "in" or "out", from the last
+    equilibrium before it (`critical`) to the one after it."""
+
+    stage: str
+    kind: str
+    critical: State
+    after: State
+    springs: int
+    glued_springs: int
+    by_shear: bool
+
+
+class Result:
+    """What mdrsim.run returns. Every attribute is computed on first access."""
+
+    def __init__(self, raw):
+        self._raw = raw
+
+    @property
+    def status(self):
+        """instability, shear-off, no-instability, step-limit or completed (SPEC)."""
+        return self._raw.status
+
+    @cached_property
+    def scales(self):
+        """The JKR scales {"force": F0 [N], "radius": a0 [m], "depth": d0 [m]}, or None."""
+        return self._raw.scales
+
+    @cached_property
+    def critical(self):
+        """The last equilibrium before the contact was lost (a State), or None."""
+        return State._of(self._raw.critical, self.scales)
+
+    @property
+    def dimensionless(self):
+        """The critical point's dimensionless values (the JSON's `dimensionless`), or None."""
+        return None if self.critical is None else self.critical.dimensionless
+
+    @cached_property
+    def peak(self):
+        """The most tensile equilibrium up to the critical point (`peak_adhesion`), or None."""
+        return State._of(self._raw.peak, self.scales)
+
+    @property
+    def tangential_strength(self):
+        """A shear-off as the tangential load is applied: the largest Fx [N]; else None."""
+        return self._raw.tangential_strength
+
+    @cached_property
+    def stages(self):
+        return [StageEnd(s["name"], State._of(s["end"], self.scales), Work(**s["work"]))
+                for s in self._raw.stages]
+
+    @cached_property
+    def jumps(self):
+        return [Jump(j["stage"], j["kind"], State._of(j["critical"], self.scales),
+                     State._of(j["after"], self.scales), j["springs"], j["glued_springs"],
+                     j["by_shear"]) for j in self._raw.jumps]
+
+    @cached_property
+    def work(self):
+        """The total work (a Work), or None where the run did not follow the whole path."""
+        w = self._raw.work
+        return None if w is None else Work(**w)
+
+    @cached_property
+    def warnings(self):
+        return self._raw.warnings
+
+    @cached_property
+    def counts(self):
+        """{"events", "steps", "halvings", "root_iterations"}."""
+        return self._raw.counts
+
+    @property
+    def springs(self):
+        """The springs of the finest row run (one half of the foundation)."""
+        return self._raw.springs
+
+    @property
+    def wall_time_s(self):
+        """The engine's own time for the run [s]."""
+        return self._raw.wall_time_s
+
+    @property
+    def trajectory(self):
+        """One row per event, as `mdrsim run --trajectory` writes them: a dict of NumPy
+        arrays (read-only views of the engine's own buffers, no copy), and the lists
+        "stage" and "event"; None for mdrsim.run(scene, trajectory=False)."""
+        return self._raw.trajectory()
+
+    def to_dict(self):
+        """The JSON of `mdrsim run --json`, as Python objects."""
+        return json.loads(self._raw.json())
+
+    def to_dataframe(self):
+        """The trajectory as a pandas DataFrame (pandas is optional)."""
+        try:
+            import pandas
+        except ImportError as e:
+            raise ImportError("Result.to_dataframe needs pandas, which is not installed "
+                              "(Debian: apt-get install python3-pandas)") from e
+        trajectory = self.trajectory
+        if trajectory is None:
+            raise ValueError("the run kept no trajectory: use mdrsim.run(scene, trajectory=True)")
+        return pandas.DataFrame(trajectory)
+
+    def plot(self, ax=None):
+        """The force-displacement path (F against d; F/F0 against d/d0 where the JKR scales
+        exist) with its jumps dashed and the critical point marked. Needs matplotlib;
+        returns the Axes."""
+        from ._plot import plot_result
+        return plot_result(self, ax)
+
+    def __repr__(self):
+        critical = "" if self.critical is None else f", F={self.critical.normal_force:.6g} N"
+        return f"<mdrsim.Result {self.status}{critical}, {self.springs} springs>"

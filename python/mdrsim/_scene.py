@@ -1,0 +1,176 @@
+"""Scenes from a TOML file, TOML text or a nested dict, checked as soon as they are made."""
+
+import math
+import numbers
+import os
+import re
+from collections.abc import Mapping
+
+from . import _core
+from ._core import SceneError
+
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+\Z")
+_ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
+
+
+def _string(text):
+    out = []
+    for c in text:
+        if c in _ESCAPES:
+            out.append(_ESCAPES[c])
+        elif ord(c) < 0x20 or ord(c) == 0x7F:
+            out.append("\\u%04x" % ord(c))
+        else:
+            out.append(c)
+    return '"' + "".join(out) + '"'
+
+
+def _key(key, where):
+    if not isinstance(key, str):
+        raise SceneError(f"{where}: the key {key!r} is not a string")
+    return key if _BARE_KEY.match(key) else _string(key)
+
+
+def _is_table_array(value):
+    return isinstance(value, (list, tuple)) and len(value) > 0 and all(
+        isinstance(v, Mapping) for v in value)
+
+
+def toml_value(value, where):
+    """One value as TOML text on one line: what `--set KEY=VALUE` takes as VALUE."""
+    if hasattr(value, "dtype") and getattr(value, "ndim", None) == 0:
+        value = value.item()  # a NumPy scalar
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        x = float(value)
+        return repr(x) if math.isfinite(x) else ("nan" if x != x else ("inf" if x > 0 else "-inf"))
+    if isinstance(value, str):
+        return _string(value)
+    if isinstance(value, Mapping):
+        items = ", ".join(f"{_key(k, where)} = {toml_value(v, f'{where}.{k}')}"
+                          for k, v in value.items())
+        return "{ " + items + " }" if items else "{}"
+    if hasattr(value, "tolist"):  # a NumPy array
+        value = value.tolist()
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(toml_value(v, where) for v in value) + "]"
+    raise SceneError(f"{where}: {type(value).__name__} {value!r:.40} is not a scene value "
+                     "(expected a number, string, boolean, list or table)")
+
+
+def _table_lines(table, path, lines, name):
+    where = f"{name}: {'.'.join(path)}" if path else name
+    if not isinstance(table, Mapping):
+        raise SceneError(f"{where}: expected a table (dict), got {type(table).__name__}")
+    tables, arrays = [], []
+    for key, value in table.items():
+        _key(key, where)
+        if isinstance(value, Mapping):
+            tables.append((key, value))
+        elif _is_table_array(value):
+            arrays.append((key, value))
+        else:
+            lines.append(f"{_key(key, where)} = {toml_value(value, f'{name}: ' + '.'.join(path + [key]))}")
+    for key, value in tables:
+        header = ".".join(_key(k, where) for k in path + [key])
+        lines.append(f"[{header}]")
+        _table_lines(value, path + [key], lines, name)
+    for key, value in arrays:
+        header = ".".join(_key(k, where) for k in path + [key])
+        for item in value:
+            lines.append(f"[[{header}]]")
+            _table_lines(item, path + [key], lines, name)
+
+
+def to_toml(table, name="<dict>"):
+    """A nested dict as scene TOML: dicts are tables, lists of dicts arrays of tables."""
+    lines = []
+    _table_lines(table, [], lines, name)
+    return "\n".join(lines) + "\n"
+
+
+class Scene:
+    """A checked scene: made by from_file, from_toml or from_dict, changed by with_values.
+
+    Immutable: with_values returns a new Scene. Every make builds the scene at once (parts
+    created, preload solved), so bad input raises mdrsim.SceneError there, with the one-line
+    message `mdrsim run` prints; the built scene is kept for every run of it.
+    """
+
+    __slots__ = ("_doc", "_overrides")
+
+    def __init__(self):
+        raise TypeError("make a Scene with Scene.from_file, Scene.from_toml or Scene.from_dict")
+
+    @classmethod
+    def _wrap(cls, doc, overrides=()):
+        scene = object.__new__(cls)
+        scene._doc = doc
+        scene._overrides = tuple(overrides)
+        return scene
+
+    @classmethod
+    def from_file(cls, path):
+        """Reads a scene file; messages name it as given, with line and column."""
+        return cls._wrap(_core.Document.from_file(os.fspath(path)))
+
+    @classmethod
+    def from_toml(cls, text, name="<toml>", base_dir="."):
+        """Scene text; `name` stands for the file in messages, `base_dir` resolves relative
+        paths (a tabulated profile's file)."""
+        return cls._wrap(_core.Document.from_text(text, name, os.fspath(base_dir)))
+
+    @classmethod
+    def from_dict(cls, table, name="<dict>", base_dir="."):
+        """A nested dict laid out like the TOML file: {"material": {...}, "loading":
+        {"stage": [{...}, ...]}}."""
+        return cls.from_toml(to_toml(table, name), name, base_dir)
+
+    def with_values(self, values):
+        """A new Scene with {"dotted.key": value, ...} set, checked exactly like
+        `mdrsim run --set KEY=VALUE` (messages start with --set). Keys of [[loading.stage]]
+        count from 1: "loading.stage.2.tangential.by"."""
+        pairs = [(key, toml_value(value, f"--set: {key}")) for key, value in dict(values).items()]
+        return Scene._wrap(self._doc.with_values(pairs), self._overrides + tuple(pairs))
+
+    @property
+    def source(self):
+        """The file name (or the name given to from_toml / from_dict)."""
+        return self._doc.source_name
+
+    @property
+    def overrides(self):
+        """The with_values settings so far, as (dotted key, TOML value text)."""
+        return self._overrides
+
+    @property
+    def title(self):
+        return self._doc.title
+
+    @property
+    def springs(self):
+        return self._doc.springs
+
+    @property
+    def material(self):
+        return self._doc.material
+
+    @property
+    def profile(self):
+        return self._doc.profile
+
+    @property
+    def criterion(self):
+        return self._doc.criterion
+
+    @property
+    def control(self):
+        """(normal, tangential) controller names; a program's last ones."""
+        return self._doc.control
+
+    def __repr__(self):
+        sets = "".join(f", {k}={v}" for k, v in self._overrides)
+        return f"<mdrsim.Scene {self.source!r}{sets}>"
