@@ -165,6 +165,26 @@ def main(argv=None):
         summary.append((name, "Fz/F0", worst["Fz"][0], worst["Fz"][1], len(valid)))
         summary.append((name, "Fx/F0", worst["Fx"][0], worst["Fx"][1], len(valid)))
 
+    # ---- A loading program: the reversible JKR cycle (scenes/programs/jkr_cycle_reversible.toml)
+    path = result("program_jkr_cycle.json")
+    try:
+        with open(path) as f:
+            run = json.load(f)
+        scale = Scale(os.path.join(args.scenes, "programs", "jkr_cycle_reversible.toml"))
+        jump_in, fold, work = ref.reversible_cycle()
+        jumps = run.get("jumps", [])
+        if len(jumps) != 2:
+            problems.append(f"{path}: {len(jumps)} jumps, expected 2 (in and out)")
+        else:
+            rows.append(("program: reversible JKR cycle, jump-in F/F0", jump_in,
+                         jumps[0]["after"]["normal_force"] / scale.f0, run.get("wall_time_s")))
+            rows.append(("program: reversible JKR cycle, jump-out F/F0", fold,
+                         jumps[1]["critical"]["normal_force"] / scale.f0, None))
+        rows.append(("program: reversible JKR cycle, dissipated W/(F0 d0)", work,
+                     run["work"]["normal"] / (scale.f0 * scale.d0), None))
+    except (OSError, ValueError, KeyError, TypeError) as err:
+        problems.append(f"{path}: {err}")
+
     # ---- print
     width = max([len(r[0]) for r in rows] + [40])
     header = f"{'case':<{width}} | {'analytic':>11} | {'simulated':>11} | {'error':>10} | {'time [s]':>9}"

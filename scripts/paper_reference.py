@@ -187,6 +187,27 @@ def master_curve_fixed_grips(fx, gamma=1.0):
     return fx * fx / (4.0 * gamma) - 5.0 / 9.0
 
 
+def reversible_cycle():
+    """A reversible-JKR approach-retract cycle under fixed grips (beyond the paper: loading
+    programs). The contact jumps in at d~ = 0 onto eq. 18-19's branch (a~^3 = 16/9, F~ = -8/9),
+    follows it both ways, and jumps out at the fold dd~/da~ = 0 (a~^3 = 1/9, F~ = -5/9). The
+    machine's work over the cycle is the area between the branch and F~ = 0 from d~_c to 0:
+    W~ = -integral F~ dd~ over a~ from a~_c to a~_0, by composite Simpson on 20000 intervals.
+    Returns (jump-in force, fold force, dissipated work in F0 d0)."""
+    a0, ac = (16.0 / 9.0) ** (1.0 / 3.0), (1.0 / 9.0) ** (1.0 / 3.0)
+    n = 20000
+    h = (a0 - ac) / n
+
+    def integrand(a):
+        return jkr_force(a) * (6.0 * a - 2.0 / math.sqrt(a))  # F~ dd~/da~
+
+    total = integrand(ac) + integrand(a0)
+    for i in range(1, n):
+        total += (4.0 if i % 2 else 2.0) * integrand(ac + i * h)
+    work = -total * h / 3.0
+    return jkr_force(a0), jkr_force(ac), work
+
+
 JKR_PULL_OFF_FIXED_LOAD = -1.0        # eq. 19 at a~ = 1
 JKR_PULL_OFF_FIXED_GRIPS = -5.0 / 9.0  # eq. 33 at u~ = 0 (the text's -0.5 is a slip)
 

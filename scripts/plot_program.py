@@ -4,10 +4,10 @@
 Run with Debian's Python, which has matplotlib:
     /usr/bin/python3 scripts/plot_program.py TRAJECTORY.csv [--out NAME] [--title TEXT]
 
-Two panels: the normal force against the indentation, and the tangential force against the
-tangential displacement, one colour per stage, so that a cycle's hysteresis (the area the loop
-encloses is the energy it dissipated) and its jumps are seen at a glance. Jumps (rows inside a
-cascade) are drawn as dashed lines: the state moves there without passing through equilibria.
+The normal force against the indentation and, where the program moves the tangential axis,
+the tangential force against the tangential displacement; one colour per stage, so that a cycle's hysteresis (the area the loop
+encloses is the energy it dissipated) and its jumps are seen at a glance. Jumps are drawn as
+dashed lines: the state moves there without passing through equilibria.
 Writes NAME.png and NAME.svg (default: next to the CSV, with its stem).
 """
 
@@ -21,10 +21,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-EQUILIBRIA = ("glued", "touched", "lifted", "detached", "stage-end", "jump", "preload",
-              "tangential", "step")
-
-
 def read_rows(path):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
@@ -34,14 +30,16 @@ def read_rows(path):
 
 
 def stage_segments(rows):
-    """Rows grouped by stage in order; each stage's points as (d, F, ux, Fx, in_cascade)."""
+    """The path per stage in order: (name, [(d, F, ux, Fx, is_jump)]). Rows inside a cascade
+    (in_cascade = 1) are not equilibria and are left out; a `jump` row is the state after the
+    cascade, reached from the point before it without passing through equilibria."""
     stages = []
     for r in rows:
-        if r["event"] not in EQUILIBRIA:
+        if r["in_cascade"] == "1" or r["event"] in ("instability", "finished"):
             continue
         point = (float(r["indentation"]), float(r["normal_force"]),
                  float(r["tangential_displacement"]), float(r["tangential_force"]),
-                 r["in_cascade"] == "1")
+                 r["event"] == "jump")
         if not stages or stages[-1][0] != r["stage"]:
             stages.append((r["stage"], []))
         stages[-1][1].append(point)
@@ -53,20 +51,19 @@ def draw(ax, stages, xi, yi, xlabel, ylabel):
     last = None
     for n, (name, points) in enumerate(stages):
         colour = colours[n % len(colours)]
-        xs, ys = [], []
-        if last is not None:
-            xs.append(last[xi])
-            ys.append(last[yi])
+        xs, ys = ([last[xi]], [last[yi]]) if last is not None else ([], [])
+        labelled = False
         for p in points:
             if p[4] and xs:
-                # A jump: close the solid path, draw the jump dashed from the last equilibrium.
-                ax.plot(xs, ys, color=colour, lw=1.4, label=name if len(xs) > 1 else None)
+                # A jump: the solid path so far, then a dashed line to the state after it.
+                ax.plot(xs, ys, color=colour, lw=1.4, label=None if labelled else name)
+                labelled = labelled or len(xs) > 1
                 ax.plot([xs[-1], p[xi]], [ys[-1], p[yi]], color=colour, lw=1.0, ls="--")
                 xs, ys = [], []
             xs.append(p[xi])
             ys.append(p[yi])
         if xs:
-            ax.plot(xs, ys, color=colour, lw=1.4, label=name)
+            ax.plot(xs, ys, color=colour, lw=1.4, label=None if labelled else name)
         if points:
             last = points[-1]
     ax.set_xlabel(xlabel)
@@ -88,9 +85,14 @@ def main():
     if not rows:
         sys.exit(f"plot_program: {args.trajectory} has no rows")
     stages = stage_segments(rows)
-    fig, (normal, tangential) = plt.subplots(1, 2, figsize=(11, 4.2))
-    draw(normal, stages, 0, 1, "indentation d [m]", "normal force F [N]")
-    draw(tangential, stages, 2, 3, "tangential displacement u_x [m]", "tangential force F_x [N]")
+    # The tangential panel only where the program moves that axis.
+    sheared = any(p[2] != 0.0 or p[3] != 0.0 for _, points in stages for p in points)
+    fig, axes = plt.subplots(1, 2 if sheared else 1, figsize=(11 if sheared else 6, 4.2),
+                             squeeze=False)
+    draw(axes[0][0], stages, 0, 1, "indentation d [m]", "normal force F [N]")
+    if sheared:
+        draw(axes[0][1], stages, 2, 3, "tangential displacement u_x [m]",
+             "tangential force F_x [N]")
     fig.suptitle(args.title or os.path.basename(args.trajectory))
     out = args.out or os.path.splitext(args.trajectory)[0]
     for ext in ("png", "svg"):

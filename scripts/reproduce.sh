@@ -46,6 +46,14 @@ done
 echo "== figures" >&2
 "$py" scripts/plot_paper_figures.py --results "$results" --scenes scenes
 
+# Beyond the paper's path: a reversible-JKR approach-retract cycle (loading programs), its
+# force-displacement loop with the jump-in and the jump-out.
+echo "== a loading program: the reversible JKR cycle" >&2
+"$mdrsim" run scenes/programs/jkr_cycle_reversible.toml \
+  --trajectory "$results/program_jkr_cycle.csv" --json "$results/program_jkr_cycle.json"
+"$py" scripts/plot_program.py "$results/program_jkr_cycle.csv" \
+  --title "reversible JKR approach-retract cycle (scenes/programs/jkr_cycle_reversible.toml)"
+
 echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
 

@@ -74,6 +74,8 @@ class ProgramRunner {
   AxisPoint normal_point() const;
   AxisPoint tangential_point() const;
   void advance_to(double t);
+  /// Adds the work from the given points (an axis not given did not move) to the present state.
+  void add_work(const AxisPoint* normal_from, const AxisPoint* tangential_from);
   std::optional<Change> due();
   std::optional<std::pair<double, Change>> next_change(double t_end);
   LetGo boundary_let_go(double d, double u);
@@ -185,6 +187,20 @@ AxisPoint ProgramRunner::tangential_point() const {
           spring ? row_.tangential().held : row_.tangential_displacement()};
 }
 
+void ProgramRunner::add_work(const AxisPoint* normal_from, const AxisPoint* tangential_from) {
+  // Force and driving point are affine in between (the springs stay): the trapezoid is exact.
+  if (normal_from) {
+    const AxisPoint to = normal_point();
+    stage_work_.normal +=
+        0.5 * (normal_from->force + to.force) * (to.driving - normal_from->driving);
+  }
+  if (tangential_from) {
+    const AxisPoint to = tangential_point();
+    stage_work_.tangential +=
+        0.5 * (tangential_from->force + to.force) * (to.driving - tangential_from->driving);
+  }
+}
+
 void ProgramRunner::advance_to(double t) {
   // While the row stays as it is, an axis whose held value does not move stays where it is.
   const bool normal_moves = normal_rate_ != 0.0;
@@ -192,14 +208,7 @@ void ProgramRunner::advance_to(double t) {
   const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   set_parameter(t);
-  if (normal_moves) {
-    const AxisPoint n1 = normal_point();
-    stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
-  }
-  if (tangential_moves) {
-    const AxisPoint x1 = tangential_point();
-    stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
-  }
+  add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
   t_ = t;
   guards_ = {};
 }
@@ -424,14 +433,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       guards_.lifted_to = std::max(guards_.lifted_to, m);
       break;
   }
-  if (normal_moves) {
-    const AxisPoint n1 = normal_point();
-    stage_work_.normal += 0.5 * (n0.force + n1.force) * (n1.driving - n0.driving);
-  }
-  if (tangential_moves) {
-    const AxisPoint x1 = tangential_point();
-    stage_work_.tangential += 0.5 * (x0.force + x1.force) * (x1.driving - x0.driving);
-  }
+  add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
   if (change != Change::fall_in) {
     ++cascade.changes;
     ++result_.counts.events;

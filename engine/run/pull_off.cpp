@@ -166,7 +166,8 @@ RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
 RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverList& observers) {
   const auto started = std::chrono::steady_clock::now();
   RunResult result =
-      run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, observers);
+      run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true},
+              observers);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   emit_closing_events(result, observers);
@@ -194,10 +195,12 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   contact.set_normal_control(contact.normal_control_at(scene.preload_depth));
   // A zoomed row starts past the preload: only a row across the glued radius runs the path.
   std::optional<ShorthandPath> path;
-  if (!row.zoomed) {
+  if (!row.zoomed && row.record_path) {
     const AffineConstraint c = scene.normal.controller->constraint();
     path.emplace(c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0);
     path->preload(contact);
+  }
+  if (!row.zoomed) {
     observers.emit({.kind = EventKind::preload_reached, .state = contact.snapshot()});
   }
   if (scene.tangential) {

@@ -71,6 +71,9 @@ struct RowSpec {
   std::int64_t springs = 0;
   double outer_radius = 0.0;  ///< [m]
   bool zoomed = false;        ///< outer_radius < the glued radius: emits no preload events
+  /// Record the path's stages, jumps and work (shorthand_path.hpp): for the row a run reports,
+  /// not for the rows it only compares (a few ns per let-go).
+  bool record_path = false;
 };
 
 /// Runs one row and returns its status and row detail (critical, peak, refined points).

@@ -27,7 +27,9 @@ RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
     seq.add(run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, {}));
     counts += seq.last().counts;
   }
-  seq.add(run_row(scene, {.springs = 2 * n, .outer_radius = scene.glued_radius}, observers));
+  seq.add(run_row(scene,
+                  {.springs = 2 * n, .outer_radius = scene.glued_radius, .record_path = true},
+                  observers));
   counts += seq.last().counts;
 
   RunResult result = seq.last();
@@ -90,8 +92,9 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   } else if (scene.discretization.richardson()) {
     result = run_richardson(scene, observers);
   } else {
-    result =
-        run_row(scene, {.springs = scene.springs, .outer_radius = scene.glued_radius}, observers);
+    result = run_row(
+        scene, {.springs = scene.springs, .outer_radius = scene.glued_radius, .record_path = true},
+        observers);
   }
   if (!scene.program) warn_resolution(scene, result);
   for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
