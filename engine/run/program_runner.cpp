@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -26,6 +28,12 @@ constexpr std::int64_t kSweepsUntilSeparation = 64;
 /// Stepping: the default increment of the stage parameter.
 constexpr double kDefaultStageStep = 1e-3;
 
+/// The next double above a stage parameter t >= 0: std::nextafter without the library call,
+/// which every step asks for.
+double next_parameter(double t) {
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(t) + 1);
+}
+
 enum class Change { fall_in, let_go, glue, touch, lift };
 
 /// The force on one axis and the displacement of the machine's driving point: the indenter
@@ -34,6 +42,13 @@ struct AxisPoint {
   double force;
   double driving;
 };
+
+/// Whether a state's numbers are all within a double (extreme scenes can leave it).
+bool finite(const ContactSnapshot& s) {
+  return std::isfinite(s.indentation) && std::isfinite(s.normal_force) &&
+         std::isfinite(s.tangential_displacement) && std::isfinite(s.tangential_force) &&
+         std::isfinite(s.normal_control);
+}
 
 bool drives_through_spring(const AffineConstraint& c) {
   return c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0;
@@ -144,7 +159,8 @@ class ProgramRunner {
     outgrew,
     no_end,
     endless,
-    step_limit
+    step_limit,
+    overflow
   };
   /// Stepping: what a trial step changes, to take it back.
   struct Saved {
@@ -209,11 +225,16 @@ void ProgramRunner::advance_to(double t) {
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   set_parameter(t);
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
+  if (!std::isfinite(stage_work_.normal) || !std::isfinite(stage_work_.tangential) ||
+      !finite(row_.snapshot())) {
+    stop_ = Stop::overflow;
+  }
   t_ = t;
   guards_ = {};
 }
 
 void ProgramRunner::observe(const ContactSnapshot& s) {
+  if (!finite(s)) return;
   largest_force_ = std::max(largest_force_, std::abs(s.normal_force));
   if (s.springs_in_contact > 0 && s.normal_force < 0.0 &&
       (!peak_ || s.normal_force < peak_->normal_force)) {
@@ -321,7 +342,7 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
   const double u = row_.tangential_displacement();
   const double vd = normal_rate_ != 0.0 ? row_.indentation_per_held() * normal_rate_ : 0.0;
   const double vu = tangential_rate_ != 0.0 ? row_.tangential_per_held() * tangential_rate_ : 0.0;
-  const double soonest = std::nextafter(t_, kInfinity);
+  const double soonest = next_parameter(t_);
   double best = t_end;
   std::optional<Change> change;
   const auto consider = [&](double t, Change c) {
@@ -444,6 +465,11 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
 
 void ProgramRunner::finish_cascade(const Cascade& cascade) {
   const ContactSnapshot after = row_.snapshot();
+  if (!finite(after) || !finite(cascade.before) || !std::isfinite(stage_work_.normal) ||
+      !std::isfinite(stage_work_.tangential)) {
+    stop_ = Stop::overflow;  // values beyond a double: nothing of it is recorded
+    return;
+  }
   observe(after);
   if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
   if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
@@ -520,7 +546,7 @@ void ProgramRunner::take_step(double t_end) {
   double step = step_;
   for (int halvings = 0;; ++halvings) {
     double target = std::min(t_ + step, t_end);
-    if (!(target > t_)) target = std::nextafter(t_, kInfinity);
+    if (!(target > t_)) target = next_parameter(t_);
     const bool last_try = halvings >= scene_.solver.max_halvings || t_ + 0.5 * step == t_;
     const Saved saved{row_, stage_work_, t_, guards_, result_.counts};
     Cascade cascade = begin_cascade();  // its `before` is the last accepted equilibrium
@@ -614,6 +640,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
       finish_cascade(cascade);
     }
   }
+  if (stop_ == Stop::overflow) return;  // the stage's numbers left the range of a double
   const ContactSnapshot end = row_.snapshot();
   result_.stages.push_back({stage.name, end, stage_work_});
   total_work_ += stage_work_;
@@ -656,6 +683,15 @@ void ProgramRunner::finish(RunResult& r) {
           "the stepping method reached solver.max_steps = {} in stage '{}' before the program's "
           "end: there is no critical point",
           scene_.solver.max_steps, stage_->name));
+      return;
+    case Stop::overflow:
+      r.status = RunStatus::step_limit;
+      r.critical.reset();
+      r.warnings.push_back(fmt::format(
+          "stage '{}': the program's forces, displacements or work left the range of a double "
+          "(the scene's values are too extreme together): it stops there, and only the stages "
+          "before it are reported",
+          stage_->name));
       return;
     case Stop::endless:
       r.status = RunStatus::step_limit;

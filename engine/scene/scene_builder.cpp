@@ -170,12 +170,14 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   const double force_scale = e_star * scene.glued_radius * std::abs(scene.preload_depth);
   const double adhesion_scale =
       2.0 * std::numbers::pi * scene.glued_radius * scene.material.work_of_adhesion;
+  // The work of pressing the row in (the preload stage's, SPEC) is of the size E* a d^2.
+  const double work_scale = force_scale * std::abs(scene.preload_depth);
   if (!std::isfinite(scene.preload_depth) || !std::isfinite(force_scale) ||
-      !std::isfinite(adhesion_scale)) {
+      !std::isfinite(adhesion_scale) || !std::isfinite(work_scale)) {
     t.fail(fmt::format(
-        "the preload overflows (contact radius {} m, depth {} m, E* a d = {} N, 2 pi a dgamma "
-        "= {} N)",
-        scene.glued_radius, scene.preload_depth, force_scale, adhesion_scale));
+        "the preload overflows (contact radius {} m, depth {} m, E* a d = {} N, E* a d^2 = {} "
+        "J, 2 pi a dgamma = {} N)",
+        scene.glued_radius, scene.preload_depth, force_scale, work_scale, adhesion_scale));
   }
   t.finish();
 }
@@ -188,7 +190,8 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
   const double stiffness = 2.0 * scene.material.effective_shear_modulus * scene.glued_radius;
   const double other = key == "force" ? std::abs(axis.held_value) / stiffness
                                       : std::abs(axis.held_value) * stiffness;
-  if (!std::isfinite(other)) {
+  // ... and the work of applying it, F_x u_x / 2 (the tangential stage's, SPEC).
+  if (!std::isfinite(other) || !std::isfinite(other * std::abs(axis.held_value))) {
     t.fail_range(key, fmt::format("= {} overflows the tangential {} of the glued contact",
                                   axis.held_value, key == "force" ? "displacement" : "force"));
   }
