@@ -23,8 +23,10 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// A last spring carrying less than this share of the path's largest |F| peels off smoothly.
 constexpr double kNegligibleForce = 1e-3;
-/// Spring changes per spring of the row a stage may take to reach separation.
-constexpr std::int64_t kSweepsUntilSeparation = 64;
+/// Spring changes per spring of the row a stage may take: a stage sweeps its row a few times
+/// at most, but stick-slip (rebinding under a shear ramp) changes the edge spring once per
+/// slip, and a large ramp slips without end.
+constexpr std::int64_t kSweepsPerStage = 64;
 /// Stepping: the default increment of the stage parameter.
 constexpr double kDefaultStageStep = 1e-3;
 
@@ -599,13 +601,13 @@ void ProgramRunner::run_stage(const Stage& stage) {
       run_changes(std::nullopt, cascade, std::numeric_limits<std::int64_t>::max());
       finish_cascade(cascade);
     }
-    // Until separation, a contact that slides on without parting (stick-slip with rebinding
-    // under compression) would change springs forever: the stage stops after this many.
-    const std::int64_t event_limit =
-        result_.counts.events + kSweepsUntilSeparation * (max_springs_ + 1);
+    // A contact that slides by stick-slip (rebinding under a shear ramp) changes its edge
+    // spring once per slip, forever until separation and without bound under a large ramp:
+    // the stage stops after this many changes.
+    const std::int64_t event_limit = result_.counts.events + kSweepsPerStage * (max_springs_ + 1);
     while (stop_ == Stop::none) {
       if (stage.until_separation && row_.in_contact() == 0) break;
-      if (stage.until_separation && result_.counts.events > event_limit) {
+      if (result_.counts.events > event_limit) {
         stop_ = Stop::endless;
         break;
       }
@@ -696,11 +698,10 @@ void ProgramRunner::finish(RunResult& r) {
     case Stop::endless:
       r.status = RunStatus::step_limit;
       r.warnings.push_back(fmt::format(
-          "stage '{}' runs until separation, but after {} changes of the spring row ({} per "
-          "spring) the contact is still there ({} springs in contact, {} glued): the program "
-          "stops here",
-          stage_->name, result_.counts.events, kSweepsUntilSeparation, row_.in_contact(),
-          row_.glued()));
+          "stage '{}' changed its spring row more than {} times per spring ({} changes; {} "
+          "springs in contact, {} glued): the contact slides by stick-slip without end; the "
+          "program stops here",
+          stage_->name, kSweepsPerStage, result_.counts.events, row_.in_contact(), row_.glued()));
       return;
     case Stop::cannot_hold_tangential:
       if (last_glue_loss_) {
