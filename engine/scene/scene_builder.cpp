@@ -182,6 +182,8 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   t.finish();
 }
 
+void check_dimensionless_tangential(TomlReader& t, const Scene& scene, double radius);
+
 /// The held tangential value must leave the tangential force and displacement of the glued
 /// contact, Fx ~ 2 G* a ux, finite.
 void check_tangential_scale(TomlReader& t, const Scene& scene) {
@@ -190,16 +192,25 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
   const double stiffness = 2.0 * scene.material.effective_shear_modulus * scene.glued_radius;
   const double other = key == "force" ? std::abs(axis.held_value) / stiffness
                                       : std::abs(axis.held_value) * stiffness;
-  // ... and the work of applying it, F_x u_x / 2 (the tangential stage's, SPEC).
-  if (!std::isfinite(other) || !std::isfinite(other * std::abs(axis.held_value))) {
+  if (!std::isfinite(other)) {
     t.fail_range(key, fmt::format("= {} overflows the tangential {} of the glued contact",
                                   axis.held_value, key == "force" ? "displacement" : "force"));
   }
   // The dimensionless output divides the held value by F0 or d0 (paper eq. 16).
   const auto radius = scene.profile->jkr_scale_radius();
-  if (!radius) return;
+  if (radius) check_dimensionless_tangential(t, scene, *radius);
+  // The work of applying it, F_x u_x / 2 (the tangential stage's, SPEC).
+  if (!std::isfinite(other * std::abs(axis.held_value))) {
+    t.fail_range(
+        key, fmt::format("= {} overflows the work of applying it (F_x u_x / 2)", axis.held_value));
+  }
+}
+
+void check_dimensionless_tangential(TomlReader& t, const Scene& scene, double radius) {
+  const AxisLoading& axis = *scene.tangential;
+  const std::string key(axis.controller->held_value_key());
   const auto scales =
-      JkrScales::of(*radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
+      JkrScales::of(radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
   if (!scales) return;
   const double unit = key == "force" ? scales->force : scales->depth;
   if (!std::isfinite(axis.held_value / unit)) {
