@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages mdrsim needs to build, test and draw the paper's figures.
+# Installs the Debian 12 packages mdrsim needs to build, test and draw the paper's figures,
+# and to build and test its Python module.
 # Idempotent: when every package is already installed it only runs dpkg -s and exits,
 # so the test and reproduce scripts can call it every time at no cost.
 # `setup.sh fuzz` adds clang and its compiler-rt (libFuzzer, sanitizers) for scripts/fuzz.sh.
@@ -10,6 +11,10 @@ packages=(
   libeigen3-dev libspdlog-dev libfmt-dev libgtest-dev libbenchmark-dev libboost-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   python3-matplotlib python3-numpy
+  # The Python module (python/, README "Python"): pybind11, a venv and pip that install
+  # offline, pytest; pandas for Result.to_dataframe (optional for users, tested here).
+  pybind11-dev python3-dev python3-venv python3-pip python3-setuptools python3-wheel
+  python3-pytest python3-pandas
 )
 if [ "${1:-}" = "fuzz" ]; then
   packages+=(clang-14 libclang-rt-14-dev)

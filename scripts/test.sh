@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
-# The whole test suite, as CI runs it (.ci/run), in three stages:
+# The whole test suite, as CI runs it (.ci/run), in four stages:
 #   1. check the layout's include rule (scripts/check_includes.sh), build (Release, warnings as
-#      errors) and run every test with ctest;
-#   2. build again with clang, AddressSanitizer + UndefinedBehaviorSanitizer (leak checks on)
-#      and run the same tests there, except the 10^7-spring case (EdgeCasesLarge: minutes under
-#      ASan) and the plain-route rtol 1e-6 runs of the random set (rows of up to 2^25
+#      errors, the Python module included: -DMDRSIM_PYTHON=ON) and run every test with ctest,
+#      then the Python module's tests with pytest (python/tests) on that build;
+#   2. install the Python module the way the README says, offline into a fresh venv
+#      (pip install --no-build-isolation --no-deps --no-index .), and run the README's check;
+#   3. build again with clang, AddressSanitizer + UndefinedBehaviorSanitizer (leak checks on)
+#      and run the same C++ tests there, except the 10^7-spring case (EdgeCasesLarge: minutes
+#      under ASan) and the plain-route rtol 1e-6 runs of the random set (rows of up to 2^25
 #      springs: a minute in Release);
-#   3. fuzz the scene reader and the engine for FUZZ_SECONDS (default 60, scripts/fuzz.sh) with
+#   4. fuzz the scene reader and the engine for FUZZ_SECONDS (default 60, scripts/fuzz.sh) with
 #      the libFuzzer target of that same build.
 # `bash scripts/test.sh --quick` runs stage 1 only. Installs what is missing first.
 # Exit code: 0 when every stage passes. Works from any directory.
-# BUILD_DIR and FUZZ_BUILD_DIR move the two build directories (default: build, build-fuzz).
+# BUILD_DIR and FUZZ_BUILD_DIR move the two build directories (default: build, build-fuzz);
+# stage 2 builds in build-python-package (setup.py; MDRSIM_PYTHON_BUILD_DIR moves it).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -28,26 +32,46 @@ trap 'rm -rf "$logs"' EXIT
 stage() { echo "=== test.sh: $* ($(date -u +%H:%M:%S))" >&2; }
 # ctest's closing line "N% tests passed, F tests failed out of T", added over the stages; ctest
 # counts a skipped test (GTEST_SKIP) as passed and lists it as "(Skipped)": told apart here.
+# pytest's closing line ("40 passed, 2 skipped in 1.2s") is added in as it stands.
 totals() {
   local skipped
-  skipped="$(cat "$logs"/*.log | grep -c '(Skipped)$' || true)"
-  cat "$logs"/*.log | sed -n 's/.* \([0-9][0-9]*\) tests failed out of \([0-9][0-9]*\).*/\1 \2/p' |
-    awk -v s="$skipped" '{f += $1; t += $2} END {printf "%d passed, %d failed, %d skipped\n", t - f - s, f, s}'
+  skipped="$(cat "$logs"/ctest*.log | grep -c '(Skipped)$' || true)"
+  {
+    cat "$logs"/ctest*.log | sed -n 's/.* \([0-9][0-9]*\) tests failed out of \([0-9][0-9]*\).*/ctest \1 \2/p'
+    if [ -f "$logs/pytest.log" ]; then tail -n 1 "$logs/pytest.log" | sed 's/^/pytest /'; fi
+  } | awk -v s="$skipped" '
+    $1 == "ctest" {f += $2; t += $3 - $2}
+    $1 == "pytest" {for (i = 3; i <= NF; i++) {w = $i; sub(/,$/, "", w)
+      if (w == "passed") t += $(i - 1); if (w == "failed" || w == "errors" || w == "error") f += $(i - 1)
+      if (w == "skipped") {s += $(i - 1); t += $(i - 1)}}}
+    END {printf "%d passed, %d failed, %d skipped\n", t - s, f, s}'
 }
 
 if [ "$quick" -eq 1 ]; then bash scripts/setup.sh; else bash scripts/setup.sh fuzz; fi
 
-stage "1/3 build and test ($build_dir)"
+stage "1/4 build and test ($build_dir)"
 bash scripts/check_includes.sh
+# The Python module is built with the rest (a cached option build.sh keeps); pytest runs it
+# from the build tree and compares with the mdrsim command built beside it.
+cmake -S . -B "$build_dir" -DMDRSIM_PYTHON=ON >/dev/null
 BUILD_DIR="$build_dir" bash scripts/build.sh
-ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" | tee "$logs/1.log"
+ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" | tee "$logs/ctest1.log"
+PYTHONPATH="$build_dir/python" MDRSIM_CLI="$build_dir/apps/mdrsim" \
+  /usr/bin/python3 -m pytest -q -p no:cacheprovider python/tests | tee "$logs/pytest.log"
 if [ "$quick" -eq 1 ]; then
   echo "tests: $(totals)"
   exit 0
 fi
 
-stage "2/3 build and test under AddressSanitizer and UndefinedBehaviorSanitizer ($sanitize_dir)"
-# The configuration of scripts/fuzz.sh, so that stage 3 reuses this build: the coverage
+stage "2/4 install the Python module offline into a fresh venv (README \"Python\")"
+venv="$logs/venv"
+/usr/bin/python3 -m venv --system-site-packages "$venv"
+"$venv/bin/pip" install -q --no-build-isolation --no-deps --no-index .
+"$venv/bin/python" -c "import mdrsim; print(mdrsim.__file__)" | grep -q "^$venv/lib/"
+"$venv/bin/python" -c "import mdrsim; print(mdrsim.run(mdrsim.Scene.from_file('scenes/fig2_fixed_load.toml')).critical)"
+
+stage "3/4 build and test under AddressSanitizer and UndefinedBehaviorSanitizer ($sanitize_dir)"
+# The configuration of scripts/fuzz.sh, so that stage 4 reuses this build: the coverage
 # instrumentation it adds (fuzzer-no-link) does not change what the tests check.
 cmake -S . -B "$sanitize_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DMDRSIM_WERROR=ON -DMDRSIM_SANITIZE=fuzzer-no-link,address,undefined -DMDRSIM_BUILD_FUZZ=ON
@@ -57,9 +81,9 @@ cmake --build "$sanitize_dir" -j"$jobs"
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1" \
 UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
   ctest --test-dir "$sanitize_dir" --output-on-failure -j"$jobs" -E '^EdgeCasesLarge\.|rtol1e6_none' |
-  tee "$logs/2.log"
+  tee "$logs/ctest3.log"
 
-stage "3/3 fuzz for ${FUZZ_SECONDS:-60} s"
+stage "4/4 fuzz for ${FUZZ_SECONDS:-60} s"
 FUZZ_BUILD_DIR="$sanitize_dir" bash scripts/fuzz.sh "${FUZZ_SECONDS:-60}"
 stage "all stages passed"
 echo "tests: $(totals)"  # normal and sanitizer builds together

@@ -70,7 +70,8 @@ std::unique_ptr<ResultHandle> run(const SceneHandle& handle, bool trajectory) {
     if (trajectory) observers.add(recorder);
     out->result = run_scene(*out->scene, observers);
     not_finite = first_not_finite(*out->scene, out->result);
-    if (trajectory) out->columns = std::make_unique<TrajectoryColumns>(std::move(recorder.columns()));
+    if (trajectory)
+      out->columns = std::make_unique<TrajectoryColumns>(std::move(recorder.columns()));
   }
   if (not_finite) {
     throw std::runtime_error(fmt::format(
@@ -149,7 +150,8 @@ py::dict work(const AxisWork& w) {
 void bind_scenes(py::module_& m) {
   py::class_<SceneHandle>(m, "Document", "A parsed scene and the Scene it builds (internal).")
       .def_static(
-          "from_file", [](const std::string& path) { return built(SceneDocument::from_file(path)); },
+          "from_file",
+          [](const std::string& path) { return built(SceneDocument::from_file(path)); },
           py::arg("path"))
       .def_static(
           "from_text",
@@ -169,27 +171,24 @@ void bind_scenes(py::module_& m) {
                              [](const SceneHandle& h) { return h.document.source_name(); })
       .def_property_readonly("title", [](const SceneHandle& h) { return h.scene->title; })
       .def_property_readonly("springs", [](const SceneHandle& h) { return h.scene->springs; })
-      .def_property_readonly("material",
-                             [](const SceneHandle& h) { return h.scene->material; })
+      .def_property_readonly("material", [](const SceneHandle& h) { return h.scene->material; })
       .def_property_readonly("profile", [](const SceneHandle& h) { return h.scene->profile_name; })
       .def_property_readonly("criterion",
                              [](const SceneHandle& h) { return h.scene->criterion_name; })
-      .def_property_readonly("control", [](const SceneHandle& h) {
-        return final_controls(*h.scene);
-      });
+      .def_property_readonly("control",
+                             [](const SceneHandle& h) { return final_controls(*h.scene); });
 }
 
 void bind_results(py::module_& m) {
   py::class_<ResultHandle>(m, "RunResult", "The engine's result of one run (internal).")
       .def_property_readonly("status",
                              [](const ResultHandle& r) { return to_string(r.result.status); })
-      .def_property_readonly("critical",
-                             [](const ResultHandle& r) { return optional_snapshot(r.result.critical); })
+      .def_property_readonly(
+          "critical", [](const ResultHandle& r) { return optional_snapshot(r.result.critical); })
       .def_property_readonly("peak",
                              [](const ResultHandle& r) { return optional_snapshot(r.result.peak); })
-      .def_property_readonly(
-          "tangential_strength",
-          [](const ResultHandle& r) { return r.result.tangential_strength; })
+      .def_property_readonly("tangential_strength",
+                             [](const ResultHandle& r) { return r.result.tangential_strength; })
       .def_property_readonly("stages",
                              [](const ResultHandle& r) {
                                py::list out;
@@ -248,8 +247,7 @@ void bind_results(py::module_& m) {
                                d["depth"] = s->depth;
                                return d;
                              })
-      .def("json",
-           [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })
+      .def("json", [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })
       .def("trajectory", [](ResultHandle& r) -> py::object {
         if (!r.trajectory && r.columns) {
           r.trajectory = take_trajectory(*r.columns);
@@ -279,8 +277,8 @@ PYBIND11_MODULE(_core, m) {
 
   // The engine logs through spdlog's default logger: to standard error, silent until
   // mdrsim.set_log_level; a run's warnings reach Python in its result.
-  auto logger = std::make_shared<spdlog::logger>(
-      "mdrsim", std::make_shared<spdlog::sinks::stderr_sink_mt>());
+  auto logger =
+      std::make_shared<spdlog::logger>("mdrsim", std::make_shared<spdlog::sinks::stderr_sink_mt>());
   logger->set_pattern("[mdrsim %l] %v");
   spdlog::set_default_logger(logger);
   spdlog::set_level(spdlog::level::off);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -29,24 +30,24 @@ bool interpreter_alive() {
 
 /// A Python object that C++ may drop without the GIL (a Scene freed after a run): the
 /// reference is released under the GIL, or left alone once the interpreter is going away.
-class HeldObject {
+template <class Object>
+class Held {
  public:
-  explicit HeldObject(py::object object) : object_(std::move(object)) {}
-  HeldObject(const HeldObject&) = delete;
-  HeldObject& operator=(const HeldObject&) = delete;
-  ~HeldObject() {
-    if (!object_) return;
-    if (!interpreter_alive()) {
-      object_.release();
-      return;
+  explicit Held(Object object) : object_(std::move(object)) {}
+  Held(const Held&) = delete;
+  Held& operator=(const Held&) = delete;
+  ~Held() {
+    if (object_.ptr() == nullptr) return;
+    if (interpreter_alive()) {
+      py::gil_scoped_acquire gil;
+      object_.dec_ref();
     }
-    py::gil_scoped_acquire gil;
-    object_ = py::object();
+    object_.release();  // the member's own destructor must not touch the count again
   }
-  const py::object& get() const { return object_; }
+  const Object& get() const { return object_; }
 
  private:
-  py::object object_;
+  Object object_;
 };
 
 /// One registered part's callables. Registrations live as long as the process: a spec is
@@ -118,17 +119,17 @@ class PythonCriterion final : public DetachmentCriterion {
                                             double tangential_displacement) const override {
     if (spec_->second.is_none()) return std::nullopt;
     py::gil_scoped_acquire gil;
-    const py::object e = call(spec_->second, kwargs(), contact_radius, tangential_displacement,
-                              material_.get());
+    const py::object e =
+        call(spec_->second, kwargs(), contact_radius, tangential_displacement, material_.get());
     if (e.is_none()) return std::nullopt;
     return finite_number(e, *spec_, "critical_elongation");
   }
 
  private:
-  const py::dict& kwargs() const { return static_cast<const py::dict&>(kwargs_.get()); }
+  const py::dict& kwargs() const { return kwargs_.get(); }
   const PartSpec* spec_;
-  HeldObject material_;  ///< mdrsim.Material
-  HeldObject kwargs_;    ///< dict of the parameters
+  Held<py::object> material_;  ///< mdrsim.Material
+  Held<py::dict> kwargs_;      ///< the parameters' values
 };
 
 class PythonProfile final : public Profile {
@@ -162,9 +163,9 @@ class PythonProfile final : public Profile {
   double shape_held(double radius) const {
     return finite_number(call(spec_->first, kwargs(), radius), *spec_, "shape");
   }
-  const py::dict& kwargs() const { return static_cast<const py::dict&>(kwargs_.get()); }
+  const py::dict& kwargs() const { return kwargs_.get(); }
   const PartSpec* spec_;
-  HeldObject kwargs_;
+  Held<py::dict> kwargs_;
   std::optional<double> tip_radius_;  ///< [m]
 };
 
@@ -172,8 +173,10 @@ class PythonProfile final : public Profile {
 /// upper), a bound as (value, inclusive) or None.
 std::vector<ParameterSpec> parameter_specs(const py::list& specs) {
   static const std::map<std::string, ParameterKind> kinds{
-      {"number", ParameterKind::number},           {"integer", ParameterKind::integer},
-      {"number_list", ParameterKind::number_list}, {"text", ParameterKind::text},
+      {"number", ParameterKind::number},
+      {"integer", ParameterKind::integer},
+      {"number_list", ParameterKind::number_list},
+      {"text", ParameterKind::text},
       {"path", ParameterKind::path}};
   const auto bound = [](const py::handle b) -> std::optional<Bound> {
     if (b.is_none()) return std::nullopt;
@@ -185,16 +188,17 @@ std::vector<ParameterSpec> parameter_specs(const py::list& specs) {
     const auto t = item.cast<py::tuple>();
     const auto kind = kinds.find(t[1].cast<std::string>());
     if (kind == kinds.end()) {
-      throw py::value_error(fmt::format("unknown parameter kind '{}' (known: integer, number, "
-                                        "number_list, path, text)",
-                                        t[1].cast<std::string>()));
+      throw py::value_error(
+          fmt::format("unknown parameter kind '{}' (known: integer, number, "
+                      "number_list, path, text)",
+                      t[1].cast<std::string>()));
     }
     out.push_back({.key = t[0].cast<std::string>(),
                    .kind = kind->second,
                    .help = t[2].cast<std::string>(),
                    .required = t[3].cast<bool>(),
-                   .default_value = t[4].is_none() ? std::nullopt
-                                                   : std::optional<double>(t[4].cast<double>()),
+                   .default_value =
+                       t[4].is_none() ? std::nullopt : std::optional<double>(t[4].cast<double>()),
                    .lower = bound(t[5]),
                    .upper = bound(t[6])});
   }
@@ -218,8 +222,8 @@ CriterionRegistry::Entry criterion_entry(const PartSpec* spec) {
   return {.name = spec->name,
           .summary = spec->summary,
           .parameters = spec->parameters,
-          .create = [spec](const ParameterValues& v, const InterfaceProperties& p)
-              -> std::unique_ptr<DetachmentCriterion> {
+          .create = [spec](const ParameterValues& v,
+                           const InterfaceProperties& p) -> std::unique_ptr<DetachmentCriterion> {
             py::gil_scoped_acquire gil;
             return std::make_unique<PythonCriterion>(*spec, py::cast(Material(p)),
                                                      keyword_arguments(spec->parameters, v));
@@ -259,8 +263,12 @@ void register_part(const std::string& kind, const std::string& name, const std::
                                          : builtin.profiles.find(name) != nullptr;
   if (name.empty()) throw py::value_error(fmt::format("a {} needs a name", kind));
   if (taken) throw py::value_error(fmt::format("{} '{}' is built in", kind, name));
-  const auto* spec = new PartSpec{name, summary, parameter_specs(parameters), std::move(first),
-                                  std::move(second), std::move(third)};
+  const auto* spec = new PartSpec{name,
+                                  summary,
+                                  parameter_specs(parameters),
+                                  std::move(first),
+                                  std::move(second),
+                                  std::move(third)};
   (kind == "criterion" ? parts().criteria : parts().profiles)[name] = spec;
   rebuild();
 }
@@ -268,7 +276,8 @@ void register_part(const std::string& kind, const std::string& name, const std::
 template <class Registry>
 py::dict summaries_of(const Registry& registry) {
   py::dict out;
-  for (const std::string& name : registry.names()) out[py::str(name)] = registry.find(name)->summary;
+  for (const std::string& name : registry.names())
+    out[py::str(name)] = registry.find(name)->summary;
   return out;
 }
 

@@ -14,7 +14,7 @@ struct TrajectoryColumns {
   std::vector<std::string> stage_names;  ///< distinct stage names, in order of appearance
   std::vector<std::int32_t> stage;       ///< index into stage_names
   std::vector<EventKind> event;
-  std::vector<std::uint8_t> in_cascade;  ///< 1 inside a jump: NumPy reads it as bool
+  std::vector<std::uint8_t> in_cascade;         ///< 1 inside a jump: NumPy reads it as bool
   std::vector<double> normal_control;           ///< [m or N]
   std::vector<double> indentation;              ///< [m]
   std::vector<double> normal_force;             ///< [N]

@@ -1,0 +1,135 @@
+"""mdrsim.run and its Result: the same numbers as `mdrsim run`, stages, jumps, work, outputs."""
+
+import csv
+import json
+import math
+import subprocess
+
+import pytest
+
+import mdrsim
+
+FIG2 = "scenes/fig2_fixed_load.toml"
+F0 = 1.5 * math.pi * 0.01 * 0.05  # paper eq. 17: R = 1 cm, dgamma = 0.05 J/m^2
+FIELDS = ("normal_force", "tangential_force", "contact_radius", "indentation",
+          "tangential_displacement")
+
+
+def test_critical_point_in_si_and_dimensionless():
+    result = mdrsim.run(mdrsim.Scene.from_file(FIG2))
+    assert result.status == "instability"
+    c = result.critical
+    # Fixed-load JKR pull-off at -F0 (paper eq. 19); 1e4 springs: O(1/N) off, 2e-4 F0 here.
+    assert c.normal_force / F0 == pytest.approx(-1.0, abs=2e-4)
+    assert result.dimensionless == c.dimensionless
+    for name, scale in zip(FIELDS, ("force", "force", "radius", "depth", "depth")):
+        assert c.dimensionless[name] == getattr(c, name) / result.scales[scale]
+    assert result.scales["force"] == pytest.approx(F0, rel=1e-15)
+    assert result.peak.normal_force == c.normal_force  # fixed load: the peak is the jump
+    assert result.springs == 10000
+    assert result.counts["events"] > 0 and result.wall_time_s > 0
+    assert result.warnings == [] and result.tangential_strength is None
+    assert "instability" in repr(result)
+
+
+def test_same_json_as_the_command(cli):
+    result = mdrsim.run(mdrsim.Scene.from_file(FIG2).with_values({"discretization.springs": 3000}))
+    done = subprocess.run([cli, "run", FIG2, "--set", "discretization.springs=3000", "--json", "-",
+                           "--log-level", "off"], capture_output=True, text=True, check=True)
+    ours, theirs = result.to_dict(), json.loads(done.stdout)
+    ours.pop("wall_time_s"), theirs.pop("wall_time_s")
+    assert ours == theirs
+
+
+def test_program_stages_jumps_and_work():
+    result = mdrsim.run(mdrsim.Scene.from_file("scenes/programs/jkr_cycle_glue_on_touch.toml"))
+    assert [s.name for s in result.stages] == ["approach", "retract"]
+    jump = result.jumps[-1]
+    assert (jump.kind, jump.stage, jump.after.springs_in_contact) == ("out", "retract", 0)
+    assert jump.springs == -jump.critical.springs_in_contact
+    # The cycle's dissipated energy (scene comment): 2.184896 F0 d0 = 1.1642e-8 J; O(1/N).
+    assert result.work.normal == pytest.approx(1.1642e-8, rel=2e-3)
+    assert result.work.normal == pytest.approx(sum(s.work.normal for s in result.stages),
+                                               rel=1e-12)
+    assert result.critical == jump.critical
+    as_dict = result.to_dict()
+    assert as_dict["stages"][0]["end"]["normal_force"] == result.stages[0].end.normal_force
+    assert as_dict["work"]["normal"] == result.work.normal
+
+
+def test_shear_off_reports_tangential_strength_and_no_critical():
+    scene = mdrsim.Scene.from_file("scenes/fig3a_fixed_grips.toml").with_values(
+        {"loading.tangential.displacement": 2e-5, "discretization.springs": 1000})
+    result = mdrsim.run(scene)
+    assert result.status == "shear-off"
+    assert result.critical is None and result.dimensionless is None
+    assert result.tangential_strength > 0
+
+
+def test_trajectory_matches_the_csv(cli, tmp_path):
+    scene = mdrsim.Scene.from_file("scenes/fig3a_fixed_load.toml").with_values(
+        {"discretization.springs": 500})
+    t = mdrsim.run(scene).trajectory
+    path = tmp_path / "t.csv"
+    subprocess.run([cli, "run", "scenes/fig3a_fixed_load.toml", "--set",
+                    "discretization.springs=500", "--trajectory", str(path), "--log-level", "off"],
+                   check=True, capture_output=True)
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == len(t["event"])
+    assert [r["stage"] for r in rows] == t["stage"]
+    assert [r["event"] for r in rows] == t["event"]
+    assert [r["in_cascade"] == "1" for r in rows] == t["in_cascade"].tolist()
+    for name in FIELDS + ("springs_in_contact",):
+        assert [float(r[name]) for r in rows] == t[name].tolist(), name
+
+
+def test_without_trajectory():
+    result = mdrsim.run(mdrsim.Scene.from_file(FIG2), trajectory=False)
+    assert result.trajectory is None
+    pytest.importorskip("pandas")
+    with pytest.raises(ValueError, match="no trajectory"):
+        result.to_dataframe()
+
+
+def test_run_takes_a_path_or_a_dict():
+    assert mdrsim.run(FIG2, trajectory=False).critical == mdrsim.run(
+        mdrsim.Scene.from_file(FIG2), trajectory=False).critical
+
+
+def test_warnings_reach_python():
+    scene = mdrsim.Scene.from_file(FIG2).with_values({"discretization.springs": 100})
+    with pytest.warns(mdrsim.RunWarning, match="springs in contact"):
+        result = mdrsim.run(scene)
+    assert len(result.warnings) == 1
+
+
+def test_to_dataframe():
+    pandas = pytest.importorskip("pandas")
+    frame = mdrsim.run(mdrsim.Scene.from_file(FIG2).with_values(
+        {"discretization.springs": 200})).to_dataframe()
+    assert isinstance(frame, pandas.DataFrame)
+    assert list(frame.columns[:3]) == ["stage", "event", "in_cascade"]
+    assert frame["event"].iloc[0] == "preload"
+
+
+def test_plot_draws_the_path_jumps_and_critical_point(tmp_path):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    result = mdrsim.run(mdrsim.Scene.from_file("scenes/programs/jkr_cycle_reversible.toml"))
+    ax = result.plot()
+    labels = [line.get_label() for line in ax.get_lines()]
+    assert labels[0] == "path" and "jump" in labels
+    assert any(label.startswith("critical: F = -0.55") for label in labels)
+    ax.figure.savefig(tmp_path / "plot.png")
+    assert (tmp_path / "plot.png").stat().st_size > 1000
+    plt.close(ax.figure)
+
+
+def test_set_log_level():
+    mdrsim.set_log_level("warn")
+    mdrsim.set_log_level("off")
+    with pytest.raises(ValueError, match="unknown log level 'loud'"):
+        mdrsim.set_log_level("loud")
