@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it (.ci/run), in four stages:
 #   1. check the layout's include rule (scripts/check_includes.sh), build (Release, warnings as
-#      errors, the Python module included: -DMDRSIM_PYTHON=ON) and run every test with ctest,
-#      then the Python module's tests with pytest (python/tests) on that build;
+#      errors) and run every test with ctest;
 #   2. install the Python module the way the README says, offline into a fresh venv
-#      (pip install --no-build-isolation --no-deps --no-index .), and run the README's check;
+#      (pip install --no-build-isolation --no-deps --no-index .), run the README's check, and
+#      the module's tests with pytest (python/tests) on the installed module. (The module's
+#      build is its own, in build-python-package: it needs position-independent code, which
+#      costs the command 10-20 % per event, so the C++ build of stage 1 stays without it.)
 #   3. build again with clang, AddressSanitizer + UndefinedBehaviorSanitizer (leak checks on)
 #      and run the same C++ tests there, except the 10^7-spring case (EdgeCasesLarge: minutes
 #      under ASan) and the plain-route rtol 1e-6 runs of the random set (rows of up to 2^25
 #      springs: a minute in Release);
 #   4. fuzz the scene reader and the engine for FUZZ_SECONDS (default 60, scripts/fuzz.sh) with
 #      the libFuzzer target of that same build.
-# `bash scripts/test.sh --quick` runs stage 1 only. Installs what is missing first.
+# `bash scripts/test.sh --quick` runs stage 1 only (no Python). Installs what is missing first.
 # Exit code: 0 when every stage passes. Works from any directory.
 # BUILD_DIR and FUZZ_BUILD_DIR move the two build directories (default: build, build-fuzz);
 # stage 2 builds in build-python-package (setup.py; MDRSIM_PYTHON_BUILD_DIR moves it).
@@ -51,24 +53,24 @@ if [ "$quick" -eq 1 ]; then bash scripts/setup.sh; else bash scripts/setup.sh fu
 
 stage "1/4 build and test ($build_dir)"
 bash scripts/check_includes.sh
-# The Python module is built with the rest (a cached option build.sh keeps); pytest runs it
-# from the build tree and compares with the mdrsim command built beside it.
-cmake -S . -B "$build_dir" -DMDRSIM_PYTHON=ON >/dev/null
+# Without the Python module (an earlier configuration may have cached it on): see stage 2.
+cmake -S . -B "$build_dir" -DMDRSIM_PYTHON=OFF >/dev/null
 BUILD_DIR="$build_dir" bash scripts/build.sh
 ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" | tee "$logs/ctest1.log"
-PYTHONPATH="$build_dir/python" MDRSIM_CLI="$build_dir/apps/mdrsim" \
-  /usr/bin/python3 -m pytest -q -p no:cacheprovider python/tests | tee "$logs/pytest.log"
 if [ "$quick" -eq 1 ]; then
   echo "tests: $(totals)"
   exit 0
 fi
 
-stage "2/4 install the Python module offline into a fresh venv (README \"Python\")"
+stage "2/4 install the Python module offline into a fresh venv (README \"Python\"), pytest"
 venv="$logs/venv"
 /usr/bin/python3 -m venv --system-site-packages "$venv"
 "$venv/bin/pip" install -q --no-build-isolation --no-deps --no-index .
 "$venv/bin/python" -c "import mdrsim; print(mdrsim.__file__)" | grep -q "^$venv/lib/"
 "$venv/bin/python" -c "import mdrsim; print(mdrsim.run(mdrsim.Scene.from_file('scenes/fig2_fixed_load.toml')).critical)"
+# The tests on the installed module, compared with the mdrsim command of stage 1.
+MDRSIM_CLI="$build_dir/apps/mdrsim" \
+  "$venv/bin/python" -m pytest -q -p no:cacheprovider python/tests | tee "$logs/pytest.log"
 
 stage "3/4 build and test under AddressSanitizer and UndefinedBehaviorSanitizer ($sanitize_dir)"
 # The configuration of scripts/fuzz.sh, so that stage 4 reuses this build: the coverage
