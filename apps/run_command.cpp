@@ -26,6 +26,8 @@ namespace {
 
 /// Why a run has no critical point, in the words of its status.
 const char* missing_critical(const RunResult& r) {
+  // A program that never touched (e.g. a tensile fixed load from the start).
+  if (r.work && r.counts.events == 0) return "none: no spring was ever in contact";
   switch (r.status) {
     case RunStatus::no_instability:
       return "none: the contact peeled off smoothly, nothing jumped";

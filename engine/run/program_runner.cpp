@@ -719,9 +719,9 @@ void ProgramRunner::finish(RunResult& r) {
       if (!last_contact_loss_) {
         r.status = RunStatus::no_instability;
         r.warnings.push_back(fmt::format(
-            "stage '{}': fixed-load holds F = {:.6g} N with no spring in contact: the program "
-            "ends here",
-            stage_->name, row_.normal().held));
+            "stage '{}': a fixed load pulls (F = {:.6g} N, moving towards {:.6g} N) with no "
+            "spring in contact, so nothing holds it: the program ends here",
+            stage_->name, row_.normal().held, normal_start_ + normal_rate_));
         return;
       }
       loss_status(*last_contact_loss_);

@@ -164,6 +164,20 @@ TEST(ProgramRunner, SteppingStopsAtMaxStepsWithAWarning) {
   EXPECT_NE(r.warnings[0].find("solver.max_steps = 100"), std::string::npos) << r.warnings[0];
 }
 
+// The impossible at run time (issue 9, acceptance 4): a fixed load that pulls before anything
+// is in contact ends the program at once with a status and a warning, never a hang.
+TEST(ProgramRunner, AFixedLoadPullingOnNothingEndsTheProgramWithAWarning) {
+  Scene scene = cycle_scene(kWork, 2e-5, 100);
+  scene.program->stages = {
+      {.name = "pull", .normal = axis("fixed-load", StageAxis::Motion::to, -1e-3)}};
+  const RunResult r = run_scene(scene, {});
+  EXPECT_EQ(r.status, RunStatus::no_instability);
+  EXPECT_FALSE(r.critical);
+  EXPECT_EQ(r.counts.events, 0);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("nothing holds it"), std::string::npos) << r.warnings[0];
+}
+
 // A jump changes the row: a change located at t that rounding leaves just short of its
 // condition must not flip back at the same t (reload_rebinding_false once reported 363 empty
 // "jumps" of a touch and a lift at one t).
