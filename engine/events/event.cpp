@@ -49,4 +49,16 @@ const char* to_string(EventKind kind) {
   return "?";
 }
 
+std::string_view stage_name(const Event& event) {
+  if (!event.stage.empty()) return event.stage;
+  switch (event.kind) {
+    case EventKind::preload_reached:
+      return "preload";
+    case EventKind::tangential_applied:
+      return "tangential";
+    default:
+      return "pull-off";
+  }
+}
+
 }  // namespace mdrsim

@@ -48,6 +48,9 @@ struct Event {
 };
 
 const char* to_string(RunStatus status);
+/// The stage an event belongs to: a program's events name theirs; the shorthand's are named
+/// by kind (SPEC): preload, tangential, pull-off.
+std::string_view stage_name(const Event& event);
 const char* to_string(EventKind kind);
 
 }  // namespace mdrsim

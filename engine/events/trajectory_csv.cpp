@@ -4,22 +4,6 @@
 #include <fmt/ostream.h>
 
 namespace mdrsim {
-namespace {
-
-/// A program's events name their stage; the shorthand's are named by kind (SPEC).
-std::string_view stage_of(const Event& e) {
-  if (!e.stage.empty()) return e.stage;
-  switch (e.kind) {
-    case EventKind::preload_reached:
-      return "preload";
-    case EventKind::tangential_applied:
-      return "tangential";
-    default:
-      return "pull-off";
-  }
-}
-
-}  // namespace
 
 TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out) : out_(&out) {
   *out_ << "stage,event,in_cascade,indentation,normal_force,contact_radius,tangential_displacement,"
@@ -29,7 +13,7 @@ TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out) : out_(&out) {
 void TrajectoryCsvWriter::on_event(const Event& e) {
   if (e.kind == EventKind::finished) return;
   const ContactSnapshot& s = e.state;
-  fmt::print(*out_, "{},{},{},{},{},{},{},{},{}\n", stage_of(e), to_string(e.kind),
+  fmt::print(*out_, "{},{},{},{},{},{},{},{},{}\n", stage_name(e), to_string(e.kind),
              e.in_cascade ? 1 : 0, s.indentation, s.normal_force, s.contact_radius,
              s.tangential_displacement, s.tangential_force, s.springs_in_contact);
 }

@@ -38,12 +38,7 @@ double Contact::normal_control_at(double indentation) const {
   return held_value_at(normal_, normal_response(), indentation);
 }
 
-double Contact::normal_force_of(const State& state) const {
-  const double per_spring = 2.0 * material_.effective_modulus * foundation_->spacing();
-  const LinearResponse r{per_spring * static_cast<double>(state.springs_in_contact),
-                         per_spring * state.image_sum.value()};
-  return r.stiffness * displacement_under(normal_, r, state.normal_control) - r.offset;
-}
+double Contact::normal_force_of(const State& state) const { return normal_state_of(state).second; }
 
 std::pair<double, double> Contact::normal_state_of(const State& state) const {
   const double per_spring = 2.0 * material_.effective_modulus * foundation_->spacing();

@@ -45,7 +45,6 @@ class ProgramRow {
 
   std::int64_t glued() const { return glued_; }            ///< k
   std::int64_t in_contact() const { return in_contact_; }  ///< m
-  std::int64_t ever_glued() const { return ever_glued_; }  ///< outermost spring ever glued
   bool can_glue(std::int64_t i) const { return rebinding_ || i > ever_glued_; }
   double boundary_offset() const { return runs_.back().offset; }  ///< s of spring k [m]
   bool adhesive() const { return material_.work_of_adhesion > 0.0; }

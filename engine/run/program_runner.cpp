@@ -95,7 +95,7 @@ class ProgramRunner {
   void add_work(const AxisPoint* normal_from, const AxisPoint* tangential_from);
   std::optional<Change> due();
   std::optional<std::pair<double, Change>> next_change(double t_end);
-  LetGo boundary_let_go(double d, double u);
+  LetGo boundary_let_go(double u);
   void apply(Change change, Cascade& cascade);
   /// The state a cascade starts from, observed as an equilibrium.
   Cascade begin_cascade();
@@ -267,7 +267,7 @@ void ProgramRunner::emit(EventKind kind, const ContactSnapshot& state, std::int6
   }
 }
 
-LetGo ProgramRunner::boundary_let_go(double /*d*/, double u) {
+LetGo ProgramRunner::boundary_let_go(double u) {
   const double a = row_.position(row_.glued());
   const double stretch_x = u - row_.boundary_offset();
   // The same spring at the same tangential stretch lets go at the same elongation: a step
@@ -305,7 +305,7 @@ std::optional<Change> ProgramRunner::due() {
   }
   const double d = row_.indentation();
   if (k > 0 && k < guards_.glued_from) {
-    const LetGo go = boundary_let_go(d, row_.tangential_displacement());
+    const LetGo go = boundary_let_go(row_.tangential_displacement());
     if (go.kind == LetGo::Kind::now || row_.image(k) - d >= go.elongation) return Change::let_go;
   }
   const bool front_glues = row_.adhesive() && row_.can_glue(k + 1);
@@ -374,7 +374,7 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
       // u_x stays: the spring lets go only as d falls to g - e*(u_x). (Broken at rest, it
       // would be due already.)
       if (vd < 0.0) {
-        const LetGo go = boundary_let_go(d, u);
+        const LetGo go = boundary_let_go(u);
         if (go.kind == LetGo::Kind::now) {
           consider(soonest, Change::let_go);
         } else {

@@ -4,28 +4,11 @@
 #include <string_view>
 
 namespace mdrsim::python {
-namespace {
-
-/// A program's events name their stage; the shorthand's are named by kind (SPEC), as in the
-/// CSV writer.
-std::string_view stage_of(const Event& e) {
-  if (!e.stage.empty()) return e.stage;
-  switch (e.kind) {
-    case EventKind::preload_reached:
-      return "preload";
-    case EventKind::tangential_applied:
-      return "tangential";
-    default:
-      return "pull-off";
-  }
-}
-
-}  // namespace
 
 void TrajectoryRecorder::on_event(const Event& e) {
   if (e.kind == EventKind::finished) return;
   TrajectoryColumns& c = columns_;
-  const std::string_view stage = stage_of(e);
+  const std::string_view stage = stage_name(e);
   if (c.stage_names.empty() || c.stage_names.back() != stage) {
     std::size_t index = 0;
     while (index < c.stage_names.size() && c.stage_names[index] != stage) ++index;
