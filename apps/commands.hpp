@@ -15,14 +15,22 @@ struct RunOptions {
 
 struct SweepOptions {
   std::string scene;
-  std::string vary;  ///< KEY=FROM:TO:COUNT
+  std::vector<std::string> vary;  ///< KEY=VALUES, one per varied key (SPEC: the sweep)
   std::vector<std::string> sets;
   std::string csv = "-";
   int threads = 1;
+  std::string shard;    ///< I/N, or empty for all rows
+  bool resume = false;  ///< finish the CSV at `csv` rather than start it again
+};
+
+struct MergeOptions {
+  std::string out;                  ///< path or "-"
+  std::vector<std::string> shards;  ///< the shard CSVs, in any order
 };
 
 /// Each returns the process exit code; bad input throws SceneError or UsageError.
 int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
+int merge_command(const MergeOptions& options);
 
 }  // namespace mdrsim::cli

@@ -1,4 +1,5 @@
-// mdrsim: the command line. Parse, call the engine, print; exit 0 done, 1 internal, 2 bad input.
+// mdrsim: the command line. Parse, call the engine, print; exit 0 done, 1 internal, 2 bad input
+// (130/143: a sweep stopped by SIGINT/SIGTERM).
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -78,16 +79,34 @@ int main(int argc, char** argv) {
 
   mdrsim::cli::SweepOptions sweep;
   sweep.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  CLI::App* sweep_app = app.add_subcommand("sweep", "one run per value of a scene key, as CSV");
+  CLI::App* sweep_app =
+      app.add_subcommand("sweep", "one run per row of a grid of scene values, as CSV");
   sweep_app->add_option("scene", sweep.scene, "scene file (TOML)")->required();
-  sweep_app->add_option("--vary", sweep.vary, "KEY=FROM:TO:COUNT, evenly spaced values")
-      ->required();
+  sweep_app
+      ->add_option("--vary", sweep.vary,
+                   "KEY=FROM:TO:COUNT (evenly spaced), KEY=FROM:TO:COUNT:log or KEY=V1,V2,...; "
+                   "repeat it for the product of the keys")
+      ->required()
+      ->allow_extra_args(false);
   sweep_app->add_option("--set", sweep.sets, "override one scene value: KEY=VALUE (repeatable)")
       ->allow_extra_args(false);
   sweep_app->add_option("--csv", sweep.csv, "write the CSV to PATH, or - (default)");
   sweep_app->add_option("--threads", sweep.threads, "runs in parallel (default: all cores)")
       ->check(CLI::Range(1, 1024));
+  sweep_app->add_option("--shard", sweep.shard, "I/N: run rows I, I+N, I+2N, ... of the sweep");
+  sweep_app->add_flag("--resume", sweep.resume,
+                      "finish the CSV at --csv PATH: keep its rows, run the missing ones");
   sweep_app->add_option("--log-level", level, "log level on standard error")
+      ->check(CLI::IsMember(levels));
+
+  mdrsim::cli::MergeOptions merge;
+  CLI::App* merge_app =
+      app.add_subcommand("merge", "join the shards of one sweep into the unsharded CSV");
+  merge_app->add_option("out", merge.out, "the merged CSV: PATH, or - for standard output")
+      ->required();
+  merge_app->add_option("shards", merge.shards, "the shard CSVs (every shard, in any order)")
+      ->required();
+  merge_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 
   try {
@@ -96,7 +115,7 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);
     if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
       std::cerr << "mdrsim: unknown command '" << mdrsim::printable(argv[1])
-                << "' (known: run, sweep)\n";
+                << "' (known: run, sweep, merge)\n";
       return 2;
     }
     std::cerr << usage_message(e.what()) << '\n';
@@ -114,6 +133,7 @@ int main(int argc, char** argv) {
     }
     set_up_logging(level);
     if (run_app->parsed()) return mdrsim::cli::run_command(run);
+    if (merge_app->parsed()) return mdrsim::cli::merge_command(merge);
     return mdrsim::cli::sweep_command(sweep);
   } catch (const mdrsim::SceneError& e) {
     std::cerr << one_line(e.what()) << '\n';

@@ -1,15 +1,31 @@
-// mdrsim sweep: one run per value of a key, in parallel, one CSV row each in input order.
+// mdrsim sweep: one run per row of the grid of --vary values, in parallel; each row goes to
+// the CSV as soon as it and every row before it are done, so that a killed sweep keeps them.
+#include <fcntl.h>
+#include <poll.h>
+#include <pthread.h>
+#include <sys/signalfd.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <fmt/format.h>
-#include <fmt/ostream.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <condition_variable>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <map>
 #include <mutex>
-#include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -17,107 +33,368 @@
 #include "apps/finite_result.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
+#include "apps/sweep_csv.hpp"
+#include "apps/sweep_grid.hpp"
+#include "apps/usage_error.hpp"
 #include "apps/vary_spec.hpp"
 #include "engine/events/result_json.hpp"
-#include "engine/model/snapshot_fields.hpp"
 #include "engine/run/run_scene.hpp"
+#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim::cli {
 namespace {
 
-/// A number, or an empty field where the run has none.
-std::string field(const std::optional<double>& value) {
-  return value ? fmt::format("{}", *value) : std::string();
+std::string system_reason(int error) {
+  std::string text = std::strerror(error);
+  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+  return text;
 }
 
-/// The status leads each row, and a run without a critical point leaves the critical columns
-/// empty, so that no plot mistakes it for one.
-void write_csv(std::ostream& out, const VarySpec& vary, const std::vector<Scene>& scenes,
-               const std::vector<RunResult>& results) {
-  const bool dimensionless = std::any_of(scenes.begin(), scenes.end(), [](const Scene& s) {
-    return dimensionless_scales(s).has_value();
-  });
-  out << "status," << vary.key;
-  for (const SnapshotField& f : kSnapshotFields) out << ',' << f.name;
-  out << ",springs_in_contact";
-  if (dimensionless) {
-    for (const SnapshotField& f : kSnapshotFields) out << ",dimensionless_" << f.name;
-  }
-  out << ",peak_normal_force";
-  if (dimensionless) out << ",dimensionless_peak_normal_force";
-  out << ",tangential_strength,critical_error_estimate\n";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const RunResult& r = results[i];
-    const auto s = dimensionless_scales(scenes[i]);
-    fmt::print(out, "{},{}", to_string(r.status), vary.values[i]);
-    // One field per column, empty where the run has no critical point.
-    for (const SnapshotField& f : kSnapshotFields) {
-      out << ',' << (r.critical ? fmt::format("{}", *r.critical.*f.member) : std::string());
+/// SIGINT and SIGTERM, read by a thread of its own from a signalfd: `on_signal` runs there
+/// (and ends the process). Blocked from construction to destruction in this thread and in
+/// every thread started meanwhile, so that no other thread takes them (in the mdrsim
+/// process the sweep's threads are the only ones).
+class SignalWatch {
+ public:
+  explicit SignalWatch(std::function<void(int)> on_signal) {
+    sigemptyset(&signals_);
+    sigaddset(&signals_, SIGINT);
+    sigaddset(&signals_, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &signals_, &previous_);
+    signal_fd_ = signalfd(-1, &signals_, SFD_CLOEXEC);
+    if (signal_fd_ < 0 || pipe2(wake_, O_CLOEXEC) != 0) {
+      pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+      throw std::runtime_error("sweep: cannot watch for signals: " + system_reason(errno));
     }
-    out << ',' << (r.critical ? fmt::format("{}", r.critical->springs_in_contact) : std::string());
-    if (dimensionless) {
-      for (const SnapshotField& f : kSnapshotFields) {
-        out << ','
-            << (s && r.critical ? fmt::format("{}", *r.critical.*f.member / scale_of(*s, f.scale))
-                                : std::string());
+    watcher_ = std::thread([this, on_signal = std::move(on_signal)] {
+      pollfd fds[2] = {{signal_fd_, POLLIN, 0}, {wake_[0], POLLIN, 0}};
+      while (true) {
+        if (poll(fds, 2, -1) < 0 && errno != EINTR) return;
+        // A signal that came before the end is still obeyed (the exit code says it came).
+        signalfd_siginfo info{};
+        if ((fds[0].revents & POLLIN) != 0 && read(signal_fd_, &info, sizeof info) == sizeof info) {
+          on_signal(static_cast<int>(info.ssi_signo));
+        }
+        if (fds[1].revents != 0) return;
+      }
+    });
+  }
+  SignalWatch(const SignalWatch&) = delete;
+  SignalWatch& operator=(const SignalWatch&) = delete;
+  ~SignalWatch() {
+    const char byte = 0;
+    while (write(wake_[1], &byte, 1) < 0 && errno == EINTR) {
+    }
+    watcher_.join();
+    close(signal_fd_);
+    close(wake_[0]);
+    close(wake_[1]);
+    pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+  }
+
+ private:
+  sigset_t signals_{};
+  sigset_t previous_{};
+  int signal_fd_ = -1;
+  int wake_[2] = {-1, -1};
+  std::thread watcher_;
+};
+
+/// The --csv target: a file written in place (not renamed on completion) or standard output,
+/// one write() per line, so that whatever kills the sweep leaves whole lines behind.
+class CsvSink {
+ public:
+  explicit CsvSink(std::string path) : path_(std::move(path)) {}
+  CsvSink(const CsvSink&) = delete;
+  CsvSink& operator=(const CsvSink&) = delete;
+  ~CsvSink() {
+    if (fd_ > 1) close(fd_);
+  }
+
+  /// Creates (or empties) the file and writes `head`.
+  void open_fresh(const std::string& head) {
+    if (path_ == "-") {
+      fd_ = STDOUT_FILENO;
+    } else {
+      struct stat st {};
+      if (stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) cannot_write("it is a directory");
+      fd_ = open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+      if (fd_ < 0) cannot_write(system_reason(errno));
+    }
+    write_all(head);
+  }
+  /// Opens the file to append after its first `keep` bytes (a torn last line is cut off).
+  void open_resumed(std::uint64_t keep) {
+    fd_ = open(path_.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd_ < 0) cannot_write(system_reason(errno));
+    if (ftruncate(fd_, static_cast<off_t>(keep)) != 0 || lseek(fd_, 0, SEEK_END) < 0) {
+      cannot_write(system_reason(errno));
+    }
+  }
+
+  void write_all(std::string_view text) {
+    while (!text.empty()) {
+      const ssize_t n = write(fd_, text.data(), text.size());
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        throw std::runtime_error(
+            path_ == "-"
+                ? fmt::format("--csv: writing standard output failed ({})", system_reason(errno))
+                : fmt::format("--csv: writing '{}' failed ({})", printable(path_),
+                              system_reason(errno)));
+      }
+      text.remove_prefix(static_cast<std::size_t>(n));
+    }
+  }
+
+ private:
+  [[noreturn]] void cannot_write(const std::string& why) const {
+    throw UsageError(fmt::format("--csv: cannot write '{}' ({})", printable(path_), why));
+  }
+
+  std::string path_;
+  int fd_ = -1;
+};
+
+/// A name's value goes in through set_value, whose messages say --set: they say --vary here.
+std::string as_vary_message(const std::string& message, const SweepGrid& grid,
+                            const std::vector<std::size_t>& values) {
+  constexpr std::string_view set = "--set: ";
+  if (message.rfind(set, 0) != 0) return message;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const VarySpec& spec = grid.keys()[k];
+    if (spec.values[values[k]].number) continue;
+    const std::string& key = spec.key;
+    const std::size_t after = set.size() + key.size();
+    if (message.compare(set.size(), key.size(), key) == 0 && after < message.size() &&
+        (message[after] == ':' || message[after] == ' ')) {
+      return "--vary: " + message.substr(set.size());
+    }
+  }
+  return message;
+}
+
+/// Sets every varied key to its value at `values` and builds the scene.
+Scene build_row(SceneDocument& document, const SweepGrid& grid,
+                const std::vector<std::size_t>& values, const Registries& registries) {
+  try {
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const VarySpec& spec = grid.keys()[k];
+      const VaryValue& value = spec.values[values[k]];
+      if (value.number) {
+        document.set_number(spec.key, *value.number, "--vary");
+      } else {
+        document.set_value(spec.key, value.text);
       }
     }
-    out << ',' << (r.peak ? fmt::format("{}", r.peak->normal_force) : std::string());
-    if (dimensionless) {
-      out << ','
-          << (s && r.peak ? fmt::format("{}", r.peak->normal_force / s->force) : std::string());
-    }
-    out << ',' << field(r.tangential_strength) << ',' << field(r.accuracy.critical_error_estimate)
-        << '\n';
+    return document.build(registries);
+  } catch (const SceneError& e) {
+    throw SceneError(as_vary_message(e.what(), grid, values));
   }
+}
+
+/// Builds every probe of every key (VarySpec::probes) with the other keys at their first
+/// value, so that a bad value fails before the CSV exists; returns whether any of these
+/// scenes has JKR scales (the CSV's dimensionless columns).
+bool check_values(const SceneDocument& base, const SweepGrid& grid, const Registries& registries) {
+  SceneDocument document = base;
+  bool dimensionless = false;
+  for (std::size_t k = 0; k < grid.keys().size(); ++k) {
+    for (const std::size_t probe : grid.keys()[k].probes()) {
+      if (k > 0 && probe == 0) continue;  // the first row, built already
+      std::vector<std::size_t> values(grid.keys().size(), 0);
+      values[k] = probe;
+      const Scene scene = build_row(document, grid, values, registries);
+      dimensionless = dimensionless || dimensionless_scales(scene).has_value();
+    }
+  }
+  return dimensionless;
+}
+
+/// Where a --resume sweep starts: the shard's rows already in the CSV. Refuses a CSV of
+/// another scene, grid or shard. `keep` is set to the bytes to keep (a torn line is cut).
+std::uint64_t resume_from(const std::string& path, const SweepIdentity& identity,
+                          const std::string& header, std::uint64_t shard_rows, std::uint64_t& keep,
+                          bool& fresh) {
+  fresh = false;
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) {
+    if (errno != ENOENT) {
+      throw UsageError(
+          fmt::format("--resume: cannot read '{}' ({})", printable(path), system_reason(errno)));
+    }
+    fresh = true;  // nothing to resume: a job array may pass --resume on every try
+    return 0;
+  }
+  if (!S_ISREG(st.st_mode)) {
+    throw UsageError(fmt::format("--resume: '{}' is not a regular file", printable(path)));
+  }
+  const SweepFile file = read_sweep_file(path, "--resume");
+  const std::string head = identity_line(identity) + header;
+  const std::string name = printable(path);
+  if (file.header.empty()) {
+    // Killed before its first two lines were whole: start again if they were ours.
+    if (head.compare(0, file.head.size(), file.head) == 0) {
+      fresh = true;
+      return 0;
+    }
+  }
+  const auto found = parse_identity_line(file.first_line);
+  if (!found) {
+    throw UsageError(fmt::format(
+        "--resume: '{}' is not a sweep CSV (its first line is not '# mdrsim sweep: ...')", name));
+  }
+  if (found->scene != identity.scene) {
+    throw UsageError(fmt::format(
+        "--resume: '{}' is a sweep of another scene (scene {:016x}; this one is {:016x})", name,
+        found->scene, identity.scene));
+  }
+  if (found->grid != identity.grid || found->rows != identity.rows) {
+    throw UsageError(fmt::format(
+        "--resume: '{}' is a sweep of another grid (grid {:016x} of {} rows; this one is {:016x} "
+        "of {} rows)",
+        name, found->grid, found->rows, identity.grid, identity.rows));
+  }
+  if (found->shard != identity.shard) {
+    throw UsageError(fmt::format("--resume: '{}' is shard {}/{}; this sweep is shard {}/{}", name,
+                                 found->shard.index, found->shard.count, identity.shard.index,
+                                 identity.shard.count));
+  }
+  if (file.header != header) {
+    throw UsageError(fmt::format(
+        "--resume: '{}' has other columns than this sweep (written by another mdrsim?)", name));
+  }
+  if (file.rows > shard_rows) {
+    throw UsageError(fmt::format("--resume: '{}' has {} rows, more than the {} of this sweep", name,
+                                 file.rows, shard_rows));
+  }
+  keep = file.complete_bytes;
+  return file.rows;
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 }  // namespace
 
 int sweep_command(const SweepOptions& options) {
-  const VarySpec vary = parse_vary(options.vary);
+  // From here on SIGINT/SIGTERM end the sweep with whole rows only (on_signal below).
+  std::mutex mutex;  // guards everything the workers share, and the CSV
+  std::uint64_t written = 0;
+  std::uint64_t shard_rows = 0;
+  std::string csv_name;
+  const SignalWatch signals([&](int signal) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (!csv_name.empty()) {
+      spdlog::warn("sweep: stopped by {} with {} of {} rows in {}; --resume finishes it",
+                   signal == SIGINT ? "SIGINT" : "SIGTERM", written, shard_rows, csv_name);
+    }
+    std::_Exit(128 + signal);
+  });
+
+  std::vector<VarySpec> specs;
+  for (const std::string& text : options.vary) specs.push_back(parse_vary(text));
+  const SweepGrid grid(std::move(specs));
+  const Shard shard = options.shard.empty() ? Shard{} : parse_shard(options.shard);
   require_distinct_outputs({{"--csv", options.csv}}, options.scene);
+  if (options.resume && options.csv == "-") {
+    throw UsageError("--resume: needs --csv PATH (a sweep on standard output cannot resume)");
+  }
   const SceneDocument base = load_scene_document(options.scene, options.sets);
   const Registries registries = Registries::builtin();
+  const bool dimensionless = check_values(base, grid, registries);
 
-  // Every scene is built (and so checked) before any run: bad values fail with no output.
-  std::vector<Scene> scenes;
-  scenes.reserve(vary.values.size());
-  for (const double value : vary.values) {
-    SceneDocument document = base;
-    document.set_number(vary.key, value, "--vary");
-    scenes.push_back(document.build(registries));
+  const SweepIdentity identity{scene_hash(read_bytes(options.scene), options.sets), grid.hash(),
+                               grid.rows(), shard};
+  const std::string header = csv_header(grid, dimensionless);
+  shard_rows = shard.rows_of(grid.rows());
+  CsvSink csv(options.csv);
+  std::uint64_t done = 0;
+  std::uint64_t keep = 0;
+  bool fresh = true;
+  if (options.resume) done = resume_from(options.csv, identity, header, shard_rows, keep, fresh);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (fresh) {
+      csv.open_fresh(identity_line(identity) + header);
+    } else {
+      csv.open_resumed(keep);
+    }
+    written = done;
+    csv_name = options.csv == "-" ? std::string("standard output")
+                                  : fmt::format("'{}'", printable(options.csv));
   }
-  OutputFile csv("--csv", options.csv);
 
   const auto started = std::chrono::steady_clock::now();
-  std::vector<RunResult> results(scenes.size());
-  std::atomic<std::size_t> next{0};
+  const int threads = static_cast<int>(
+      std::max<std::uint64_t>(1, std::min<std::uint64_t>(options.threads, shard_rows - done)));
+  // Rows wait here for the rows before them; workers keep at most `window` rows ahead.
+  std::map<std::uint64_t, std::string> finished;
+  const std::uint64_t window = 1024 + 64 * static_cast<std::uint64_t>(threads);
+  std::uint64_t next = done;
+  bool stop = false;
+  std::uint64_t failed_at = shard_rows;
   std::exception_ptr failure;
-  std::mutex failure_mutex;
+  std::condition_variable room;
   const ObserverList no_observers;
   const auto worker = [&] {
-    for (std::size_t i = next++; i < scenes.size(); i = next++) {
-      try {
-        results[i] = run_scene(scenes[i], no_observers);
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
+    std::optional<SceneDocument> document;
+    while (true) {
+      std::uint64_t position = 0;
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        room.wait(lock, [&] { return stop || next >= shard_rows || next < written + window; });
+        if (stop || next >= shard_rows) return;
+        position = next++;
       }
+      std::string line;
+      std::exception_ptr error;
+      try {
+        if (!document) document.emplace(base);  // a copy re-parses: once per worker
+        const std::vector<std::size_t> values = grid.indices(shard.row(position));
+        const Scene scene = build_row(*document, grid, values, registries);
+        const RunResult result = run_scene(scene, no_observers);
+        require_finite(scene, result);
+        line = csv_row(grid, values, scene, result, dimensionless);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (error) {
+        // The first failing row in row order is the one reported, whatever the threads did.
+        if (position < failed_at) {
+          failed_at = position;
+          failure = error;
+        }
+        stop = true;
+        room.notify_all();
+        continue;
+      }
+      finished.emplace(position, std::move(line));
+      try {
+        for (auto it = finished.begin(); it != finished.end() && it->first == written;
+             it = finished.erase(it)) {
+          csv.write_all(it->second);
+          ++written;
+        }
+      } catch (...) {
+        if (!failure) failure = std::current_exception();
+        failed_at = 0;
+        stop = true;
+      }
+      room.notify_all();
     }
   };
-  const int threads = std::max(1, std::min<int>(options.threads, static_cast<int>(scenes.size())));
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
-  for (std::size_t i = 0; i < scenes.size(); ++i) require_finite(scenes[i], results[i]);
-
-  write_csv(csv.stream(), vary, scenes, results);
-  csv.commit();
-  spdlog::info("sweep: {} runs of {} on {} threads in {:.3g} s", scenes.size(), vary.key, threads,
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+  spdlog::info("sweep: {} rows on {} threads in {:.3g} s{}", shard_rows - done, threads,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+               done > 0 ? fmt::format(" ({} were in the CSV already)", done) : std::string());
   return 0;
 }
 

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +16,7 @@ namespace mdrsim::cli {
 namespace {
 
 constexpr std::int64_t kMaxCount = 1'000'000;
+constexpr const char* kForms = "KEY=FROM:TO:COUNT, KEY=FROM:TO:COUNT:log or KEY=V1,V2,...";
 
 std::string_view trim(std::string_view text) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
@@ -22,53 +24,150 @@ std::string_view trim(std::string_view text) {
   return text;
 }
 
-/// The whole of `text` as a T; from_chars takes no leading '+', a user may write one.
-template <class T>
-bool parse_whole(std::string_view text, T& out) {
+/// `text` without a '+' that from_chars does not take (a user may write one).
+std::string_view without_plus(std::string_view text) {
   text = trim(text);
   if (text.size() > 1 && text.front() == '+' && text[1] != '-') text.remove_prefix(1);
+  return text;
+}
+
+/// The whole of `text` as a T.
+template <class T>
+bool parse_whole(std::string_view text, T& out) {
+  text = without_plus(text);
   if (text.empty()) return false;
   const char* end = text.data() + text.size();
   const auto r = std::from_chars(text.data(), end, out);
   return r.ec == std::errc() && r.ptr == end;
 }
 
+/// Whether the whole of `text` is written as a number, in range or not (1e999, nan, inf).
+bool looks_like_a_number(std::string_view text) {
+  text = without_plus(text);
+  double ignored = 0.0;
+  const char* end = text.data() + text.size();
+  return !text.empty() && std::from_chars(text.data(), end, ignored).ptr == end;
+}
+
+std::vector<std::string_view> split(std::string_view text, char separator) {
+  std::vector<std::string_view> parts;
+  while (true) {
+    const auto at = text.find(separator);
+    parts.push_back(text.substr(0, at));
+    if (at == text.npos) return parts;
+    text.remove_prefix(at + 1);
+  }
+}
+
+VaryValue number_value(double value) { return {value, number_field(value)}; }
+
 }  // namespace
+
+std::string number_field(double value) { return fmt::format("{}", value); }
+
+std::vector<std::size_t> VarySpec::probes() const {
+  std::vector<std::size_t> out;
+  if (form == Form::list || values.size() <= kAllProbed) {
+    for (std::size_t i = 0; i < values.size(); ++i) out.push_back(i);
+  } else {
+    out = {0, 1, values.size() - 1};
+  }
+  return out;
+}
 
 VarySpec parse_vary(const std::string& text) {
   const auto eq = text.find('=');
   const std::string_view key = trim(std::string_view(text).substr(0, eq));
-  const std::string_view range =
+  const std::string_view given =
       eq == std::string::npos ? std::string_view() : std::string_view(text).substr(eq + 1);
-  const auto c1 = range.find(':');
-  const auto c2 = c1 == range.npos ? range.npos : range.find(':', c1 + 1);
-  if (eq == std::string::npos || key.empty() || c2 == range.npos ||
-      range.find(':', c2 + 1) != range.npos) {
-    throw UsageError(fmt::format("--vary: '{}' is not KEY=FROM:TO:COUNT", printable(text)));
+  if (eq == std::string::npos || key.empty() || trim(given).empty()) {
+    throw UsageError(fmt::format("--vary: '{}' is not {}", printable(text), kForms));
   }
-  const auto fail = [&](const char* part, std::string_view given, const char* expected) {
-    throw UsageError(fmt::format("--vary: {}: {} '{}' is not {}", printable(key), part,
-                                 printable(trim(given)), expected));
+  const auto fail = [&](const std::string& why) {
+    throw UsageError(fmt::format("--vary: {}: {}", printable(key), why));
   };
-  const std::string_view from_text = range.substr(0, c1);
-  const std::string_view to_text = range.substr(c1 + 1, c2 - c1 - 1);
-  const std::string_view count_text = range.substr(c2 + 1);
+  VarySpec spec{std::string(key), VarySpec::Form::list, {}};
+
+  if (given.find(':') == given.npos) {
+    const auto items = split(given, ',');
+    if (items.size() > static_cast<std::size_t>(kMaxCount)) {
+      fail(fmt::format("{} values are more than {}", items.size(), kMaxCount));
+    }
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      const std::string_view item = trim(items[i]);
+      if (item.empty()) fail(fmt::format("value {} of '{}' is empty", i + 1, printable(given)));
+      if (looks_like_a_number(item)) {
+        double value = 0.0;
+        if (!parse_whole(item, value) || !std::isfinite(value)) {
+          fail(fmt::format("'{}' is not a finite number", printable(item)));
+        }
+        spec.values.push_back(number_value(value));
+        continue;
+      }
+      // A name goes into a CSV field unquoted and into the scene as --set reads it.
+      if (std::any_of(item.begin(), item.end(), [](char c) {
+            return c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+          })) {
+        fail(fmt::format("'{}' is not a name (no quotes, backslashes or control characters)",
+                         printable(item)));
+      }
+      spec.values.push_back({std::nullopt, std::string(item)});
+    }
+    return spec;
+  }
+
+  const auto parts = split(given, ':');
+  if (parts.size() != 3 && parts.size() != 4) {
+    throw UsageError(fmt::format("--vary: '{}' is not {}", printable(text), kForms));
+  }
+  const bool log = parts.size() == 4;
+  if (log && trim(parts[3]) != "log") {
+    fail(fmt::format("'{}' is not log (FROM:TO:COUNT:log)", printable(trim(parts[3]))));
+  }
+  const auto part_fail = [&](const char* part, std::string_view value, const char* expected) {
+    fail(fmt::format("{} '{}' is not {}", part, printable(trim(value)), expected));
+  };
   double from = 0.0, to = 0.0;
   std::int64_t count = 0;
-  if (!parse_whole(from_text, from) || !std::isfinite(from)) {
-    fail("FROM", from_text, "a finite number");
+  if (!parse_whole(parts[0], from) || !std::isfinite(from)) {
+    part_fail("FROM", parts[0], "a finite number");
   }
-  if (!parse_whole(to_text, to) || !std::isfinite(to)) fail("TO", to_text, "a finite number");
-  if (!parse_whole(count_text, count) || count < 1 || count > kMaxCount) {
-    fail("COUNT", count_text, "a whole number from 1 to 1000000");
+  if (!parse_whole(parts[1], to) || !std::isfinite(to)) {
+    part_fail("TO", parts[1], "a finite number");
   }
-  VarySpec spec{std::string(key), {}};
+  if (!parse_whole(parts[2], count) || count < 1 || count > kMaxCount) {
+    part_fail("COUNT", parts[2], "a whole number from 1 to 1000000");
+  }
+  if (count == 1 && from != to) {
+    fail(
+        fmt::format("COUNT 1 gives one value, but FROM {} and TO {} differ (give a COUNT of 2 or "
+                    "more, or one value)",
+                    number_field(from), number_field(to)));
+  }
+  double ratio = 1.0;
+  if (log) {
+    if (from == 0.0 || to == 0.0 || (from < 0.0) != (to < 0.0)) {
+      fail(fmt::format("a log range needs FROM and TO of the same sign and not zero, not {} and {}",
+                       number_field(from), number_field(to)));
+    }
+    ratio = to / from;
+    if (!std::isfinite(ratio) || ratio == 0.0) {
+      fail(fmt::format("TO/FROM = {}/{} is beyond a double", number_field(to), number_field(from)));
+    }
+  }
+  spec.form = log ? VarySpec::Form::log : VarySpec::Form::linear;
   spec.values.reserve(static_cast<std::size_t>(count));
   for (std::int64_t i = 0; i < count; ++i) {
-    // from + (to - from) t overflows for from and to near opposite ends of the doubles.
+    // The ends are exact. Linear: from + (to - from) t overflows for from and to near opposite
+    // ends of the doubles; (1 - t) from + t to does not.
     const double t = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
-    const double value = count == 1 ? from : i == count - 1 ? to : (1.0 - t) * from + t * to;
-    spec.values.push_back(value);
+    double value = to;
+    if (i == 0) {
+      value = from;
+    } else if (i < count - 1) {
+      value = log ? from * std::pow(ratio, t) : (1.0 - t) * from + t * to;
+    }
+    spec.values.push_back(number_value(value));
   }
   return spec;
 }

@@ -1,17 +1,43 @@
-// The --vary KEY=FROM:TO:COUNT of a sweep: a key and its evenly spaced values.
+// The --vary KEY=VALUES of a sweep: a key and its values (a range, a log range or a list).
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace mdrsim::cli {
 
-struct VarySpec {
-  std::string key;
-  std::vector<double> values;
+/// One value of a varied key.
+struct VaryValue {
+  std::optional<double> number;  ///< set as a number when present; else `text` as --set reads it
+  std::string text;              ///< the CSV field: the number's shortest form, or the name
+
+  bool operator==(const VaryValue&) const = default;
 };
 
-/// Parses KEY=FROM:TO:COUNT; COUNT values from FROM to TO inclusive. Throws UsageError.
+struct VarySpec {
+  enum class Form { linear, log, list };
+
+  std::string key;
+  Form form = Form::list;
+  std::vector<VaryValue> values;
+
+  /// The values a sweep builds before any run, so that a bad value fails before the CSV
+  /// exists: all of them for a list or a range of up to kAllProbed values, else the first,
+  /// second and last of the range (the scene's checks are intervals and whole numbers,
+  /// which those three decide for an evenly or log spaced range).
+  std::vector<std::size_t> probes() const;
+
+  static constexpr std::size_t kAllProbed = 64;
+};
+
+/// Parses KEY=FROM:TO:COUNT (evenly spaced), KEY=FROM:TO:COUNT:log (log spaced) or
+/// KEY=V1,V2,... (numbers or names). Throws UsageError.
 VarySpec parse_vary(const std::string& text);
+
+/// The value of a number as a sweep's CSV writes it: the shortest text that reads back
+/// as the same double.
+std::string number_field(double value);
 
 }  // namespace mdrsim::cli

@@ -56,8 +56,8 @@ class Scale:
 
 def read_sweep(path, scale, problems):
     """Rows of a sweep CSV as dicts u, Fz, Fx (dimensionless), status; cross-checks the engine's scaling."""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+    with open(path, newline="") as f:  # past the identity line "# mdrsim sweep: ..."
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     out = []
     for r in rows:
         if scale.f0 is None:

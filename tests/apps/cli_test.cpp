@@ -478,9 +478,16 @@ TEST_F(Cli, VaryBadSpecs) {
   const auto sweep = [&](const std::string& vary) {
     return run_mdrsim(fmt::format("sweep {} --vary {} --csv {}", scene_, shell_word(vary), csv));
   };
+  const std::string forms = "KEY=FROM:TO:COUNT, KEY=FROM:TO:COUNT:log or KEY=V1,V2,...";
   EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:0.3"),
-                        "--vary: 'material.poisson_ratio=0:0.3' is not KEY=FROM:TO:COUNT"));
-  EXPECT_TRUE(bad_input(sweep("0:0.3:2"), "--vary: '0:0.3:2' is not KEY=FROM:TO:COUNT"));
+                        "--vary: 'material.poisson_ratio=0:0.3' is not " + forms));
+  EXPECT_TRUE(bad_input(sweep("0:0.3:2"), "--vary: '0:0.3:2' is not " + forms));
+  EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:0.3:1"),
+                        "--vary: material.poisson_ratio: COUNT 1 gives one value, but FROM 0 and "
+                        "TO 0.3 differ (give a COUNT of 2 or more, or one value)"));
+  EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:0.3:3:log"),
+                        "--vary: material.poisson_ratio: a log range needs FROM and TO of the "
+                        "same sign and not zero, not 0 and 0.3"));
   EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=low:0.3:2"),
                         "--vary: material.poisson_ratio: FROM 'low' is not a finite number"));
   EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:high:2"),
@@ -546,7 +553,7 @@ TEST_F(Cli, MissingOrUnknownSubcommand) {
   EXPECT_TRUE(bad_input(run_mdrsim("--json -"), "mdrsim: a subcommand is required"));
   EXPECT_TRUE(bad_input(run_mdrsim("simulate " + scene_),
                         "mdrsim: unknown command 'simulate' (known: "
-                        "run, sweep)"));
+                        "run, sweep, merge)"));
   EXPECT_TRUE(bad_input(run_mdrsim("run"), "mdrsim: scene is required"));
 }
 
@@ -671,7 +678,7 @@ TEST_F(Cli, GoodSweepWritesOneRowPerValue) {
   std::ifstream in(csv);
   int lines = 0;
   for (std::string line; std::getline(in, line);) ++lines;
-  EXPECT_EQ(lines, 4);
+  EXPECT_EQ(lines, 5);  // the identity line, the header and 3 rows
   EXPECT_FALSE(fs::exists(csv + ".partial"));
 }
 
@@ -706,7 +713,7 @@ TEST_F(Cli, SymlinkedOutputKeepsItsLink) {
 }
 
 TEST_F(Cli, HelpExitsZero) {
-  for (const char* args : {"--help", "run --help", "sweep --help"}) {
+  for (const char* args : {"--help", "run --help", "sweep --help", "merge --help"}) {
     const auto r = run_mdrsim(args);
     EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << args << ": " << r.out;

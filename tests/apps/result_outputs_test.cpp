@@ -54,10 +54,12 @@ class ResultOutputs : public ::testing::Test {
   std::string scene_;
 };
 
+/// The rows of a CSV, past a sweep's identity line (# mdrsim sweep: ...).
 std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
+    if (line.rfind('#', 0) == 0) continue;
     std::vector<std::string> fields;
     std::string field;
     std::istringstream cells(line);
