@@ -191,12 +191,4 @@ void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Mater
   }
 }
 
-void refuse_options_not_yet_for_programs(TomlReader& root, const Scene& scene) {
-  constexpr const char* kNotYet = "is not yet available for loading programs";
-  if (scene.discretization.richardson()) {
-    TomlReader discretization = root.table("discretization");
-    discretization.fail_range("extrapolation", fmt::format("= \"richardson\" {}", kNotYet));
-  }
-}
-
 }  // namespace mdrsim

@@ -366,15 +366,6 @@ std::vector<BadProgram> stage_cases() {
 }
 INSTANTIATE_TEST_SUITE_P(Stages, BadProgramTest, ::testing::ValuesIn(stage_cases()), case_name);
 
-std::vector<BadProgram> option_cases() {
-  return {
-      {"Richardson", "springs = 100", "springs = 100\nextrapolation = \"richardson\"",
-       "scene.toml:25:17: discretization.extrapolation = \"richardson\" is not yet available for "
-       "loading programs"},
-  };
-}
-INSTANTIATE_TEST_SUITE_P(Options, BadProgramTest, ::testing::ValuesIn(option_cases()), case_name);
-
 TEST(ProgramScene, TooManyStages) {
   std::string stages = "stage = [{}";
   for (int i = 1; i < 100'001; ++i) stages += ", {}";
