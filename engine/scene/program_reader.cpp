@@ -172,7 +172,6 @@ Program read_program(TomlReader& loading, const ControllerRegistry& controllers)
   for (std::size_t i = 0; i < stages.size(); ++i) {
     program.stages.push_back(read_stage(stages[i], i + 1, controllers, normal, tangential, named));
   }
-  program.from_shorthand = false;
   return program;
 }
 

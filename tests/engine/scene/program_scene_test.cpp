@@ -117,7 +117,6 @@ TEST(ProgramScene, ReadsEveryStage) {
   ASSERT_TRUE(scene.program.has_value());
   const Program& program = *scene.program;
   EXPECT_TRUE(program.rebinding);
-  EXPECT_FALSE(program.from_shorthand);
   EXPECT_EQ(scene.material.approach_work_of_adhesion, 0.01);
   EXPECT_EQ(scene.material.work_of_adhesion, 0.05);
   EXPECT_EQ(scene.springs, 100);
