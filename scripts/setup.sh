@@ -15,6 +15,8 @@ packages=(
   # offline, pytest; pandas for Result.to_dataframe (optional for users, tested here).
   pybind11-dev python3-dev python3-venv python3-pip python3-setuptools python3-wheel
   python3-pytest python3-pandas
+  # The fitting example (python/examples) and its test, which executes the notebook.
+  python3-scipy python3-nbclient python3-nbformat python3-ipykernel
 )
 if [ "${1:-}" = "fuzz" ]; then
   packages+=(clang-14 libclang-rt-14-dev)

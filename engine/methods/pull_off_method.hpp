@@ -6,24 +6,10 @@
 
 #include "detachment/criterion.hpp"
 #include "engine/events/observer.hpp"
+#include "engine/methods/run_counts.hpp"
 #include "engine/model/contact.hpp"
 
 namespace mdrsim {
-
-struct RunCounts {
-  std::int64_t events = 0;           ///< springs detached
-  std::int64_t steps = 0;            ///< stepping increments taken
-  std::int64_t halvings = 0;         ///< stepping increments halved
-  std::int64_t root_iterations = 0;  ///< iterations of let-go root searches
-
-  RunCounts& operator+=(const RunCounts& more) {
-    events += more.events;
-    steps += more.steps;
-    halvings += more.halvings;
-    root_iterations += more.root_iterations;
-    return *this;
-  }
-};
 
 struct AdvanceOutcome {
   std::int64_t detached = 0;  ///< springs detached by this advance

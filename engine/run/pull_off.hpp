@@ -8,7 +8,7 @@
 
 #include "engine/events/event.hpp"
 #include "engine/events/observer.hpp"
-#include "engine/methods/pull_off_method.hpp"
+#include "engine/methods/run_counts.hpp"
 #include "engine/run/program_records.hpp"
 #include "engine/scene/scene.hpp"
 

@@ -1,0 +1,40 @@
+# The stable API: the headers `cmake --install` puts under include/mdrsim/, as paths from the
+# repository root (the installed tree keeps them, so that an include reads the same in-tree
+# and downstream). A downstream part needs its interface and registry; a downstream program
+# the registries, the scene, the run and the observers. The set is closed: every header here
+# includes only the standard library, the public dependencies (fmt, nlohmann_json) and headers
+# of this list; tests/install/check_public_headers.cmake checks that, by compiling each one on
+# its own against the installed tree, and lists every header left out.
+set(MDRSIM_PUBLIC_HEADERS
+    # vocabulary of the parts: material and interface properties, parameters, the registry
+    engine/base/material.hpp
+    engine/base/parameters.hpp
+    engine/base/part_registry.hpp
+    # the part interfaces and their registries
+    profiles/profile.hpp
+    profiles/profile_registry.hpp
+    detachment/criterion.hpp
+    detachment/criterion_registry.hpp
+    controllers/controller.hpp
+    controllers/controller_registry.hpp
+    # scenes: the registries a scene draws from, the document, the built scene, bad input
+    engine/scene/registries.hpp
+    engine/scene/scene_document.hpp
+    engine/scene/scene.hpp
+    engine/scene/program.hpp
+    engine/scene/scene_error.hpp
+    # the run and its result
+    engine/run/run_scene.hpp
+    engine/run/pull_off.hpp
+    engine/run/program_records.hpp
+    engine/methods/run_counts.hpp
+    engine/model/contact_snapshot.hpp
+    engine/model/jkr_scales.hpp
+    # events, observers and the stock outputs
+    engine/events/event.hpp
+    engine/events/event_format.hpp
+    engine/events/observer.hpp
+    engine/events/event_recorder.hpp
+    engine/events/log_observer.hpp
+    engine/events/trajectory_csv.hpp
+    engine/events/result_json.hpp)
