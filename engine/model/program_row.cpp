@@ -40,12 +40,6 @@ void ProgramRow::fill(SpringValues& v, std::int64_t i) const {
   v.front_limit = -1.0;
 }
 
-double ProgramRow::front_limit(std::int64_t i) const {
-  SpringValues& v = values(i);
-  if (v.front_limit < 0.0) v.front_limit = std::sqrt(front_coefficient_ * position(i));
-  return v.front_limit;
-}
-
 namespace {
 /// Whether the constraint fixes the displacement against this stiffness [N/m].
 bool has_stiffness(const AffineConstraint& c, double stiffness) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,7 +40,11 @@ class ProgramRow {
     return i == reference_springs_ ? reference_radius_ : spacing_ * static_cast<double>(i);
   }
   double image(std::int64_t i) const { return values(i).image; }  ///< g(x_i) [m]
-  double front_limit(std::int64_t i) const;  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
+  double front_limit(std::int64_t i) const {  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
+    SpringValues& v = values(i);
+    if (v.front_limit < 0.0) v.front_limit = std::sqrt(front_coefficient_ * position(i));
+    return v.front_limit;
+  }
   double spacing() const { return spacing_; }
   std::int64_t reference_springs() const { return reference_springs_; }
 

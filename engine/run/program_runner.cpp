@@ -452,7 +452,8 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       const double d = row_.indentation();
       const double u = row_.tangential_displacement();
       const double stretch_x = u - row_.boundary_offset();
-      by_shear = broken_at_rest(criterion_, stretch_x, row_.position(k));
+      // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
+      by_shear = boundary_let_go(u).kind == LetGo::Kind::now;
       if (observe_springs_) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
       row_.let_go_boundary(row_.image(k) <= d);
       guards_.released_to = std::max(guards_.released_to, k);
