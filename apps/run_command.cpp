@@ -95,7 +95,7 @@ void print_program(std::FILE* out, const RunResult& r) {
 
 /// The human summary; on standard error when standard output carries the trajectory CSV.
 void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
-  const auto [normal_control, tangential_control] = final_controls(scene);
+  const auto [normal_control, tangential_control] = final_controls(scene, r.stages.size());
   fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
              to_string(r.status), normal_control, tangential_control, scene.criterion_name,
              r.springs);

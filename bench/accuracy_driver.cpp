@@ -17,6 +17,7 @@
 #include "bench/bench_cases.hpp"
 #include "bench/timing.hpp"
 #include "engine/run/run_scene.hpp"
+#include "tests/support/program_reference.hpp"
 #include "tests/support/random_scenes.hpp"
 
 namespace {
@@ -440,6 +441,30 @@ int main(int argc, char** argv) {
       fmt::format("9. per event at 1e6 springs: program cycle {:.1f} ns, shorthand pull-off "
                   "{:.1f} ns: {:.2f}x (<= 1.5x)",
                   cycle_ns_per_event, mixed, cycle_ns_per_event / mixed));
+  // One approach-retract curve to 1e-4 in F/F0, by Richardson over rows of 64, 128 and 256
+  // springs: the jump in, the end of the approach and the fold against eqs. 18-19.
+  {
+    const mdrsim::Scene scene =
+        mdrsim::test::build_scene_text(cycle_text(128) + "extrapolation = \"richardson\"\n");
+    mdrsim::RunResult r;
+    const double seconds = seconds_per_run([&] { r = mdrsim::run_scene(scene, {}); });
+    const double force = 1.5 * std::numbers::pi * 0.01 * 0.05;  // F0 [N]
+    const double depth = std::cbrt(3.0 * std::numbers::pi * std::numbers::pi * 0.01 * 0.05 * 0.05 /
+                                   (64.0 * 1e6 * 1e6));  // d0 [m]
+    const auto expected = mdrsim::program_reference::reversible_jkr_cycle(2e-5 / depth);
+    double error = 1.0;
+    if (r.jumps.size() == 2 && r.stages.size() == 2) {
+      error = std::max(
+          {std::abs(r.jumps[0].after.normal_force / force - expected.jump_in_after.normal_force),
+           std::abs(r.stages[0].end.normal_force / force - expected.approach_end.normal_force),
+           std::abs(r.jumps[1].critical.normal_force / force -
+                    expected.retract_critical.normal_force)});
+    }
+    report_open(error <= 1e-4 && seconds < 150e-6,
+                fmt::format("9. one approach-retract curve to 1e-4 in F/F0 (richardson, rows of "
+                            "64/128/256 springs): largest error {:.1e} F0, {:.0f} us (< 150 us)",
+                            error, 1e6 * seconds));
+  }
   fmt::print("rows written to {}\n", out_path);
   return all_met ? 0 : 1;
 }

@@ -1,6 +1,9 @@
 // Field names and order as in SPEC; dimensionless values only where the JKR scales exist.
 #include "engine/events/result_json.hpp"
 
+#include <algorithm>
+#include <span>
+
 #include "engine/model/snapshot_fields.hpp"
 
 namespace mdrsim {
@@ -32,12 +35,14 @@ nlohmann::ordered_json work_json(const AxisWork& w) {
 
 }  // namespace
 
-std::pair<std::string, std::string> final_controls(const Scene& scene) {
+std::pair<std::string, std::string> final_controls(const Scene& scene, std::size_t stages_run) {
   if (!scene.program) {
     return {scene.normal.control, scene.tangential ? scene.tangential->control : "fixed-grips"};
   }
   std::pair<std::string, std::string> controls{"fixed-grips", "fixed-grips"};
-  for (const Stage& stage : scene.program->stages) {
+  const auto& stages = scene.program->stages;
+  const std::size_t n = std::min(std::max<std::size_t>(stages_run, 1), stages.size());
+  for (const Stage& stage : std::span(stages).first(n)) {
     if (stage.normal) controls.first = stage.normal->control;
     if (stage.tangential) controls.second = stage.tangential->control;
   }
@@ -64,7 +69,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const Accuracy& accuracy = result.accuracy;
   ordered_json j;
   j["status"] = to_string(result.status);
-  const auto [normal_control, tangential_control] = final_controls(scene);
+  const auto [normal_control, tangential_control] = final_controls(scene, result.stages.size());
   j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
   j["criterion"] = scene.criterion_name;
   j["method"] = scene.solver.method == SolverMethod::event ? "event" : "stepping";

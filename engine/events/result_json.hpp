@@ -1,6 +1,7 @@
 // The JSON result of `mdrsim run` (SPEC "JSON result of run").
 #pragma once
 
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -12,9 +13,11 @@
 
 namespace mdrsim {
 
-/// The controllers on each axis (normal, tangential): the shorthand's, or those a program
-/// ends with.
-std::pair<std::string, std::string> final_controls(const Scene& scene);
+/// The controllers on each axis (normal, tangential): the shorthand's, or those in force at
+/// the end of a program's first `stages_run` stages (all of them by default; a program that
+/// stops early reports the stage it stopped in).
+std::pair<std::string, std::string> final_controls(
+    const Scene& scene, std::size_t stages_run = std::numeric_limits<std::size_t>::max());
 
 /// Scales of the dimensionless output; only for profiles with a parabolic tip and adhesion.
 std::optional<JkrScales> dimensionless_scales(const Scene& scene);

@@ -34,20 +34,10 @@ void ProgramRow::springs_changed(bool normal, bool tangential) {
   }
 }
 
-ProgramRow::SpringValues& ProgramRow::values(std::int64_t i) const {
-  SpringValues& v = recent_[static_cast<std::size_t>(i) & (recent_.size() - 1)];
-  if (v.index != i) {
-    v.index = i;
-    v.image = i == reference_springs_ ? reference_image_ : profile_->mdr_image(position(i));
-    v.front_limit = -1.0;
-  }
-  return v;
-}
-
-double ProgramRow::front_limit(std::int64_t i) const {
-  SpringValues& v = values(i);
-  if (v.front_limit < 0.0) v.front_limit = std::sqrt(front_coefficient_ * position(i));
-  return v.front_limit;
+void ProgramRow::fill(SpringValues& v, std::int64_t i) const {
+  v.index = i;
+  v.image = i == reference_springs_ ? reference_image_ : profile_->mdr_image(position(i));
+  v.front_limit = -1.0;
 }
 
 namespace {
@@ -75,22 +65,16 @@ double ProgramRow::tangential_force_at(double u) const {
   return per_spring * (static_cast<double>(glued_) * u - glued_offsets_.value());
 }
 
-const ProgramRow::AxisEquilibrium& ProgramRow::normal_equilibrium() const {
-  if (!normal_cached_) {
-    normal_equilibrium_.displacement = solve_indentation();
-    normal_equilibrium_.force = normal_force_at(normal_equilibrium_.displacement);
-    normal_cached_ = true;
-  }
-  return normal_equilibrium_;
+void ProgramRow::solve_normal() const {
+  normal_equilibrium_.displacement = solve_indentation();
+  normal_equilibrium_.force = normal_force_at(normal_equilibrium_.displacement);
+  normal_cached_ = true;
 }
 
-const ProgramRow::AxisEquilibrium& ProgramRow::tangential_equilibrium() const {
-  if (!tangential_cached_) {
-    tangential_equilibrium_.displacement = solve_tangential_displacement();
-    tangential_equilibrium_.force = tangential_force_at(tangential_equilibrium_.displacement);
-    tangential_cached_ = true;
-  }
-  return tangential_equilibrium_;
+void ProgramRow::solve_tangential() const {
+  tangential_equilibrium_.displacement = solve_tangential_displacement();
+  tangential_equilibrium_.force = tangential_force_at(tangential_equilibrium_.displacement);
+  tangential_cached_ = true;
 }
 
 double ProgramRow::solve_indentation() const {
@@ -145,7 +129,16 @@ void ProgramRow::glue_next() {
   // The displacements before the change: an axis without stiffness rests where it was.
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
-  const double u = tangential_.rest;
+  glue_at(tangential_.rest);
+}
+
+void ProgramRow::glue_next_as_boundary() {
+  normal_.rest = indentation();
+  tangential_.rest = tangential_displacement();
+  glue_at(runs_.empty() ? tangential_.rest : runs_.back().offset);
+}
+
+void ProgramRow::glue_at(double u) {
   springs_changed(true, true);
   ++glued_;
   if (glued_ > ever_glued_) ever_glued_ = glued_;

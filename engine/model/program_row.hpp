@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,7 +40,11 @@ class ProgramRow {
     return i == reference_springs_ ? reference_radius_ : spacing_ * static_cast<double>(i);
   }
   double image(std::int64_t i) const { return values(i).image; }  ///< g(x_i) [m]
-  double front_limit(std::int64_t i) const;  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
+  double front_limit(std::int64_t i) const {  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
+    SpringValues& v = values(i);
+    if (v.front_limit < 0.0) v.front_limit = std::sqrt(front_coefficient_ * position(i));
+    return v.front_limit;
+  }
   double spacing() const { return spacing_; }
   std::int64_t reference_springs() const { return reference_springs_; }
 
@@ -91,6 +96,9 @@ class ProgramRow {
 
   /// Spring k+1 glues at the present u_x; it was pressed (m > k) or becomes the new edge.
   void glue_next();
+  /// Spring k+1 glues at the boundary spring's offset s_k: the branch one spring further
+  /// out, as a receding front left it (for locating the front between springs).
+  void glue_next_as_boundary();
   /// The boundary spring k lets go; it stays in contact, pressed, when `pressed`.
   void let_go_boundary(bool pressed);
   void touch_next();  ///< spring m+1 is pressed
@@ -107,8 +115,17 @@ class ProgramRow {
     double displacement;
     double force;
   };
-  const AxisEquilibrium& normal_equilibrium() const;
-  const AxisEquilibrium& tangential_equilibrium() const;
+  // The cached paths inline: a step asks for the equilibrium many times.
+  const AxisEquilibrium& normal_equilibrium() const {
+    if (!normal_cached_) solve_normal();
+    return normal_equilibrium_;
+  }
+  const AxisEquilibrium& tangential_equilibrium() const {
+    if (!tangential_cached_) solve_tangential();
+    return tangential_equilibrium_;
+  }
+  void solve_normal() const;
+  void solve_tangential() const;
   double solve_indentation() const;
   double solve_tangential_displacement() const;
 
@@ -119,7 +136,13 @@ class ProgramRow {
     double image = 0.0;
     double front_limit = -1.0;  ///< computed when first asked for; < 0 before
   };
-  SpringValues& values(std::int64_t i) const;
+  SpringValues& values(std::int64_t i) const {
+    SpringValues& v = recent_[static_cast<std::size_t>(i) & (recent_.size() - 1)];
+    if (v.index != i) fill(v, i);
+    return v;
+  }
+  void fill(SpringValues& v, std::int64_t i) const;
+  void glue_at(double offset);  ///< spring k+1 glues with this s
   /// Drops what the change of the springs on each axis makes stale.
   void springs_changed(bool normal, bool tangential);
   mutable std::array<SpringValues, 4> recent_{};

@@ -16,14 +16,13 @@ double quadratic(double inner, double at, double outer, double s) {
   return at + 0.5 * s * (outer - inner) + 0.5 * s * s * (inner - 2.0 * at + outer);
 }
 
-/// The vertex of that quadratic in [-1, 1], or nothing where it does not open upwards.
-std::optional<double> vertex(double inner, double at, double outer) {
+}  // namespace
+
+std::optional<double> parabola_vertex(double inner, double at, double outer) {
   const double curvature = inner - 2.0 * at + outer;
   if (!(curvature > 0.0)) return std::nullopt;
   return std::clamp(0.5 * (inner - outer) / curvature, -1.0, 1.0);
 }
-
-}  // namespace
 
 ContactSnapshot interpolate_snapshots(const ContactSnapshot& in, const ContactSnapshot& at,
                                       const ContactSnapshot& out, double s) {
@@ -47,7 +46,8 @@ std::optional<ContactSnapshot> refine_fold(const Contact& contact,
   if (next.let_go.kind != LetGo::Kind::at_elongation) return std::nullopt;
   probe.set_normal_control(next.normal_control);
 
-  const auto s = vertex(next.normal_control, critical.normal_control, outer.normal_control);
+  const auto s =
+      parabola_vertex(next.normal_control, critical.normal_control, outer.normal_control);
   if (!s) return std::nullopt;
   const ContactSnapshot in = probe.snapshot();
   const ContactSnapshot out = contact.snapshot_of(outer);
@@ -88,7 +88,7 @@ ContactSnapshot refine_peak(const Contact& contact, const Contact::State& outer,
   const ContactSnapshot o = contact.snapshot_of(outer);
   const ContactSnapshot c = contact.snapshot_of(at);
   const ContactSnapshot i = contact.snapshot_of(inner);
-  const auto s = vertex(i.normal_force, c.normal_force, o.normal_force);
+  const auto s = parabola_vertex(i.normal_force, c.normal_force, o.normal_force);
   return s ? interpolate_snapshots(i, c, o, *s) : c;
 }
 

@@ -8,6 +8,10 @@
 
 namespace mdrsim {
 
+/// The vertex in [-1, 1] of the parabola through q(-1) = inner, q(0) = at, q(1) = outer, or
+/// nothing where it does not open upwards.
+std::optional<double> parabola_vertex(double inner, double at, double outer);
+
 /// Every field of a snapshot on the parabola through q(-1) = inner, q(0) = at, q(1) = outer,
 /// evaluated at s (springs in contact decided by `at`).
 ContactSnapshot interpolate_snapshots(const ContactSnapshot& inner, const ContactSnapshot& at,

@@ -25,6 +25,8 @@ struct StageRecord {
   std::string name;
   ContactSnapshot end;  ///< the state at the stage's end (or where the contact was lost)
   AxisWork work;
+  /// `end` with the row's front located between springs (rows run to be extrapolated).
+  std::optional<ContactSnapshot> refined_end;
   /// With rtol: a posteriori bounds on |reported - continuum| of the end's forces [N].
   std::optional<double> normal_force_error_estimate;
   std::optional<double> tangential_force_error_estimate;
@@ -39,6 +41,10 @@ struct JumpRecord {
   std::int64_t springs = 0;        ///< change of the springs in contact
   std::int64_t glued_springs = 0;  ///< change of the glued springs
   bool by_shear = false;  ///< the first spring due after the critical point broke at zero stretch
+  /// `critical` and `after` with the row's front located between springs (rows run to be
+  /// extrapolated), where the branch allows it.
+  std::optional<ContactSnapshot> refined_critical;
+  std::optional<ContactSnapshot> refined_after;
   /// With rtol: a posteriori bounds on |reported - continuum| of the normal force at the
   /// critical point and after the jump [N].
   std::optional<double> critical_error_estimate;

@@ -1,5 +1,5 @@
-// The plain route of rtol for programs; one frame (a_max) for every row, so that the rows
-// differ only in their spacing.
+// Accuracy on programs: rows in one frame (a_max), so that they differ only in their spacing;
+// each reported state from the plain finest row or from Richardson across the last three.
 #include "engine/run/program_resolution.hpp"
 
 #include <fmt/format.h>
@@ -9,17 +9,24 @@
 #include <string>
 #include <vector>
 
+#include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"
 
 namespace mdrsim {
 namespace {
 
+using Extrapolation = DiscretizationOptions::Extrapolation;
+
 constexpr std::int64_t kFirstRow = 256;
-constexpr int kRowsBeforeAccepting = 4;
+/// The rows rtol compares: four, so that each estimate compares two differences (a plain
+/// row's sawtooth can make two rows alike by chance).
+constexpr std::size_t kRowsKept = 4;
 /// Forces below this share of the path's largest are held to it in absolute terms.
 constexpr double kForceFloor = 1e-6;
+/// No estimate is below the rounding of the sums behind a value.
+constexpr double kRounding = 1e-13;
 
-/// What must match for rows to be compared quantity by quantity.
+/// What must match for rows to be compared state by state.
 std::string ending(const RunResult& r) {
   std::string s = to_string(r.status);
   s += fmt::format(" {} stages", r.stages.size());
@@ -29,116 +36,253 @@ std::string ending(const RunResult& r) {
   return s;
 }
 
-/// A checked force of a row and the force of its edge spring there [N].
-struct Checked {
-  double* value;
-  double edge;
+/// A reported state of a row: where its value, its location between springs and its
+/// estimates live in the row's result.
+struct StateRef {
+  std::string what;
+  ContactSnapshot* state;
+  const std::optional<ContactSnapshot>* located;  ///< null where rows never locate it
+  std::optional<double>* normal_estimate;
+  std::optional<double>* tangential_estimate;  ///< stage ends only
 };
 
-/// The checked forces of a row, in a fixed order; pointers into the row.
-std::vector<Checked> checked(RunResult& r) {
-  std::vector<Checked> q;
-  const auto normal = [&](ContactSnapshot& s) {
-    q.push_back({&s.normal_force, s.edge_normal_force});
-  };
+/// The reported states of a row in a fixed order: stage ends, jumps (critical point, after),
+/// the critical point, the peak.
+std::vector<StateRef> states(RunResult& r) {
+  std::vector<StateRef> q;
   for (StageRecord& s : r.stages) {
-    normal(s.end);
-    q.push_back({&s.end.tangential_force, s.end.edge_tangential_force});
+    q.push_back({fmt::format("the end of stage '{}'", s.name), &s.end, &s.refined_end,
+                 &s.normal_force_error_estimate, &s.tangential_force_error_estimate});
   }
   for (JumpRecord& j : r.jumps) {
-    normal(j.critical);
-    normal(j.after);
+    // A jump from no contact starts where the first spring touches: smooth in the spacing.
+    const auto* located = j.critical.springs_in_contact == 0 ? nullptr : &j.refined_critical;
+    q.push_back({fmt::format("the critical point of the jump in stage '{}'", j.stage), &j.critical,
+                 located, &j.critical_error_estimate, nullptr});
+    q.push_back({fmt::format("the state after the jump in stage '{}'", j.stage), &j.after,
+                 &j.refined_after, &j.after_error_estimate, nullptr});
   }
-  if (r.critical) normal(*r.critical);
-  if (r.peak) normal(*r.peak);
+  if (r.critical) {
+    q.push_back({"the critical point", &*r.critical, &r.refined_critical,
+                 &r.accuracy.critical_error_estimate, nullptr});
+  }
+  if (r.peak) {
+    q.push_back({"the peak", &*r.peak, &r.refined_peak, &r.accuracy.peak_error_estimate, nullptr});
+  }
   return q;
 }
 
-/// Estimates per checked force of the last row, from the last three rows. The differences
-/// bound the error that falls with the spacing; the edge spring's force bounds the sawtooth
-/// of the front's place between two springs, which differences of rows can miss when two
-/// rows happen to put the front alike (a stage end at a let-go front did: 0.238017,
-/// 0.237967, 0.238015 F0 at 16000, 64000, 256000 springs against 0.238026).
-std::vector<double> estimates(std::vector<RunResult>& rows) {
-  const std::size_t n = rows.size();
-  const auto q0 = checked(rows[n - 3]);
-  const auto q1 = checked(rows[n - 2]);
-  const auto q2 = checked(rows[n - 1]);
-  std::vector<double> e(q2.size());
-  for (std::size_t i = 0; i < q2.size(); ++i) {
-    e[i] = 2.0 * std::max(std::abs(*q2[i].value - *q1[i].value),
-                          0.5 * std::abs(*q1[i].value - *q0[i].value)) +
-           q2[i].edge;
-  }
-  return e;
+/// One state's value and estimates as the last three rows give it.
+struct Choice {
+  ContactSnapshot value;
+  double normal_error;
+  double tangential_error;
+  bool extrapolated;
+};
+
+/// The plain estimate 2 max(|Q2 - Q1|, |Q1 - Q0| / 2) plus the edge spring's force, which
+/// bounds the front's place between two springs (two rows can put it alike by chance: a
+/// stage end at a let-go front gave 0.238017, 0.237967, 0.238015 F0 at 16000, 64000, 256000
+/// springs against 0.238026).
+double plain_error(double q0, double q1, double q2, double edge) {
+  return 2.0 * std::max(std::abs(q2 - q1), 0.5 * std::abs(q1 - q0)) + edge;
 }
 
-/// Writes the estimates into the row's records, in checked()'s order.
-void attach(RunResult& r, const std::vector<double>& e) {
-  std::size_t i = 0;
-  for (StageRecord& s : r.stages) {
-    s.normal_force_error_estimate = e[i++];
-    s.tangential_force_error_estimate = e[i++];
+/// Richardson 2 Q(2N) - Q(N) from the two finest rows of `located` (the states as the rows
+/// located them between springs, coarsest first), its estimate twice the change from the
+/// value of the pair before, or with four rows (as the shorthand's rtol) twice the larger of
+/// the last change and half the one before.
+Choice richardson(const std::vector<const ContactSnapshot*>& located,
+                  const ContactSnapshot& reported) {
+  std::vector<ContactSnapshot> r;
+  for (std::size_t j = 1; j < located.size(); ++j) {
+    r.push_back(extrapolate(*located[j - 1], *located[j]));
   }
-  for (JumpRecord& j : r.jumps) {
-    j.critical_error_estimate = e[i++];
-    j.after_error_estimate = e[i++];
+  ContactSnapshot value = r.back();
+  value.springs_in_contact = reported.springs_in_contact;
+  value.edge_normal_force = reported.edge_normal_force;
+  value.edge_tangential_force = reported.edge_tangential_force;
+  const auto error = [&](double ContactSnapshot::*q) {
+    const std::size_t j = r.size() - 1;
+    double e = std::abs(r[j].*q - r[j - 1].*q);
+    if (j >= 2) e = std::max(e, 0.5 * std::abs(r[j - 1].*q - r[j - 2].*q));
+    return std::max(2.0 * e, kRounding * std::abs(value.*q));
+  };
+  return {value, error(&ContactSnapshot::normal_force), error(&ContactSnapshot::tangential_force),
+          true};
+}
+
+/// Every state's choice from the last three or four rows (which end alike): Richardson where
+/// all of them located the state and `extrapolation` allows it (automatic: where its estimate
+/// is the smaller), the finest row's own value otherwise.
+std::vector<Choice> choose(std::vector<RunResult>& rows, Extrapolation extrapolation) {
+  std::vector<std::vector<StateRef>> refs;
+  for (RunResult& row : rows) refs.push_back(states(row));
+  const std::size_t n = rows.size();
+  const auto& c = refs[n - 3];
+  const auto& m = refs[n - 2];
+  const auto& f = refs[n - 1];
+  std::vector<Choice> out;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const ContactSnapshot& q0 = *c[i].state;
+    const ContactSnapshot& q1 = *m[i].state;
+    const ContactSnapshot& q2 = *f[i].state;
+    const Choice plain{
+        q2, plain_error(q0.normal_force, q1.normal_force, q2.normal_force, q2.edge_normal_force),
+        plain_error(q0.tangential_force, q1.tangential_force, q2.tangential_force,
+                    q2.edge_tangential_force),
+        false};
+    std::vector<const ContactSnapshot*> located;
+    for (const auto& row : refs) {
+      if (row[i].located && *row[i].located) located.push_back(&**row[i].located);
+    }
+    Choice chosen = plain;
+    if (located.size() == n && extrapolation != Extrapolation::none) {
+      const Choice r = richardson(located, q2);
+      if (extrapolation == Extrapolation::richardson || r.normal_error <= plain.normal_error) {
+        chosen = r;
+      }
+    }
+    // Only stage ends vouch for their tangential force (at a jump or the peak it is whatever
+    // the state has; under a held normal force the peak is any state at that force).
+    if (!f[i].tangential_estimate) chosen.tangential_error = 0.0;
+    out.push_back(chosen);
   }
-  if (r.critical) r.accuracy.critical_error_estimate = e[i++];
-  if (r.peak) r.accuracy.peak_error_estimate = e[i++];
+  return out;
+}
+
+/// Writes the choices into the row; returns the states that Richardson did not reach (for
+/// the richardson route's warning).
+std::vector<std::string> write_choices(RunResult& r, const std::vector<Choice>& choices) {
+  std::vector<std::string> plain;
+  bool extrapolated = false;
+  const auto refs = states(r);
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const StateRef& ref = refs[i];
+    const Choice& c = choices[i];
+    *ref.state = c.value;
+    *ref.normal_estimate = c.normal_error;
+    if (ref.tangential_estimate) *ref.tangential_estimate = c.tangential_error;
+    extrapolated = extrapolated || c.extrapolated;
+    // States that start at a first touch are not located between springs; the peak has its
+    // own estimate and is not one of the states a program vouches for.
+    const bool peak = r.peak && ref.state == &*r.peak;
+    if (!c.extrapolated && ref.located && ref.state->springs_in_contact > 0 && !peak) {
+      plain.push_back(ref.what);
+    }
+  }
+  r.accuracy.route = extrapolated ? Accuracy::Route::richardson : Accuracy::Route::row;
+  return plain;
+}
+
+/// Whether every choice's estimate is within rtol of its force.
+bool within(const std::vector<Choice>& choices, double rtol) {
+  double largest = 0.0;
+  for (const Choice& c : choices) {
+    largest =
+        std::max({largest, std::abs(c.value.normal_force), std::abs(c.value.tangential_force)});
+  }
+  const auto ok = [&](double value, double error) {
+    return error <= rtol * std::max(std::abs(value), kForceFloor * largest);
+  };
+  return std::all_of(choices.begin(), choices.end(), [&](const Choice& c) {
+    return ok(c.value.normal_force, c.normal_error) &&
+           ok(c.value.tangential_force, c.tangential_error);
+  });
+}
+
+ProgramRowSpec resolving_row(const ProgramRowFrame& frame, std::int64_t springs) {
+  ProgramRowSpec spec = program_row(frame, springs);
+  spec.edge_forces = true;
+  spec.refine = true;
+  return spec;
+}
+
+std::string list(const std::vector<std::string>& items) {
+  std::string s;
+  for (const std::string& item : items) s += (s.empty() ? "" : ", ") + item;
+  return s;
 }
 
 }  // namespace
 
+RunResult run_program_richardson(const Scene& scene, const ObserverList& observers) {
+  const ProgramRowFrame frame = program_row_frame(scene);
+  const std::int64_t n = scene.springs;
+  std::vector<RunResult> rows;
+  RunCounts counts;
+  for (const std::int64_t springs : {n / 2, n, 2 * n}) {
+    rows.push_back(run_program_row(scene, resolving_row(frame, springs),
+                                   springs == 2 * n ? observers : ObserverList{}));
+    counts += rows.back().counts;
+  }
+  RunResult result = rows.back();
+  result.counts = counts;
+  result.accuracy.route = Accuracy::Route::richardson;
+  result.accuracy.rows = {n / 2, n, 2 * n};
+  result.accuracy.outer_radius = frame.radius;
+  if (ending(rows[0]) != ending(rows[1]) || ending(rows[1]) != ending(rows[2])) {
+    result.warnings.push_back(fmt::format(
+        "richardson: the rows of {}, {} and {} springs end differently ({}; {}; {}); the finest "
+        "row is reported as it is",
+        n / 2, n, 2 * n, ending(rows[0]), ending(rows[1]), ending(rows[2])));
+    return result;
+  }
+  const std::vector<std::string> plain =
+      write_choices(result, choose(rows, Extrapolation::richardson));
+  result.accuracy.route = Accuracy::Route::richardson;
+  if (!plain.empty()) {
+    result.warnings.push_back(fmt::format(
+        "richardson: {} could not be located between springs (springs pressed outside the "
+        "glued ones, a front pinned since a jump, a shear-off): the finest row's value is "
+        "reported, with its plain estimate",
+        list(plain)));
+  }
+  return result;
+}
+
 RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& observers) {
   const ProgramRowFrame frame = program_row_frame(scene);
+  const Extrapolation extrapolation = scene.discretization.extrapolation;
   std::vector<RunResult> rows;
   std::vector<std::int64_t> springs;
   RunCounts counts;
-  std::vector<double> last_estimates;
+  std::vector<Choice> choices;
   bool met = false;
   std::string why;
   for (std::int64_t n = kFirstRow;; n *= 2) {
-    ProgramRowSpec spec = program_row(frame, n);
-    spec.edge_forces = true;
-    rows.push_back(run_program_row(scene, spec, {}));
+    rows.push_back(run_program_row(scene, resolving_row(frame, n), {}));
     springs.push_back(n);
     counts += rows.back().counts;
-    if (rows.size() > 3) rows.erase(rows.begin());
+    if (rows.size() > kRowsKept) rows.erase(rows.begin());
     const std::size_t k = rows.size();
-    if (k == 3 && ending(rows[0]) == ending(rows[1]) && ending(rows[1]) == ending(rows[2])) {
-      last_estimates = estimates(rows);
-      double largest = 0.0;
-      const auto values = checked(rows.back());
-      for (const Checked& q : values) largest = std::max(largest, std::abs(*q.value));
-      met = true;
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        const double scale = std::max(std::abs(*values[i].value), kForceFloor * largest);
-        if (last_estimates[i] > rtol * scale) met = false;
-      }
-      if (met && static_cast<int>(springs.size()) >= kRowsBeforeAccepting) break;
+    const bool alike = std::all_of(rows.begin(), rows.end(), [&](const RunResult& r) {
+      return ending(r) == ending(rows.back());
+    });
+    if (k >= 3 && alike) {
+      choices = choose(rows, extrapolation);
+      met = within(choices, rtol);
+      if (met && k == kRowsKept) break;
+      met = false;
       why = "the forces still differ across rows by more than rtol";
-    } else if (k == 3) {
-      last_estimates.clear();
+    } else if (k >= 3) {
+      choices.clear();
       met = false;
       why = fmt::format("the rows of {}, {} and {} springs end differently ({}; {}; {})",
                         springs[springs.size() - 3], springs[springs.size() - 2], n,
-                        ending(rows[0]), ending(rows[1]), ending(rows[2]));
+                        ending(rows[k - 3]), ending(rows[k - 2]), ending(rows[k - 1]));
     }
-    if (2 * n > scene.discretization.max_row_springs) {
-      met = false;
-      break;
-    }
+    if (2 * n > scene.discretization.max_row_springs) break;
   }
   // The finest row again, for its events (the rows above ran without observers).
   RunResult result = observers.empty()
                          ? std::move(rows.back())
-                         : run_program_row(scene, program_row(frame, springs.back()), observers);
-  if (!last_estimates.empty()) attach(result, last_estimates);
-  result.counts = counts;
+                         : run_program_row(scene, resolving_row(frame, springs.back()), observers);
   result.accuracy.route = Accuracy::Route::row;
-  result.accuracy.rows.assign(springs.end() - std::min<std::ptrdiff_t>(3, springs.size()),
-                              springs.end());
+  if (!choices.empty()) write_choices(result, choices);
+  result.counts = counts;
+  result.accuracy.rows.assign(
+      springs.end() - std::min<std::ptrdiff_t>(kRowsKept, std::ssize(springs)), springs.end());
   result.accuracy.outer_radius = frame.radius;
   result.accuracy.rtol_met = met;
   if (!met) {

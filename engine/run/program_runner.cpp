@@ -16,6 +16,7 @@
 
 #include "detachment/let_go.hpp"
 #include "engine/base/bracketed_root.hpp"
+#include "engine/run/program_front.hpp"
 
 namespace mdrsim {
 namespace {
@@ -64,6 +65,9 @@ struct Cascade {
   std::int64_t changes = 0;
   bool second_by_shear = false;
   bool first_by_shear = false;
+  std::optional<Change> first;
+  /// `before` located at the fold between springs (refining rows only).
+  std::optional<ContactSnapshot> refined_before;
 };
 
 class ProgramRunner {
@@ -78,8 +82,10 @@ class ProgramRunner {
              spec.reference_image, scene.program->rebinding),
         max_springs_(spec.max_springs),
         observers_(observers),
+        observe_springs_(observers.wants(EventKind::spring_detached)),
         largest_(largest) {
     row_.record_edge_forces(spec.edge_forces);
+    if (spec.refine && !stepping_) front_.emplace(criterion_);
   }
 
   RunResult run();
@@ -109,6 +115,11 @@ class ProgramRunner {
   void emit(EventKind kind, const ContactSnapshot& state, std::int64_t spring = 0,
             bool in_cascade = false);
   void finish(RunResult& result);
+  StageLine line() const {
+    return {normal_start_, normal_rate_, tangential_start_, tangential_rate_};
+  }
+  /// Tells the front what a cascade of one change did to it.
+  void track_front(const Cascade& cascade);
 
   bool stepping_;
   double step_;  ///< stepping: the increment of the stage parameter
@@ -117,8 +128,11 @@ class ProgramRunner {
   ProgramRow row_;
   std::int64_t max_springs_;
   const ObserverList& observers_;
+  /// Asked once: whether anyone observes single springs (a log observer asks spdlog).
+  bool observe_springs_;
   LargestContact* largest_;
   RunResult result_;
+  std::optional<ProgramFront> front_;  ///< refining rows only
 
   // The stage under way: held = start + rate * t on each axis.
   const Stage* stage_ = nullptr;
@@ -227,8 +241,9 @@ void ProgramRunner::advance_to(double t) {
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   set_parameter(t);
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
-  if (!std::isfinite(stage_work_.normal) || !std::isfinite(stage_work_.tangential) ||
-      !finite(row_.snapshot())) {
+  // A force or displacement beyond a double makes the work of its moving axis so (an axis
+  // that does not move keeps its state until a change, which finish_cascade checks).
+  if (!std::isfinite(stage_work_.normal) || !std::isfinite(stage_work_.tangential)) {
     stop_ = Stop::overflow;
   }
   t_ = t;
@@ -421,7 +436,6 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
   const bool tangential_moves = row_.tangential().constraint.displacement_coefficient == 0.0;
   const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
-  const bool observe_springs = observers_.wants(EventKind::spring_detached);
   const std::int64_t k = row_.glued();
   const std::int64_t m = row_.in_contact();
   bool by_shear = false;
@@ -432,14 +446,15 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
     case Change::glue:
       row_.glue_next();
       guards_.glued_from = std::min(guards_.glued_from, k + 1);
-      if (observe_springs) emit(EventKind::spring_glued, row_.snapshot(), k + 1, in_cascade_);
+      if (observe_springs_) emit(EventKind::spring_glued, row_.snapshot(), k + 1, in_cascade_);
       break;
     case Change::let_go: {
       const double d = row_.indentation();
       const double u = row_.tangential_displacement();
       const double stretch_x = u - row_.boundary_offset();
-      by_shear = broken_at_rest(criterion_, stretch_x, row_.position(k));
-      if (observe_springs) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
+      // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
+      by_shear = boundary_let_go(u).kind == LetGo::Kind::now;
+      if (observe_springs_) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
       row_.let_go_boundary(row_.image(k) <= d);
       guards_.released_to = std::max(guards_.released_to, k);
       guards_.released_with_stretch = stretch_x != 0.0;
@@ -448,10 +463,10 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
     case Change::touch:
       row_.touch_next();
       guards_.touched_from = std::min(guards_.touched_from, m + 1);
-      if (observe_springs) emit(EventKind::spring_touched, row_.snapshot(), m + 1, in_cascade_);
+      if (observe_springs_) emit(EventKind::spring_touched, row_.snapshot(), m + 1, in_cascade_);
       break;
     case Change::lift:
-      if (observe_springs) emit(EventKind::spring_lifted, row_.snapshot(), m, in_cascade_);
+      if (observe_springs_) emit(EventKind::spring_lifted, row_.snapshot(), m, in_cascade_);
       row_.lift_outer();
       guards_.lifted_to = std::max(guards_.lifted_to, m);
       break;
@@ -460,7 +475,10 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
   if (change != Change::fall_in) {
     ++cascade.changes;
     ++result_.counts.events;
-    if (cascade.changes == 1) cascade.first_by_shear = by_shear;
+    if (cascade.changes == 1) {
+      cascade.first_by_shear = by_shear;
+      cascade.first = change;
+    }
     if (cascade.changes == 2) cascade.second_by_shear = by_shear;
   }
 }
@@ -484,6 +502,13 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
   jump.critical = cascade.before;
   jump.after = after;
   jump.by_shear = cascade.second_by_shear;
+  if (front_) {
+    jump.refined_critical = cascade.refined_before;
+    jump.refined_after = front_->at_rest(row_);
+    front_->other_change();
+    front_->candidate(jump.refined_critical);
+    front_->candidate(jump.refined_after);
+  }
   result_.jumps.push_back(jump);
   emit(EventKind::jump, after);
 }
@@ -510,6 +535,18 @@ void ProgramRunner::start_stage(const Stage& stage) {
   start_axis(stage.tangential, false, tangential_start_, tangential_rate_);
   t_ = 0.0;
   guards_ = {};
+  if (front_) front_->stage_started();
+}
+
+void ProgramRunner::track_front(const Cascade& cascade) {
+  if (!front_ || cascade.changes != 1) return;
+  if (cascade.first == Change::glue) {
+    front_->glued_one(cascade.before);
+  } else if (cascade.first == Change::let_go) {
+    front_->let_go_one(t_, cascade.glued, cascade.before);
+  } else {
+    front_->other_change();
+  }
 }
 
 Cascade ProgramRunner::begin_cascade() {
@@ -532,6 +569,10 @@ bool ProgramRunner::run_changes(std::optional<Change> first, Cascade& cascade, s
   const std::int64_t cap = 4 * (max_springs_ + 2);
   while (const auto change = due()) {
     if (cascade.changes >= limit) return true;
+    if (front_ && cascade.changes == 1 && cascade.first == Change::let_go &&
+        *change == Change::let_go) {
+      cascade.refined_before = front_->fold(row_, line(), t_, cascade.before);
+    }
     if (cascade.changes > cap) {
       throw std::runtime_error(
           fmt::format("a cascade did not end: the spring row keeps changing at t = {}", t_));
@@ -600,6 +641,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
       Cascade cascade = begin_cascade();
       run_changes(std::nullopt, cascade, std::numeric_limits<std::int64_t>::max());
       finish_cascade(cascade);
+      track_front(cascade);
     }
     // A contact that slides by stick-slip (rebinding under a shear ramp) changes its edge
     // spring once per slip, forever until separation and without bound under a large ramp:
@@ -640,11 +682,16 @@ void ProgramRunner::run_stage(const Stage& stage) {
       Cascade cascade = begin_cascade();
       run_changes(next->second, cascade, std::numeric_limits<std::int64_t>::max());
       finish_cascade(cascade);
+      track_front(cascade);
     }
   }
   if (stop_ == Stop::overflow) return;  // the stage's numbers left the range of a double
   const ContactSnapshot end = row_.snapshot();
   result_.stages.push_back({stage.name, end, stage_work_});
+  if (front_ && stop_ == Stop::none) {
+    result_.stages.back().refined_end = front_->at_rest(row_);
+    front_->candidate(result_.stages.back().refined_end);
+  }
   total_work_ += stage_work_;
   emit(EventKind::stage_end, end);
 }
@@ -656,6 +703,7 @@ void ProgramRunner::finish(RunResult& r) {
     if (c.changes >= 2) {
       r.status = c.second_by_shear ? RunStatus::shear_off : RunStatus::instability;
       r.critical = c.before;
+      r.refined_critical = c.refined_before;
     } else if (std::abs(c.before.normal_force) <= kNegligibleForce * largest_force_ &&
                c.in_contact <= 1) {
       r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::no_instability;
@@ -734,7 +782,10 @@ void ProgramRunner::finish(RunResult& r) {
     return;
   }
   r.status = RunStatus::completed;
-  if (last_contact_loss_) r.critical = last_contact_loss_->before;
+  if (last_contact_loss_) {
+    r.critical = last_contact_loss_->before;
+    r.refined_critical = last_contact_loss_->refined_before;
+  }
 }
 
 RunResult ProgramRunner::run() {
@@ -744,7 +795,10 @@ RunResult ProgramRunner::run() {
   }
   finish(result_);
   result_.jumps.shrink_to_fit();
-  if (peak_) result_.peak = peak_;
+  if (peak_) {
+    result_.peak = peak_;
+    if (front_) result_.refined_peak = front_->peak(*peak_);
+  }
   return std::move(result_);
 }
 

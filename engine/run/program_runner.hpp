@@ -25,6 +25,9 @@ struct ProgramRowSpec {
   double reference_image = 0.0;        ///< g at spring N (see ProgramRow)
   std::int64_t max_springs = 0;        ///< the row ends here: the run stops if it needs more
   bool edge_forces = false;  ///< snapshots carry the edge springs' forces (rtol's estimates)
+  /// Event method: the reported states also located between springs (program_front.hpp),
+  /// for extrapolation across rows.
+  bool refine = false;
 };
 
 /// Runs every stage of scene.program on one row. Emits every event but `finished`.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "engine/base/bracketed_root.hpp"
 #include "engine/run/program_runner.hpp"
@@ -77,9 +78,70 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
   return bracketed_root(excess, lo, hi);
 }
 
+/// The frame of a front at radius a_max reached at depth d: g there, or the front value it
+/// equals up to rounding, so that spring N is reached at the deepest point (SPEC).
+ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
+  const double g = scene.profile->mdr_image(a_max);
+  const double front =
+      indentation + (glued_edge ? std::sqrt(2.0 * std::numbers::pi * a_max *
+                                            (scene.material.approach_work_of_adhesion /
+                                             scene.material.effective_modulus))
+                                : 0.0);
+  return {a_max, std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)) ? front : g};
+}
+
+/// Where every normal stage holds the depth (fixed grips), the deepest depth d_max is known
+/// before the run, and the front there is advancing (a depth never reached before): a_max is
+/// its continuum radius, with no pilot. Nothing where a stage holds a force or pushes on
+/// without end, or the front is not bracketed.
+std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
+  double held = 0.0;
+  double deepest = 0.0;
+  for (const Stage& stage : scene.program->stages) {
+    if (!stage.normal) continue;
+    const StageAxis& axis = *stage.normal;
+    if (axis.control != "fixed-grips") return std::nullopt;
+    if (axis.motion == StageAxis::Motion::to) held = axis.value;
+    if (axis.motion == StageAxis::Motion::by) {
+      if (stage.until_separation && axis.value > 0.0) return std::nullopt;
+      if (!stage.until_separation) held += axis.value;
+    }
+    deepest = std::max(deepest, held);
+  }
+  const Profile& profile = *scene.profile;
+  if (!(deepest > 0.0) || profile.fixed_contact_radius()) return std::nullopt;
+  // The front glues where the gap reaches sqrt(2 pi x dgamma_a / E*) (0: glue or press on
+  // touch), as ProgramRow's front does.
+  const double coefficient =
+      scene.material.work_of_adhesion > 0.0
+          ? 2.0 * std::numbers::pi *
+                (scene.material.approach_work_of_adhesion / scene.material.effective_modulus)
+          : 0.0;
+  const auto excess = [&](double x) {
+    return profile.mdr_image(x) - std::sqrt(coefficient * x) - deepest;
+  };
+  double hi = 0.0;
+  try {
+    hi = profile.contact_radius_at_depth(deepest);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  for (int i = 0;
+       i < 64 && std::isfinite(hi) && hi <= profile.outer_radius() && !(excess(hi) > 0.0); ++i) {
+    hi *= 2.0;
+  }
+  if (!std::isfinite(hi) || hi > profile.outer_radius() || !(excess(hi) > 0.0)) {
+    return std::nullopt;
+  }
+  const double a_max = bracketed_root(excess, 0.0, hi);
+  if (!(a_max > 0.0)) return std::nullopt;
+  return frame_at(scene, a_max, deepest, coefficient > 0.0);
+}
+
 }  // namespace
 
 ProgramRowFrame program_row_frame(const Scene& scene) {
+  if (const auto frame = frame_without_pilot(scene)) return *frame;
   double radius = guess_radius(scene);
   double pilot_radius = radius;  // the radius of the pilot that found `largest`
   LargestContact largest;
@@ -102,14 +164,7 @@ ProgramRowFrame program_row_frame(const Scene& scene) {
   }
   if (largest.springs == 0) return {radius, scene.profile->mdr_image(radius)};
   const double a_max = front_radius(scene, largest, pilot_radius / kPilotSprings);
-  const double g = scene.profile->mdr_image(a_max);
-  const double front = largest.indentation +
-                       (largest.glued_edge ? std::sqrt(2.0 * std::numbers::pi * a_max *
-                                                       (scene.material.approach_work_of_adhesion /
-                                                        scene.material.effective_modulus))
-                                           : 0.0);
-  // Spring N is reached at the deepest point whatever the rounding of g(a_max) (SPEC).
-  return {a_max, std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)) ? front : g};
+  return frame_at(scene, a_max, largest.indentation, largest.glued_edge);
 }
 
 ProgramRowSpec program_row(const ProgramRowFrame& frame, std::int64_t springs) {

@@ -81,9 +81,13 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   using Extrapolation = DiscretizationOptions::Extrapolation;
   RunResult result;
   if (scene.program) {
-    result = scene.discretization.rtol
-                 ? run_program_rtol(scene, *scene.discretization.rtol, observers)
-                 : run_program(scene, observers);
+    if (scene.discretization.rtol) {
+      result = run_program_rtol(scene, *scene.discretization.rtol, observers);
+    } else if (scene.discretization.richardson()) {
+      result = run_program_richardson(scene, observers);
+    } else {
+      result = run_program(scene, observers);
+    }
   } else if (scene.discretization.rtol) {
     std::optional<Accuracy::Route> route;
     if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;

@@ -34,8 +34,6 @@ struct Program {
   std::vector<Stage> stages;
   /// A spring that has let go glues again when pressed back (true), or only pushes (false).
   bool rebinding = false;
-  /// True when the program was made from the shorthand keys (preload, tangential, normal).
-  bool from_shorthand = false;
 };
 
 }  // namespace mdrsim

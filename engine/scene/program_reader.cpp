@@ -172,7 +172,6 @@ Program read_program(TomlReader& loading, const ControllerRegistry& controllers)
   for (std::size_t i = 0; i < stages.size(); ++i) {
     program.stages.push_back(read_stage(stages[i], i + 1, controllers, normal, tangential, named));
   }
-  program.from_shorthand = false;
   return program;
 }
 
@@ -188,14 +187,6 @@ void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Mater
     material.fail_at("approach_work_of_adhesion",
                      "applies to loading programs ([[loading.stage]]) only; the shorthand's "
                      "preload glues on touch");
-  }
-}
-
-void refuse_options_not_yet_for_programs(TomlReader& root, const Scene& scene) {
-  constexpr const char* kNotYet = "is not yet available for loading programs";
-  if (scene.discretization.richardson()) {
-    TomlReader discretization = root.table("discretization");
-    discretization.fail_range("extrapolation", fmt::format("= \"richardson\" {}", kNotYet));
   }
 }
 

@@ -20,8 +20,4 @@ Program read_program(TomlReader& loading, const ControllerRegistry& controllers)
 /// loading.rebinding and a positive material.approach_work_of_adhesion.
 void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Material& values);
 
-/// Refuses the options the engine does not yet run for programs: discretization.rtol,
-/// discretization.extrapolation = "richardson" and solver.method = "stepping".
-void refuse_options_not_yet_for_programs(TomlReader& root, const Scene& scene);
-
 }  // namespace mdrsim

@@ -346,7 +346,6 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
 
   if (auto solver = root.optional_table("solver")) read_solver(*solver, scene.solver);
-  if (scene.program) refuse_options_not_yet_for_programs(root, scene);
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");

@@ -7,6 +7,7 @@
 
 #include "controllers/builtin_controllers.hpp"
 #include "detachment/mode_mixed_criterion.hpp"
+#include "engine/events/result_json.hpp"
 #include "engine/reference/parabolic_reference.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
@@ -176,6 +177,19 @@ TEST(ProgramRunner, AFixedLoadPullingOnNothingEndsTheProgramWithAWarning) {
   EXPECT_EQ(r.counts.events, 0);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_NE(r.warnings[0].find("nothing holds it"), std::string::npos) << r.warnings[0];
+}
+
+// A program that stops in a stage reports the controllers of that stage, not of its last.
+TEST(ProgramRunner, AProgramStoppedEarlyReportsTheControlsOfItsLastStageRun) {
+  Scene scene = cycle_scene(kWork, 2e-5, 100);
+  scene.program->stages = {
+      {.name = "pull", .normal = axis("fixed-load", StageAxis::Motion::to, -1e-3)},
+      {.name = "press", .normal = axis("fixed-grips", StageAxis::Motion::to, 1e-6)}};
+  const RunResult r = run_scene(scene, {});
+  ASSERT_EQ(r.stages.size(), 1u);
+  EXPECT_EQ(final_controls(scene, r.stages.size()).first, "fixed-load");
+  EXPECT_EQ(final_controls(scene).first, "fixed-grips");
+  EXPECT_EQ(result_to_json(scene, r)["control"]["normal"], "fixed-load");
 }
 
 // A jump changes the row: a change located at t that rounding leaves just short of its

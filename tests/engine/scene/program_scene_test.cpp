@@ -117,7 +117,6 @@ TEST(ProgramScene, ReadsEveryStage) {
   ASSERT_TRUE(scene.program.has_value());
   const Program& program = *scene.program;
   EXPECT_TRUE(program.rebinding);
-  EXPECT_FALSE(program.from_shorthand);
   EXPECT_EQ(scene.material.approach_work_of_adhesion, 0.01);
   EXPECT_EQ(scene.material.work_of_adhesion, 0.05);
   EXPECT_EQ(scene.springs, 100);
@@ -365,15 +364,6 @@ std::vector<BadProgram> stage_cases() {
   };
 }
 INSTANTIATE_TEST_SUITE_P(Stages, BadProgramTest, ::testing::ValuesIn(stage_cases()), case_name);
-
-std::vector<BadProgram> option_cases() {
-  return {
-      {"Richardson", "springs = 100", "springs = 100\nextrapolation = \"richardson\"",
-       "scene.toml:25:17: discretization.extrapolation = \"richardson\" is not yet available for "
-       "loading programs"},
-  };
-}
-INSTANTIATE_TEST_SUITE_P(Options, BadProgramTest, ::testing::ValuesIn(option_cases()), case_name);
 
 TEST(ProgramScene, TooManyStages) {
   std::string stages = "stage = [{}";

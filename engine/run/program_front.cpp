@@ -1,0 +1,141 @@
+// The glued front of a program row between springs: its phase from the front's margin, and the
+// row's branch interpolated there.
+#include "engine/run/program_front.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/base/bracketed_root.hpp"
+#include "engine/run/fold_refinement.hpp"
+
+namespace mdrsim {
+
+void StageLine::place(ProgramRow& row, double t) const {
+  if (normal_rate != 0.0) row.set_normal_held(normal_start + normal_rate * t);
+  if (tangential_rate != 0.0) row.set_tangential_held(tangential_start + tangential_rate * t);
+}
+
+double ProgramFront::let_go_margin(const ProgramRow& row) const {
+  const std::int64_t k = row.glued();
+  const double stretch = std::max(0.0, row.image(k) - row.indentation());
+  return criterion_->margin(
+      {stretch, row.tangential_displacement() - row.boundary_offset(), row.position(k)});
+}
+
+std::optional<ContactSnapshot> ProgramFront::at_rest(const ProgramRow& row) {
+  const std::int64_t k = row.glued();
+  if (row.in_contact() == 0) return row.snapshot();  // nothing in contact: no front to place
+  if (row.in_contact() != k || k < 2) {
+    phase_.reset();
+    return std::nullopt;
+  }
+  // The branch one spring in and one spring out, at the same held values.
+  ProgramRow inner = row;
+  inner.let_go_boundary(false);
+  const ContactSnapshot at = row.snapshot();
+
+  std::optional<double> phase;
+  std::optional<ContactSnapshot> outer;
+  if (row.adhesive() && row.can_glue(k + 1)) {
+    // Advancing: spring n glues once the gap g_n - d (with n - 1 glued) reaches its limit.
+    const auto glue_margin = [&](const ProgramRow& r, std::int64_t n) {
+      return r.image(n) - r.indentation() - (n == 1 ? 0.0 : r.front_limit(n));
+    };
+    const double here = glue_margin(inner, k);
+    const double next = glue_margin(row, k + 1);
+    if (here <= 0.0 && next > 0.0) {
+      phase = here / (here - next);
+      ProgramRow out = row;
+      out.glue_next();
+      outer = out.snapshot();
+    }
+  }
+  if (!phase) {
+    // Receding: the boundary spring lets go once the criterion's margin reaches zero.
+    ProgramRow out = row;
+    out.glue_next_as_boundary();
+    const double here = let_go_margin(row);
+    const double next = let_go_margin(out);
+    if (here > 0.0 && next <= 0.0) phase = here / (here - next);
+    outer = out.snapshot();
+  }
+  if (phase) {
+    phase_ = phase;
+  } else if (!phase_) {
+    return std::nullopt;  // pinned, with no phase known since it last moved
+  }
+  return interpolate_snapshots(inner.snapshot(), at, *outer, *phase_);
+}
+
+void ProgramFront::candidate(const std::optional<ContactSnapshot>& state) {
+  if (!state || state->springs_in_contact == 0 || !(state->normal_force < 0.0)) return;
+  if (!peak_ || state->normal_force < peak_->normal_force) peak_ = state;
+}
+
+void ProgramFront::branch_state(bool let_go, const ContactSnapshot& before) {
+  if (branch_size_ > 0 && branch_let_go_ != let_go) branch_size_ = 0;
+  branch_let_go_ = let_go;
+  if (branch_size_ == 3) {
+    branch_[0] = branch_[1];
+    branch_[1] = branch_[2];
+    branch_size_ = 2;
+  }
+  branch_[static_cast<std::size_t>(branch_size_++)] = before;
+  if (branch_size_ < 3) return;
+  const double in = branch_[0].normal_force;
+  const double at = branch_[1].normal_force;
+  const double out = branch_[2].normal_force;
+  if (!(at <= in && at <= out)) return;
+  if (const auto s = parabola_vertex(in, at, out)) {
+    candidate(interpolate_snapshots(branch_[0], branch_[1], branch_[2], *s));
+  }
+}
+
+std::optional<ContactSnapshot> ProgramFront::peak(const ContactSnapshot& plain) const {
+  if (!peak_ ||
+      !(std::abs(peak_->normal_force - plain.normal_force) <= 2.0 * plain.edge_normal_force)) {
+    return std::nullopt;
+  }
+  return peak_;
+}
+
+std::optional<ContactSnapshot> ProgramFront::fold(const ProgramRow& row, const StageLine& line,
+                                                  double t, const ContactSnapshot& before) {
+  const std::int64_t k = row.glued() + 1;  // the spring that let go at t
+  if (!previous_let_go_ || previous_let_go_->spring != k + 1 || row.in_contact() != k - 1 ||
+      k < 3 || !(previous_let_go_->t < t)) {
+    return std::nullopt;
+  }
+  // The let-go of spring k - 1 along the stage line (d and u_x affine in t while the springs
+  // stay): it is due already at t, so it lies behind, where the margin is still positive.
+  const double d = row.indentation();
+  const double u = row.tangential_displacement();
+  const double d_per_t = row.indentation_per_held() * line.normal_rate;
+  const double u_per_t = row.tangential_per_held() * line.tangential_rate;
+  const double g = row.image(k - 1);
+  const double s = row.boundary_offset();
+  const double a = row.position(k - 1);
+  const auto margin = [&](double at) {
+    const double stretch = std::max(0.0, g - (d + d_per_t * (at - t)));
+    return criterion_->margin({stretch, u + u_per_t * (at - t) - s, a});
+  };
+  if (margin(t) > 0.0) return std::nullopt;
+  // Back from t in steps that double from the last let-go's distance (which is tiny where
+  // the fold falls between springs k + 1 and k).
+  double behind = previous_let_go_->t;
+  for (int i = 0; i < 64 && !(margin(behind) > 0.0); ++i) behind = t - 2.0 * (t - behind);
+  if (!(margin(behind) > 0.0)) return std::nullopt;  // broken at rest: a shear-off, not a fold
+  const double t_inner = bracketed_root(margin, behind, t);
+  ProgramRow inner = row;
+  line.place(inner, t_inner);
+
+  // The fold is the largest parameter of the let-go branch: the vertex of -t.
+  const auto vertex = parabola_vertex(-t_inner, -t, -previous_let_go_->t);
+  if (!vertex) return std::nullopt;
+  ContactSnapshot q =
+      interpolate_snapshots(inner.snapshot(), before, previous_let_go_->before, *vertex);
+  q.springs_in_contact = before.springs_in_contact;
+  return q;
+}
+
+}  // namespace mdrsim

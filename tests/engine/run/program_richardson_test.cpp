@@ -1,0 +1,149 @@
+// Richardson on programs (issue 9, point 3): the reported states located between springs and
+// extrapolated across rows of N/2, N and 2N springs, against the continuum
+// (tests/support/program_reference), each estimate at least its error.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "engine/run/run_scene.hpp"
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "tests/support/program_reference.hpp"
+
+namespace mdrsim {
+namespace {
+
+namespace pr = program_reference;
+
+// The example scenes: R = 1 cm, E* = 1 MPa, dgamma = 0.05 J/m^2.
+const double kForce = 1.5 * std::numbers::pi * 0.01 * 0.05;  ///< F0 [N]
+const double kDepth = std::cbrt(3.0 * std::numbers::pi * std::numbers::pi * 0.01 * 0.05 * 0.05 /
+                                (64.0 * 1e6 * 1e6));  ///< d0 [m]
+
+/// scenes/programs/NAME.toml on `springs` springs, with `extrapolation`.
+Scene example(const std::string& name, int springs, const char* extrapolation) {
+  const std::string path = std::string(MDRSIM_SOURCE_DIR) + "/scenes/programs/" + name;
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  const std::size_t at = s.find("springs = ");
+  s.replace(at, s.find('\n', at) - at,
+            "springs = " + std::to_string(springs) + "\nextrapolation = \"" + extrapolation + "\"");
+  return SceneDocument::from_text(s, name).build(Registries::builtin());
+}
+
+/// |value - reference| in F0, checked against `tolerance` F0 and against the estimate.
+double expect_within(const std::string& what, double value, std::optional<double> estimate,
+                     double reference, double tolerance) {
+  const double error = std::abs(value - reference) / kForce;
+  EXPECT_LE(error, tolerance) << what << ": " << value / kForce << " F0 against "
+                              << reference / kForce << " F0";
+  EXPECT_TRUE(estimate) << what;
+  if (estimate) {
+    EXPECT_LE(error, *estimate / kForce)
+        << what << ": the estimate " << *estimate / kForce << " F0 is below the error " << error;
+  }
+  return error;
+}
+
+// Issue 9's accuracy target on the smallest rows: the jump in, the end of the approach and the
+// fold within 1e-4 F0 from rows of 64, 128 and 256 springs.
+TEST(ProgramRichardson, ReversibleCycleWithin1e4FromRowsOf64To256Springs) {
+  const RunResult r = run_scene(example("jkr_cycle_reversible.toml", 128, "richardson"), {});
+  EXPECT_EQ(r.accuracy.route, Accuracy::Route::richardson);
+  EXPECT_EQ(r.accuracy.rows, (std::vector<std::int64_t>{64, 128, 256}));
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+  ASSERT_EQ(r.jumps.size(), 2u);
+  ASSERT_EQ(r.stages.size(), 2u);
+  const pr::ReversibleCycle expected =
+      pr::reversible_jkr_cycle(r.stages[0].end.indentation / kDepth);
+  expect_within("jump-in after", r.jumps[0].after.normal_force, r.jumps[0].after_error_estimate,
+                expected.jump_in_after.normal_force * kForce, 1e-4);
+  expect_within("approach end", r.stages[0].end.normal_force,
+                r.stages[0].normal_force_error_estimate,
+                expected.approach_end.normal_force * kForce, 1e-4);
+  expect_within("jump-out critical", r.jumps[1].critical.normal_force,
+                r.jumps[1].critical_error_estimate, expected.retract_critical.normal_force * kForce,
+                1e-4);
+  ASSERT_TRUE(r.critical);
+  EXPECT_EQ(r.critical->normal_force, r.jumps[1].critical.normal_force);
+}
+
+// Without the location between springs the rows' sawtooth would be extrapolated too: the
+// extrapolated states are far closer than the finest row's own.
+TEST(ProgramRichardson, ExtrapolationRemovesTheSawtoothOfTheFinestRow) {
+  const RunResult extrapolated =
+      run_scene(example("jkr_cycle_reversible.toml", 256, "richardson"), {});
+  const RunResult finest = run_scene(example("jkr_cycle_reversible.toml", 512, "none"), {});
+  ASSERT_EQ(extrapolated.jumps.size(), 2u);
+  ASSERT_EQ(finest.jumps.size(), 2u);
+  const auto error = [](double value, double reference) {
+    return std::abs(value / kForce - reference);
+  };
+  const double after = -8.0 / 9.0;
+  const double fold = pr::jkr_fold().normal_force;
+  EXPECT_LT(error(extrapolated.jumps[0].after.normal_force, after),
+            0.1 * error(finest.jumps[0].after.normal_force, after));
+  EXPECT_LT(error(extrapolated.jumps[1].critical.normal_force, fold),
+            0.1 * error(finest.jumps[1].critical.normal_force, fold));
+}
+
+TEST(ProgramRichardson, GlueOnTouchCycle) {
+  const RunResult r = run_scene(example("jkr_cycle_glue_on_touch.toml", 512, "richardson"), {});
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+  ASSERT_EQ(r.stages.size(), 2u);
+  ASSERT_TRUE(r.critical);
+  const pr::GlueOnTouchCycle expected =
+      pr::glue_on_touch_cycle(r.stages[0].end.indentation / kDepth);
+  expect_within("load end", r.stages[0].end.normal_force, r.stages[0].normal_force_error_estimate,
+                expected.load_end.normal_force * kForce, 1e-4);
+  expect_within("pull-off", r.critical->normal_force, r.accuracy.critical_error_estimate,
+                expected.retract_critical.normal_force * kForce, 1e-4);
+}
+
+// The critical points of the shear ramps and the inclined pull: folds located along lines in
+// which the tangential displacement moves (scenes/programs/ comments).
+TEST(ProgramRichardson, ShearRampsAndInclinedPull) {
+  const struct {
+    const char* scene;
+    double expected;  ///< F/F0 at the critical point
+  } cases[] = {
+      {"shear_ramp_fixed_load.toml", pr::shear_ramp_at_held_force(2.0, -0.5).critical.normal_force},
+      {"shear_ramp_fixed_grips.toml",
+       pr::shear_ramp_at_held_indentation(2.0, -1.0).critical.normal_force},
+      {"inclined_pull_45.toml", pr::inclined_pull(2.0).critical.normal_force},
+  };
+  for (const auto& c : cases) {
+    const RunResult r = run_scene(example(c.scene, 512, "richardson"), {});
+    ASSERT_TRUE(r.critical) << c.scene;
+    for (const std::string& w : r.warnings) ADD_FAILURE() << c.scene << ": " << w;
+    expect_within(c.scene, r.critical->normal_force, r.accuracy.critical_error_estimate,
+                  c.expected * kForce, 1e-4);
+  }
+}
+
+// Springs pressed outside the glued ones (no rebinding on reload) are a second front that the
+// rows do not locate: those states keep the finest row's value and plain estimate, and a
+// warning says which.
+TEST(ProgramRichardson, PressedSpringsFallBackToTheFinestRowWithAWarning) {
+  const RunResult r = run_scene(example("reload_rebinding_false.toml", 512, "richardson"), {});
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.front().find("could not be located between springs"), std::string::npos)
+      << r.warnings.front();
+  const pr::ReloadProgram expected = pr::reload_program(12.0, 3.0, 6.0, false);
+  ASSERT_GE(r.stages.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    expect_within(r.stages[i].name, r.stages[i].end.normal_force,
+                  r.stages[i].normal_force_error_estimate, expected.stage_end_force[i] * kForce,
+                  1e-2);
+  }
+}
+
+}  // namespace
+}  // namespace mdrsim
