@@ -184,6 +184,22 @@ def main(argv=None):
                      run["work"]["normal"] / (scale.f0 * scale.d0), None))
     except (OSError, ValueError, KeyError, TypeError) as err:
         problems.append(f"{path}: {err}")
+    # The same cycle by Richardson on rows of 64, 128 and 256 springs, each state located
+    # between springs (README "Loading programs").
+    path = result("program_jkr_cycle_richardson.json")
+    try:
+        with open(path) as f:
+            run = json.load(f)
+        jumps = run.get("jumps", [])
+        if len(jumps) != 2:
+            problems.append(f"{path}: {len(jumps)} jumps, expected 2 (in and out)")
+        else:
+            rows.append(("program: same cycle, richardson 64/128/256, jump-in", jump_in,
+                         jumps[0]["after"]["normal_force"] / scale.f0, run.get("wall_time_s")))
+            rows.append(("program: same cycle, richardson 64/128/256, jump-out", fold,
+                         jumps[1]["critical"]["normal_force"] / scale.f0, None))
+    except (OSError, ValueError, KeyError, TypeError) as err:
+        problems.append(f"{path}: {err}")
 
     # ---- print
     width = max([len(r[0]) for r in rows] + [40])

@@ -51,6 +51,8 @@ echo "== figures" >&2
 echo "== a loading program: the reversible JKR cycle" >&2
 "$mdrsim" run scenes/programs/jkr_cycle_reversible.toml \
   --trajectory "$results/program_jkr_cycle.csv" --json "$results/program_jkr_cycle.json"
+"$mdrsim" run scenes/programs/jkr_cycle_reversible.toml --set discretization.springs=128 \
+  --set 'discretization.extrapolation="richardson"' --json "$results/program_jkr_cycle_richardson.json"
 "$py" scripts/plot_program.py "$results/program_jkr_cycle.csv" \
   --title "reversible JKR approach-retract cycle (scenes/programs/jkr_cycle_reversible.toml)"
 
