@@ -4,15 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <numbers>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "engine/run/run_scene.hpp"
-#include "engine/scene/registries.hpp"
-#include "engine/scene/scene_document.hpp"
+#include "tests/support/program_examples.hpp"
 #include "tests/support/program_reference.hpp"
 
 namespace mdrsim {
@@ -20,22 +16,13 @@ namespace {
 
 namespace pr = program_reference;
 
-// The example scenes: R = 1 cm, E* = 1 MPa, dgamma = 0.05 J/m^2.
-const double kForce = 1.5 * std::numbers::pi * 0.01 * 0.05;  ///< F0 [N]
-const double kDepth = std::cbrt(3.0 * std::numbers::pi * std::numbers::pi * 0.01 * 0.05 * 0.05 /
-                                (64.0 * 1e6 * 1e6));  ///< d0 [m]
+const double kForce = test::kExampleForce;
+const double kDepth = test::kExampleDepth;
 
 /// scenes/programs/NAME.toml on `springs` springs, with `extrapolation`.
 Scene example(const std::string& name, int springs, const char* extrapolation) {
-  const std::string path = std::string(MDRSIM_SOURCE_DIR) + "/scenes/programs/" + name;
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
-  const std::size_t at = s.find("springs = ");
-  s.replace(at, s.find('\n', at) - at,
-            "springs = " + std::to_string(springs) + "\nextrapolation = \"" + extrapolation + "\"");
-  return SceneDocument::from_text(s, name).build(Registries::builtin());
+  return test::program_example(
+      name, "springs = " + std::to_string(springs) + "\nextrapolation = \"" + extrapolation + "\"");
 }
 
 /// |value - reference| in F0, checked against `tolerance` F0 and against the estimate.
@@ -110,21 +97,13 @@ TEST(ProgramRichardson, GlueOnTouchCycle) {
 // The critical points of the shear ramps and the inclined pull: folds located along lines in
 // which the tangential displacement moves (scenes/programs/ comments).
 TEST(ProgramRichardson, ShearRampsAndInclinedPull) {
-  const struct {
-    const char* scene;
-    double expected;  ///< F/F0 at the critical point
-  } cases[] = {
-      {"shear_ramp_fixed_load.toml", pr::shear_ramp_at_held_force(2.0, -0.5).critical.normal_force},
-      {"shear_ramp_fixed_grips.toml",
-       pr::shear_ramp_at_held_indentation(2.0, -1.0).critical.normal_force},
-      {"inclined_pull_45.toml", pr::inclined_pull(2.0).critical.normal_force},
-  };
+  const auto cases = test::shear_and_inclined_examples();
   for (const auto& c : cases) {
     const RunResult r = run_scene(example(c.scene, 512, "richardson"), {});
     ASSERT_TRUE(r.critical) << c.scene;
     for (const std::string& w : r.warnings) ADD_FAILURE() << c.scene << ": " << w;
     expect_within(c.scene, r.critical->normal_force, r.accuracy.critical_error_estimate,
-                  c.expected * kForce, 1e-4);
+                  c.normal_force * kForce, 1e-4);
   }
 }
 

@@ -3,15 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "engine/run/run_scene.hpp"
-#include "engine/scene/registries.hpp"
-#include "engine/scene/scene_document.hpp"
+#include "tests/support/program_examples.hpp"
 #include "tests/support/program_reference.hpp"
 
 namespace mdrsim {
@@ -19,21 +15,12 @@ namespace {
 
 namespace pr = program_reference;
 
-// The example scenes: R = 1 cm, E* = 1 MPa, dgamma = 0.05 J/m^2.
-const double kForce = 1.5 * std::numbers::pi * 0.01 * 0.05;  ///< F0 [N]
-const double kDepth = std::cbrt(3.0 * std::numbers::pi * std::numbers::pi * 0.01 * 0.05 * 0.05 /
-                                (64.0 * 1e6 * 1e6));  ///< d0 [m]
+const double kForce = test::kExampleForce;
+const double kDepth = test::kExampleDepth;
 
 /// scenes/programs/NAME.toml with its springs replaced by rtol.
 Scene scene_with_rtol(const std::string& name, double rtol) {
-  const std::string path = std::string(MDRSIM_SOURCE_DIR) + "/scenes/programs/" + name;
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
-  const std::size_t at = s.find("springs = ");
-  s.replace(at, s.find('\n', at) - at, "rtol = " + std::to_string(rtol));
-  return SceneDocument::from_text(s, name).build(Registries::builtin());
+  return test::program_example(name, "rtol = " + std::to_string(rtol));
 }
 
 /// One checked force: the engine's value and estimate against the continuum's [N].
@@ -88,25 +75,16 @@ TEST_P(ProgramRtol, ReloadStageEndsMeetRtolWithAndWithoutRebinding) {
 }
 
 // The critical points of the shear ramps and the inclined pull, whose folds the paper's
-// closed forms give (scenes/programs/ comments: preload radius 2 a0, held F = -0.5 F0 or
-// d = -1 d0; the pull from d_p = 2 d0 at 45 degrees).
+// closed forms give.
 TEST_P(ProgramRtol, ShearRampsAndInclinedPullCriticalPointsMeetRtol) {
   const double rtol = GetParam();
-  const struct {
-    const char* scene;
-    double expected;  ///< F/F0 at the critical point
-  } cases[] = {
-      {"shear_ramp_fixed_load.toml", pr::shear_ramp_at_held_force(2.0, -0.5).critical.normal_force},
-      {"shear_ramp_fixed_grips.toml",
-       pr::shear_ramp_at_held_indentation(2.0, -1.0).critical.normal_force},
-      {"inclined_pull_45.toml", pr::inclined_pull(2.0).critical.normal_force},
-  };
+  const auto cases = test::shear_and_inclined_examples();
   for (const auto& c : cases) {
     const RunResult r = run_scene(scene_with_rtol(c.scene, rtol), {});
     EXPECT_TRUE(r.accuracy.rtol_met) << c.scene;
     ASSERT_TRUE(r.critical) << c.scene;
     expect_within(c.scene, r.critical->normal_force, r.accuracy.critical_error_estimate,
-                  c.expected * kForce, rtol);
+                  c.normal_force * kForce, rtol);
   }
 }
 
