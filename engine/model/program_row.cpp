@@ -138,8 +138,15 @@ void ProgramRow::glue_next_as_boundary() {
   glue_at(runs_.empty() ? tangential_.rest : runs_.back().offset);
 }
 
+bool ProgramRow::tangential_unchanged_by(double offset) const {
+  // Where the tangential displacement does not depend on the springs (a_F = 0), a spring at
+  // zero tangential stretch adds or removes no tangential force.
+  return tangential_.constraint.force_coefficient == 0.0 && tangential_cached_ &&
+         offset == tangential_equilibrium_.displacement;
+}
+
 void ProgramRow::glue_at(double u) {
-  springs_changed(true, true);
+  springs_changed(true, !tangential_unchanged_by(u));
   ++glued_;
   if (glued_ > ever_glued_) ever_glued_ = glued_;
   if (glued_ > in_contact_) {
@@ -153,7 +160,7 @@ void ProgramRow::glue_at(double u) {
 void ProgramRow::let_go_boundary(bool pressed) {
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
-  springs_changed(true, true);
+  springs_changed(true, !tangential_unchanged_by(runs_.back().offset));
   glued_offsets_.add(-runs_.back().offset);
   if (runs_.back().first == glued_) runs_.pop_back();
   if (!pressed && in_contact_ == glued_) {

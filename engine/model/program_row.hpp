@@ -143,6 +143,8 @@ class ProgramRow {
   }
   void fill(SpringValues& v, std::int64_t i) const;
   void glue_at(double offset);  ///< spring k+1 glues with this s
+  /// Whether a spring of offset s gluing or letting go leaves the tangential equilibrium.
+  bool tangential_unchanged_by(double offset) const;
   /// Drops what the change of the springs on each axis makes stale.
   void springs_changed(bool normal, bool tangential);
   mutable std::array<SpringValues, 4> recent_{};
