@@ -165,6 +165,8 @@ class ProgramRunner {
   // Path record.
   double largest_force_ = 0.0;
   std::optional<ContactSnapshot> peak_;
+  double inverse_of_ = 0.0;  ///< next_change: the d(d)/dt whose inverse is `inverse_`
+  double inverse_ = 0.0;
   std::optional<Cascade> last_contact_loss_;
   std::optional<Cascade> last_glue_loss_;
   bool ever_in_contact_ = false;
@@ -369,7 +371,13 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
       change = c;
     }
   };
-  const double per_indentation = vd != 0.0 ? 1.0 / vd : 0.0;  // one division per step
+  // 1/vd changes only with the springs' response (never under fixed grips): a division per
+  // event is a good share of its time.
+  if (vd != inverse_of_) {
+    inverse_of_ = vd;
+    inverse_ = vd != 0.0 ? 1.0 / vd : 0.0;
+  }
+  const double per_indentation = inverse_;
   const auto when_indentation = [&](double target) { return t_ + (target - d) * per_indentation; };
 
   if (m == 0 && !row_.normal_has_stiffness() && normal_rate_ > 0.0) {
@@ -485,7 +493,8 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
 
 void ProgramRunner::finish_cascade(const Cascade& cascade) {
   const ContactSnapshot after = row_.snapshot();
-  if (!finite(after) || !finite(cascade.before) || !std::isfinite(stage_work_.normal) ||
+  // `before` is within range: advance_to checked the work up to it.
+  if (!finite(after) || !std::isfinite(stage_work_.normal) ||
       !std::isfinite(stage_work_.tangential)) {
     stop_ = Stop::overflow;  // values beyond a double: nothing of it is recorded
     return;
@@ -679,6 +688,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
         break;
       }
       advance_to(next->first);
+      if (stop_ == Stop::overflow) break;
       Cascade cascade = begin_cascade();
       run_changes(next->second, cascade, std::numeric_limits<std::int64_t>::max());
       finish_cascade(cascade);
