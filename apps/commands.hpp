@@ -24,5 +24,7 @@ struct SweepOptions {
 /// Each returns the process exit code; bad input throws SceneError or UsageError.
 int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
+/// `mdrsim list`: the registered parts with their keys and units, on standard output.
+int list_command();
 
 }  // namespace mdrsim::cli

@@ -542,11 +542,14 @@ TEST_F(Cli, UnknownFlag) {
 }
 
 TEST_F(Cli, MissingOrUnknownSubcommand) {
-  EXPECT_TRUE(bad_input(run_mdrsim(""), "mdrsim: a subcommand is required"));
-  EXPECT_TRUE(bad_input(run_mdrsim("--json -"), "mdrsim: a subcommand is required"));
+  const std::string hint =
+      "mdrsim: a command is required (run, sweep, list), e.g. mdrsim run SCENE.toml; see mdrsim "
+      "--help";
+  EXPECT_TRUE(bad_input(run_mdrsim(""), hint));
+  EXPECT_TRUE(bad_input(run_mdrsim("--json -"), hint));
   EXPECT_TRUE(bad_input(run_mdrsim("simulate " + scene_),
                         "mdrsim: unknown command 'simulate' (known: "
-                        "run, sweep)"));
+                        "run, sweep, list; see mdrsim --help)"));
   EXPECT_TRUE(bad_input(run_mdrsim("run"), "mdrsim: scene is required"));
 }
 
