@@ -32,5 +32,7 @@ struct MergeOptions {
 int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
 int merge_command(const MergeOptions& options);
+/// `mdrsim list`: the registered parts with their keys and units, on standard output.
+int list_command();
 
 }  // namespace mdrsim::cli

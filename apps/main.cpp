@@ -8,12 +8,17 @@
 #include <cctype>
 #include <csignal>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <utility>
 
 #include "apps/commands.hpp"
 #include "apps/usage_error.hpp"
+#include "engine/events/program_version.hpp"
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace {
@@ -56,6 +61,50 @@ std::string usage_message(const std::string& what) {
   return text;
 }
 
+/// The names of `app`'s subcommands, joined by ", ".
+std::string command_names(CLI::App& app) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  return names;
+}
+
+/// The registered parts by name, for the help texts.
+std::string parts_footer() {
+  const auto registries = mdrsim::Registries::builtin();
+  const auto join = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+  };
+  return fmt::format(
+      "Profiles: {}\nCriteria: {}\nControllers: {}\n`mdrsim list` gives each one's keys and "
+      "units; README \"Scene values\" the keys a --set replaces.",
+      join(registries.profiles.names()), join(registries.criteria.names()),
+      join(registries.controllers.names()));
+}
+
+/// A --set value the shell has split (an unquoted inline table): CLI11 then complains about
+/// its pieces, while the user needs to hear about the quotes.
+std::optional<std::string> split_set_value(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string_view arg = argv[i];
+    std::string_view set;
+    if (arg == "--set" && i + 1 < argc) {
+      set = argv[i + 1];
+    } else if (arg.rfind("--set=", 0) == 0) {
+      set = arg.substr(6);
+    }
+    if (const auto eq = set.find('='); eq != std::string_view::npos && eq > 0) {
+      if (auto message = mdrsim::split_value_message(set.substr(0, eq), set.substr(eq + 1))) {
+        return message;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,12 +112,19 @@ int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"mdrsim: adhesive contact under combined normal and tangential loading (MDR)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("mdrsim ") + mdrsim::program_version(),
+                       "print the version and exit");
   std::string level = "info";
   const std::vector<std::string> levels(std::begin(kLevels), std::end(kLevels));
 
   mdrsim::cli::RunOptions run;
   CLI::App* run_app = app.add_subcommand("run", "pull one scene off and report its critical point");
-  run_app->add_option("scene", run.scene, "scene file (TOML)")->required();
+  run_app
+      ->add_option("scene", run.scene,
+                   "scene file: TOML, or JSON (a scene, or the result of run --json, whose "
+                   "scene it reruns); - reads standard input")
+      ->required();
+  run_app->footer(parts_footer);
   run_app->add_option("--set", run.sets, "override one scene value: KEY=VALUE (repeatable)")
       ->allow_extra_args(false);
   run_app->add_option("--json", run.json,
@@ -109,13 +165,27 @@ int main(int argc, char** argv) {
   merge_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 
+  CLI::App* list_app =
+      app.add_subcommand("list", "the registered profiles, criteria and controllers, with keys");
+  // Set last: a subcommand made after it would inherit it.
+  app.footer("`mdrsim list` names every profile, criterion and controller with its keys.");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
+    if (const auto split = split_set_value(argc, argv)) {
+      std::cerr << one_line(*split) << '\n';
+      return 2;
+    }
     if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
       std::cerr << "mdrsim: unknown command '" << mdrsim::printable(argv[1])
-                << "' (known: run, sweep, merge)\n";
+                << "' (known: " << command_names(app) << "; see mdrsim --help)\n";
+      return 2;
+    }
+    if (app.get_subcommands().empty()) {
+      std::cerr << "mdrsim: a command is required (" << command_names(app)
+                << "), e.g. mdrsim run SCENE.toml; see mdrsim --help\n";
       return 2;
     }
     std::cerr << usage_message(e.what()) << '\n';
@@ -132,6 +202,7 @@ int main(int argc, char** argv) {
       }
     }
     set_up_logging(level);
+    if (list_app->parsed()) return mdrsim::cli::list_command();
     if (run_app->parsed()) return mdrsim::cli::run_command(run);
     if (merge_app->parsed()) return mdrsim::cli::merge_command(merge);
     return mdrsim::cli::sweep_command(sweep);

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "apps/interrupt_cleanup.hpp"
 #include "apps/usage_error.hpp"
 #include "engine/scene/scene_error.hpp"
 
@@ -38,7 +39,7 @@ void require_distinct_outputs(const std::vector<std::pair<std::string, std::stri
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const auto& [flag, path] = outputs[i];
     if (path.empty() || path == "-") continue;
-    if (same_file(path, scene_path)) {
+    if (!scene_path.empty() && same_file(path, scene_path)) {
       throw UsageError(fmt::format("{}: '{}' is the scene file", flag, printable(path)));
     }
     for (std::size_t j = 0; j < i; ++j) {
@@ -81,6 +82,7 @@ OutputFile::OutputFile(std::string flag, const std::string& path)
   partial_ += ".partial";
   file_.open(partial_, std::ios::binary | std::ios::trunc);
   if (!file_) cannot_write(system_reason(errno));
+  interrupt_slot_ = remove_on_interrupt(partial_.string());
 }
 
 OutputFile::~OutputFile() {
@@ -89,6 +91,7 @@ OutputFile::~OutputFile() {
     std::error_code ec;
     if (!partial_.empty()) std::filesystem::remove(partial_, ec);
   }
+  forget_on_interrupt(interrupt_slot_);
 }
 
 std::ostream& OutputFile::stream() { return to_stdout_ ? std::cout : file_; }
@@ -108,6 +111,8 @@ void OutputFile::commit() {
   }
   if (!partial_.empty()) std::filesystem::rename(partial_, target_);
   committed_ = true;
+  forget_on_interrupt(interrupt_slot_);
+  interrupt_slot_ = -1;
 }
 
 }  // namespace mdrsim::cli

@@ -16,8 +16,9 @@ void require_distinct_outputs(const std::vector<std::pair<std::string, std::stri
                               const std::string& scene_path);
 
 /// Writes to PATH.partial and renames it to PATH on commit(); an uncommitted file is removed,
-/// so a failed run leaves no partial output behind. A symbolic link keeps pointing at the new
-/// file; a device or pipe (/dev/null, a fifo) is written in place, never replaced by a file.
+/// so a failed run leaves no partial output behind, nor one stopped by a signal where
+/// install_interrupt_cleanup() holds (interrupt_cleanup.hpp). A symbolic link keeps pointing at the
+/// new file; a device or pipe (/dev/null, a fifo) is written in place, never replaced by a file.
 class OutputFile {
  public:
   /// `flag` names the option in messages; throws UsageError when the file cannot be created.
@@ -37,6 +38,7 @@ class OutputFile {
   std::filesystem::path partial_;  ///< empty when written in place
   std::ofstream file_;
   bool committed_ = false;
+  int interrupt_slot_ = -1;  ///< the partial file's place in interrupt_cleanup, or -1
 };
 
 }  // namespace mdrsim::cli

@@ -12,6 +12,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/finite_result.hpp"
+#include "apps/interrupt_cleanup.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/usage_error.hpp"
@@ -116,11 +117,15 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
                             scale_symbol(f.scale), c.*f.member / scale_of(*s, f.scale));
       }
       fmt::print(out, "dimensionless: {}\n", line);
-    } else if (!scene.profile->jkr_scale_radius()) {
-      fmt::print(out, "dimensionless: not defined for profile \"{}\" (parabolic and sphere only)\n",
-                 scene.profile_name);
-    } else {
+      fmt::print(out, "scales: F0 = {:.8g} N, a0 = {:.8g} m, d0 = {:.8g} m; {}\n", s->force,
+                 s->radius, s->depth, s->basis);
+    } else if (!(scene.material.work_of_adhesion > 0.0)) {
       fmt::print(out, "dimensionless: not defined without adhesion (F0 = 0)\n");
+    } else {
+      fmt::print(out,
+                 "dimensionless: not defined for profile \"{}\" (no closed-form pull-off "
+                 "scales)\n",
+                 scene.profile_name);
     }
   } else {
     fmt::print(out, "critical: {}\n", missing_critical(r));
@@ -145,8 +150,10 @@ int run_command(const RunOptions& options) {
     throw UsageError("--trajectory: cannot share standard output with --json -");
   }
   require_distinct_outputs({{"--json", options.json}, {"--trajectory", options.trajectory}},
-                           options.scene);
+                           options.scene == "-" ? std::string() : options.scene);
   const SceneDocument document = load_scene_document(options.scene, options.sets);
+  // From here on a signal removes the outputs' temporaries (SPEC "Exit codes").
+  install_interrupt_cleanup();
   const Scene scene = document.build(Registries::builtin());
 
   std::optional<OutputFile> json_file;

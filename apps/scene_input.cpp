@@ -1,7 +1,10 @@
-// --set KEY=VALUE overrides, checked like the file itself once the scene is built.
+// The scene from a file or standard input, and its --set KEY=VALUE overrides, checked like the
+// file itself once the scene is built.
 #include "apps/scene_input.hpp"
 
 #include <fmt/format.h>
+
+#include <cstdio>
 
 #include "apps/usage_error.hpp"
 
@@ -9,7 +12,8 @@ namespace mdrsim::cli {
 
 SceneDocument load_scene_document(const std::string& path, const std::vector<std::string>& sets) {
   if (path.empty()) throw UsageError("mdrsim: the scene file path is empty");
-  SceneDocument document = SceneDocument::from_file(path);
+  SceneDocument document = path == "-" ? SceneDocument::from_stream(stdin, kStandardInputName, ".")
+                                       : SceneDocument::from_file(path);
   for (const std::string& set : sets) {
     const auto eq = set.find('=');
     if (eq == std::string::npos || eq == 0) {

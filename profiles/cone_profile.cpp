@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "profiles/power_law_profile.hpp"
+
 namespace mdrsim {
 
 ConeProfile::ConeProfile(double slope_angle_deg) {
@@ -26,5 +28,15 @@ double ConeProfile::contact_radius_at_depth(double depth) const {
 // 2 integral_0^a k (a - x) dx = k a^2 with k = (pi/2) tan(theta): the classical cone force
 // F = (pi/2) E* a^2 tan(theta) (Sneddon).
 double ConeProfile::nonadhesive_force_per_modulus(double a) const { return image_slope_ * a * a; }
+
+// k = (pi/2) tan(theta): a0 = 9 pi dgamma/(2 E* k^2), F0 = E* k a0^2/3 = 27 pi^2 dgamma^2/(4 E*
+// k^3), d0 = k a0/3, the critical indentation itself (positive: the cone jumps off pressed in).
+std::optional<PullOffScales> ConeProfile::pull_off_scales(double effective_modulus,
+                                                          double work_of_adhesion) const {
+  return PowerLawProfile::pull_off_scales_of(
+      image_slope_, 1.0, effective_modulus, work_of_adhesion,
+      "cone: the fixed-load pull-off, F0 = 54 dgamma^2/(pi E* tan^3 theta), a0 = 18 dgamma/(pi "
+      "E* tan^2 theta), d0 = 3 dgamma/(E* tan theta)");
+}
 
 }  // namespace mdrsim

@@ -21,6 +21,9 @@ class FlatPunchProfile final : public Profile {
   double nonadhesive_force_per_modulus(double contact_radius) const override;
   std::optional<double> fixed_contact_radius() const override { return radius_; }
   double outer_radius() const override { return radius_; }
+  /// Kendall's pull-off: F0 = sqrt(8 pi A^3 E* dgamma), a0 = A, d0 = sqrt(2 pi A dgamma/E*).
+  std::optional<PullOffScales> pull_off_scales(double effective_modulus,
+                                               double work_of_adhesion) const override;
 
  private:
   double radius_;  ///< A [m]

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace mdrsim {
 
@@ -46,6 +47,42 @@ double PowerLawProfile::contact_radius_at_depth(double depth) const {
 // 2 integral_0^a k (a^n - x^n) dx = 2 k a^(n+1) n/(n + 1), k = kappa(n) c.
 double PowerLawProfile::nonadhesive_force_per_modulus(double a) const {
   return 2.0 * image_coefficient_ * std::pow(a, exponent_ + 1.0) * exponent_ / (exponent_ + 1.0);
+}
+
+// JKR in MDR (paper eqs. 14-15 for any image): the boundary spring lets go at the stretch
+// dl(a) = sqrt(w a), w = 2 pi dgamma/E*, so along the pull-off branch d = k a^n - sqrt(w a) and
+// F = 2 E* (a d - integral_0^a k x^n dx) = 2 E* k n a^(n+1)/(n+1) - 2 E* sqrt(w) a^(3/2).
+// Under fixed load the contact jumps off at the minimum of F(a): dF/da = 0 gives
+// 2 k n a^(n-1/2) = 3 sqrt(w), a minimum for n > 1/2. There sqrt(w a) = (2 k n/3) a^n, so
+// F0 = -F = 2 E* k n (2n - 1) a0^(n+1)/(3(n + 1)) and d = k a0^n (3 - 2n)/3. d0 = k a0^n/3
+// equals |d| for the cone (n = 1) and the parabola (n = 2, k = 1/R: eq. 17); at n = 3/2 the
+// critical d is 0, so |d| cannot be the scale. Logarithms keep extreme values in range.
+std::optional<PullOffScales> PowerLawProfile::pull_off_scales_of(double k, double n,
+                                                                 double effective_modulus,
+                                                                 double work_of_adhesion,
+                                                                 std::string basis) {
+  if (!(n > 0.5) || !(work_of_adhesion > 0.0) || !(effective_modulus > 0.0) || !(k > 0.0)) {
+    return std::nullopt;
+  }
+  const double log_w =
+      std::log(2.0 * std::numbers::pi) + std::log(work_of_adhesion) - std::log(effective_modulus);
+  const double log_a0 =
+      (std::log(1.5) + 0.5 * log_w - std::log(k) - std::log(n)) * 2.0 / (2.0 * n - 1.0);
+  const double scales[] = {std::exp(std::log(2.0 * n * (2.0 * n - 1.0) / (3.0 * (n + 1.0))) +
+                                    std::log(effective_modulus) + std::log(k) + (n + 1.0) * log_a0),
+                           std::exp(log_a0), std::exp(std::log(k) + n * log_a0 - std::log(3.0))};
+  for (const double s : scales) {
+    if (!(s > 0.0) || !std::isfinite(s)) return std::nullopt;
+  }
+  return PullOffScales{scales[0], scales[1], scales[2], std::move(basis)};
+}
+
+std::optional<PullOffScales> PowerLawProfile::pull_off_scales(double effective_modulus,
+                                                              double work_of_adhesion) const {
+  return pull_off_scales_of(
+      image_coefficient_, exponent_, effective_modulus, work_of_adhesion,
+      "power_law: the fixed-load pull-off of g = k x^n, k = kappa(n) c: a0 = (3 sqrt(2 pi "
+      "dgamma/E*)/(2 k n))^(2/(2n-1)), F0 = 2 E* k n (2n-1) a0^(n+1)/(3(n+1)), d0 = k a0^n/3");
 }
 
 }  // namespace mdrsim

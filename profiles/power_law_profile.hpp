@@ -1,6 +1,9 @@
 // The power-law indenter f(r) = c r^n and its MDR image g(x) = kappa(n) c x^n.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -18,6 +21,17 @@ class PowerLawProfile final : public Profile {
   double mdr_image_slope(double x) const override;
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;
+  std::optional<PullOffScales> pull_off_scales(double effective_modulus,
+                                               double work_of_adhesion) const override;
+
+  /// The fixed-load pull-off of the image g = k x^n [m] on E* [Pa] with dgamma [J/m^2]:
+  /// a0 = (3 sqrt(2 pi dgamma/E*)/(2 k n))^(2/(2n-1)), F0 = 2 E* k n (2n-1) a0^(n+1)/(3(n+1)),
+  /// d0 = k a0^n/3 (= |d| there for n = 1 and 2); nullopt for n <= 1/2, where the force has
+  /// no minimum, or when a scale is not a positive finite number.
+  static std::optional<PullOffScales> pull_off_scales_of(double image_coefficient, double exponent,
+                                                         double effective_modulus,
+                                                         double work_of_adhesion,
+                                                         std::string basis);
 
  private:
   double coefficient_;        ///< c [m^(1-n)]

@@ -4,6 +4,8 @@
 #include <limits>
 #include <optional>
 
+#include "engine/base/pull_off_scales.hpp"
+
 namespace mdrsim {
 
 /// Required operations: shape() and mdr_image(). The others have numerical defaults that
@@ -39,6 +41,14 @@ class Profile {
   /// Optional: the radius R of the JKR scales F0, a0, d0 (paper eq. 17), for profiles whose
   /// tip is the parabola r^2/(2R); nullopt where those scales do not apply [m].
   virtual std::optional<double> jkr_scale_radius() const { return std::nullopt; }
+
+  /// Optional: the dimensionless output's scales where the shape's fixed-load pull-off has a
+  /// closed form (cone, power law, flat punch), for E* [Pa] and dgamma [J/m^2] > 0; nullopt
+  /// otherwise. A profile with jkr_scale_radius() gets the parabola's instead.
+  virtual std::optional<PullOffScales> pull_off_scales(double /*effective_modulus*/,
+                                                       double /*work_of_adhesion*/) const {
+    return std::nullopt;
+  }
 };
 
 /// The non-adhesive contact radius [m] carrying normal force `force` [N] on a half-space of

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <span>
 
+#include "engine/events/program_version.hpp"
 #include "engine/model/snapshot_fields.hpp"
 
 namespace mdrsim {
@@ -16,14 +17,14 @@ nlohmann::ordered_json snapshot_json(const ContactSnapshot& c) {
   return j;
 }
 
-nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const JkrScales& s) {
+nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const PullOffScales& s) {
   nlohmann::ordered_json j;
   for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member / scale_of(s, f.scale);
   return j;
 }
 
 /// A snapshot with its dimensionless values nested, where the scales exist.
-nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<JkrScales>& s) {
+nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<PullOffScales>& s) {
   nlohmann::ordered_json j = snapshot_json(c);
   if (s) j["dimensionless"] = dimensionless_json(c, *s);
   return j;
@@ -55,12 +56,39 @@ const char* route_name(Accuracy::Route route) {
   return route == Accuracy::Route::richardson ? "richardson" : "row";
 }
 
+/// What produced the result: the effective material, the preload, the scales, the rows run,
+/// the version and the resolved scene, which run again gives the same numbers.
+void add_provenance(nlohmann::ordered_json& j, const Scene& scene, const RunResult& result,
+                    const std::optional<PullOffScales>& scales) {
+  const Material& m = scene.material;
+  j["material"] = {{"effective_modulus", m.effective_modulus},
+                   {"effective_shear_modulus", m.effective_shear_modulus},
+                   {"work_of_adhesion", m.work_of_adhesion},
+                   {"approach_work_of_adhesion", m.approach_work_of_adhesion}};
+  if (!scene.program) {
+    j["preload"] = {{"glued_radius", scene.glued_radius},
+                    {"depth", scene.preload_depth},
+                    {"force", scene.preload_force}};
+  }
+  if (scales) {
+    j["scales"] = {{"force", scales->force},
+                   {"radius", scales->radius},
+                   {"depth", scales->depth},
+                   {"basis", scales->basis}};
+  }
+  const Accuracy& a = result.accuracy;
+  j["resolution"] = {
+      {"route", route_name(a.route)},
+      {"rows", a.rows.empty() ? std::vector<std::int64_t>{result.springs}
+                              : std::vector<std::int64_t>(a.rows.begin(), a.rows.end())}};
+  j["mdrsim_version"] = program_version();
+  if (scene.resolved) j["scene"] = nlohmann::ordered_json::parse(scene.resolved->dump());
+}
+
 }  // namespace
 
-std::optional<JkrScales> dimensionless_scales(const Scene& scene) {
-  const auto radius = scene.profile->jkr_scale_radius();
-  if (!radius) return std::nullopt;
-  return JkrScales::of(*radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
+std::optional<PullOffScales> dimensionless_scales(const Scene& scene) {
+  return dimensionless_scales(*scene.profile, scene.material);
 }
 
 nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result) {
@@ -142,6 +170,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
                  {"halvings", result.counts.halvings},
                  {"root_iterations", result.counts.root_iterations}};
   j["wall_time_s"] = result.wall_time_s;
+  add_provenance(j, scene, result, scales);
   return j;
 }
 

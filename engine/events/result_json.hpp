@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "engine/base/pull_off_scales.hpp"
+#include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/jkr_scales.hpp"
 #include "engine/run/pull_off.hpp"
 #include "engine/scene/scene.hpp"
@@ -19,9 +21,12 @@ namespace mdrsim {
 std::pair<std::string, std::string> final_controls(
     const Scene& scene, std::size_t stages_run = std::numeric_limits<std::size_t>::max());
 
-/// Scales of the dimensionless output; only for profiles with a parabolic tip and adhesion.
-std::optional<JkrScales> dimensionless_scales(const Scene& scene);
+/// Scales of the dimensionless output: a parabolic tip's (eq. 17) or the profile's own closed
+/// form (cone, power law n > 1/2, flat punch); none without adhesion or a closed form.
+std::optional<PullOffScales> dimensionless_scales(const Scene& scene);
 
+/// The result, then what produced it: the material's effective values, the preload, the
+/// scales, the resolution run, the program version and the resolved scene (SPEC).
 nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result);
 
 }  // namespace mdrsim

@@ -10,6 +10,7 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/base/material.hpp
     engine/base/parameters.hpp
     engine/base/part_registry.hpp
+    engine/base/pull_off_scales.hpp
     # the part interfaces and their registries
     profiles/profile.hpp
     profiles/profile_registry.hpp
@@ -30,6 +31,7 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/methods/run_counts.hpp
     engine/model/contact_snapshot.hpp
     engine/model/jkr_scales.hpp
+    engine/model/dimensionless_scales.hpp
     # events, observers and the stock outputs
     engine/events/event.hpp
     engine/events/event_format.hpp
@@ -37,4 +39,5 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/events/event_recorder.hpp
     engine/events/log_observer.hpp
     engine/events/trajectory_csv.hpp
-    engine/events/result_json.hpp)
+    engine/events/result_json.hpp
+    engine/events/program_version.hpp)

@@ -61,4 +61,12 @@ PreloadState preload_at_radius(const Profile& profile, double a) {
   return {a, profile.mdr_image(a)};
 }
 
+// integral_0^a g = a g(a) - (the non-adhesive force per modulus)/2, as in preload_at_force.
+double preload_force(const Profile& profile, const PreloadState& preload,
+                     double effective_modulus) {
+  const double a = preload.glued_radius;
+  return 2.0 * effective_modulus * a * (preload.depth - profile.mdr_image(a)) +
+         effective_modulus * profile.nonadhesive_force_per_modulus(a);
+}
+
 }  // namespace mdrsim

@@ -30,4 +30,8 @@ PreloadState preload_at_force(const Profile& profile, double force, double effec
 /// Glued at `contact_radius` [m]: d = g(a_g).
 PreloadState preload_at_radius(const Profile& profile, double contact_radius);
 
+/// The normal force [N] of the preload, without adhesion, on E* [Pa]:
+/// F = 2 E* (a_g d - integral_0^a_g g).
+double preload_force(const Profile& profile, const PreloadState& preload, double effective_modulus);
+
 }  // namespace mdrsim

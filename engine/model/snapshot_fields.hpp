@@ -3,6 +3,7 @@
 
 #include <array>
 
+#include "engine/base/pull_off_scales.hpp"
 #include "engine/model/contact_snapshot.hpp"
 #include "engine/model/jkr_scales.hpp"
 
@@ -11,7 +12,9 @@ namespace mdrsim {
 /// Which JKR scale makes a quantity dimensionless (paper eq. 16).
 enum class ScaleKind { force, radius, depth };
 
-inline double scale_of(const JkrScales& s, ScaleKind kind) {
+/// F0, a0 or d0 of either scales type (both name them force, radius, depth).
+template <class Scales>
+inline double scale_of(const Scales& s, ScaleKind kind) {
   switch (kind) {
     case ScaleKind::force:
       return s.force;

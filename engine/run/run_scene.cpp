@@ -101,6 +101,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
         observers);
   }
   if (!scene.program) warn_resolution(scene, result);
+  result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());
   for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

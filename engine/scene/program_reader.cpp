@@ -156,7 +156,9 @@ Program read_program(TomlReader& loading, const ControllerRegistry& controllers)
                        return std::nullopt;
                      });
   Program program;
-  program.rebinding = loading.optional_boolean("rebinding").value_or(false);
+  const auto rebinding = loading.optional_boolean("rebinding");
+  if (!rebinding) loading.record("rebinding", false);
+  program.rebinding = rebinding.value_or(false);
   std::vector<TomlReader> stages = *loading.optional_table_array("stage", kMaxStages);
 
   const auto* start = controllers.find(kStartControl);

@@ -3,8 +3,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "controllers/controller.hpp"
 #include "detachment/criterion.hpp"
@@ -63,6 +65,7 @@ struct Scene {
   std::unique_ptr<Profile> profile;
   double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
   double preload_depth = 0.0;  ///< indentation at the preload [m]
+  double preload_force = 0.0;  ///< normal force at the preload, without adhesion [N]
   AxisLoading normal;
   std::optional<AxisLoading> tangential;
   std::string criterion_name;
@@ -70,6 +73,11 @@ struct Scene {
   std::int64_t springs = 0;  ///< springs across the glued radius (one half)
   DiscretizationOptions discretization;
   SolverOptions solver;
+  /// The scene as built: every key read with its value, defaults included and file paths
+  /// absolute; valid scene input that builds this scene again (the JSON result's `scene`).
+  std::shared_ptr<const nlohmann::json> resolved;
+  /// Accepted but suspicious input (a run reports them with its own warnings).
+  std::vector<std::string> warnings;
 };
 
 }  // namespace mdrsim

@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "engine/model/jkr_scales.hpp"
+#include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/preload.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
@@ -20,10 +22,14 @@ namespace {
 
 constexpr Bound kPositive{0.0, false};
 
+/// Springs across the glued radius when the scene gives neither springs nor rtol.
+constexpr std::int64_t kDefaultSprings = 2000;
+
 /// dgamma_a [J/m^2] of the advancing front: 0 <= dgamma_a <= dgamma (SPEC "Loading programs").
 double read_approach_work(TomlReader& t, double dgamma) {
   const double approach = t.optional_number({.key = "approach_work_of_adhesion",
                                              .help = "dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma",
+                                             .default_value = 0.0,
                                              .lower = Bound{0.0, true}})
                               .value_or(0.0);
   if (approach > dgamma) {
@@ -34,7 +40,20 @@ double read_approach_work(TomlReader& t, double dgamma) {
   return approach;
 }
 
-Material read_material(TomlReader& t) {
+/// An isotropic half-space has G*/E* = 2(1 - nu)/(2 - nu) in [2/3, 4/3) for -1 < nu <= 0.5
+/// (paper eq. 8); a pair outside is accepted, with a warning.
+void warn_moduli(TomlReader& t, const Material& m, std::vector<std::string>& warnings) {
+  const double ratio = m.effective_shear_modulus / m.effective_modulus;
+  constexpr double kSlack = 1e-12;
+  if (ratio >= 2.0 / 3.0 * (1.0 - kSlack) && ratio <= 4.0 / 3.0 * (1.0 + kSlack)) return;
+  warnings.push_back(t.message_at(
+      "effective_shear_modulus",
+      fmt::format("G*/E* = {:.6g} is outside [2/3, 4/3], the range of an isotropic half-space "
+                  "(G*/E* = 2(1-nu)/(2-nu), -1 < nu <= 0.5)",
+                  ratio)));
+}
+
+Material read_material(TomlReader& t, std::vector<std::string>& warnings) {
   t.check_keys({"youngs_modulus", "poisson_ratio", "work_of_adhesion", "effective_modulus",
                 "effective_shear_modulus", "approach_work_of_adhesion"});
   const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
@@ -53,7 +72,10 @@ Material read_material(TomlReader& t) {
         t.number({.key = "effective_modulus", .help = "E* [Pa], > 0", .lower = kPositive});
     const auto g_star = t.optional_number(
         {.key = "effective_shear_modulus", .help = "G* [Pa], > 0", .lower = kPositive});
-    return {e_star, g_star.value_or(e_star), dgamma, approach};
+    if (!g_star) t.record("effective_shear_modulus", e_star);
+    const Material m{e_star, g_star.value_or(e_star), dgamma, approach};
+    warn_moduli(t, m, warnings);
+    return m;
   }
   const double e = t.number({.key = "youngs_modulus",
                              .help = "Young's modulus E [Pa], > 0; or give effective_modulus",
@@ -131,6 +153,7 @@ void resolve_preload(TomlReader& t, Scene& scene) {
       const PreloadState p = solve();
       scene.glued_radius = p.glued_radius;
       scene.preload_depth = p.depth;
+      scene.preload_force = preload_force(profile, p, e_star);
     } catch (const PreloadOutOfReach& e) {
       t.fail_range(key, e.what());
     } catch (const std::domain_error& e) {
@@ -142,14 +165,13 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   } else if (const auto f =
                  t.optional_number({.key = "force", .help = "[N]", .lower = kPositive})) {
     // The dimensionless output divides forces by F0 (paper eq. 16).
-    if (const auto tip = profile.jkr_scale_radius()) {
-      if (const auto scales = JkrScales::of(*tip, e_star, scene.material.work_of_adhesion);
-          scales && !std::isfinite(*f / scales->force)) {
-        t.fail_range("force",
-                     fmt::format("= {} overflows F/F0 (the JKR scale is {} N)", *f, scales->force));
-      }
+    if (const auto scales = dimensionless_scales(profile, scene.material);
+        scales && !std::isfinite(*f / scales->force)) {
+      t.fail_range("force",
+                   fmt::format("= {} overflows F/F0 (the JKR scale is {} N)", *f, scales->force));
     }
     solved("force", [&] { return preload_at_force(profile, *f, e_star); });
+    scene.preload_force = *f;
   } else {
     const double a = t.number({.key = "contact_radius", .help = "[m]", .lower = kPositive});
     solved("contact_radius", [&] { return preload_at_radius(profile, a); });
@@ -172,8 +194,8 @@ void resolve_preload(TomlReader& t, Scene& scene) {
       2.0 * std::numbers::pi * scene.glued_radius * scene.material.work_of_adhesion;
   // The work of pressing the row in (the preload stage's, SPEC) is of the size E* a d^2.
   const double work_scale = force_scale * std::abs(scene.preload_depth);
-  if (!std::isfinite(scene.preload_depth) || !std::isfinite(force_scale) ||
-      !std::isfinite(adhesion_scale) || !std::isfinite(work_scale)) {
+  if (!std::isfinite(scene.preload_depth) || !std::isfinite(scene.preload_force) ||
+      !std::isfinite(force_scale) || !std::isfinite(adhesion_scale) || !std::isfinite(work_scale)) {
     t.fail(fmt::format(
         "the preload overflows (contact radius {} m, depth {} m, E* a d = {} N, E* a d^2 = {} "
         "J, 2 pi a dgamma = {} N)",
@@ -182,7 +204,7 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   t.finish();
 }
 
-void check_dimensionless_tangential(TomlReader& t, const Scene& scene, double radius);
+void check_dimensionless_tangential(TomlReader& t, const Scene& scene);
 
 /// The held tangential value must leave the tangential force and displacement of the glued
 /// contact, Fx ~ 2 G* a ux, finite.
@@ -197,8 +219,7 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
                                   axis.held_value, key == "force" ? "displacement" : "force"));
   }
   // The dimensionless output divides the held value by F0 or d0 (paper eq. 16).
-  const auto radius = scene.profile->jkr_scale_radius();
-  if (radius) check_dimensionless_tangential(t, scene, *radius);
+  check_dimensionless_tangential(t, scene);
   // The work of applying it, F_x u_x / 2 (the tangential stage's, SPEC).
   if (!std::isfinite(other * std::abs(axis.held_value))) {
     t.fail_range(
@@ -206,11 +227,10 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
   }
 }
 
-void check_dimensionless_tangential(TomlReader& t, const Scene& scene, double radius) {
+void check_dimensionless_tangential(TomlReader& t, const Scene& scene) {
   const AxisLoading& axis = *scene.tangential;
   const std::string key(axis.controller->held_value_key());
-  const auto scales =
-      JkrScales::of(radius, scene.material.effective_modulus, scene.material.work_of_adhesion);
+  const auto scales = dimensionless_scales(*scene.profile, scene.material);
   if (!scales) return;
   const double unit = key == "force" ? scales->force : scales->depth;
   if (!std::isfinite(axis.held_value / unit)) {
@@ -253,10 +273,14 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
     if (t.has("max_halvings")) {
       solver.max_halvings = static_cast<int>(
           t.integer({.key = "max_halvings", .lower = Bound{0, true}, .upper = Bound{60, true}}));
+    } else {
+      t.record("max_halvings", solver.max_halvings);
     }
     if (t.has("max_steps")) {
       solver.max_steps =
           t.integer({.key = "max_steps", .lower = Bound{1, true}, .upper = Bound{1e15, true}});
+    } else {
+      t.record("max_steps", solver.max_steps);
     }
   }
   t.finish();
@@ -266,14 +290,15 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
 
 Scene build_scene(const toml::table& root_table, const std::string& source_name,
                   const std::filesystem::path& base_dir, const Registries& registries) {
-  TomlReader root(root_table, "", source_name, base_dir);
+  auto resolved = std::make_shared<nlohmann::json>(nlohmann::json::object());
+  TomlReader root(root_table, "", source_name, base_dir, resolved.get());
   root.check_keys(
       {"title", "material", "profile", "loading", "detachment", "discretization", "solver"});
   Scene scene;
   scene.title = root.optional_text("title").value_or("");
 
   TomlReader material = root.table("material");
-  scene.material = read_material(material);
+  scene.material = read_material(material, scene.warnings);
   material.finish();
 
   TomlReader profile = root.table("profile");
@@ -309,9 +334,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   } else {
     const auto* entry = registries.criteria.find(scene.criterion_name);
     scene.criterion = entry->create(ParameterValues{}, interface);
+    root.record("detachment", {{"criterion", scene.criterion_name}});
   }
 
-  scene.springs = 2000;
+  scene.springs = kDefaultSprings;
   if (auto discretization = root.optional_table("discretization")) {
     discretization->check_keys({"springs", "rtol", "extrapolation"});
     if (discretization->has("rtol") && discretization->has("springs")) {
@@ -341,16 +367,25 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                                    "least {})",
                                    scene.springs, kMinRichardsonSprings));
       }
+    } else if (!scene.discretization.rtol) {
+      discretization->record("springs", scene.springs);
     }
     discretization->finish();
+  } else {
+    root.record("discretization", {{"springs", scene.springs}});
   }
 
-  if (auto solver = root.optional_table("solver")) read_solver(*solver, scene.solver);
+  if (auto solver = root.optional_table("solver")) {
+    read_solver(*solver, scene.solver);
+  } else {
+    root.record("solver", {{"method", "event"}});
+  }
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
   }
   root.finish();
+  scene.resolved = std::move(resolved);
   return scene;
 }
 

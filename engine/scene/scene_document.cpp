@@ -12,8 +12,12 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <system_error>
+#include <vector>
 
+#include "engine/scene/json_scene.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
 
@@ -138,9 +142,62 @@ toml::table parse_value(const std::string& value_toml, const std::string& origin
   return toml::parse("v = " + value_toml, origin);
 }
 
+/// Keys of one table that exclude each other: setting a key of one group from the command line
+/// removes the keys of the table's other groups (README "Scene values"). In `table`, "N"
+/// stands for a stage number.
+struct ExclusiveKeys {
+  std::string_view table;
+  std::vector<std::vector<std::string_view>> groups;
+};
+
+const std::vector<ExclusiveKeys>& exclusive_keys() {
+  static const std::vector<ExclusiveKeys> table{
+      {"material",
+       {{"youngs_modulus", "poisson_ratio"}, {"effective_modulus", "effective_shear_modulus"}}},
+      {"profile", {{"file"}, {"r", "f"}}},
+      {"loading.preload", {{"depth"}, {"force"}, {"contact_radius"}}},
+      {"loading.tangential", {{"displacement"}, {"force"}}},
+      {"loading.stage.N.normal", {{"to"}, {"by"}}},
+      {"loading.stage.N.tangential", {{"to"}, {"by"}}},
+      {"discretization", {{"springs"}, {"rtol"}}},
+  };
+  return table;
+}
+
+/// Whether the first `count` parts of a dotted key spell `pattern`, "N" matching a number.
+bool names_table(const std::vector<std::string>& parts, std::size_t count,
+                 std::string_view pattern) {
+  std::size_t i = 0;
+  for (; i < count; ++i) {
+    const std::size_t dot = pattern.find('.');
+    const std::string_view head = pattern.substr(0, dot);
+    if (!(head == parts[i] || (head == "N" && is_element_number(parts[i])))) return false;
+    if (dot == std::string_view::npos) return i + 1 == count;
+    pattern.remove_prefix(dot + 1);
+  }
+  return false;
+}
+
+/// Removes from `table` the keys that exclude the key `parts.back()`.
+void drop_exclusive_siblings(toml::table& table, const std::vector<std::string>& parts) {
+  const std::string& key = parts.back();
+  for (const ExclusiveKeys& entry : exclusive_keys()) {
+    if (!names_table(parts, parts.size() - 1, entry.table)) continue;
+    const auto own = std::find_if(entry.groups.begin(), entry.groups.end(), [&](const auto& g) {
+      return std::find(g.begin(), g.end(), key) != g.end();
+    });
+    if (own == entry.groups.end()) continue;
+    for (auto group = entry.groups.begin(); group != entry.groups.end(); ++group) {
+      if (group == own) continue;
+      for (const std::string_view other : *group) table.erase(other);
+    }
+  }
+}
+
 void apply(toml::table& root, const SceneOverride& o) {
   walk_to_parent(root, o.parts, o.origin, false);
   toml::node& parent = *walk_to_parent(root, o.parts, o.origin, true);
+  if (auto* table = parent.as_table()) drop_exclusive_siblings(*table, o.parts);
   toml::table parsed = parse_value(o.value_toml, o.origin);
   // Moved, not copied: a moved node keeps its source, so messages name the flag.
   if (auto* array = parent.as_array()) {
@@ -167,7 +224,64 @@ toml::table parse_scene(const std::string& text, const std::string& source_name)
   }
 }
 
+toml::table parse_document(const std::string& text, const std::string& source_name, bool json) {
+  return json ? json_scene_table(text, source_name) : parse_scene(text, source_name);
+}
+
+/// Reads `file` to its end, within the size cap; `fail` throws with the reason.
+template <class Fail>
+std::string read_capped(std::FILE* file, const Fail& fail) {
+  std::string text;
+  char buffer[1 << 16];
+  while (true) {
+    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
+    text.append(buffer, n);
+    if (text.size() > kMaxSceneBytes) fail("it is larger than 16 MiB");
+    if (n < sizeof buffer) break;
+  }
+  if (std::ferror(file)) fail(lowercase_first(std::strerror(errno)));
+  return text;
+}
+
+/// Whether TOML reads `value` as one value.
+bool is_toml_value(std::string_view value, const std::string& origin) {
+  try {
+    parse_value(std::string(value), origin);
+    return true;
+  } catch (const toml::parse_error&) {
+    return false;
+  }
+}
+
+/// "name=": the start of one key-value pair of an inline table, which no scene value has.
+bool starts_with_pair(std::string_view value) {
+  const auto eq = value.find('=');
+  return eq != std::string_view::npos && eq > 0 &&
+         std::all_of(value.begin(), value.begin() + static_cast<std::ptrdiff_t>(eq), [](char c) {
+           return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-';
+         });
+}
+
 }  // namespace
+
+std::optional<std::string> split_value_message(std::string_view dotted_key,
+                                               std::string_view value_text) {
+  const std::string_view value = trim(value_text);
+  if (value.empty() || is_toml_value(value, "--set")) return std::nullopt;
+  std::string what;
+  if (value.front() == '{' || value.front() == '[') {
+    what = fmt::format("is not a whole TOML {}", value.front() == '{' ? "inline table" : "array");
+  } else if (starts_with_pair(value)) {
+    what = "is a piece of an inline table";
+  } else {
+    return std::nullopt;
+  }
+  const std::string key = printable(trim(dotted_key));
+  return fmt::format(
+      "--set: {}: '{}' {}: unquoted, the shell splits a value at spaces, expands {{a,b}} and "
+      "drops quotes; quote the whole KEY=VALUE, as in --set '{}={{ ... }}'",
+      key, printable(value), what, key);
+}
 
 SceneDocument::SceneDocument(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
@@ -175,10 +289,11 @@ SceneDocument::SceneDocument(std::unique_ptr<Impl> impl) : impl_(std::move(impl)
 // overrides: messages from a copy still name the line or the flag.
 SceneDocument::SceneDocument(const SceneDocument& other) : impl_(std::make_unique<Impl>()) {
   impl_->text = other.impl_->text;
+  impl_->json = other.impl_->json;
   impl_->source_name = other.impl_->source_name;
   impl_->base_dir = other.impl_->base_dir;
   impl_->overrides = other.impl_->overrides;
-  impl_->root = parse_scene(impl_->text, impl_->source_name);
+  impl_->root = parse_document(impl_->text, impl_->source_name, impl_->json);
   for (const auto& o : impl_->overrides) apply(impl_->root, o);
 }
 
@@ -202,16 +317,28 @@ SceneDocument SceneDocument::from_file(const std::filesystem::path& path) {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"),
                                                              &std::fclose);
   if (!file) fail(lowercase_first(std::strerror(errno)));
-  std::string text;
-  char buffer[1 << 16];
-  while (true) {
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
-    text.append(buffer, n);
-    if (text.size() > kMaxSceneBytes) fail("it is larger than 16 MiB");
-    if (n < sizeof buffer) break;
-  }
-  if (std::ferror(file.get())) fail(lowercase_first(std::strerror(errno)));
-  return from_text(text, name, path.parent_path().empty() ? "." : path.parent_path());
+  const std::string text = read_capped(file.get(), fail);
+  return from_scene_text(text, name, path.parent_path().empty() ? "." : path.parent_path());
+}
+
+SceneDocument SceneDocument::from_stream(std::FILE* stream, const std::string& source_name,
+                                         const std::filesystem::path& base_dir) {
+  const auto fail = [&](const std::string& why) {
+    throw SceneError(fmt::format("{}: cannot read the scene ({})", source_name, why));
+  };
+  return from_scene_text(read_capped(stream, fail), source_name, base_dir);
+}
+
+SceneDocument SceneDocument::from_scene_text(std::string_view text, const std::string& source_name,
+                                             const std::filesystem::path& base_dir) {
+  if (!is_json_text(text)) return from_text(text, source_name, base_dir);
+  auto impl = std::make_unique<Impl>();
+  impl->text = std::string(text);
+  impl->json = true;
+  impl->source_name = source_name;
+  impl->base_dir = base_dir;
+  impl->root = json_scene_table(impl->text, source_name);
+  return SceneDocument(std::move(impl));
 }
 
 SceneDocument SceneDocument::from_text(std::string_view text, const std::string& source_name,
@@ -235,6 +362,7 @@ void SceneDocument::set_value(std::string_view dotted_key, std::string_view valu
       })) {
     throw SceneError(fmt::format("{}: {}: the value must be one line of text", origin, key));
   }
+  if (const auto split = split_value_message(key, value)) throw SceneError(*split);
   std::string value_toml(value);
   try {
     const toml::table parsed = parse_value(value_toml, origin);

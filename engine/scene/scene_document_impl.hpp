@@ -21,7 +21,8 @@ struct SceneOverride {
 };
 
 struct SceneDocument::Impl {
-  std::string text;  ///< the scene file as read: copies re-parse it
+  std::string text;   ///< the scene file as read: copies re-parse it
+  bool json = false;  ///< text is JSON (json_scene.hpp), not TOML
   std::string source_name;
   std::filesystem::path base_dir;
   std::vector<SceneOverride> overrides;

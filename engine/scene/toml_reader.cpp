@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <system_error>
+#include <type_traits>
+#include <variant>
 
 #include "engine/scene/scene_error.hpp"
 
@@ -63,14 +66,33 @@ std::string join(const std::vector<std::string>& names) {
   return out;
 }
 
+/// A file path as the resolved scene gives it: absolute, so that it reads the same from anywhere.
+std::string absolute_path(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+  return ec ? path : absolute.lexically_normal().string();
+}
+
 }  // namespace
 
 TomlReader::TomlReader(const toml::table& table, std::string path, std::string file,
-                       std::filesystem::path base_dir)
+                       std::filesystem::path base_dir, nlohmann::json* resolved)
     : table_(&table),
       path_(std::move(path)),
       file_(std::move(file)),
-      base_dir_(std::move(base_dir)) {}
+      base_dir_(std::move(base_dir)),
+      resolved_(resolved) {}
+
+void TomlReader::record(std::string_view key, nlohmann::json value) {
+  if (resolved_) (*resolved_)[std::string(key)] = std::move(value);
+}
+
+nlohmann::json* TomlReader::resolved_child(std::string_view key, nlohmann::json empty) {
+  if (!resolved_) return nullptr;
+  nlohmann::json& child = (*resolved_)[std::string(key)];
+  child = std::move(empty);
+  return &child;
+}
 
 std::string TomlReader::key_path(std::string_view key) const {
   const std::string shown = printable(key);
@@ -95,10 +117,13 @@ void TomlReader::fail(const std::string& message) const {
       fmt::format("{} {}: {}", where_table(), path_.empty() ? "scene" : path_, message));
 }
 
-void TomlReader::fail_at(std::string_view key, const std::string& message) const {
+std::string TomlReader::message_at(std::string_view key, const std::string& message) const {
   const toml::node* node = table_->get(key);
-  throw SceneError(
-      fmt::format("{} {}: {}", node ? where(*node) : where_table(), key_path(key), message));
+  return fmt::format("{} {}: {}", node ? where(*node) : where_table(), key_path(key), message);
+}
+
+void TomlReader::fail_at(std::string_view key, const std::string& message) const {
+  throw SceneError(message_at(key, message));
 }
 
 void TomlReader::fail_range(std::string_view key, const std::string& message) const {
@@ -150,6 +175,29 @@ double TomlReader::checked_number(const std::string& shown, const toml::node& no
 }
 
 std::optional<ParameterValue> TomlReader::read(const ParameterSpec& spec) {
+  std::optional<ParameterValue> value = read_value(spec);
+  if (value) {
+    std::visit(
+        [&](const auto& v) {
+          using V = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<V, double>) {
+            if (spec.kind == ParameterKind::integer) {
+              record(spec.key, static_cast<std::int64_t>(v));
+            } else {
+              record(spec.key, v);
+            }
+          } else if constexpr (std::is_same_v<V, std::string>) {
+            record(spec.key, spec.kind == ParameterKind::path ? absolute_path(v) : v);
+          } else {
+            record(spec.key, v);
+          }
+        },
+        *value);
+  }
+  return value;
+}
+
+std::optional<ParameterValue> TomlReader::read_value(const ParameterSpec& spec) {
   const toml::node* node = find(spec.key);
   if (!node) {
     if (spec.required) {
@@ -180,8 +228,10 @@ std::optional<ParameterValue> TomlReader::read(const ParameterSpec& spec) {
       if (!s)
         fail_at(spec.key, fmt::format("expected {}, got {}", expected(spec.kind), describe(*node)));
       if (spec.kind == ParameterKind::text) return ParameterValue{s->get()};
+      // A path typed on the command line is relative to where it was typed, not to the scene.
       const std::filesystem::path p(s->get());
-      return ParameterValue{(p.is_absolute() ? p : base_dir_ / p).string()};
+      const bool typed = from_command_line(spec.key);
+      return ParameterValue{(p.is_absolute() || typed ? p : base_dir_ / p).string()};
     }
   }
   return std::nullopt;
@@ -228,6 +278,7 @@ std::optional<bool> TomlReader::optional_boolean(std::string_view key) {
   if (!node) return std::nullopt;
   const auto* flag = node->as_boolean();
   if (!flag) fail_at(key, fmt::format("expected true or false, got {}", describe(*node)));
+  record(key, flag->get());
   return flag->get();
 }
 
@@ -237,7 +288,10 @@ std::string TomlReader::name(std::string_view key, const std::vector<std::string
                        .kind = ParameterKind::text,
                        .help = "one of: " + join(known),
                        .required = !fallback.has_value()});
-  if (!v) return *fallback;
+  if (!v) {
+    record(key, *fallback);
+    return *fallback;
+  }
   const std::string& given = std::get<std::string>(*v);
   if (std::find(known.begin(), known.end(), given) == known.end()) {
     fail_at(key, fmt::format("unknown '{}' (known: {})", printable(given), join(known)));
@@ -256,7 +310,8 @@ std::optional<TomlReader> TomlReader::optional_table(std::string_view key) {
   if (!node) return std::nullopt;
   const auto* t = node->as_table();
   if (!t) fail_at(key, fmt::format("expected a table, got {}", describe(*node)));
-  return TomlReader(*t, key_path(key), file_, base_dir_);
+  return TomlReader(*t, key_path(key), file_, base_dir_,
+                    resolved_child(key, nlohmann::json::object()));
 }
 
 std::optional<std::vector<TomlReader>> TomlReader::optional_table_array(std::string_view key,
@@ -277,6 +332,9 @@ std::optional<std::vector<TomlReader>> TomlReader::optional_table_array(std::str
   }
   std::vector<TomlReader> tables;
   tables.reserve(array->size());
+  // Sized before any element is taken: the readers keep pointers into it.
+  nlohmann::json* resolved =
+      resolved_child(key, nlohmann::json::array_t(array->size(), nlohmann::json::object()));
   for (std::size_t i = 0; i < array->size(); ++i) {
     const toml::node& element = *array->get(i);
     const std::string element_path = fmt::format("{}.{}", shown, i + 1);
@@ -285,7 +343,8 @@ std::optional<std::vector<TomlReader>> TomlReader::optional_table_array(std::str
       throw SceneError(fmt::format("{} {}: expected a table, got {}", where(element), element_path,
                                    describe(element)));
     }
-    tables.emplace_back(*table, element_path, file_, base_dir_);
+    tables.emplace_back(*table, element_path, file_, base_dir_,
+                        resolved ? &(*resolved)[i] : nullptr);
   }
   return tables;
 }
@@ -319,5 +378,22 @@ void TomlReader::finish() const {
   // A declared key that these settings never read: a safety net, the builder says why first.
   fail_at(first->first->str(), "does not apply with these settings");
 }
+
+bool TomlReader::from_command_line(std::string_view key) const {
+  const toml::node* node = table_->get(key);
+  if (!node) return false;
+  const auto& path = node->source().path;
+  return path && (*path == "--set" || *path == "--vary");
+}
+
+std::vector<std::string> TomlReader::keys_from_scene() const {
+  std::vector<std::string> keys;
+  for (auto&& [key, node] : *table_) {
+    if (!from_command_line(key.str())) keys.emplace_back(key.str());
+  }
+  return keys;
+}
+
+void TomlReader::ignore(std::string_view key) { read_.emplace(key); }
 
 }  // namespace mdrsim

@@ -5,6 +5,9 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -24,9 +27,11 @@ namespace mdrsim {
 class TomlReader {
  public:
   /// `path` is the dotted key of the table ("" for the root); `file` names the document;
-  /// `base_dir` resolves relative file paths.
+  /// `base_dir` resolves relative file paths. With `resolved`, every value read (or its
+  /// default) is also written there, at its key, and subtables into nested objects: the
+  /// resolved scene of the JSON result.
   TomlReader(const toml::table& table, std::string path, std::string file,
-             std::filesystem::path base_dir);
+             std::filesystem::path base_dir, nlohmann::json* resolved = nullptr);
 
   bool has(std::string_view key) const { return table_->contains(key); }
 
@@ -51,6 +56,10 @@ class TomlReader {
   std::optional<std::vector<TomlReader>> optional_table_array(std::string_view key,
                                                               std::size_t max_size);
 
+  /// Writes a value the caller applies itself (a default outside the reads) to the resolved
+  /// scene.
+  void record(std::string_view key, nlohmann::json value);
+
   /// Declares every key this table may hold and fails on the first other key (in file order),
   /// so that a typo is reported before any value is checked.
   /// `explain` may give a better message than "unknown key" for a key it recognises.
@@ -59,13 +68,24 @@ class TomlReader {
   /// Fails on the first key (in file order) that no read asked for.
   void finish() const;
 
+  /// Whether the value at `key` was given on the command line (--set or --vary).
+  bool from_command_line(std::string_view key) const;
+  /// The keys of this table whose values come from the scene itself, not the command line.
+  std::vector<std::string> keys_from_scene() const;
+  /// Passes over a key without reading it: neither unknown nor recorded.
+  void ignore(std::string_view key);
+
   [[noreturn]] void fail_at(std::string_view key, const std::string& message) const;
   [[noreturn]] void fail_range(std::string_view key, const std::string& message) const;
   [[noreturn]] void fail(const std::string& message) const;
+  /// fail_at's message, for a warning: "file:line:col: key: message".
+  std::string message_at(std::string_view key, const std::string& message) const;
   std::string key_path(std::string_view key) const;
 
  private:
   const toml::node* find(std::string_view key);
+  /// read() without recording.
+  std::optional<ParameterValue> read_value(const ParameterSpec& spec);
   /// The first key in file order that is not in `keys`, with its value.
   std::optional<std::pair<const toml::key*, const toml::node*>> first_key_outside(
       const std::set<std::string, std::less<>>& keys) const;
@@ -73,6 +93,8 @@ class TomlReader {
   std::string where(const toml::node& node) const { return where(node.source()); }
   /// The table itself: its header, or the file alone for the root table.
   std::string where_table() const;
+  /// A subtable's place in the resolved scene, or nullptr when nothing is recorded.
+  nlohmann::json* resolved_child(std::string_view key, nlohmann::json empty);
   [[noreturn]] void fail_unknown(const toml::key& key, const toml::node& node) const;
   /// `shown` names the value in messages: the key, or key[i] for an array element.
   double checked_number(const std::string& shown, const toml::node& node,
@@ -82,6 +104,7 @@ class TomlReader {
   std::string path_;
   std::string file_;
   std::filesystem::path base_dir_;
+  nlohmann::json* resolved_;                  ///< this table in the resolved scene, or nullptr
   std::set<std::string, std::less<>> read_;   ///< keys present and read
   std::set<std::string, std::less<>> asked_;  ///< keys asked for, present or not
   std::set<std::string, std::less<>> known_;  ///< keys declared by check_keys
@@ -107,13 +130,27 @@ void check_part_keys(TomlReader& t, const std::string& name_key, const std::stri
   std::vector<std::string> known{name_key};
   for (const ParameterSpec& spec : registry.find(chosen)->parameters) known.push_back(spec.key);
   known.insert(known.end(), extra.begin(), extra.end());
-  t.check_keys(known, [&](std::string_view key) -> std::optional<std::string> {
+  const auto owners_of = [&](std::string_view key) {
     std::string owners;
     for (const std::string& name : registry.names()) {
       for (const ParameterSpec& spec : registry.find(name)->parameters) {
         if (spec.key == key) owners += fmt::format("{}\"{}\"", owners.empty() ? "" : " or ", name);
       }
     }
+    return owners;
+  };
+  // A part switched on the command line leaves the scene's keys of the part it replaces
+  // behind: they are passed over, so that --set profile.type=cone needs no new table.
+  if (t.from_command_line(name_key)) {
+    for (const std::string& key : t.keys_from_scene()) {
+      if (std::find(known.begin(), known.end(), key) == known.end() && !owners_of(key).empty()) {
+        t.ignore(key);
+        known.push_back(key);
+      }
+    }
+  }
+  t.check_keys(known, [&](std::string_view key) -> std::optional<std::string> {
+    const std::string owners = owners_of(key);
     if (owners.empty()) return std::nullopt;
     return fmt::format("applies to {} = {} only", name_key, owners);
   });

@@ -13,7 +13,8 @@ _SCALED = (("normal_force", "force"), ("tangential_force", "force"),
 @dataclass(frozen=True)
 class State:
     """An equilibrium of the contact in SI units; `dimensionless` has F/F0, a/a0, d/d0 and
-    ux/d0 where the JKR scales exist (parabolic and sphere profiles), else None."""
+    ux/d0 where the scales exist (parabolic and sphere profiles: eq. 17; cone, power law with
+    n > 1/2 and flat punch: their fixed-load pull-off), else None."""
 
     normal_force: float  # F [N], negative when adhesion holds the indenter
     tangential_force: float  # Fx [N]
@@ -75,7 +76,8 @@ class Result:
 
     @cached_property
     def scales(self):
-        """The JKR scales {"force": F0 [N], "radius": a0 [m], "depth": d0 [m]}, or None."""
+        """The scales {"force": F0 [N], "radius": a0 [m], "depth": d0 [m], "basis": the closed
+        form}, or None."""
         return self._raw.scales
 
     @cached_property

@@ -245,6 +245,7 @@ void bind_results(py::module_& m) {
                                d["force"] = s->force;
                                d["radius"] = s->radius;
                                d["depth"] = s->depth;
+                               d["basis"] = s->basis;
                                return d;
                              })
       .def("json", [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })

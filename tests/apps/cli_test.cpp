@@ -549,11 +549,14 @@ TEST_F(Cli, UnknownFlag) {
 }
 
 TEST_F(Cli, MissingOrUnknownSubcommand) {
-  EXPECT_TRUE(bad_input(run_mdrsim(""), "mdrsim: a subcommand is required"));
-  EXPECT_TRUE(bad_input(run_mdrsim("--json -"), "mdrsim: a subcommand is required"));
+  const std::string hint =
+      "mdrsim: a command is required (run, sweep, merge, list), e.g. mdrsim run SCENE.toml; see "
+      "mdrsim --help";
+  EXPECT_TRUE(bad_input(run_mdrsim(""), hint));
+  EXPECT_TRUE(bad_input(run_mdrsim("--json -"), hint));
   EXPECT_TRUE(bad_input(run_mdrsim("simulate " + scene_),
                         "mdrsim: unknown command 'simulate' (known: "
-                        "run, sweep, merge)"));
+                        "run, sweep, merge, list; see mdrsim --help)"));
   EXPECT_TRUE(bad_input(run_mdrsim("run"), "mdrsim: scene is required"));
 }
 

@@ -34,7 +34,8 @@ SceneCheck check_scene_text(std::string_view text) {
   static const Registries registries = Registries::builtin();
   Scene scene;
   try {
-    scene = SceneDocument::from_text(text, "fuzz.toml").build(registries);
+    // TOML, or JSON when the text opens an object (mdrsim run reads both).
+    scene = SceneDocument::from_scene_text(text, "fuzz.toml").build(registries);
   } catch (const SceneError&) {
     return {Outcome::refused, {}};
   } catch (const std::exception& e) {

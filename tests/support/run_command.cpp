@@ -28,11 +28,11 @@ std::string make_temp_dir() {
   return pattern;
 }
 
-CommandResult run_mdrsim(const std::string& args) {
+CommandResult run_mdrsim(const std::string& args, const std::string& input) {
   const std::filesystem::path dir = make_temp_dir();
   const std::string command = "cd '" MDRSIM_SOURCE_DIR "' && '" MDRSIM_BINARY "' " + args + " >'" +
-                              (dir / "out").string() + "' 2>'" + (dir / "err").string() +
-                              "' </dev/null";
+                              (dir / "out").string() + "' 2>'" + (dir / "err").string() + "' <'" +
+                              input + "'";
   const int status = std::system(command.c_str());
   CommandResult r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status),
                   slurp(dir / "out"), slurp(dir / "err")};

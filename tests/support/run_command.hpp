@@ -11,8 +11,9 @@ struct CommandResult {
   std::string err;  ///< standard error
 };
 
-/// Runs `mdrsim ARGS` (ARGS as shell words) from the source folder.
-CommandResult run_mdrsim(const std::string& args);
+/// Runs `mdrsim ARGS` (ARGS as shell words) from the source folder, standard input empty or
+/// read from the file `input`.
+CommandResult run_mdrsim(const std::string& args, const std::string& input = "/dev/null");
 
 /// A fresh empty folder under the system's temp folder.
 std::string make_temp_dir();

@@ -424,10 +424,13 @@ TEST(ProgramSet, BadValuesNameTheFlagAndTheStage) {
   EXPECT_THROW_MSG(d.build(registries()), SceneError,
                    "--set: loading.stage.1.tangential.stiffness: applies to control = "
                    "\"compliant\" only");
+  // `to` replaces the stage's `by` (README "Scene values"), and a stage run until separation
+  // refuses it.
   SceneDocument to = program_document();
   to.set_value("loading.stage.3.normal.to", "1e-6");
   EXPECT_THROW_MSG(to.build(registries()), SceneError,
-                   "scene.toml:20:17: loading.stage.3.normal.by: give to or by, not both");
+                   "--set: loading.stage.3.normal.to is refused with until = \"separation\": by "
+                   "is the change per unit of the stage parameter");
   SceneDocument until = program_document();
   until.set_value("loading.stage.1.until", "separation");
   EXPECT_THROW_MSG(until.build(registries()), SceneError,
