@@ -17,6 +17,8 @@ packages=(
   python3-pytest python3-pandas
   # The fitting example (python/examples) and its test, which executes the notebook.
   python3-scipy python3-nbclient python3-nbformat python3-ipykernel
+  # mdrsim.sweep on a Dask cluster: python/tests/test_sweep.py runs a LocalCluster.
+  python3-distributed
 )
 if [ "${1:-}" = "fuzz" ]; then
   packages+=(clang-14 libclang-rt-14-dev)

@@ -5,25 +5,25 @@
     result = mdrsim.run(scene.with_values({"discretization.springs": 4000}))
     result.critical.normal_force, result.dimensionless["normal_force"]
     result.trajectory["normal_force"]          # NumPy, no copy
+    rows = mdrsim.sweep(scene, {"loading.tangential.displacement": "0:9e-6:41"}).rows
 
 Bad input raises mdrsim.SceneError (a ValueError) with the message `mdrsim run` prints.
 mdrsim.run releases the GIL while the engine runs: threads run scenes in parallel.
 """
 
-import os
 import warnings
-from collections.abc import Mapping
 
 from . import _core
 from ._core import Material, SceneError, set_log_level
 from ._parts import Parameter, parts, register_criterion, register_profile
 from ._result import Jump, Result, StageEnd, State, Work
-from ._scene import Scene
+from ._scene import Scene, as_scene
+from ._sweep import SweepResult, sweep
 
 __version__ = "0.1.0"
 __all__ = ["Jump", "Material", "Parameter", "Result", "RunWarning", "Scene", "SceneError",
-           "StageEnd", "State", "Work", "parts", "register_criterion", "register_profile", "run",
-           "set_log_level"]
+           "StageEnd", "State", "SweepResult", "Work", "parts", "register_criterion",
+           "register_profile", "run", "set_log_level", "sweep"]
 
 
 class RunWarning(UserWarning):
@@ -38,14 +38,7 @@ def run(scene, trajectory=True):
     released while the engine runs; criteria and profiles written in Python take it back
     for each call, so they run one thread at a time.
     """
-    if not isinstance(scene, Scene):
-        if isinstance(scene, Mapping):
-            scene = Scene.from_dict(scene)
-        elif isinstance(scene, (str, os.PathLike)):
-            scene = Scene.from_file(scene)
-        else:
-            raise TypeError(f"run() needs a Scene, a scene file path or a dict, not "
-                            f"{type(scene).__name__}")
+    scene = as_scene(scene, "run")
     raw = _core.run(scene._doc, trajectory)
     if raw.has_warnings:
         for line in raw.warnings:

@@ -100,28 +100,41 @@ class Scene:
     message `mdrsim run` prints; the built scene is kept for every run of it.
     """
 
-    __slots__ = ("_doc", "_overrides")
+    # _text and _base_dir (made absolute) remake the scene elsewhere: pickle, mdrsim.sweep.
+    __slots__ = ("_doc", "_overrides", "_text", "_base_dir")
 
     def __init__(self):
         raise TypeError("make a Scene with Scene.from_file, Scene.from_toml or Scene.from_dict")
 
     @classmethod
-    def _wrap(cls, doc, overrides=()):
+    def _wrap(cls, doc, overrides, text, base_dir):
         scene = object.__new__(cls)
         scene._doc = doc
         scene._overrides = tuple(overrides)
+        scene._text = text
+        scene._base_dir = os.path.abspath(base_dir)
         return scene
 
     @classmethod
     def from_file(cls, path):
         """Reads a scene file; messages name it as given, with line and column."""
-        return cls._wrap(_core.Document.from_file(os.fspath(path)))
+        path = os.fspath(path)
+        # Read here, so that the bytes kept are the ones built (`mdrsim run` reads them so).
+        try:
+            with open(path, "rb") as f:
+                text = f.read()
+        except OSError:
+            _core.Document.from_file(path)  # raises the command's message
+            raise
+        base_dir = os.path.dirname(path) or "."
+        return cls._wrap(_core.Document.from_text(text, path, base_dir), (), text, base_dir)
 
     @classmethod
     def from_toml(cls, text, name="<toml>", base_dir="."):
         """Scene text; `name` stands for the file in messages, `base_dir` resolves relative
         paths (a tabulated profile's file)."""
-        return cls._wrap(_core.Document.from_text(text, name, os.fspath(base_dir)))
+        base_dir = os.fspath(base_dir)
+        return cls._wrap(_core.Document.from_text(text, name, base_dir), (), text, base_dir)
 
     @classmethod
     def from_dict(cls, table, name="<dict>", base_dir="."):
@@ -134,7 +147,18 @@ class Scene:
         `mdrsim run --set KEY=VALUE` (messages start with --set). Keys of [[loading.stage]]
         count from 1: "loading.stage.2.tangential.by"."""
         pairs = [(key, toml_value(value, f"--set: {key}")) for key, value in dict(values).items()]
-        return Scene._wrap(self._doc.with_values(pairs), self._overrides + tuple(pairs))
+        return Scene._wrap(self._doc.with_values(pairs), self._overrides + tuple(pairs),
+                           self._text, self._base_dir)
+
+    def _state(self):
+        """What remakes this scene in another process: (text, source, absolute base
+        directory, overrides)."""
+        return (self._text, self.source, self._base_dir, self._overrides)
+
+    def __reduce__(self):
+        # Pickled as its text and overrides, built again when unpickled: a part registered
+        # from Python must be registered in the process that unpickles it.
+        return (_scene_from_state, self._state())
 
     @property
     def source(self):
@@ -174,3 +198,22 @@ class Scene:
     def __repr__(self):
         sets = "".join(f", {k}={v}" for k, v in self._overrides)
         return f"<mdrsim.Scene {self.source!r}{sets}>"
+
+
+def _scene_from_state(text, source, base_dir, overrides):
+    doc = _core.Document.from_text(text, source, base_dir)
+    if overrides:
+        doc = doc.with_values(list(overrides))
+    return Scene._wrap(doc, overrides, text, base_dir)
+
+
+def as_scene(scene, who):
+    """A Scene, or one made from a scene file path or a dict (what mdrsim.run accepts)."""
+    if isinstance(scene, Scene):
+        return scene
+    if isinstance(scene, Mapping):
+        return Scene.from_dict(scene)
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.from_file(scene)
+    raise TypeError(f"{who}() needs a Scene, a scene file path or a dict, not "
+                    f"{type(scene).__name__}")

@@ -19,6 +19,7 @@
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "python/src/python_parts.hpp"
+#include "python/src/python_sweep.hpp"
 #include "python/src/trajectory_recorder.hpp"
 
 namespace py = pybind11;
@@ -298,4 +299,5 @@ PYBIND11_MODULE(_core, m) {
   mdrsim::python::bind_parts(m);
   mdrsim::python::bind_scenes(m);
   mdrsim::python::bind_results(m);
+  mdrsim::python::bind_sweep(m);
 }

@@ -1,0 +1,237 @@
+"""mdrsim.sweep: the rows of `mdrsim sweep`, run on any concurrent.futures executor (threads,
+processes, a Dask cluster), in batches that each last at least `batch_seconds`."""
+
+import collections
+import math
+import numbers
+import os
+import threading
+import time
+import uuid
+from collections.abc import Mapping
+from concurrent.futures import ThreadPoolExecutor
+from functools import cached_property
+
+from . import _core
+from ._core import SceneError
+from ._scene import as_scene
+
+# Batches submitted and not yet collected: enough to keep any cluster busy, few enough that
+# a grid of millions of rows does not queue millions of tasks at once.
+_IN_FLIGHT = 256
+# The rows after row 0 go out in at least this many tasks (or one per row), however cheap row
+# 0 was: a row 0 far cheaper than the others (springs over decades) must not put the whole
+# sweep in one task. At ~1 ms a Dask task, they cost at most ~32 ms.
+_MIN_TASKS = 32
+
+
+def _item_text(key, item):
+    """One value of a list as the command line writes it in `--vary KEY=V1,V2,...`."""
+    if hasattr(item, "dtype") and getattr(item, "ndim", None) == 0:
+        item = item.item()  # a NumPy scalar
+    if isinstance(item, bool):
+        return "true" if item else "false"
+    if isinstance(item, numbers.Integral):
+        return str(int(item))
+    if isinstance(item, numbers.Real):
+        return repr(float(item))  # the shortest text that reads back as the same double
+    if isinstance(item, str):
+        if "," in item or ":" in item:
+            raise SceneError(f"--vary: {key}: '{item}' is not one value (a name has no ',' or "
+                             "':')")
+        return item
+    raise SceneError(f"--vary: {key}: {type(item).__name__} {item!r:.40} is not a number or a "
+                     "name")
+
+
+def _vary_text(key, values):
+    """`KEY=VALUES` as `mdrsim sweep --vary` takes it."""
+    if not isinstance(key, str):
+        raise SceneError(f"--vary: the key {key!r} is not a string")
+    if "=" in key:
+        raise SceneError(f"--vary: '{key}' is not a key (it has '=')")
+    if isinstance(values, str):
+        return f"{key}={values}"
+    if isinstance(values, numbers.Real) or (hasattr(values, "dtype") and values.ndim == 0):
+        values = [values]
+    try:
+        items = list(values)
+    except TypeError:
+        raise SceneError(f"--vary: {key}: {type(values).__name__} {values!r:.40} is not a list "
+                         "of values or a string such as '0:1:11'") from None
+    return f"{key}=" + ",".join(_item_text(key, item) for item in items)
+
+
+class _Job:
+    """What a task needs to run rows in any process: the scene's text and overrides, the
+    --vary texts and the dimensionless flag. Pickled without its plan, which each process
+    makes once (_plan_for)."""
+
+    __slots__ = ("token", "scene", "vary", "dimensionless", "plan")
+
+    def __init__(self, token, scene, vary, dimensionless, plan=None):
+        self.token, self.scene, self.vary = token, scene, vary
+        self.dimensionless, self.plan = dimensionless, plan
+
+    def __getstate__(self):
+        return (self.token, self.scene, self.vary, self.dimensionless)
+
+    def __setstate__(self, state):
+        self.token, self.scene, self.vary, self.dimensionless = state
+        self.plan = None
+
+
+_plans = collections.OrderedDict()  # token -> SweepPlan, the last few sweeps of this process
+_plans_lock = threading.Lock()
+
+
+def _plan_for(job):
+    if job.plan is not None:
+        return job.plan
+    with _plans_lock:
+        plan = _plans.get(job.token)
+    if plan is None:
+        plan = _core.SweepPlan(*job.scene, job.vary, job.dimensionless)
+        with _plans_lock:
+            _plans[job.token] = plan
+            while len(_plans) > 4:
+                _plans.popitem(last=False)
+    job.plan = plan
+    return plan
+
+
+def _run_rows(job, first, count):
+    """One task: the CSV lines of rows first .. first + count - 1 (plain strings)."""
+    return _plan_for(job).run_rows(first, count)
+
+
+class SweepResult:
+    """The rows of a sweep in the command's row order (the first key outermost, the last
+    varying fastest)."""
+
+    def __init__(self, identity, header, values, lines):
+        self._identity = identity
+        self._header = header
+        self._values = values
+        self._lines = lines
+
+    @property
+    def identity(self):
+        """The CSV's first line, without its newline: `# mdrsim sweep: scene S, grid G, rows
+        M, shard 0/1`. S hashes the scene's text and its with_values settings as `KEY=VALUE`,
+        so it is the command's for a scene file swept with the same --set texts."""
+        return self._identity.rstrip("\n")
+
+    @cached_property
+    def columns(self):
+        """The CSV header: status, the varied keys, the run's fields."""
+        return self._header.rstrip("\n").split(",")
+
+    @cached_property
+    def rows(self):
+        """One dict per row, keyed by `columns`: the status and a varied name as str, a
+        varied number and the fields as float (springs_in_contact int), None where the CSV
+        field is empty."""
+        keys = [dict(values) for values in self._values]
+        names = self.columns[1 + len(keys):]
+        rows = []
+        for line in self._lines:
+            fields = line.rstrip("\n").split(",")
+            row = {"status": fields[0]}
+            for column, lookup, text in zip(self.columns[1:], keys, fields[1:]):
+                row[column] = lookup[text]
+            for name, text in zip(names, fields[1 + len(keys):]):
+                if text == "":
+                    row[name] = None
+                elif name == "springs_in_contact":
+                    row[name] = int(text)
+                else:
+                    row[name] = float(text)
+            rows.append(row)
+        return rows
+
+    def to_csv(self, path=None):
+        """The command's CSV: the identity line, the header and the row lines, with the
+        command's text for every number. Returned as a str, or written to `path`."""
+        text = self._identity + self._header + "".join(self._lines)
+        if path is None:
+            return text
+        with open(path, "w", encoding="utf-8", newline="") as f:
+            f.write(text)
+        return None
+
+    def to_dataframe(self):
+        """The rows as a pandas DataFrame (pandas is optional)."""
+        try:
+            import pandas
+        except ImportError as e:
+            raise ImportError("SweepResult.to_dataframe needs pandas, which is not installed "
+                              "(Debian: apt-get install python3-pandas)") from e
+        return pandas.DataFrame(self.rows, columns=self.columns)
+
+    def __len__(self):
+        return len(self._lines)
+
+    def __repr__(self):
+        return f"<mdrsim.SweepResult {len(self)} rows x {len(self.columns)} columns>"
+
+
+def sweep(scene, grid, executor=None, batch_seconds=0.1):
+    """Runs one scene per row of a grid, as `mdrsim sweep` does, and returns a SweepResult.
+
+    scene: a Scene, a scene file path or a dict (as mdrsim.run takes).
+    grid: {key: values}, in the order of the command's --vary flags (the first outermost,
+    the last varying fastest). values is a string in --vary's syntax, parsed by the
+    command's own parser ("0:1e-5:41", "1e2:1e6:9:log", "mode-mixed,stress"), or a list of
+    numbers and names (a str item is read as the command reads one: "2" is the number 2).
+    executor: any concurrent.futures.Executor (a Dask cluster: Client.get_executor()); None
+    runs the rows on a ThreadPoolExecutor of os.cpu_count() threads, as the command runs
+    --threads all cores.
+
+    Every value is checked before any run, as the command checks it: a bad key or value
+    raises SceneError with the command's message. Row 0 then runs in the calling thread,
+    and its time sets the batch: the other rows go to the executor in runs of consecutive
+    rows that each take about batch_seconds or more (Dask spends ~1 ms on a task), in at
+    least 32 tasks (or one per row), so that a row 0 much cheaper than the rest does not
+    put the whole sweep in one task. A failing row raises its error (the first in row
+    order); the rows that ran are not returned then.
+    Tasks carry the scene as text and return the CSV lines as strings, so they pickle; a
+    part registered from Python must be registered in every process that runs rows.
+    """
+    scene = as_scene(scene, "sweep")
+    if not isinstance(grid, Mapping):
+        raise TypeError(f"sweep() needs a grid {{key: values}}, not {type(grid).__name__}")
+    if not grid:
+        raise SceneError("--vary: the grid has no keys (give at least one key and its values)")
+    if not (isinstance(batch_seconds, numbers.Real) and batch_seconds >= 0):
+        raise ValueError(f"sweep(): batch_seconds must be a number >= 0, not {batch_seconds!r}")
+    vary = [_vary_text(key, values) for key, values in grid.items()]
+    state = scene._state()
+    plan = _core.SweepPlan(*state, vary)  # every value checked, as the command does
+    job = _Job(uuid.uuid4().hex, state, vary, plan.dimensionless, plan)
+
+    started = time.perf_counter()
+    lines = plan.run_rows(0, 1)
+    row_seconds = time.perf_counter() - started
+    rows = plan.rows
+    per_batch = batch_seconds / row_seconds if row_seconds > 0 else math.inf
+    size = rows if per_batch >= rows else math.ceil(per_batch)
+    size = max(1, min(size, math.ceil((rows - 1) / _MIN_TASKS)))
+
+    own = executor is None
+    if own:
+        executor = ThreadPoolExecutor(os.cpu_count() or 1, thread_name_prefix="mdrsim-sweep")
+    pending = collections.deque()
+    try:
+        for first in range(1, rows, size):
+            if len(pending) >= _IN_FLIGHT:
+                lines += pending.popleft().result()
+            pending.append(executor.submit(_run_rows, job, first, min(size, rows - first)))
+        while pending:
+            lines += pending.popleft().result()
+    finally:
+        for future in pending:
+            future.cancel()
+        if own:
+            executor.shutdown(wait=True, cancel_futures=True)
+    return SweepResult(plan.identity, plan.header, plan.values(), lines)

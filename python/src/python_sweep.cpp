@@ -1,0 +1,191 @@
+// The rows of mdrsim.sweep, parsed, built, checked and written by `mdrsim sweep`'s own code
+// (apps/), so that each row is the command's, byte for byte.
+#include "python/src/python_sweep.hpp"
+
+#include <pybind11/stl.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "apps/finite_result.hpp"
+#include "apps/sweep_csv.hpp"
+#include "apps/sweep_grid.hpp"
+#include "apps/usage_error.hpp"
+#include "apps/vary_spec.hpp"
+#include "engine/events/result_json.hpp"
+#include "engine/run/run_scene.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "engine/scene/scene_error.hpp"
+#include "python/src/python_parts.hpp"
+
+namespace py = pybind11;
+
+namespace mdrsim::python {
+namespace {
+
+using cli::SweepGrid;
+using cli::VarySpec;
+using cli::VaryValue;
+
+// as_vary_message, build_row and check_values are apps/sweep_command.cpp's, which keeps them
+// in its anonymous namespace: keep the two equal (test_sweep.py compares rows and messages).
+
+/// A name's value goes in through set_value, whose messages say --set: they say --vary here.
+std::string as_vary_message(const std::string& message, const SweepGrid& grid,
+                            const std::vector<std::size_t>& values) {
+  constexpr std::string_view set = "--set: ";
+  if (message.rfind(set, 0) != 0) return message;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const VarySpec& spec = grid.keys()[k];
+    if (spec.values[values[k]].number) continue;
+    const std::string& key = spec.key;
+    const std::size_t after = set.size() + key.size();
+    if (message.compare(set.size(), key.size(), key) == 0 && after < message.size() &&
+        (message[after] == ':' || message[after] == ' ')) {
+      return "--vary: " + message.substr(set.size());
+    }
+  }
+  return message;
+}
+
+/// Sets every varied key to its value at `values` and builds the scene.
+Scene build_row(SceneDocument& document, const SweepGrid& grid,
+                const std::vector<std::size_t>& values, const Registries& registries) {
+  try {
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const VarySpec& spec = grid.keys()[k];
+      const VaryValue& value = spec.values[values[k]];
+      if (value.number) {
+        document.set_number(spec.key, *value.number, "--vary");
+      } else {
+        document.set_value(spec.key, value.text);
+      }
+    }
+    return document.build(registries);
+  } catch (const SceneError& e) {
+    throw SceneError(as_vary_message(e.what(), grid, values));
+  }
+}
+
+/// Builds every probe of every key with the other keys at their first value; returns whether
+/// any of these scenes has JKR scales (the CSV's dimensionless columns).
+bool check_values(const SceneDocument& base, const SweepGrid& grid, const Registries& registries) {
+  SceneDocument document = base;
+  bool dimensionless = false;
+  for (std::size_t k = 0; k < grid.keys().size(); ++k) {
+    for (const std::size_t probe : grid.keys()[k].probes()) {
+      if (k > 0 && probe == 0) continue;  // the first row, built already
+      std::vector<std::size_t> values(grid.keys().size(), 0);
+      values[k] = probe;
+      const Scene scene = build_row(document, grid, values, registries);
+      dimensionless = dimensionless || dimensionless_scales(scene).has_value();
+    }
+  }
+  return dimensionless;
+}
+
+/// The command's --vary parser; its UsageError (exit 2 there) is a SceneError here.
+SweepGrid parse_grid(const std::vector<std::string>& vary) {
+  try {
+    std::vector<VarySpec> specs;
+    for (const std::string& text : vary) specs.push_back(cli::parse_vary(text));
+    return SweepGrid(std::move(specs));
+  } catch (const cli::UsageError& e) {
+    throw SceneError(e.what());
+  }
+}
+
+using Overrides = std::vector<std::pair<std::string, std::string>>;
+
+/// A sweep of one scene (its text and with_values overrides, as mdrsim.Scene keeps them) over
+/// the --vary texts. Made once by the caller, which checks the values, and again wherever
+/// rows run (a Dask worker), told the dimensionless flag so that it checks nothing.
+class SweepPlan {
+ public:
+  SweepPlan(const std::string& text, const std::string& source_name, const std::string& base_dir,
+            const Overrides& overrides, const std::vector<std::string>& vary,
+            std::optional<bool> dimensionless)
+      : grid_(parse_grid(vary)), registries_(current_registries()) {
+    std::vector<std::string> sets;
+    for (const auto& [key, value] : overrides) sets.push_back(key + "=" + value);
+    scene_hash_ = cli::scene_hash(text, sets);
+    py::gil_scoped_release release;  // Python parts take the GIL back in their factories
+    base_.emplace(SceneDocument::from_text(text, source_name, base_dir));
+    for (const auto& [key, value] : overrides) base_->set_value(key, value);
+    dimensionless_ = dimensionless ? *dimensionless : check_values(*base_, grid_, *registries_);
+  }
+
+  std::uint64_t rows() const { return grid_.rows(); }
+  bool dimensionless() const { return dimensionless_; }
+  std::string header() const { return cli::csv_header(grid_, dimensionless_); }
+  std::string identity() const {
+    return cli::identity_line({scene_hash_, grid_.hash(), grid_.rows(), cli::Shard{}});
+  }
+
+  /// Each key's values as (CSV text, value): a float where it is set as a number, else the
+  /// name.
+  py::list values() const {
+    py::list out;
+    for (const VarySpec& spec : grid_.keys()) {
+      py::list values;
+      for (const VaryValue& v : spec.values) {
+        values.append(py::make_tuple(
+            v.text, v.number ? py::object(py::float_(*v.number)) : py::object(py::str(v.text))));
+      }
+      out.append(values);
+    }
+    return out;
+  }
+
+  /// The CSV lines of rows first .. first + count - 1, each with its newline; the first
+  /// failing row in row order raises (SceneError for a bad combination of values).
+  std::vector<std::string> run_rows(std::uint64_t first, std::uint64_t count) const {
+    if (first > grid_.rows() || count > grid_.rows() - first) {
+      throw py::index_error("SweepPlan.run_rows: rows beyond the grid");
+    }
+    std::vector<std::string> lines;
+    py::gil_scoped_release release;
+    SceneDocument document = *base_;  // a copy re-parses: once per call, as once per worker
+    const ObserverList no_observers;
+    for (std::uint64_t row = first; row < first + count; ++row) {
+      const std::vector<std::size_t> values = grid_.indices(row);
+      const Scene scene = build_row(document, grid_, values, *registries_);
+      const RunResult result = run_scene(scene, no_observers);
+      cli::require_finite(scene, result);
+      lines.push_back(cli::csv_row(grid_, values, scene, result, dimensionless_));
+    }
+    return lines;
+  }
+
+ private:
+  SweepGrid grid_;
+  std::shared_ptr<const Registries> registries_;
+  std::optional<SceneDocument> base_;
+  std::uint64_t scene_hash_ = 0;
+  bool dimensionless_ = false;
+};
+
+}  // namespace
+
+void bind_sweep(py::module_& m) {
+  py::class_<SweepPlan>(m, "SweepPlan",
+                        "The rows of a sweep, as `mdrsim sweep` makes them (internal).")
+      .def(py::init<const std::string&, const std::string&, const std::string&, const Overrides&,
+                    const std::vector<std::string>&, std::optional<bool>>(),
+           py::arg("text"), py::arg("source_name"), py::arg("base_dir"), py::arg("overrides"),
+           py::arg("vary"), py::arg("dimensionless") = py::none())
+      .def_property_readonly("rows", &SweepPlan::rows)
+      .def_property_readonly("dimensionless", &SweepPlan::dimensionless)
+      .def_property_readonly("header", &SweepPlan::header)
+      .def_property_readonly("identity", &SweepPlan::identity)
+      .def("values", &SweepPlan::values)
+      .def("run_rows", &SweepPlan::run_rows, py::arg("first"), py::arg("count"));
+}
+
+}  // namespace mdrsim::python
