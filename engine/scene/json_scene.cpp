@@ -41,7 +41,10 @@ toml::array convert_array(const json& array, const std::string& key, const std::
 toml::table convert_object(const json& object, const std::string& key,
                            const std::string& source_name, int depth) {
   toml::table table;
-  for (const auto& [name, value] : object.items()) {
+  for (const auto& item : object.items()) {
+    // Not a structured binding: clang 14 cannot capture one in the lambda below.
+    const std::string name = item.key();
+    const json& value = item.value();
     const std::string path = key.empty() ? name : key + "." + name;
     convert(value, path, source_name, depth,
             [&](auto&& node) { table.insert_or_assign(name, std::forward<decltype(node)>(node)); });
