@@ -110,8 +110,9 @@ toml::table json_scene_table(std::string_view text, const std::string& source_na
   json document;
   try {
     document = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // "[json.exception.parse_error.101] parse error at line 1, column 2: ..."
+  } catch (const json::exception& e) {
+    // "[json.exception.parse_error.101] parse error at line 1, column 2: ...", or
+    // "[json.exception.out_of_range.406] number overflow parsing '1e999'".
     std::string what = e.what();
     if (const auto at = what.find("] "); at != std::string::npos) what.erase(0, at + 2);
     throw SceneError(fmt::format("{}: malformed JSON: {}", source_name, printable(what, 200)));

@@ -58,6 +58,10 @@ TEST(JsonScene, BadInputNamesTheFile) {
   EXPECT_THROW_MSG(build("{\"material\": }"), SceneError,
                    "r.json: malformed JSON: parse error at line 1, column 14: syntax error while "
                    "parsing value - unexpected '}'; expected '[', '{', or a literal");
+  // A number beyond a double (found by the fuzzer: nlohmann throws out_of_range, not
+  // parse_error, for it).
+  EXPECT_THROW_MSG(build(R"({"material": {"youngs_modulus": 1e999}})"), SceneError,
+                   "r.json: malformed JSON: number overflow parsing '1e999'");
   EXPECT_THROW_MSG(build(R"({"scene": 3})"), SceneError,
                    "r.json: scene: expected an object (the scene of a result)");
   EXPECT_THROW_MSG(build(R"({"title": null})"), SceneError,
