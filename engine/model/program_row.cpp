@@ -184,6 +184,46 @@ void ProgramRow::lift_outer() {
   --in_contact_;
 }
 
+ProgramRow::Edges ProgramRow::edges() const {
+  return {glued_,
+          in_contact_,
+          ever_glued_,
+          contact_images_,
+          glued_offsets_,
+          runs_.size(),
+          runs_.empty() ? Run{} : runs_.back(),
+          normal_,
+          tangential_,
+          normal_equilibrium_,
+          tangential_equilibrium_,
+          normal_cached_,
+          tangential_cached_,
+          normal_response_cached_,
+          tangential_response_cached_,
+          normal_per_held_,
+          tangential_per_held_};
+}
+
+void ProgramRow::restore(const Edges& saved) {
+  glued_ = saved.glued;
+  in_contact_ = saved.in_contact;
+  ever_glued_ = saved.ever_glued;
+  contact_images_ = saved.contact_images;
+  glued_offsets_ = saved.glued_offsets;
+  runs_.resize(saved.runs);
+  if (saved.runs > 0) runs_.back() = saved.last_run;
+  normal_ = saved.normal;
+  tangential_ = saved.tangential;
+  normal_equilibrium_ = saved.normal_equilibrium;
+  tangential_equilibrium_ = saved.tangential_equilibrium;
+  normal_cached_ = saved.normal_cached;
+  tangential_cached_ = saved.tangential_cached;
+  normal_response_cached_ = saved.normal_response_cached;
+  tangential_response_cached_ = saved.tangential_response_cached;
+  normal_per_held_ = saved.normal_per_held;
+  tangential_per_held_ = saved.tangential_per_held;
+}
+
 ContactSnapshot ProgramRow::snapshot() const {
   ContactSnapshot s;
   s.indentation = indentation();

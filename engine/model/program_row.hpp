@@ -105,6 +105,18 @@ class ProgramRow {
   void lift_outer();  ///< spring m (not glued) leaves
 
   ContactSnapshot snapshot() const;
+
+  /// Applies `change` (one change at the edges, or new held values), returns what `look`
+  /// sees of the row then, and puts the row back exactly: O(1), where a copy of the row would
+  /// copy every run of glued springs.
+  template <class Change, class Look>
+  auto trial(Change&& change, Look&& look) {
+    const Edges saved = edges();
+    change(*this);
+    auto seen = look(static_cast<const ProgramRow&>(*this));
+    restore(saved);
+    return seen;
+  }
   /// Whether snapshots carry the edge springs' forces (for rtol's estimates).
   void record_edge_forces(bool on) { edge_forces_ = on; }
 
@@ -181,6 +193,21 @@ class ProgramRow {
   mutable double tangential_per_held_ = 0.0;
   mutable bool normal_response_cached_ = false;
   mutable bool tangential_response_cached_ = false;
+
+  /// All that a change at the edges or of the held values alters: the counts, the sums, the
+  /// last run (a change pushes or pops one at most), the axes and what is cached of them.
+  struct Edges {
+    std::int64_t glued, in_contact, ever_glued;
+    CompensatedSum contact_images, glued_offsets;
+    std::size_t runs;
+    Run last_run;
+    MachineAxis normal, tangential;
+    AxisEquilibrium normal_equilibrium, tangential_equilibrium;
+    bool normal_cached, tangential_cached, normal_response_cached, tangential_response_cached;
+    double normal_per_held, tangential_per_held;
+  };
+  Edges edges() const;
+  void restore(const Edges& saved);
 };
 
 }  // namespace mdrsim

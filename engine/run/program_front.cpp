@@ -22,49 +22,55 @@ double ProgramFront::let_go_margin(const ProgramRow& row) const {
       {stretch, row.tangential_displacement() - row.boundary_offset(), row.position(k)});
 }
 
-std::optional<ContactSnapshot> ProgramFront::at_rest(const ProgramRow& row) {
+std::optional<ContactSnapshot> ProgramFront::at_rest(ProgramRow& row) {
   const std::int64_t k = row.glued();
   if (row.in_contact() == 0) return row.snapshot();  // nothing in contact: no front to place
   if (row.in_contact() != k || k < 2) {
     phase_.reset();
     return std::nullopt;
   }
+  // Spring n glues once the gap g_n - d (with n - 1 glued) reaches its limit (advancing); the
+  // boundary lets go once the criterion's margin reaches zero (receding).
+  const auto glue_margin = [](const ProgramRow& r, std::int64_t n) {
+    return r.image(n) - r.indentation() - (n == 1 ? 0.0 : r.front_limit(n));
+  };
+  struct Branch {
+    ContactSnapshot state;
+    double margin;
+  };
   // The branch one spring in and one spring out, at the same held values.
-  ProgramRow inner = row;
-  inner.let_go_boundary(false);
+  const Branch inner = row.trial([](ProgramRow& r) { r.let_go_boundary(false); },
+                                 [&](const ProgramRow& r) {
+                                   return Branch{r.snapshot(), glue_margin(r, k)};
+                                 });
   const ContactSnapshot at = row.snapshot();
 
   std::optional<double> phase;
   std::optional<ContactSnapshot> outer;
   if (row.adhesive() && row.can_glue(k + 1)) {
-    // Advancing: spring n glues once the gap g_n - d (with n - 1 glued) reaches its limit.
-    const auto glue_margin = [&](const ProgramRow& r, std::int64_t n) {
-      return r.image(n) - r.indentation() - (n == 1 ? 0.0 : r.front_limit(n));
-    };
-    const double here = glue_margin(inner, k);
+    const double here = inner.margin;
     const double next = glue_margin(row, k + 1);
     if (here <= 0.0 && next > 0.0) {
       phase = here / (here - next);
-      ProgramRow out = row;
-      out.glue_next();
-      outer = out.snapshot();
+      outer = row.trial([](ProgramRow& r) { r.glue_next(); },
+                        [](const ProgramRow& r) { return r.snapshot(); });
     }
   }
   if (!phase) {
-    // Receding: the boundary spring lets go once the criterion's margin reaches zero.
-    ProgramRow out = row;
-    out.glue_next_as_boundary();
+    const Branch out = row.trial([](ProgramRow& r) { r.glue_next_as_boundary(); },
+                                 [&](const ProgramRow& r) {
+                                   return Branch{r.snapshot(), let_go_margin(r)};
+                                 });
     const double here = let_go_margin(row);
-    const double next = let_go_margin(out);
-    if (here > 0.0 && next <= 0.0) phase = here / (here - next);
-    outer = out.snapshot();
+    if (here > 0.0 && out.margin <= 0.0) phase = here / (here - out.margin);
+    outer = out.state;
   }
   if (phase) {
     phase_ = phase;
   } else if (!phase_) {
     return std::nullopt;  // pinned, with no phase known since it last moved
   }
-  return interpolate_snapshots(inner.snapshot(), at, *outer, *phase_);
+  return interpolate_snapshots(inner.state, at, *outer, *phase_);
 }
 
 void ProgramFront::candidate(const std::optional<ContactSnapshot>& state) {
@@ -99,8 +105,8 @@ std::optional<ContactSnapshot> ProgramFront::peak(const ContactSnapshot& plain) 
   return peak_;
 }
 
-std::optional<ContactSnapshot> ProgramFront::fold(const ProgramRow& row, const StageLine& line,
-                                                  double t, const ContactSnapshot& before) {
+std::optional<ContactSnapshot> ProgramFront::fold(ProgramRow& row, const StageLine& line, double t,
+                                                  const ContactSnapshot& before) {
   const std::int64_t k = row.glued() + 1;  // the spring that let go at t
   if (!previous_let_go_ || previous_let_go_->spring != k + 1 || row.in_contact() != k - 1 ||
       k < 3 || !(previous_let_go_->t < t)) {
@@ -126,14 +132,13 @@ std::optional<ContactSnapshot> ProgramFront::fold(const ProgramRow& row, const S
   for (int i = 0; i < 64 && !(margin(behind) > 0.0); ++i) behind = t - 2.0 * (t - behind);
   if (!(margin(behind) > 0.0)) return std::nullopt;  // broken at rest: a shear-off, not a fold
   const double t_inner = bracketed_root(margin, behind, t);
-  ProgramRow inner = row;
-  line.place(inner, t_inner);
+  const ContactSnapshot inner = row.trial([&](ProgramRow& r) { line.place(r, t_inner); },
+                                          [](const ProgramRow& r) { return r.snapshot(); });
 
   // The fold is the largest parameter of the let-go branch: the vertex of -t.
   const auto vertex = parabola_vertex(-t_inner, -t, -previous_let_go_->t);
   if (!vertex) return std::nullopt;
-  ContactSnapshot q =
-      interpolate_snapshots(inner.snapshot(), before, previous_let_go_->before, *vertex);
+  ContactSnapshot q = interpolate_snapshots(inner, before, previous_let_go_->before, *vertex);
   q.springs_in_contact = before.springs_in_contact;
   return q;
 }

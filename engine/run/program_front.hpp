@@ -69,15 +69,15 @@ class ProgramFront {
   std::optional<ContactSnapshot> peak(const ContactSnapshot& plain) const;
 
   /// The state of `row`, at rest at this parameter, with its front between springs; sets the
-  /// phase where the front is moving.
-  std::optional<ContactSnapshot> at_rest(const ProgramRow& row);
+  /// phase where the front is moving. Tries changes on `row` and puts it back exactly.
+  std::optional<ContactSnapshot> at_rest(ProgramRow& row);
 
   /// The fold of a run of single let-gos: spring k let go at t from `before`, `row` is the
   /// row after it (k - 1 glued, still at t) and its boundary is due too. The parabola
   /// through the let-go parameters of springs k + 1, k and k - 1 (the last root-found behind
   /// t along the stage's line) locates the fold between springs, and the three let-go
   /// equilibria are interpolated there.
-  std::optional<ContactSnapshot> fold(const ProgramRow& row, const StageLine& line, double t,
+  std::optional<ContactSnapshot> fold(ProgramRow& row, const StageLine& line, double t,
                                       const ContactSnapshot& before);
 
  private:
