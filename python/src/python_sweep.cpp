@@ -16,6 +16,7 @@
 #include "apps/finite_result.hpp"
 #include "apps/sweep_csv.hpp"
 #include "apps/sweep_grid.hpp"
+#include "apps/sweep_rows.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/vary_spec.hpp"
 #include "engine/events/result_json.hpp"
@@ -29,66 +30,11 @@ namespace py = pybind11;
 namespace mdrsim::python {
 namespace {
 
+using cli::build_row;
+using cli::check_values;
 using cli::SweepGrid;
 using cli::VarySpec;
 using cli::VaryValue;
-
-// as_vary_message, build_row and check_values are apps/sweep_command.cpp's, which keeps them
-// in its anonymous namespace: keep the two equal (test_sweep.py compares rows and messages).
-
-/// A name's value goes in through set_value, whose messages say --set: they say --vary here.
-std::string as_vary_message(const std::string& message, const SweepGrid& grid,
-                            const std::vector<std::size_t>& values) {
-  constexpr std::string_view set = "--set: ";
-  if (message.rfind(set, 0) != 0) return message;
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    const VarySpec& spec = grid.keys()[k];
-    if (spec.values[values[k]].number) continue;
-    const std::string& key = spec.key;
-    const std::size_t after = set.size() + key.size();
-    if (message.compare(set.size(), key.size(), key) == 0 && after < message.size() &&
-        (message[after] == ':' || message[after] == ' ')) {
-      return "--vary: " + message.substr(set.size());
-    }
-  }
-  return message;
-}
-
-/// Sets every varied key to its value at `values` and builds the scene.
-Scene build_row(SceneDocument& document, const SweepGrid& grid,
-                const std::vector<std::size_t>& values, const Registries& registries) {
-  try {
-    for (std::size_t k = 0; k < values.size(); ++k) {
-      const VarySpec& spec = grid.keys()[k];
-      const VaryValue& value = spec.values[values[k]];
-      if (value.number) {
-        document.set_number(spec.key, *value.number, "--vary");
-      } else {
-        document.set_value(spec.key, value.text);
-      }
-    }
-    return document.build(registries);
-  } catch (const SceneError& e) {
-    throw SceneError(as_vary_message(e.what(), grid, values));
-  }
-}
-
-/// Builds every probe of every key with the other keys at their first value; returns whether
-/// any of these scenes has JKR scales (the CSV's dimensionless columns).
-bool check_values(const SceneDocument& base, const SweepGrid& grid, const Registries& registries) {
-  SceneDocument document = base;
-  bool dimensionless = false;
-  for (std::size_t k = 0; k < grid.keys().size(); ++k) {
-    for (const std::size_t probe : grid.keys()[k].probes()) {
-      if (k > 0 && probe == 0) continue;  // the first row, built already
-      std::vector<std::size_t> values(grid.keys().size(), 0);
-      values[k] = probe;
-      const Scene scene = build_row(document, grid, values, registries);
-      dimensionless = dimensionless || dimensionless_scales(scene).has_value();
-    }
-  }
-  return dimensionless;
-}
 
 /// The command's --vary parser; its UsageError (exit 2 there) is a SceneError here.
 SweepGrid parse_grid(const std::vector<std::string>& vary) {
