@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "apps/commands.hpp"
+#include "apps/run_label.hpp"
 #include "apps/usage_error.hpp"
 #include "engine/events/program_version.hpp"
 #include "engine/scene/registries.hpp"
@@ -27,7 +28,7 @@ constexpr const char* kLevels[] = {"trace", "debug", "info", "warn", "error", "o
 
 void set_up_logging(const std::string& level) {
   auto logger = spdlog::stderr_color_mt("mdrsim");
-  logger->set_pattern("[%l] %v");
+  logger->set_formatter(mdrsim::cli::labelled_formatter("[%l] %*%v"));  // %*: a sweep's row
   spdlog::set_default_logger(logger);
   spdlog::set_level(spdlog::level::from_str(level));
 }

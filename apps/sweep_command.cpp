@@ -30,16 +30,14 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "apps/finite_result.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/sweep_csv.hpp"
 #include "apps/sweep_grid.hpp"
+#include "apps/sweep_progress.hpp"
 #include "apps/sweep_rows.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/vary_spec.hpp"
-#include "engine/events/result_json.hpp"
-#include "engine/run/run_scene.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim::cli {
@@ -274,6 +272,7 @@ int sweep_command(const SweepOptions& options) {
   }
 
   const auto started = std::chrono::steady_clock::now();
+  SweepProgress progress(done, shard_rows, started);
   const int threads = static_cast<int>(
       std::max<std::uint64_t>(1, std::min<std::uint64_t>(options.threads, shard_rows - done)));
   // Rows wait here for the rows before them; workers keep at most `window` rows ahead.
@@ -284,7 +283,6 @@ int sweep_command(const SweepOptions& options) {
   std::uint64_t failed_at = shard_rows;
   std::exception_ptr failure;
   std::condition_variable room;
-  const ObserverList no_observers;
   const auto worker = [&] {
     std::optional<SceneDocument> document;
     while (true) {
@@ -299,11 +297,7 @@ int sweep_command(const SweepOptions& options) {
       std::exception_ptr error;
       try {
         if (!document) document.emplace(base);  // a copy re-parses: once per worker
-        const std::vector<std::size_t> values = grid.indices(shard.row(position));
-        const Scene scene = build_row(*document, grid, values, registries);
-        const RunResult result = run_scene(scene, no_observers);
-        require_finite(scene, result);
-        line = csv_row(grid, values, scene, result, dimensionless);
+        line = run_row(*document, grid, shard.row(position), registries, dimensionless);
       } catch (...) {
         error = std::current_exception();
       }
@@ -324,6 +318,9 @@ int sweep_command(const SweepOptions& options) {
              it = finished.erase(it)) {
           csv.write_all(it->second);
           ++written;
+        }
+        if (const auto line = progress.line(written, std::chrono::steady_clock::now())) {
+          spdlog::info("{}", *line);
         }
       } catch (...) {
         if (!failure) failure = std::current_exception();

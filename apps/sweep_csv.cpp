@@ -68,7 +68,8 @@ std::string csv_header(const SweepGrid& grid, bool dimensionless) {
   }
   out += ",peak_normal_force";
   if (dimensionless) out += ",dimensionless_peak_normal_force";
-  out += ",tangential_strength,critical_error_estimate\n";
+  out += ",tangential_strength,critical_error_estimate";
+  out += ",springs,glued_radius,preload_depth,preload_force,warnings\n";
   return out;
 }
 
@@ -103,6 +104,16 @@ std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& value
   }
   append_field(out, r.tangential_strength);
   append_field(out, r.accuracy.critical_error_estimate);
+  // What the row ran: its finest row of springs (rtol picks it) and its preload state (a
+  // program has none); then the number of warnings it logged, which a plot should not hide.
+  append_field(out, std::optional<std::int64_t>(r.springs));
+  const auto preload = [&](double value) {
+    return scene.program ? std::nullopt : std::optional<double>(value);
+  };
+  append_field(out, preload(scene.glued_radius));
+  append_field(out, preload(scene.preload_depth));
+  append_field(out, preload(scene.preload_force));
+  append_field(out, std::optional<std::size_t>(r.warnings.size()));
   out.push_back('\n');
   return fmt::to_string(out);
 }

@@ -5,7 +5,13 @@
 #include <string_view>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "apps/finite_result.hpp"
+#include "apps/run_label.hpp"
+#include "apps/sweep_csv.hpp"
 #include "engine/events/result_json.hpp"
+#include "engine/run/run_scene.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim::cli {
@@ -62,6 +68,26 @@ bool check_values(const SceneDocument& base, const SweepGrid& grid, const Regist
     }
   }
   return dimensionless;
+}
+
+std::string row_label(const SweepGrid& grid, std::uint64_t row) {
+  const std::vector<std::size_t> values = grid.indices(row);
+  std::string label = fmt::format("row {} of {} (", row, grid.rows());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (k > 0) label += ", ";
+    label += grid.keys()[k].key + "=" + grid.keys()[k].values[values[k]].text;
+  }
+  return label + ")";
+}
+
+std::string run_row(SceneDocument& document, const SweepGrid& grid, std::uint64_t row,
+                    const Registries& registries, bool dimensionless) {
+  const ScopedRunLabel label(row_label(grid, row));
+  const std::vector<std::size_t> values = grid.indices(row);
+  const Scene scene = build_row(document, grid, values, registries);
+  const RunResult result = run_scene(scene, ObserverList{});
+  require_finite(scene, result);
+  return csv_row(grid, values, scene, result, dimensionless);
 }
 
 }  // namespace mdrsim::cli

@@ -23,6 +23,8 @@ _IN_FLIGHT = 256
 # 0 was: a row 0 far cheaper than the others (springs over decades) must not put the whole
 # sweep in one task. At ~1 ms a Dask task, they cost at most ~32 ms.
 _MIN_TASKS = 32
+# The columns of the command's CSV that count things, read as int.
+_COUNT_COLUMNS = frozenset({"springs_in_contact", "springs", "warnings"})
 
 
 def _item_text(key, item):
@@ -130,8 +132,8 @@ class SweepResult:
     @cached_property
     def rows(self):
         """One dict per row, keyed by `columns`: the status and a varied name as str, a
-        varied number and the fields as float (springs_in_contact int), None where the CSV
-        field is empty."""
+        varied number and the fields as float (the counts springs_in_contact, springs and
+        warnings as int), None where the CSV field is empty."""
         keys = [dict(values) for values in self._values]
         names = self.columns[1 + len(keys):]
         rows = []
@@ -143,7 +145,7 @@ class SweepResult:
             for name, text in zip(names, fields[1 + len(keys):]):
                 if text == "":
                     row[name] = None
-                elif name == "springs_in_contact":
+                elif name in _COUNT_COLUMNS:
                     row[name] = int(text)
                 else:
                     row[name] = float(text)

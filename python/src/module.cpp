@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "apps/run_label.hpp"
 #include "engine/events/finite_check.hpp"
 #include "engine/events/result_json.hpp"
 #include "engine/run/run_scene.hpp"
@@ -281,7 +282,7 @@ PYBIND11_MODULE(_core, m) {
   // mdrsim.set_log_level; a run's warnings reach Python in its result.
   auto logger =
       std::make_shared<spdlog::logger>("mdrsim", std::make_shared<spdlog::sinks::stderr_sink_mt>());
-  logger->set_pattern("[mdrsim %l] %v");
+  logger->set_formatter(mdrsim::cli::labelled_formatter("[mdrsim %l] %*%v"));  // %*: a sweep's row
   spdlog::set_default_logger(logger);
   spdlog::set_level(spdlog::level::off);
   m.def(

@@ -13,14 +13,11 @@
 #include <utility>
 #include <vector>
 
-#include "apps/finite_result.hpp"
 #include "apps/sweep_csv.hpp"
 #include "apps/sweep_grid.hpp"
 #include "apps/sweep_rows.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/vary_spec.hpp"
-#include "engine/events/result_json.hpp"
-#include "engine/run/run_scene.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "python/src/python_parts.hpp"
@@ -30,7 +27,6 @@ namespace py = pybind11;
 namespace mdrsim::python {
 namespace {
 
-using cli::build_row;
 using cli::check_values;
 using cli::SweepGrid;
 using cli::VarySpec;
@@ -98,13 +94,8 @@ class SweepPlan {
     std::vector<std::string> lines;
     py::gil_scoped_release release;
     SceneDocument document = *base_;  // a copy re-parses: once per call, as once per worker
-    const ObserverList no_observers;
     for (std::uint64_t row = first; row < first + count; ++row) {
-      const std::vector<std::size_t> values = grid_.indices(row);
-      const Scene scene = build_row(document, grid_, values, *registries_);
-      const RunResult result = run_scene(scene, no_observers);
-      cli::require_finite(scene, result);
-      lines.push_back(cli::csv_row(grid_, values, scene, result, dimensionless_));
+      lines.push_back(cli::run_row(document, grid_, row, *registries_, dimensionless_));
     }
     return lines;
   }

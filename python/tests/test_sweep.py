@@ -80,6 +80,8 @@ def test_thread_pool_gives_the_command_csv(command_csv):
     assert {row["status"] for row in result.rows} == {"instability", "shear-off"}
     assert last["normal_force"] is None and last["tangential_strength"] > 0
     assert first["springs_in_contact"] > 0 and isinstance(first["springs_in_contact"], int)
+    assert isinstance(first["springs"], int) and isinstance(first["warnings"], int)
+    assert first["glued_radius"] > 0
     for row, line in zip(result.rows, lines[2:]):
         fields = line.split(",")
         assert row["status"] == fields[0]
@@ -182,3 +184,21 @@ def test_dask_local_cluster_gives_the_command_csv(command_csv, long_command_csv)
         result = mdrsim.sweep(small_scene(), LONG_GRID, executor=client.get_executor())
         assert result.to_csv() == long_command_csv
     assert time.perf_counter() - started < 30
+
+
+def test_log_lines_name_their_row(capfd):
+    # 20 springs do not resolve the critical point: each row warns, and its warning says
+    # which row it is, as the command's do.
+    scene = mdrsim.Scene.from_file("scenes/fig3a_fixed_grips.toml").with_values(
+        {"discretization.springs": 20})
+    mdrsim.set_log_level("warn")
+    try:
+        result = mdrsim.sweep(scene, {"loading.tangential.displacement": [0, 4e-6]})
+    finally:
+        mdrsim.set_log_level("off")
+    err = capfd.readouterr().err.splitlines()
+    assert [row["warnings"] for row in result.rows] == [1, 1]
+    for index, value in enumerate(["0", "4e-06"]):
+        label = f"[mdrsim warning] row {index} of 2 (loading.tangential.displacement={value}): "
+        assert sum(line.startswith(label) for line in err) == 1, err
+    assert all(line.startswith("[mdrsim warning] row ") for line in err), err

@@ -48,7 +48,8 @@ constexpr std::string_view kColumns =
     "springs_in_contact,dimensionless_normal_force,dimensionless_tangential_force,"
     "dimensionless_contact_radius,dimensionless_indentation,"
     "dimensionless_tangential_displacement,peak_normal_force,dimensionless_peak_normal_force,"
-    "tangential_strength,critical_error_estimate";
+    "tangential_strength,critical_error_estimate,springs,glued_radius,preload_depth,preload_force,"
+    "warnings";
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

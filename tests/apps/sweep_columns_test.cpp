@@ -1,0 +1,161 @@
+// What a sweep row says about its run (issue 13): the springs it used (rtol picks them), its
+// preload state and its warning count, each equal to what `mdrsim run --json` says of the same
+// scene; and its log lines name the row they belong to.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cstddef>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/run_command.hpp"
+
+namespace mdrsim::test {
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    out.push_back(line.substr(start, comma - start));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
+
+/// The CSV rows of a sweep on standard output, each as {column: text}.
+std::vector<std::map<std::string, std::string>> csv_rows(const std::string& csv) {
+  const auto lines = lines_of(csv);
+  EXPECT_GE(lines.size(), 2u) << csv;
+  if (lines.size() < 2) return {};
+  const auto columns = fields_of(lines[1]);
+  std::vector<std::map<std::string, std::string>> rows;
+  for (std::size_t i = 2; i < lines.size(); ++i) {
+    const auto fields = fields_of(lines[i]);
+    EXPECT_EQ(fields.size(), columns.size()) << lines[i];
+    std::map<std::string, std::string> row;
+    for (std::size_t k = 0; k < columns.size() && k < fields.size(); ++k) {
+      row[columns[k]] = fields[k];
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// The JSON of `mdrsim run SCENE --set SET --json -`.
+nlohmann::json run_json(const std::string& scene, const std::string& set) {
+  const auto r = run_mdrsim(fmt::format("run {} --set {} --json - --log-level off", scene, set));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+/// A number's text in the CSV read back, to compare with the JSON's double exactly.
+double number(const std::string& text) { return std::stod(text); }
+
+TEST(SweepColumns, SpringsUsedAreTheRunsAndVaryWithRtol) {
+  // The glue-on-touch cycle needs 2048 springs for 1e-2 and 4096 for 1e-3 (its peak is not
+  // located between springs, so the rows go on doubling).
+  const std::string scene = "scenes/programs/jkr_cycle_glue_on_touch.toml";
+  const auto r = run_mdrsim(
+      fmt::format("sweep {} --vary discretization.rtol=1e-2,1e-3 --log-level off", scene));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    const auto json = run_json(scene, "discretization.rtol=" + row.at("discretization.rtol"));
+    EXPECT_EQ(row.at("springs"), std::to_string(json.at("springs").get<long long>()));
+    EXPECT_EQ(json.at("resolution").at("rows").back(), json.at("springs"));
+    EXPECT_EQ(row.at("warnings"),
+              std::to_string(json.value("warnings", nlohmann::json::array()).size()));
+    // A program has no preload state: its columns are empty, not zero.
+    EXPECT_EQ(row.at("glued_radius"), "");
+    EXPECT_EQ(row.at("preload_depth"), "");
+    EXPECT_EQ(row.at("preload_force"), "");
+  }
+  EXPECT_NE(rows[0].at("springs"), rows[1].at("springs"));
+}
+
+TEST(SweepColumns, PreloadStateIsTheRunsForEachPreloadForce) {
+  // Preloads by force: the glued radius and depth follow from it (JKR), as run reports them.
+  const std::string scene = "scenes/fig2_fixed_load.toml";
+  const auto r = run_mdrsim(fmt::format(
+      "sweep {} --vary loading.preload.force=1e-3,2e-2 --set discretization.springs=500 "
+      "--log-level off",
+      scene));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    const auto json = run_json(scene, "loading.preload.force=" + row.at("loading.preload.force") +
+                                          " --set discretization.springs=500");
+    const auto& preload = json.at("preload");
+    EXPECT_EQ(number(row.at("glued_radius")), preload.at("glued_radius").get<double>());
+    EXPECT_EQ(number(row.at("preload_depth")), preload.at("depth").get<double>());
+    EXPECT_EQ(number(row.at("preload_force")), preload.at("force").get<double>());
+    EXPECT_EQ(row.at("springs"), "500");
+  }
+  // A larger preload glues a larger contact.
+  EXPECT_LT(number(rows[0].at("glued_radius")), number(rows[1].at("glued_radius")));
+}
+
+TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
+  // 20 springs do not resolve the critical point: every row warns once.
+  const auto r = run_mdrsim(
+      "sweep scenes/fig3a_fixed_grips.toml --vary loading.tangential.displacement=0,4e-6 "
+      "--vary detachment.criterion=mode-mixed,stress --set discretization.springs=20 "
+      "--threads 2 --log-level warn");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(r.out);
+  ASSERT_EQ(rows.size(), 4u);
+  const std::vector<std::string> labels{
+      "row 0 of 4 (loading.tangential.displacement=0, detachment.criterion=mode-mixed): ",
+      "row 1 of 4 (loading.tangential.displacement=0, detachment.criterion=stress): ",
+      "row 2 of 4 (loading.tangential.displacement=4e-06, detachment.criterion=mode-mixed): ",
+      "row 3 of 4 (loading.tangential.displacement=4e-06, detachment.criterion=stress): "};
+  const auto err = lines_of(r.err);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::size_t labelled = 0;
+    for (const std::string& line : err) {
+      if (line.rfind("[warning] " + labels[i], 0) == 0) ++labelled;
+    }
+    EXPECT_EQ(std::to_string(labelled), rows[i].at("warnings")) << labels[i] << "\n" << r.err;
+    EXPECT_EQ(rows[i].at("warnings"), "1") << r.err;
+  }
+  for (const std::string& line : err) {
+    EXPECT_TRUE(line.rfind("[warning] row ", 0) == 0 || line.rfind("[info] sweep: ", 0) == 0)
+        << line;
+  }
+}
+
+TEST(SweepLogs, ShardRowsKeepTheirIndexInTheWholeGrid) {
+  const auto r = run_mdrsim(
+      "sweep scenes/fig3a_fixed_grips.toml --vary loading.tangential.displacement=0,2e-6,4e-6 "
+      "--set discretization.springs=20 --shard 1/2 --log-level warn");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("[warning] row 1 of 3 (loading.tangential.displacement=2e-06): "),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("row 0 of 3"), std::string::npos) << r.err;
+}
+
+TEST(SweepLogs, ARunAloneIsNotLabelled) {
+  const auto r = run_mdrsim(
+      "run scenes/fig3a_fixed_grips.toml --set discretization.springs=20 --log-level warn");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("[warning] the critical point has only", 0), 0u) << r.err;
+}
+
+}  // namespace
+}  // namespace mdrsim::test
