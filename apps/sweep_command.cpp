@@ -335,7 +335,8 @@ int sweep_command(const SweepOptions& options) {
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
-  spdlog::info("sweep: {} rows on {} threads in {:.3g} s{}", shard_rows - done, threads,
+  spdlog::info("sweep: {} rows on {} thread{} in {:.3g} s{}", shard_rows - done, threads,
+               threads == 1 ? "" : "s",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
                done > 0 ? fmt::format(" ({} were in the CSV already)", done) : std::string());
   return 0;

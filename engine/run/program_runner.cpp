@@ -5,6 +5,7 @@
 #include "engine/run/program_runner.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <bit>
@@ -17,6 +18,7 @@
 #include "detachment/let_go.hpp"
 #include "engine/base/bracketed_root.hpp"
 #include "engine/run/program_front.hpp"
+#include "engine/run/progress_log.hpp"
 
 namespace mdrsim {
 namespace {
@@ -127,6 +129,7 @@ class ProgramRunner {
   const DetachmentCriterion& criterion_;
   ProgramRow row_;
   std::int64_t max_springs_;
+  ProgressLog progress_;
   const ObserverList& observers_;
   /// Asked once: whether anyone observes single springs (a log observer asks spdlog).
   bool observe_springs_;
@@ -657,6 +660,12 @@ void ProgramRunner::run_stage(const Stage& stage) {
     // the stage stops after this many changes.
     const std::int64_t event_limit = result_.counts.events + kSweepsPerStage * (max_springs_ + 1);
     while (stop_ == Stop::none) {
+      if (progress_.due()) {
+        spdlog::info(
+            "program running: stage '{}' at parameter {:.4g}, {} springs in contact, {} events, "
+            "{} steps",
+            stage.name, t_, row_.in_contact(), result_.counts.events, result_.counts.steps);
+      }
       if (stage.until_separation && row_.in_contact() == 0) break;
       if (result_.counts.events > event_limit) {
         stop_ = Stop::endless;

@@ -16,6 +16,7 @@
 #include "engine/methods/stepping_method.hpp"
 #include "engine/model/tangential_strength.hpp"
 #include "engine/run/fold_refinement.hpp"
+#include "engine/run/progress_log.hpp"
 #include "engine/run/shorthand_path.hpp"
 
 namespace mdrsim {
@@ -43,25 +44,6 @@ std::unique_ptr<PullOffMethod> make_method(const SolverOptions& solver, const Co
   const double step = solver.step ? *solver.step : default_step(contact, criterion);
   return std::make_unique<SteppingMethod>(step, solver.max_halvings);
 }
-
-/// Logs progress every few seconds on long runs; cheap to call each iteration.
-class ProgressLog {
- public:
-  explicit ProgressLog(std::int64_t springs) : springs_(springs) {}
-  void tick(const Contact& contact, const RunCounts& counts) {
-    if ((++calls_ & 0xFFFF) != 0) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::seconds(2)) return;
-    last_ = now;
-    spdlog::info("pull-off running: {} of {} springs attached, {} steps, {} halvings",
-                 contact.springs_in_contact(), springs_, counts.steps, counts.halvings);
-  }
-
- private:
-  std::int64_t springs_;
-  std::uint64_t calls_ = 0;
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 /// The equilibria of the path as they come, O(1) memory: the last three of the unbroken run
 /// of single let-gos, and the most tensile one with its neighbours.
@@ -226,14 +208,18 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   result.accuracy.outer_radius = row.outer_radius;
   EquilibriumTrack track(contact);
   CascadeStart cascade;
-  ProgressLog progress(row.springs);
+  ProgressLog progress;
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
       result.status = RunStatus::step_limit;
       break;
     }
     const AdvanceOutcome out = method->advance(contact, *scene.criterion, observers, result.counts);
-    progress.tick(contact, result.counts);
+    if (progress.due()) {
+      spdlog::info("pull-off running: {} of {} springs attached, {} steps, {} halvings",
+                   contact.springs_in_contact(), row.springs, result.counts.steps,
+                   result.counts.halvings);
+    }
     if (out.detached == 0) continue;
     // Broken by the tangential load as it was applied: the state before is no equilibrium.
     const bool broken_at_start = track.empty() && cascade.size == 0 && out.first_by_shear;
