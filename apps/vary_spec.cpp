@@ -7,6 +7,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <string>
 #include <string_view>
 
 #include "apps/usage_error.hpp"
@@ -60,6 +62,20 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
 }
 
 VaryValue number_value(double value) { return {value, number_field(value)}; }
+
+/// A value inside a range as a person writes it: the shortest decimal of at most 15
+/// significant digits within `noise` (the rounding error of the range's formula) of the
+/// computed value, so that 0:0.4:5 gives 0.3, not 0.30000000000000004, and 1e7:1.7e7:8 whole
+/// numbers, not 11000000.000000002; else the computed value.
+double tidy(double value, double noise) {
+  for (int digits = 1; digits <= 15; ++digits) {
+    const std::string text = fmt::format("{:.{}e}", value, digits - 1);
+    double near = 0.0;
+    if (std::from_chars(text.data(), text.data() + text.size(), near).ec != std::errc()) break;
+    if (std::abs(near - value) <= noise) return near;
+  }
+  return value;
+}
 
 }  // namespace
 
@@ -166,6 +182,12 @@ VarySpec parse_vary(const std::string& text) {
       value = from;
     } else if (i < count - 1) {
       value = log ? from * std::pow(ratio, t) : (1.0 - t) * from + t * to;
+      // The formula's rounding error: two ulps of the larger end (linear); of the value, and
+      // the error ln(ratio) dt that t's rounding dt makes in pow (log).
+      constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+      const double noise = log ? kEpsilon * std::abs(value) * (2.0 + std::abs(std::log(ratio)))
+                               : 2.0 * kEpsilon * std::max(std::abs(from), std::abs(to));
+      value = tidy(value, noise);
     }
     spec.values.push_back(number_value(value));
   }

@@ -46,7 +46,33 @@ TEST(VarySpec, EvenlySpacedFromFromToTo) {
   EXPECT_EQ(x.back(), 0.4);  // the end is exact, not 4 * 0.1
   EXPECT_DOUBLE_EQ(x[2], 0.2);
   // The CSV field is the shortest text that reads back as the same double.
-  EXPECT_EQ(fields(v), (std::vector<std::string>{"0", "0.1", "0.2", "0.30000000000000004", "0.4"}));
+  EXPECT_EQ(fields(v), (std::vector<std::string>{"0", "0.1", "0.2", "0.3", "0.4"}));
+}
+
+TEST(VarySpec, RangeValuesAreTheDecimalsAPersonWritesWithinTheFormulasRounding) {
+  // (1 - t) FROM + t TO gives 0.30000000000000004 at t = 3/4 and 11000000.000000002 at t = 1/7:
+  // within its rounding error of 0.3 and 11000000, which the range gives instead (the latter
+  // a whole number, as discretization.springs needs).
+  EXPECT_EQ(numbers(parse_vary("a.b=0:0.4:5"))[3], 0.3);
+  EXPECT_EQ(fields(parse_vary("a.b=1e7:1.7e7:8")),
+            (std::vector<std::string>{"10000000", "11000000", "12000000", "13000000", "14000000",
+                                      "15000000", "16000000", "17000000"}));
+  EXPECT_EQ(fields(parse_vary("a.b=0:2e-5:5")),
+            (std::vector<std::string>{"0", "5e-06", "1e-05", "1.5e-05", "2e-05"}));
+  // Values with no short decimal move by no more than the formula's rounding error (two
+  // ulps of the larger end).
+  const VarySpec sevenths = parse_vary("a.b=0:1:8");
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_NEAR(numbers(sevenths)[static_cast<std::size_t>(i)], i / 7.0, 4.5e-16);
+  }
+  // Log: 1e-6 (1e3)^(1/3) is 9.999999999999999e-06 by pow, 1e-05 in the range.
+  EXPECT_EQ(fields(parse_vary("a.b=1e-6:1e-3:4:log")),
+            (std::vector<std::string>{"1e-06", "1e-05", "0.0001", "0.001"}));
+  EXPECT_EQ(fields(parse_vary("a.b=100:1e6:9:log"))[3], "3162.27766016838");
+  // A value 4.7e-16 from its nearest 15-digit decimal, more than the rounding error, stays
+  // as computed: 1 + 2^-41, between 1 and 1 + 2^-40.
+  const VarySpec fine = parse_vary("a.b=1:1.0000000000009095:3");
+  EXPECT_EQ(numbers(fine)[1], 1.0 + std::ldexp(1.0, -41));
 }
 
 TEST(VarySpec, OneValueDescendingAndSpaces) {
@@ -146,7 +172,7 @@ TEST(VarySpec, LogSpacing) {
   const std::vector<double> x = numbers(parse_vary("a.b=1e-6:1e-3:4:log"));
   ASSERT_EQ(x.size(), 4u);
   EXPECT_EQ(x[0], 1e-6);
-  EXPECT_EQ(x[1], 1e-6 * std::pow(1e-3 / 1e-6, 1.0 / 3.0));
+  EXPECT_DOUBLE_EQ(x[1], 1e-6 * std::pow(1e-3 / 1e-6, 1.0 / 3.0));
   EXPECT_DOUBLE_EQ(x[2], 1e-4);
   EXPECT_EQ(x[3], 1e-3);
   EXPECT_EQ(numbers(parse_vary("a.b=-1:-100:3: log ")), (std::vector<double>{-1.0, -10.0, -100.0}));
