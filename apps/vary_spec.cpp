@@ -68,13 +68,21 @@ VaryValue number_value(double value) { return {value, number_field(value)}; }
 /// computed value, so that 0:0.4:5 gives 0.3, not 0.30000000000000004, and 1e7:1.7e7:8 whole
 /// numbers, not 11000000.000000002; else the computed value.
 double tidy(double value, double noise) {
-  for (int digits = 1; digits <= 15; ++digits) {
+  const auto rounded = [value](int digits) {
     const std::string text = fmt::format("{:.{}e}", value, digits - 1);
-    double near = 0.0;
-    if (std::from_chars(text.data(), text.data() + text.size(), near).ec != std::errc()) break;
-    if (std::abs(near - value) <= noise) return near;
+    double near = value;
+    std::from_chars(text.data(), text.data() + text.size(), near);
+    return near;
+  };
+  const auto close = [&](int digits) { return std::abs(rounded(digits) - value) <= noise; };
+  // Rounded to more digits is never farther: the fewest that are close, by bisection.
+  if (!close(15)) return value;
+  int lo = 0, hi = 15;  // lo digits are not close (0: none), hi are
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    (close(mid) ? hi : lo) = mid;
   }
-  return value;
+  return rounded(hi);
 }
 
 }  // namespace
