@@ -5,11 +5,12 @@
 
 namespace mdrsim::cli {
 
-SweepProgress::SweepProgress(std::uint64_t done, std::uint64_t rows, Clock::time_point started)
-    : done_(done), rows_(rows), started_(started), last_(started) {}
+SweepProgress::SweepProgress(std::uint64_t done, std::uint64_t rows, Clock::time_point started,
+                             Clock::duration interval)
+    : done_(done), rows_(rows), started_(started), last_(started), interval_(interval) {}
 
 std::optional<std::string> SweepProgress::line(std::uint64_t written, Clock::time_point now) {
-  if (now - last_ < kInterval || written >= rows_) return std::nullopt;
+  if (now - last_ < interval_ || written >= rows_) return std::nullopt;
   last_ = now;
   const double elapsed = std::chrono::duration<double>(now - started_).count();
   std::string line =

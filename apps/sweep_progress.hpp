@@ -13,10 +13,12 @@ class SweepProgress {
   using Clock = std::chrono::steady_clock;
   static constexpr std::chrono::seconds kInterval{10};
 
-  /// A sweep of `rows` rows started at `started` with `done` of them in the CSV already.
-  SweepProgress(std::uint64_t done, std::uint64_t rows, Clock::time_point started);
+  /// A sweep of `rows` rows started at `started` with `done` of them in the CSV already,
+  /// saying how far it is every `interval`.
+  SweepProgress(std::uint64_t done, std::uint64_t rows, Clock::time_point started,
+                Clock::duration interval = kInterval);
 
-  /// Called as rows are written (`written` in all): the line to log when kInterval has
+  /// Called as rows are written (`written` in all): the line to log when the interval has
   /// passed since the start or the last line, e.g.
   /// "sweep: 120 of 2000 rows in 31 s, about 8 min to go"; else nothing.
   std::optional<std::string> line(std::uint64_t written, Clock::time_point now);
@@ -26,6 +28,7 @@ class SweepProgress {
   std::uint64_t rows_;
   Clock::time_point started_;
   Clock::time_point last_;
+  Clock::duration interval_;
 };
 
 /// A duration for people: "40 s", "8 min", "2.5 h".

@@ -4,6 +4,7 @@
 
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -15,6 +16,7 @@
 
 #include "apps/sweep_csv.hpp"
 #include "apps/sweep_grid.hpp"
+#include "apps/sweep_progress.hpp"
 #include "apps/sweep_rows.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/vary_spec.hpp"
@@ -123,6 +125,22 @@ void bind_sweep(py::module_& m) {
       .def_property_readonly("identity", &SweepPlan::identity)
       .def("values", &SweepPlan::values)
       .def("run_rows", &SweepPlan::run_rows, py::arg("first"), py::arg("count"));
+
+  using Clock = cli::SweepProgress::Clock;
+  py::class_<cli::SweepProgress>(m, "SweepProgress",
+                                 "The command's progress lines of a sweep (internal).")
+      .def(py::init([](std::uint64_t rows, double interval_s) {
+             return cli::SweepProgress(0, rows, Clock::now(),
+                                       std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(interval_s)));
+           }),
+           py::arg("rows"), py::arg("interval_s"))
+      .def(
+          "line",
+          [](cli::SweepProgress& progress, std::uint64_t written) {
+            return progress.line(written, Clock::now());
+          },
+          py::arg("written"));
 }
 
 }  // namespace mdrsim::python

@@ -203,3 +203,17 @@ def test_log_lines_name_their_row(capfd):
         label = f"[mdrsim warning] row {index} of 2 (loading.tangential.displacement={value}): "
         assert sum(line.startswith(label) for line in err) == 1, err
     assert all(line.startswith("[mdrsim warning] row ") for line in err), err
+
+
+def test_progress_lines_go_to_the_mdrsim_logger(monkeypatch, caplog):
+    # Every collected batch says how far the sweep is once the interval has passed: here at
+    # once. The rows run by now, of all; the time to go once a row has run.
+    monkeypatch.setattr(mdrsim._sweep, "_PROGRESS_SECONDS", 0.0)
+    with caplog.at_level(logging.INFO, logger="mdrsim"):
+        result = mdrsim.sweep(small_scene(), GRID, batch_seconds=0)
+    messages = [r.getMessage() for r in caplog.records if r.name == "mdrsim"]
+    assert len(messages) == 13, messages  # rows 2 .. 14 of 15 (row 0 runs first, 15 is the end)
+    for written, message in zip(range(2, 15), messages):
+        assert message.startswith(f"sweep: {written} of 15 rows in "), message
+        assert message.endswith(" to go"), message
+    assert len(result) == 15
