@@ -94,7 +94,7 @@ class ProgramRunner {
 
  private:
   void start_stage(const Stage& stage);
-  void run_stage(const Stage& stage);
+  [[gnu::noinline]] void run_stage(const Stage& stage);  // keeps next_change inlined in it
   void set_parameter(double t);
   AxisPoint normal_point() const;
   AxisPoint tangential_point() const;
@@ -122,6 +122,10 @@ class ProgramRunner {
   }
   /// Tells the front what a cascade of one change did to it.
   void track_front(const Cascade& cascade);
+  /// The progress line of a long stage, when its interval has passed; asked every 65536
+  /// events, out of line, so that the event loop stays tight (a check of its own in the
+  /// loop cost it 17 instructions per event, 10 %).
+  [[gnu::cold, gnu::noinline]] void log_progress(const Stage& stage);
 
   bool stepping_;
   double step_;  ///< stepping: the increment of the stage parameter
@@ -129,13 +133,14 @@ class ProgramRunner {
   const DetachmentCriterion& criterion_;
   ProgramRow row_;
   std::int64_t max_springs_;
-  ProgressLog progress_;
   const ObserverList& observers_;
   /// Asked once: whether anyone observes single springs (a log observer asks spdlog).
   bool observe_springs_;
   LargestContact* largest_;
   RunResult result_;
   std::optional<ProgramFront> front_;  ///< refining rows only
+  ProgressLog progress_;
+  std::int64_t next_progress_check_ = 1 << 16;  ///< in result_.counts.events
 
   // The stage under way: held = start + rate * t on each axis.
   const Stage* stage_ = nullptr;
@@ -641,6 +646,15 @@ void ProgramRunner::take_step(double t_end) {
   }
 }
 
+void ProgramRunner::log_progress(const Stage& stage) {
+  next_progress_check_ = result_.counts.events + (1 << 16);
+  if (!progress_.interval_passed()) return;
+  spdlog::info(
+      "program running: stage '{}' at parameter {:.4g}, {} springs in contact, {} events, {} "
+      "steps",
+      stage.name, t_, row_.in_contact(), result_.counts.events, result_.counts.steps);
+}
+
 void ProgramRunner::run_stage(const Stage& stage) {
   start_stage(stage);
   const double t_end = stage.until_separation ? kInfinity : 1.0;
@@ -659,17 +673,17 @@ void ProgramRunner::run_stage(const Stage& stage) {
     // spring once per slip, forever until separation and without bound under a large ramp:
     // the stage stops after this many changes.
     const std::int64_t event_limit = result_.counts.events + kSweepsPerStage * (max_springs_ + 1);
+    // The events at which to look at the limit or the progress line: one compare per change.
+    std::int64_t look_at = std::min(event_limit, next_progress_check_);
     while (stop_ == Stop::none) {
-      if (progress_.due()) {
-        spdlog::info(
-            "program running: stage '{}' at parameter {:.4g}, {} springs in contact, {} events, "
-            "{} steps",
-            stage.name, t_, row_.in_contact(), result_.counts.events, result_.counts.steps);
-      }
       if (stage.until_separation && row_.in_contact() == 0) break;
-      if (result_.counts.events > event_limit) {
-        stop_ = Stop::endless;
-        break;
+      if (result_.counts.events > look_at) [[unlikely]] {
+        if (result_.counts.events > event_limit) {
+          stop_ = Stop::endless;
+          break;
+        }
+        log_progress(stage);
+        look_at = std::min(event_limit, next_progress_check_);
       }
       if (cannot_hold()) {
         stop_ = row_.in_contact() == 0 && !row_.normal_has_stiffness()

@@ -11,9 +11,12 @@ class ProgressLog {
  public:
   static constexpr std::chrono::seconds kInterval{2};
 
-  /// True when kInterval has passed since the start or the last true.
-  bool due() {
-    if ((++calls_ & 0xFFFF) != 0) return false;
+  /// True when kInterval has passed since the start or the last true; reads the clock on
+  /// every 65536th call only.
+  bool due() { return (++calls_ & 0xFFFF) == 0 && interval_passed(); }
+
+  /// The same, reading the clock at each call: for a caller that asks seldom.
+  bool interval_passed() {
     const auto now = std::chrono::steady_clock::now();
     if (now - last_ < kInterval) return false;
     last_ = now;
