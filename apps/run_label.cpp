@@ -24,8 +24,6 @@ class RunLabelFlag final : public spdlog::custom_flag_formatter {
 
 }  // namespace
 
-const std::string& run_label() { return current_label; }
-
 ScopedRunLabel::ScopedRunLabel(std::string label)
     : previous_(std::exchange(current_label, std::move(label))) {}
 

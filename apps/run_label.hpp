@@ -10,9 +10,6 @@
 
 namespace mdrsim::cli {
 
-/// This thread's run label; empty outside a labelled run.
-const std::string& run_label();
-
 /// Labels this thread's log lines for its lifetime, then puts the previous label back.
 class ScopedRunLabel {
  public:

@@ -35,6 +35,17 @@ std::string as_vary_message(const std::string& message, const SweepGrid& grid,
   return message;
 }
 
+/// "row R of M (key=value, ...)".
+std::string row_label(const SweepGrid& grid, std::uint64_t row,
+                      const std::vector<std::size_t>& values) {
+  std::string label = fmt::format("row {} of {} (", row, grid.rows());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (k > 0) label += ", ";
+    label += grid.keys()[k].key + "=" + grid.keys()[k].values[values[k]].text;
+  }
+  return label + ")";
+}
+
 }  // namespace
 
 Scene build_row(SceneDocument& document, const SweepGrid& grid,
@@ -70,20 +81,10 @@ bool check_values(const SceneDocument& base, const SweepGrid& grid, const Regist
   return dimensionless;
 }
 
-std::string row_label(const SweepGrid& grid, std::uint64_t row) {
-  const std::vector<std::size_t> values = grid.indices(row);
-  std::string label = fmt::format("row {} of {} (", row, grid.rows());
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    if (k > 0) label += ", ";
-    label += grid.keys()[k].key + "=" + grid.keys()[k].values[values[k]].text;
-  }
-  return label + ")";
-}
-
 std::string run_row(SceneDocument& document, const SweepGrid& grid, std::uint64_t row,
                     const Registries& registries, bool dimensionless) {
-  const ScopedRunLabel label(row_label(grid, row));
   const std::vector<std::size_t> values = grid.indices(row);
+  const ScopedRunLabel label(row_label(grid, row, values));
   const Scene scene = build_row(document, grid, values, registries);
   const RunResult result = run_scene(scene, ObserverList{});
   require_finite(scene, result);

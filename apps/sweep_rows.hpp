@@ -24,12 +24,10 @@ Scene build_row(SceneDocument& document, const SweepGrid& grid,
 /// JKR scales (the CSV's dimensionless columns).
 bool check_values(const SceneDocument& base, const SweepGrid& grid, const Registries& registries);
 
-/// "row R of M (key=value, ...)": R the row's index in the whole grid (a shard's rows keep
-/// theirs), the values as the CSV writes them.
-std::string row_label(const SweepGrid& grid, std::uint64_t row);
-
 /// Row `row` of the grid run to its CSV line: built, run and checked finite; the run's log
-/// lines (its warnings, progress) are labelled with row_label (run_label.hpp).
+/// lines (its warnings, progress) are labelled "row R of M (key=value, ...)" (run_label.hpp),
+/// R the row's index in the whole grid (a shard's rows keep theirs), the values as the CSV
+/// writes them.
 std::string run_row(SceneDocument& document, const SweepGrid& grid, std::uint64_t row,
                     const Registries& registries, bool dimensionless);
 
