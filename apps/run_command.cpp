@@ -80,13 +80,16 @@ void print_program(std::FILE* out, const RunResult& r) {
                e.tangential_force, e.springs_in_contact, stage.work.normal, stage.work.tangential);
   }
   for (const JumpRecord& jump : r.jumps) {
-    fmt::print(out,
-               "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N ({} springs) to d = {:.6g} "
-               "m, F = {:.6g} N ({} springs)\n",
+    const std::string to =
+        jump.end == JumpEnd::separated ? "the indenter separates (nothing holds the fixed load)"
+        : jump.end == JumpEnd::sliding
+            ? "the indenter slides away (nothing holds the tangential fixed load)"
+            : fmt::format("d = {:.6g} m, F = {:.6g} N ({} springs)", jump.after.indentation,
+                          jump.after.normal_force, jump.after.springs_in_contact);
+    fmt::print(out, "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N ({} springs) to {}\n",
                jump.inward ? "in" : "out", jump.stage, jump.by_shear ? " (by shear)" : "",
                jump.critical.indentation, jump.critical.normal_force,
-               jump.critical.springs_in_contact, jump.after.indentation, jump.after.normal_force,
-               jump.after.springs_in_contact);
+               jump.critical.springs_in_contact, to);
   }
   if (r.work) {
     fmt::print(out, "work: {:.6g} J normal, {:.6g} J tangential\n", r.work->normal,

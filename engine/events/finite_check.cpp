@@ -30,7 +30,9 @@ std::optional<std::string> first_not_finite(const Scene& scene, const RunResult&
   }
   for (const JumpRecord& jump : result.jumps) {
     check_snapshot(fmt::format("jump in '{}'.critical", jump.stage), jump.critical);
-    check_snapshot(fmt::format("jump in '{}'.after", jump.stage), jump.after);
+    if (jump.end == JumpEnd::state) {
+      check_snapshot(fmt::format("jump in '{}'.after", jump.stage), jump.after);
+    }
   }
   const double force = s ? s->force : 1.0;
   if (result.tangential_strength) {

@@ -30,6 +30,19 @@ nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<
   return j;
 }
 
+/// A jump's `after`: its state, or only how the indenter left when nothing held it.
+nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<PullOffScales>& s) {
+  switch (jump.end) {
+    case JumpEnd::separated:
+      return {{"separated", true}};
+    case JumpEnd::sliding:
+      return {{"sliding", true}};
+    case JumpEnd::state:
+      break;
+  }
+  return state_json(jump.after, s);
+}
+
 nlohmann::ordered_json work_json(const AxisWork& w) {
   return {{"normal", w.normal}, {"tangential", w.tangential}};
 }
@@ -97,6 +110,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const Accuracy& accuracy = result.accuracy;
   ordered_json j;
   j["status"] = to_string(result.status);
+  if (result.sliding) j["sliding"] = true;
   const auto [normal_control, tangential_control] = final_controls(scene, result.stages.size());
   j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
   j["criterion"] = scene.criterion_name;
@@ -152,13 +166,15 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       jumps.push_back({{"stage", jump.stage},
                        {"kind", jump.inward ? "in" : "out"},
                        {"critical", state_json(jump.critical, scales)},
-                       {"after", state_json(jump.after, scales)},
+                       {"after", after_json(jump, scales)},
                        {"springs", jump.springs},
                        {"glued_springs", jump.glued_springs},
                        {"by_shear", jump.by_shear}});
       if (jump.critical_error_estimate) {
         jumps.back()["critical_error_estimate"] = *jump.critical_error_estimate;
-        jumps.back()["after_error_estimate"] = jump.after_error_estimate.value_or(0.0);
+        if (jump.end == JumpEnd::state) {
+          jumps.back()["after_error_estimate"] = jump.after_error_estimate.value_or(0.0);
+        }
       }
     }
     j["jumps"] = jumps;

@@ -32,12 +32,18 @@ struct StageRecord {
   std::optional<double> tangential_force_error_estimate;
 };
 
+/// Where a jump lands: an equilibrium, or none because a held fixed load lost what held it
+/// (SPEC "A fixed load that loses the contact"): the indenter separates (normal) or slides
+/// away (tangential), and `after` holds nothing.
+enum class JumpEnd { state, separated, sliding };
+
 /// A cascade of springs gluing or letting go at one value of the stage parameter.
 struct JumpRecord {
   std::string stage;
-  bool inward = false;             ///< "in": the contact grew; "out": it shrank
-  ContactSnapshot critical;        ///< the last equilibrium before the jump
-  ContactSnapshot after;           ///< the equilibrium after it
+  bool inward = false;       ///< "in": the contact grew; "out": it shrank
+  ContactSnapshot critical;  ///< the last equilibrium before the jump
+  ContactSnapshot after;     ///< the equilibrium after it (end == state only)
+  JumpEnd end = JumpEnd::state;
   std::int64_t springs = 0;        ///< change of the springs in contact
   std::int64_t glued_springs = 0;  ///< change of the glued springs
   bool by_shear = false;  ///< the first spring due after the critical point broke at zero stretch

@@ -70,6 +70,8 @@ struct Cascade {
   std::optional<Change> first;
   /// `before` located at the fold between springs (refining rows only).
   std::optional<ContactSnapshot> refined_before;
+  AxisWork work_before;          ///< the stage's work up to `before`
+  const Stage* stage = nullptr;  ///< the stage it happened in
 };
 
 class ProgramRunner {
@@ -112,7 +114,18 @@ class ProgramRunner {
   bool run_changes(std::optional<Change> first, Cascade& cascade, std::int64_t limit);
   void take_step(double t_end);
   void finish_cascade(const Cascade& cascade);
-  bool cannot_hold() const;
+  /// Whether a fixed-load axis holds a force that nothing holds: a tension with no spring in
+  /// contact, a tangential force with nothing glued.
+  bool normal_cannot_hold() const;
+  bool tangential_cannot_hold() const;
+  bool cannot_hold() const { return normal_cannot_hold() || tangential_cannot_hold(); }
+  /// How a cascade that just ran ends: with the contact lost under a fixed load that nothing
+  /// holds any more, in a flight (SPEC "A fixed load that loses the contact").
+  JumpEnd flight_of(const Cascade& cascade) const;
+  /// A flight: the stage ends at the cascade's critical point, with the work up to it.
+  void end_in_flight(const Cascade& cascade, JumpEnd end);
+  /// The stages after the one under way, which a flight does not run.
+  void warn_skipped_stages();
   void observe(const ContactSnapshot& s);
   void emit(EventKind kind, const ContactSnapshot& state, std::int64_t spring = 0,
             bool in_cascade = false);
@@ -199,6 +212,10 @@ class ProgramRunner {
   std::vector<Event> pending_;  ///< stepping: the events of the trial step
   bool buffering_ = false;
   Stop stop_ = Stop::none;
+  /// A flight ended the program: the state and the located state the last stage ends at.
+  JumpEnd flight_ = JumpEnd::state;
+  ContactSnapshot flight_end_;
+  std::optional<ContactSnapshot> flight_refined_end_;
 };
 
 void ProgramRunner::set_parameter(double t) {
@@ -311,13 +328,22 @@ LetGo ProgramRunner::boundary_let_go(double u) {
   return go;
 }
 
-bool ProgramRunner::cannot_hold() const {
-  const bool normal =
-      !row_.normal_has_stiffness() && row_.in_contact() == 0 &&
-      (row_.normal().held < 0.0 || (row_.normal().held == 0.0 && normal_rate_ < 0.0));
-  const bool tangential = !row_.tangential_has_stiffness() &&
-                          (row_.tangential().held != 0.0 || tangential_rate_ != 0.0);
-  return normal || tangential;
+bool ProgramRunner::normal_cannot_hold() const {
+  return !row_.normal_has_stiffness() && row_.in_contact() == 0 &&
+         (row_.normal().held < 0.0 || (row_.normal().held == 0.0 && normal_rate_ < 0.0));
+}
+
+bool ProgramRunner::tangential_cannot_hold() const {
+  return !row_.tangential_has_stiffness() &&
+         (row_.tangential().held != 0.0 || tangential_rate_ != 0.0);
+}
+
+JumpEnd ProgramRunner::flight_of(const Cascade& cascade) const {
+  if (cascade.in_contact > 0 && row_.in_contact() == 0 && normal_cannot_hold()) {
+    return JumpEnd::separated;
+  }
+  if (cascade.glued > 0 && row_.glued() == 0 && tangential_cannot_hold()) return JumpEnd::sliding;
+  return JumpEnd::state;
 }
 
 std::optional<Change> ProgramRunner::due() {
@@ -499,7 +525,43 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
   }
 }
 
+void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
+  // What the cascade did after its critical point is the flight: its springs' stretches
+  // (the held force on the last spring alone) and the work at constant force grow with the
+  // spring count, and none of it is reported. The event method's first change is at the
+  // critical point itself; a step's changes are all past it.
+  if (!stepping_) {
+    for (const Event& e : pending_) {
+      if (!e.in_cascade) observers_.emit(e);
+    }
+  }
+  pending_.clear();
+  flight_ = end;
+  stage_work_ = cascade.work_before;
+  flight_end_ = cascade.before;
+  flight_refined_end_ = cascade.refined_before;
+  if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
+  if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
+  if (cascade.changes < 2) return;
+  JumpRecord jump;
+  jump.stage = stage_->name;
+  jump.springs = row_.in_contact() - cascade.in_contact;
+  jump.glued_springs = row_.glued() - cascade.glued;
+  jump.critical = cascade.before;
+  jump.end = end;
+  jump.by_shear = cascade.second_by_shear;
+  jump.refined_critical = cascade.refined_before;
+  result_.jumps.push_back(jump);
+  emit(EventKind::jump, cascade.before);
+}
+
 void ProgramRunner::finish_cascade(const Cascade& cascade) {
+  if (const JumpEnd end = flight_of(cascade); end != JumpEnd::state) {
+    end_in_flight(cascade, end);
+    return;
+  }
+  for (const Event& e : pending_) observers_.emit(e);
+  pending_.clear();
   const ContactSnapshot after = row_.snapshot();
   // `before` is within range: advance_to checked the work up to it.
   if (!finite(after) || !std::isfinite(stage_work_.normal) ||
@@ -571,6 +633,8 @@ Cascade ProgramRunner::begin_cascade() {
   cascade.before = row_.snapshot();
   cascade.in_contact = row_.in_contact();
   cascade.glued = row_.glued();
+  cascade.work_before = stage_work_;
+  cascade.stage = stage_;
   observe(cascade.before);
   return cascade;
 }
@@ -633,8 +697,14 @@ void ProgramRunner::take_step(double t_end) {
       }
       continue;
     }
-    for (const Event& e : pending_) observers_.emit(e);
     ++result_.counts.steps;
+    if (flight_of(cascade) != JumpEnd::state) {
+      // The step went past the critical point into the flight: its events are not kept.
+      finish_cascade(cascade);
+      return;
+    }
+    for (const Event& e : pending_) observers_.emit(e);
+    pending_.clear();
     if (observers_.wants(EventKind::step_accepted)) {
       observers_.emit({.kind = EventKind::step_accepted,
                        .state = row_.snapshot(),
@@ -663,9 +733,14 @@ void ProgramRunner::run_stage(const Stage& stage) {
         "stage '{}' runs until separation but starts with no spring in contact: it ends at once",
         stage.name));
   } else {
+    const bool buffer_cascades =
+        observe_springs_ && (row_.normal().constraint.displacement_coefficient == 0.0 ||
+                             row_.tangential().constraint.displacement_coefficient == 0.0);
     {
       Cascade cascade = begin_cascade();
+      buffering_ = buffer_cascades;
       run_changes(std::nullopt, cascade, std::numeric_limits<std::int64_t>::max());
+      buffering_ = false;
       finish_cascade(cascade);
       track_front(cascade);
     }
@@ -675,7 +750,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
     const std::int64_t event_limit = result_.counts.events + kSweepsPerStage * (max_springs_ + 1);
     // The events at which to look at the limit or the progress line: one compare per change.
     std::int64_t look_at = std::min(event_limit, next_progress_check_);
-    while (stop_ == Stop::none) {
+    while (stop_ == Stop::none && flight_ == JumpEnd::state) {
       if (stage.until_separation && row_.in_contact() == 0) break;
       if (result_.counts.events > look_at) [[unlikely]] {
         if (result_.counts.events > event_limit) {
@@ -698,6 +773,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
           break;
         }
         take_step(t_end);
+        if (flight_ != JumpEnd::state) break;
         continue;
       }
       const auto next = next_change(t_end);
@@ -713,12 +789,30 @@ void ProgramRunner::run_stage(const Stage& stage) {
       advance_to(next->first);
       if (stop_ == Stop::overflow) break;
       Cascade cascade = begin_cascade();
+      // Under a fixed load a cascade may end in a flight, whose springs are not reported.
+      buffering_ = buffer_cascades;
       run_changes(next->second, cascade, std::numeric_limits<std::int64_t>::max());
+      buffering_ = false;
       finish_cascade(cascade);
+      if (flight_ != JumpEnd::state) break;
       track_front(cascade);
     }
   }
   if (stop_ == Stop::overflow) return;  // the stage's numbers left the range of a double
+  if (flight_ != JumpEnd::state) {
+    // The stop the loop's next turn would have found (finish() reads the status from it).
+    if (stop_ == Stop::none && !(stage.until_separation && row_.in_contact() == 0)) {
+      stop_ = row_.in_contact() == 0 && !row_.normal_has_stiffness() ? Stop::cannot_hold_normal
+                                                                     : Stop::cannot_hold_tangential;
+    }
+    // The stage ends where the flight began: its critical point.
+    result_.stages.push_back({stage.name, flight_end_, stage_work_});
+    result_.stages.back().refined_end = flight_refined_end_;
+    if (front_) front_->candidate(flight_refined_end_);
+    total_work_ += stage_work_;
+    emit(EventKind::stage_end, flight_end_);
+    return;
+  }
   const ContactSnapshot end = row_.snapshot();
   result_.stages.push_back({stage.name, end, stage_work_});
   if (front_ && stop_ == Stop::none) {
@@ -821,12 +915,41 @@ void ProgramRunner::finish(RunResult& r) {
   }
 }
 
+void ProgramRunner::warn_skipped_stages() {
+  const auto& stages = scene_.program->stages;
+  std::string skipped;
+  for (auto it = stages.begin() + (stage_ - stages.data()) + 1; it != stages.end(); ++it) {
+    skipped += fmt::format("{}'{}'", skipped.empty() ? "" : ", ", it->name);
+  }
+
+  const bool separated = flight_ == JumpEnd::separated;
+  result_.warnings.push_back(fmt::format(
+      "stage '{}': the {} fixed load (F{} = {:.6g} N) lost what held it and the indenter {}: "
+      "the program ends at its critical point; stages not run: {}",
+      stage_->name, separated ? "normal" : "tangential", separated ? "" : "x",
+      separated ? row_.normal().held : row_.tangential().held,
+      separated ? "separates" : "slides away", skipped));
+}
+
 RunResult ProgramRunner::run() {
   for (const Stage& stage : scene_.program->stages) {
     run_stage(stage);
-    if (stop_ != Stop::none) break;
+    if (stop_ != Stop::none || flight_ != JumpEnd::state) break;
+  }
+  if (flight_ != JumpEnd::state && stage_ != &scene_.program->stages.back()) {
+    warn_skipped_stages();
   }
   finish(result_);
+  result_.sliding = flight_ == JumpEnd::sliding;
+  // The stage of the critical point, for the closing events (finish picks it from a loss).
+  for (const auto* loss : {&last_contact_loss_, &last_glue_loss_}) {
+    if (*loss && result_.critical &&
+        (*loss)->before.springs_in_contact == result_.critical->springs_in_contact &&
+        (*loss)->before.indentation == result_.critical->indentation &&
+        (*loss)->before.tangential_displacement == result_.critical->tangential_displacement) {
+      result_.critical_stage = (*loss)->stage->name;
+    }
+  }
   result_.jumps.shrink_to_fit();
   if (peak_) {
     result_.peak = peak_;

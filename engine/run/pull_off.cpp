@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "controllers/builtin_controllers.hpp"
+#include "engine/events/cascade_buffer.hpp"
 #include "engine/methods/boundary_let_go.hpp"
 #include "engine/methods/event_method.hpp"
 #include "engine/methods/stepping_method.hpp"
@@ -158,12 +159,24 @@ RunResult run_pull_off(const Scene& scene, std::int64_t springs, const ObserverL
 
 void emit_closing_events(const RunResult& result, const ObserverList& observers) {
   if (result.critical) {
-    observers.emit(
-        {.kind = EventKind::instability, .state = *result.critical, .status = result.status});
+    observers.emit({.kind = EventKind::instability,
+                    .state = *result.critical,
+                    .status = result.status,
+                    .stage = result.critical_stage});
   }
-  observers.emit({.kind = EventKind::finished,
-                  .state = result.critical.value_or(ContactSnapshot{}),
-                  .status = result.status});
+  // Without a critical point the run ends where its last stage ended (a limit, the end of a
+  // program), not at the undeformed start.
+  if (result.critical || result.stages.empty()) {
+    observers.emit({.kind = EventKind::finished,
+                    .state = result.critical.value_or(ContactSnapshot{}),
+                    .status = result.status,
+                    .stage = result.critical_stage});
+  } else {
+    observers.emit({.kind = EventKind::finished,
+                    .state = result.stages.back().end,
+                    .status = result.status,
+                    .stage = result.stages.back().name});
+  }
 }
 
 RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& observers) {
@@ -178,8 +191,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   // A zoomed row starts past the preload: only a row across the glued radius runs the path.
   std::optional<ShorthandPath> path;
   if (!row.zoomed && row.record_path) {
-    const AffineConstraint c = scene.normal.controller->constraint();
-    path.emplace(c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0);
+    path.emplace(scene.normal.controller->constraint(), tangential_constraint);
     path->preload(contact);
   }
   if (!row.zoomed) {
@@ -209,12 +221,22 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   EquilibriumTrack track(contact);
   CascadeStart cascade;
   ProgressLog progress;
+  // A cascade's rows wait until it ends in an equilibrium: under a fixed load the last one
+  // may end in a flight, which is not reported (SPEC "A fixed load that loses the contact").
+  CascadeBuffer buffer(observers);
+  ObserverList buffered;
+  buffered.add(buffer);
+  const bool may_fly = (scene.normal.controller->constraint().displacement_coefficient == 0.0 ||
+                        tangential_constraint.displacement_coefficient == 0.0) &&
+                       observers.wants(EventKind::spring_detached);
+  const ObserverList& pull_off_observers = may_fly ? buffered : observers;
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
       result.status = RunStatus::step_limit;
       break;
     }
-    const AdvanceOutcome out = method->advance(contact, *scene.criterion, observers, result.counts);
+    const AdvanceOutcome out =
+        method->advance(contact, *scene.criterion, pull_off_observers, result.counts);
     if (progress.due()) {
       spdlog::info("pull-off running: {} of {} springs attached, {} steps, {} halvings",
                    contact.springs_in_contact(), row.springs, result.counts.steps,
@@ -232,7 +254,26 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
       cascade.size += out.detached;
     }
   }
+  const JumpEnd flight = shorthand_flight(contact.save(), scene.normal.controller->constraint(),
+                                          tangential_constraint);
+  if (flight == JumpEnd::state) {
+    buffer.flush();
+  } else {
+    buffer.discard();
+  }
+  result.sliding = flight == JumpEnd::sliding;
   if (path) path->finish(contact, result.stages, result.jumps, result.work);
+  if (result.work &&
+      !(std::isfinite(result.work->normal) && std::isfinite(result.work->tangential))) {
+    // Extreme scenes (dgamma near the largest double) can take the path's work, a product of
+    // force and displacement, beyond a double even where both are finite.
+    result.stages.clear();
+    result.jumps.clear();
+    result.work.reset();
+    result.warnings.emplace_back(
+        "the work of the path left the range of a double (the scene's values are too extreme "
+        "together): no stages, jumps or work are reported");
+  }
   if (result.status == RunStatus::step_limit) {
     result.warnings.push_back(fmt::format(
         "the stepping method reached solver.max_steps = {} before the contact was lost: there is "

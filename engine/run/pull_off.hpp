@@ -56,6 +56,11 @@ struct RunResult {
   std::vector<StageRecord> stages;
   std::vector<JumpRecord> jumps;
   std::optional<AxisWork> work;
+  /// The run ended with a held tangential force that nothing held any more: the indenter
+  /// slides away (a jump's end is JumpEnd::sliding, or the glue's last spring let go alone).
+  bool sliding = false;
+  /// The stage the critical point belongs to (programs); empty for the shorthand's pull-off.
+  std::string critical_stage;
 
   Accuracy accuracy;
   std::vector<std::string> warnings;  ///< what the run cannot vouch for, one line each

@@ -4,6 +4,33 @@
 
 namespace mdrsim {
 
+namespace {
+
+bool through_spring(const AffineConstraint& c) {
+  return c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0;
+}
+
+}  // namespace
+
+JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
+                         const AffineConstraint& tangential) {
+  if (lost.springs_in_contact > 0) return JumpEnd::state;
+  // The held normal value falls during the pull-off: a fixed load at zero pulls next.
+  if (normal.displacement_coefficient == 0.0 && lost.normal_control <= 0.0) {
+    return JumpEnd::separated;
+  }
+  if (tangential.displacement_coefficient == 0.0 && lost.tangential_held != 0.0) {
+    return JumpEnd::sliding;
+  }
+  return JumpEnd::state;
+}
+
+ShorthandPath::ShorthandPath(const AffineConstraint& normal, const AffineConstraint& tangential)
+    : normal_(normal),
+      tangential_(tangential),
+      normal_through_spring_(through_spring(normal)),
+      tangential_fixed_load_(tangential.displacement_coefficient == 0.0) {}
+
 ContactSnapshot ShorthandPath::snapshot(const Contact& contact, const Contact::State& state) const {
   if (state.springs_in_contact > 0) return contact.snapshot_of(state);
   // Lost: the program engine's convention, the indenter where the last spring left it.
@@ -25,6 +52,13 @@ void ShorthandPath::add_work(const Contact& contact, const Contact::State& to) {
   force_ = force;
   driving_ = driving;
   last_indentation_ = d;
+  if (tangential_fixed_load_) {
+    // F_x is held: the indenter moves at constant force as the row softens. (Under fixed
+    // grips u_x stays; through a compliant machine its end, the driving point, stays.)
+    const double u = contact.snapshot_of(to).tangential_displacement;
+    pull_off_work_.tangential += to.tangential_held * (u - tangential_displacement_);
+    tangential_displacement_ = u;
+  }
 }
 
 void ShorthandPath::preload(const Contact& contact) {
@@ -51,6 +85,7 @@ void ShorthandPath::tangential(const Contact& contact, std::optional<double> mac
   force_ = s.normal_force;
   driving_ = normal_through_spring_ ? s.normal_control : s.indentation;
   last_indentation_ = s.indentation;
+  tangential_displacement_ = s.tangential_displacement;
 }
 
 void ShorthandPath::close_cascade(const Contact& contact) {
@@ -72,6 +107,7 @@ void ShorthandPath::advanced(const Contact& contact, const AdvanceOutcome& out, 
   if (equilibrium) {
     close_cascade(contact);
     add_work(contact, *out.equilibrium_before);
+    work_at_equilibrium_ = pull_off_work_;
     cascade_ = Cascade{*out.equilibrium_before, 0, out.detached > 1 && out.second_by_shear};
   } else if (cascade_ && cascade_->springs == 1) {
     cascade_->by_shear = out.first_by_shear;
@@ -81,15 +117,38 @@ void ShorthandPath::advanced(const Contact& contact, const AdvanceOutcome& out, 
   add_work(contact, last_);
 }
 
-void ShorthandPath::finish(const Contact& contact, std::vector<StageRecord>& stages,
-                           std::vector<JumpRecord>& jumps, std::optional<AxisWork>& work) {
-  close_cascade(contact);
-  stages_.push_back({"pull-off", snapshot(contact, last_), pull_off_work_});
+JumpEnd ShorthandPath::finish(const Contact& contact, std::vector<StageRecord>& stages,
+                              std::vector<JumpRecord>& jumps, std::optional<AxisWork>& work) {
+  const JumpEnd flight = shorthand_flight(last_, normal_, tangential_);
+  if (flight == JumpEnd::state) {
+    close_cascade(contact);
+    stages_.push_back({"pull-off", snapshot(contact, last_), pull_off_work_});
+  } else if (cascade_) {
+    // The flight starts at the last equilibrium: what the springs did after it (the held
+    // force on ever fewer springs, moving at constant force) grows with the spring count.
+    const ContactSnapshot critical = contact.snapshot_of(cascade_->critical);
+    if (cascade_->springs > 1) {
+      jumps_.push_back({.stage = "pull-off",
+                        .inward = false,
+                        .critical = critical,
+                        .end = flight,
+                        .springs = -cascade_->springs,
+                        .glued_springs = -cascade_->springs,
+                        .by_shear = cascade_->by_shear});
+    }
+    cascade_.reset();
+    stages_.push_back({"pull-off", critical, work_at_equilibrium_});
+  } else {
+    // Not one equilibrium: the tangential load broke the glue as it was applied, and the
+    // flight starts there.
+    stages_.push_back({"pull-off", stages_.back().end, {}});
+  }
   AxisWork total;
   for (const StageRecord& stage : stages_) total += stage.work;
   stages = std::move(stages_);
   jumps = std::move(jumps_);
   work = total;
+  return flight;
 }
 
 }  // namespace mdrsim

@@ -6,18 +6,25 @@
 #include <optional>
 #include <vector>
 
+#include "controllers/controller.hpp"
 #include "engine/methods/pull_off_method.hpp"
 #include "engine/model/contact.hpp"
 #include "engine/run/program_records.hpp"
 
 namespace mdrsim {
 
+/// How the pull-off of a contact that ended in `lost` (no spring left) goes on: under a
+/// fixed load that holds a tension the indenter separates; under a tangential fixed load that
+/// holds a force it slides away (SPEC "A fixed load that loses the contact"); otherwise the
+/// machine holds it where the last spring left it.
+JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
+                         const AffineConstraint& tangential);
+
 class ShorthandPath {
  public:
-  /// `normal_through_spring`: the normal controller drives through a spring (compliant), so
-  /// its driving point is the held value rather than the indentation.
-  explicit ShorthandPath(bool normal_through_spring)
-      : normal_through_spring_(normal_through_spring) {}
+  /// The controllers' constraints: compliant drives through a spring, so that its driving
+  /// point is the held value; fixed load moves the indenter at constant force.
+  ShorthandPath(const AffineConstraint& normal, const AffineConstraint& tangential);
 
   /// Stage `preload`: the row pressed in at fixed grips to the preload depth, each spring
   /// touching at d = g_i: the work E* dx sum (d_p - g_i)^2, exactly.
@@ -29,9 +36,10 @@ class ShorthandPath {
   /// equilibrium_before is one (not the state a shear broke at application). O(1): states are
   /// kept, and turned into snapshots only for the jumps and the stage's end.
   void advanced(const Contact& contact, const AdvanceOutcome& out, bool equilibrium);
-  /// Closes the pull-off stage and hands over the records.
-  void finish(const Contact& contact, std::vector<StageRecord>& stages,
-              std::vector<JumpRecord>& jumps, std::optional<AxisWork>& work);
+  /// Closes the pull-off stage and hands over the records; returns how it ended. After a
+  /// flight the stage ends at the last equilibrium, with the work up to it.
+  JumpEnd finish(const Contact& contact, std::vector<StageRecord>& stages,
+                 std::vector<JumpRecord>& jumps, std::optional<AxisWork>& work);
 
  private:
   /// The snapshot of a state; with no spring left, the last indentation at zero force.
@@ -39,11 +47,16 @@ class ShorthandPath {
   void add_work(const Contact& contact, const Contact::State& to);
   void close_cascade(const Contact& contact);
 
+  AffineConstraint normal_;
+  AffineConstraint tangential_;
   bool normal_through_spring_;
+  bool tangential_fixed_load_;  ///< u_x moves at constant F_x as springs let go
   std::vector<StageRecord> stages_;
   std::vector<JumpRecord> jumps_;
   AxisWork pull_off_work_;
-  double force_ = 0.0;    ///< at the last state of the path [N]
+  AxisWork work_at_equilibrium_;          ///< the pull-off's work up to the last equilibrium
+  double tangential_displacement_ = 0.0;  ///< u_x at the last state with springs [m]
+  double force_ = 0.0;                    ///< at the last state of the path [N]
   double driving_ = 0.0;  ///< the driving point there: d, or the held value through a spring
   double last_indentation_ = 0.0;  ///< of the last state with springs [m]
   Contact::State last_{};          ///< the state after the last advance

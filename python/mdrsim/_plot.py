@@ -17,7 +17,7 @@ def plot_result(result, ax=None):
         keep = ~t["in_cascade"]
         ax.plot(t["indentation"][keep] / d_scale, t["normal_force"][keep] / f_scale,
                 lw=1.2, color="C0", label="path")
-    for i, jump in enumerate(result.jumps):
+    for i, jump in enumerate(j for j in result.jumps if j.after is not None):
         ax.plot([jump.critical.indentation / d_scale, jump.after.indentation / d_scale],
                 [jump.critical.normal_force / f_scale, jump.after.normal_force / f_scale],
                 ls="--", lw=1.0, color="C3", label="jump" if i == 0 else None)

@@ -52,7 +52,8 @@ class StageEnd:
 @dataclass(frozen=True)
 class Jump:
     """A cascade at one value of a stage's parameter: `kind` "in" or "out", from the last
-    equilibrium before it (`critical`) to the one after it."""
+    equilibrium before it (`critical`) to the one after it; `after` is None where a fixed
+    load lost what held it and the indenter separated or slid away (SPEC)."""
 
     stage: str
     kind: str

@@ -211,7 +211,14 @@ void bind_results(py::module_& m) {
                                  d["stage"] = j.stage;
                                  d["kind"] = j.inward ? "in" : "out";
                                  d["critical"] = snapshot(j.critical);
-                                 d["after"] = snapshot(j.after);
+                                 // A flight (SPEC "A fixed load that loses the contact")
+                                 // has no state after it.
+                                 d["after"] = j.end == JumpEnd::state
+                                                  ? py::object(snapshot(j.after))
+                                                  : py::object(py::none());
+                                 d["end"] = j.end == JumpEnd::separated ? "separated"
+                                            : j.end == JumpEnd::sliding ? "sliding"
+                                                                        : "state";
                                  d["springs"] = j.springs;
                                  d["glued_springs"] = j.glued_springs;
                                  d["by_shear"] = j.by_shear;

@@ -114,7 +114,10 @@ TEST(ProfilesPullOff, FlatPunchIsKendallInOneCascade) {
         (e.in_cascade ? in_cascade : equilibria) += 1;
       }
       EXPECT_EQ(equilibria, 1) << name << " " << springs;
-      EXPECT_EQ(in_cascade, scene.springs - 1) << name << " " << springs;
+      // Under fixed load the cascade is the flight, whose rows are not reported (SPEC "A
+      // fixed load that loses the contact"); under fixed grips every spring goes in it.
+      const bool fixed_load = std::string(name).find("fixed_load") != std::string::npos;
+      EXPECT_EQ(in_cascade, fixed_load ? 0 : scene.springs - 1) << name << " " << springs;
     }
   }
 }

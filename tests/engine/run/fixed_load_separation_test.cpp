@@ -1,0 +1,304 @@
+// SPEC "A fixed load that loses the contact": the flight after the last spring is not reported;
+// the work counts the path to the critical point and does not grow with the spring count.
+//
+// The references are derived here from the paper's MDR, independently of the engine: the 1-D
+// profile of the parabola g(x) = x^2 / R, F = 2 E* int_0^a (d - g) dx, the glued contact's
+// boundary spring let go at d = g(a) - sqrt(2 pi a dgamma / E*) (eqs. 14-15), so on the JKR
+// branch d(a) = a^2/R - sqrt(2 pi a dgamma/E*), F(a) = 4 E* a^3 / (3R) - sqrt(8 pi a^3 dgamma
+// E*) (eqs. 18-19), whose fixed-load critical point is dF/da = 0. The pull-off from the
+// contact glued at a_g = 2 a0 and pressed to d_p = a_g^2 / R first unloads the glued contact
+// (F linear in d, stiffness 2 E* a_g) to the first let-go, then follows the branch:
+//   W = (F_p + F(a_g)) (d(a_g) - d_p) / 2 + int_{a_g}^{a_c} F(a) d'(a) da,
+// the integral by composite Simpson in a (20000 intervals: relative error ~1e-14).
+//
+// Tolerance of the work. The row's forces are Riemann sums with an O(1/N) error (the preload
+// force at N = 1000 is 7e-4 below Hertz's): the work of the pull-off at N springs was within
+// 1.7/N relative of W when written (1.7e-3 at 1000, 1.6e-5 at 100000), so it is held to 2/N,
+// and rows of 2000 to 100000 springs to 1e-3 of each other. Before the fix the flight added
+// |F_c| F_c / (2 E* dx) per row, 5e-6 J at 1000 springs (30 |W|), growing as N.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "engine/events/result_json.hpp"
+#include "engine/events/trajectory_csv.hpp"
+#include "engine/run/run_scene.hpp"
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "tests/support/jkr_scenario.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kRadius = 0.01;          // R [m]
+constexpr double kModulus = 1.0e6;        // E* = G* [Pa] (E = 1 MPa, nu = 0)
+constexpr double kWorkOfAdhesion = 0.05;  // [J/m^2]
+// a_g = 2 a0, with a0 = (9 pi R^2 dgamma / (8 E*))^(1/3) (the scenes' value).
+constexpr double kGluedRadius = 5.209397078678047e-4;
+
+double branch_depth(double a) {
+  return a * a / kRadius - std::sqrt(2.0 * kPi * a * kWorkOfAdhesion / kModulus);
+}
+double branch_force(double a) {
+  return 4.0 * kModulus * a * a * a / (3.0 * kRadius) -
+         std::sqrt(8.0 * kPi * a * a * a * kWorkOfAdhesion * kModulus);
+}
+double branch_depth_slope(double a) {
+  return 2.0 * a / kRadius - 0.5 * std::sqrt(2.0 * kPi * kWorkOfAdhesion / (kModulus * a));
+}
+double branch_force_slope(double a) {
+  return 4.0 * kModulus * a * a / kRadius -
+         1.5 * std::sqrt(8.0 * kPi * a * kWorkOfAdhesion * kModulus);
+}
+
+/// The fixed-load critical radius: dF/da = 0 on the branch, by bisection.
+double critical_radius() {
+  double lo = 1e-3 * kGluedRadius, hi = kGluedRadius;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (branch_force_slope(mid) < 0.0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// The work of the fixed-load pull-off from the glued, pressed contact to the critical point.
+double pull_off_work() {
+  const double depth = kGluedRadius * kGluedRadius / kRadius;
+  const double force = 4.0 * kModulus * std::pow(kGluedRadius, 3) / (3.0 * kRadius);
+  const double glued =
+      0.5 * (force + branch_force(kGluedRadius)) * (branch_depth(kGluedRadius) - depth);
+  const auto f = [](double a) { return branch_force(a) * branch_depth_slope(a); };
+  const double from = kGluedRadius, to = critical_radius();
+  constexpr int n = 20000;
+  const double h = (to - from) / n;
+  double sum = f(from) + f(to);
+  for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * f(from + i * h);
+  return glued + sum * h / 3.0;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string with_springs(std::string text, std::int64_t springs) {
+  const std::size_t at = text.find("springs = ");
+  const std::size_t end = text.find('\n', at);
+  return text.replace(at, end - at, "springs = " + std::to_string(springs));
+}
+
+const std::vector<std::int64_t> kRows = {1000, 2000, 10000, 100000};
+
+// The approach then a fixed-load retract until separation: the shorthand's Fig. 2 path as a
+// program (glued on touch to 12 d0, which is the radius 2 a0).
+constexpr const char* kApproachRetract = R"(
+[material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[[loading.stage]]
+name = "approach"
+normal = { control = "fixed-grips", to = 2.713781792333937e-5 }
+[[loading.stage]]
+name = "retract"
+normal = { control = "fixed-load", by = -1.0e-3 }
+until = "separation"
+[[loading.stage]]
+name = "press-again"
+normal = { control = "fixed-grips", by = 1.0e-5 }
+[discretization]
+springs = 1000
+)";
+
+// The glued contact pressed to 12 d0, then a tangential fixed load ramped past the glue's
+// strength: the indenter slides away.
+constexpr const char* kShearPastStrength = R"(
+[material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[[loading.stage]]
+name = "preload"
+normal = { control = "fixed-grips", to = 2.713781792333937e-5 }
+[[loading.stage]]
+name = "shear"
+tangential = { control = "fixed-load", to = 1.6493e-2 }
+[[loading.stage]]
+name = "after"
+normal = { control = "fixed-grips", by = -1.0e-6 }
+[discretization]
+springs = 1000
+)";
+
+TEST(FixedLoadSeparation, ShorthandWorkIsTheJkrBranchToTheCriticalPoint) {
+  const std::string text =
+      read_file(std::string(MDRSIM_SOURCE_DIR) + "/scenes/fig2_fixed_load.toml");
+  const double reference = pull_off_work();
+  std::vector<double> works;
+  for (const std::int64_t n : kRows) {
+    SCOPED_TRACE(n);
+    const Scene scene = test::build_scene_text(with_springs(text, n));
+    const RunResult r = run_scene(scene, {});
+    ASSERT_EQ(r.status, RunStatus::instability);
+    ASSERT_TRUE(r.critical);
+    ASSERT_EQ(r.jumps.size(), 1u);
+    EXPECT_EQ(r.jumps[0].end, JumpEnd::separated);
+    const auto j = result_to_json(scene, r);
+    EXPECT_EQ(j["jumps"][0]["after"], nlohmann::json({{"separated", true}}));
+    EXPECT_FALSE(j.contains("sliding"));
+    ASSERT_EQ(r.stages.size(), 3u);
+    const StageRecord& pull_off = r.stages[2];
+    // The stage ends at the critical point: the same state, not where the last spring left.
+    EXPECT_EQ(pull_off.end.indentation, r.critical->indentation);
+    EXPECT_EQ(pull_off.end.springs_in_contact, r.critical->springs_in_contact);
+    EXPECT_NEAR(pull_off.work.normal, reference,
+                2.0 / static_cast<double>(n) * std::abs(reference));
+    // The total is the sum of the stages (rounding of three terms).
+    EXPECT_NEAR(r.work->normal, r.stages[0].work.normal + pull_off.work.normal,
+                1e-12 * r.stages[0].work.normal);
+    works.push_back(pull_off.work.normal);
+  }
+  for (std::size_t i = 2; i < works.size(); ++i) {
+    EXPECT_NEAR(works[i], works[1], 1e-3 * std::abs(works[1])) << kRows[i] << " against 2000";
+  }
+}
+
+TEST(FixedLoadSeparation, ProgramApproachThenRetractEndsAtTheCriticalPoint) {
+  const double reference = pull_off_work();
+  // The approach presses the row in at fixed grips: Hertz, W = (8/15) E* sqrt(R) d^(5/2).
+  const double depth = 2.713781792333937e-5;
+  const double approach = 8.0 / 15.0 * kModulus * std::sqrt(kRadius) * std::pow(depth, 2.5);
+  std::vector<double> works;
+  for (const std::int64_t n : kRows) {
+    SCOPED_TRACE(n);
+    const Scene scene = test::build_scene_text(with_springs(kApproachRetract, n));
+    const RunResult r = run_scene(scene, {});
+    ASSERT_EQ(r.status, RunStatus::instability);
+    ASSERT_TRUE(r.critical);
+    ASSERT_EQ(r.jumps.size(), 1u);  // glued on touch: the approach does not jump
+    EXPECT_EQ(r.jumps[0].end, JumpEnd::separated);
+    EXPECT_EQ(r.critical_stage, "retract");
+    // The program ends: no stage after the flight, and a warning names the one skipped.
+    ASSERT_EQ(r.stages.size(), 2u);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("stages not run: 'press-again'"), std::string::npos)
+        << r.warnings[0];
+    EXPECT_EQ(r.stages[1].end.indentation, r.critical->indentation);
+    EXPECT_NEAR(r.stages[0].work.normal, approach, 2.0 / static_cast<double>(n) * approach);
+    EXPECT_NEAR(r.stages[1].work.normal, reference,
+                2.0 / static_cast<double>(n) * std::abs(reference));
+    // The total, a signed sum (5e-9 J of 2e-7 J in and 1.7e-7 J out), to the sum of the bounds.
+    EXPECT_NEAR(r.work->normal, approach + reference,
+                2.0 / static_cast<double>(n) * (approach + std::abs(reference)));
+    works.push_back(r.stages[1].work.normal);
+  }
+  for (std::size_t i = 2; i < works.size(); ++i) {
+    EXPECT_NEAR(works[i], works[1], 1e-3 * std::abs(works[1])) << kRows[i] << " against 2000";
+  }
+}
+
+// The glued contact at fixed grips on d = g(a_g) carries F_x = K u_x, K = 2 G* a_g; its boundary
+// spring, unstretched normally, lets go at G* u_x^2 = 2 pi a_g dgamma (eq. 20), and every
+// inner spring, compressed, at a smaller u_x: the glue goes at once. The work to that critical
+// point is K u_c^2 / 2 = 2 pi a_g^2 dgamma, whatever N (the row's K is exactly 2 G* a_g).
+TEST(FixedLoadSeparation, TangentialFixedLoadPastTheGlueSlidesAway) {
+  const double reference = 2.0 * kPi * kGluedRadius * kGluedRadius * kWorkOfAdhesion;
+  const double slip = std::sqrt(2.0 * kPi * kGluedRadius * kWorkOfAdhesion / kModulus);
+  for (const std::int64_t n : kRows) {
+    SCOPED_TRACE(n);
+    const Scene scene = test::build_scene_text(with_springs(kShearPastStrength, n));
+    const RunResult r = run_scene(scene, {});
+    EXPECT_EQ(r.status, RunStatus::shear_off);
+    EXPECT_TRUE(r.sliding);
+    ASSERT_EQ(r.jumps.size(), 1u);
+    EXPECT_EQ(r.jumps[0].end, JumpEnd::sliding);
+    const auto j = result_to_json(scene, r);
+    EXPECT_EQ(j["sliding"], true);
+    EXPECT_EQ(j["jumps"][0]["after"], nlohmann::json({{"sliding", true}}));
+    ASSERT_EQ(r.stages.size(), 2u);
+    // Rounding: u_c is found by a root of the criterion's margin, F_x and u_x are sums.
+    EXPECT_NEAR(r.stages[1].end.tangential_displacement, slip, 1e-9 * slip);
+    EXPECT_NEAR(r.stages[1].work.tangential, reference, 1e-9 * reference);
+    EXPECT_NEAR(r.work->tangential, reference, 1e-9 * reference);
+  }
+}
+
+/// The trajectory rows as (stage, event, indentation).
+struct Row {
+  std::string stage, event;
+  double indentation;
+};
+
+std::vector<Row> trajectory(const Scene& scene, RunResult& result) {
+  std::ostringstream csv;
+  TrajectoryCsvWriter writer(csv);
+  ObserverList observers;
+  observers.add(writer);
+  result = run_scene(scene, observers);
+  std::istringstream in(csv.str());
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    Row row;
+    std::string cascade, d;
+    std::getline(fields, row.stage, ',');
+    std::getline(fields, row.event, ',');
+    std::getline(fields, cascade, ',');
+    std::getline(fields, d, ',');
+    row.indentation = std::stod(d);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// The trajectory stops at the critical point: no cascade rows beyond it (before the fix they
+// ran to -1e3 d0 at 1000 springs, the last spring alone holding F_c), and the `instability`
+// row names the stage it happened in.
+TEST(FixedLoadSeparation, TrajectoryEndsAtTheCriticalState) {
+  struct Case {
+    std::string text;
+    std::string stage;  ///< of the critical point
+  };
+  const std::vector<Case> cases = {
+      {with_springs(read_file(std::string(MDRSIM_SOURCE_DIR) + "/scenes/fig2_fixed_load.toml"),
+                    1000),
+       "pull-off"},
+      {read_file(std::string(MDRSIM_SOURCE_DIR) + "/scenes/programs/shear_ramp_fixed_load.toml"),
+       "shear"},
+      {with_springs(kApproachRetract, 1000), "retract"}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.stage);
+    const Scene scene = test::build_scene_text(c.text);
+    RunResult r;
+    const std::vector<Row> rows = trajectory(scene, r);
+    ASSERT_TRUE(r.critical);
+    ASSERT_GE(rows.size(), 2u);
+    EXPECT_EQ(rows.back().event, "instability");
+    EXPECT_EQ(rows.back().stage, c.stage);
+    EXPECT_EQ(rows.back().indentation, r.critical->indentation);
+    for (const Row& row : rows) {
+      // The deepest tension a row reaches before the critical point is a fraction of d_p.
+      EXPECT_GT(row.indentation, -2.0 * 2.713781792333937e-5) << row.stage << " " << row.event;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mdrsim
