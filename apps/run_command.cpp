@@ -31,7 +31,9 @@ const char* missing_critical(const RunResult& r) {
   if (r.work && r.counts.events == 0) return "none: no spring was ever in contact";
   switch (r.status) {
     case RunStatus::no_instability:
-      return "none: the contact peeled off smoothly, nothing jumped";
+      // A program may have jumped on its way (a jump-in, a jump that kept the contact).
+      return r.jumps.empty() ? "none: the contact peeled off smoothly, nothing jumped"
+                             : "none: the contact peeled off smoothly at its end (no jump lost it)";
     case RunStatus::shear_off:
       return "none: the tangential load broke the glue as it was applied";
     case RunStatus::step_limit:
