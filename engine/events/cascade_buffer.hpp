@@ -1,37 +1,42 @@
 // Holds a cascade's rows back until the cascade ends: one that ends in a flight is not shown.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "engine/events/observer.hpp"
 
 namespace mdrsim {
 
-/// Passes every event on to `inner`, but holds the detachments inside a cascade (in_cascade)
-/// until the next event outside one, or until flush(): a cascade that ends with the indenter
-/// flying off under a fixed load (SPEC "A fixed load that loses the contact") has no rows
-/// beyond its critical point, so its held rows are discarded instead. O(cascade) memory.
+/// Holds every event for `inner` until flush() (the cascade, or the step, ended in an
+/// equilibrium) or discard_flight() (it ended with the indenter flying off under a fixed load,
+/// SPEC "A fixed load that loses the contact": no rows beyond the critical point).
+/// O(cascade) memory.
 class CascadeBuffer final : public Observer {
  public:
   explicit CascadeBuffer(const ObserverList& inner) : inner_(&inner) {}
 
-  void on_event(const Event& event) override {
-    if (event.kind == EventKind::spring_detached && event.in_cascade) {
-      held_.push_back(event);
-      return;
-    }
-    flush();
-    inner_->emit(event);
-  }
+  void on_event(const Event& event) override { held_.push_back(event); }
   bool wants(EventKind kind) const override { return inner_->wants(kind); }
 
-  /// The held rows go on: the cascade ended in an equilibrium.
-  void flush() {
-    for (const Event& e : held_) inner_->emit(e);
+  std::size_t held() const { return held_.size(); }
+  /// Passes on the first `count` held events (those before a new equilibrium).
+  void flush(std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) inner_->emit(held_[i]);
+    held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(count));
+  }
+  void flush() { flush(held_.size()); }
+  /// Drops the held rows but, with `keep_critical`, the let-go that starts the cascade: the
+  /// event method's first detachment of a cascade is the critical state itself (a stepping
+  /// step's detachments are all past it).
+  void discard_flight(bool keep_critical) {
+    for (const Event& e : held_) {
+      if (keep_critical && e.kind == EventKind::spring_detached && !e.in_cascade) {
+        inner_->emit(e);
+      }
+    }
     held_.clear();
   }
-  /// The held rows are dropped: the cascade ended in a flight.
-  void discard() { held_.clear(); }
 
  private:
   const ObserverList* inner_;

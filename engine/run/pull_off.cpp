@@ -8,6 +8,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <memory>
 
 #include "controllers/builtin_controllers.hpp"
@@ -221,22 +222,25 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   EquilibriumTrack track(contact);
   CascadeStart cascade;
   ProgressLog progress;
-  // A cascade's rows wait until it ends in an equilibrium: under a fixed load the last one
+  // An advance's rows wait until it ends in an equilibrium: under a fixed load the last one
   // may end in a flight, which is not reported (SPEC "A fixed load that loses the contact").
   CascadeBuffer buffer(observers);
   ObserverList buffered;
   buffered.add(buffer);
   const bool may_fly = (scene.normal.controller->constraint().displacement_coefficient == 0.0 ||
                         tangential_constraint.displacement_coefficient == 0.0) &&
-                       observers.wants(EventKind::spring_detached);
+                       !observers.empty();
   const ObserverList& pull_off_observers = may_fly ? buffered : observers;
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
       result.status = RunStatus::step_limit;
       break;
     }
+    const std::size_t before_advance = buffer.held();
     const AdvanceOutcome out =
         method->advance(contact, *scene.criterion, pull_off_observers, result.counts);
+    // An advance that starts at an equilibrium closes what came before it.
+    if (may_fly && out.equilibrium_before) buffer.flush(before_advance);
     if (progress.due()) {
       spdlog::info("pull-off running: {} of {} springs attached, {} steps, {} halvings",
                    contact.springs_in_contact(), row.springs, result.counts.steps,
@@ -259,7 +263,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   if (flight == JumpEnd::state) {
     buffer.flush();
   } else {
-    buffer.discard();
+    buffer.discard_flight(scene.solver.method == SolverMethod::event);
   }
   result.sliding = flight == JumpEnd::sliding;
   if (path) path->finish(contact, result.stages, result.jumps, result.work);
