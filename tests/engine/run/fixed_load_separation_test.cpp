@@ -98,6 +98,13 @@ std::string with_springs(std::string text, std::int64_t springs) {
 
 const std::vector<std::int64_t> kRows = {1000, 2000, 10000, 100000};
 
+/// The scene under the stepping method with its default step.
+std::string stepping(std::string text) {
+  const std::size_t at = text.find("[solver]");
+  if (at != std::string::npos) text.erase(at);
+  return text + "[solver]\nmethod = \"stepping\"\n";
+}
+
 // The approach then a fixed-load retract until separation: the shorthand's Fig. 2 path as a
 // program (glued on touch to 12 d0, which is the radius 2 a0).
 constexpr const char* kApproachRetract = R"(
@@ -238,6 +245,54 @@ TEST(FixedLoadSeparation, TangentialFixedLoadPastTheGlueSlidesAway) {
   }
 }
 
+// The shorthand with a held tangential force and the normal axis at fixed grips (Fx = F0 at
+// the glued radius 2 a0): the contact jumps off and, nothing glued, the indenter slides away.
+// Its program form (press, ramp Fx at fixed load, pull until separation) gives the same
+// works on the same row: the shorthand counts Fx du_x in its pull-off as the program does
+// (rounding: the two sum the same trapezoids in another order).
+TEST(FixedLoadSeparation, ShorthandTangentialFixedLoadSlidesAwayLikeItsProgram) {
+  const Scene shorthand = test::build_scene_text(
+      read_file(std::string(MDRSIM_SOURCE_DIR) + "/scenes/tangential_force_fixed_grips.toml"));
+  const Scene program = test::build_scene_text(R"(
+[material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[[loading.stage]]
+name = "preload"
+normal = { control = "fixed-grips", to = 2.713781792333937e-5 }
+[[loading.stage]]
+name = "tangential"
+tangential = { control = "fixed-load", to = 2.35619449019234e-3 }
+[[loading.stage]]
+name = "pull-off"
+normal = { control = "fixed-grips", by = -1e-5 }
+until = "separation"
+[discretization]
+springs = 10000
+)");
+  const RunResult a = run_scene(shorthand, {});
+  const RunResult b = run_scene(program, {});
+  for (const RunResult* r : {&a, &b}) {
+    EXPECT_EQ(r->status, RunStatus::instability);
+    EXPECT_TRUE(r->sliding);
+    ASSERT_EQ(r->jumps.size(), 1u);
+    EXPECT_EQ(r->jumps[0].end, JumpEnd::sliding);
+    ASSERT_EQ(r->stages.size(), 3u);
+    EXPECT_EQ(r->stages[2].end.tangential_displacement, r->critical->tangential_displacement);
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(a.stages[i].work.normal, b.stages[i].work.normal,
+                1e-9 * std::abs(b.stages[i].work.normal) + 1e-22);
+    EXPECT_NEAR(a.stages[i].work.tangential, b.stages[i].work.tangential,
+                1e-9 * std::abs(b.stages[i].work.tangential) + 1e-22);
+  }
+  EXPECT_GT(a.stages[2].work.tangential, 0.0);  // the indenter moved at constant Fx > 0
+}
+
 /// The trajectory rows as (stage, event, indentation).
 struct Row {
   std::string stage, event;
@@ -282,7 +337,12 @@ TEST(FixedLoadSeparation, TrajectoryEndsAtTheCriticalState) {
        "pull-off"},
       {read_file(std::string(MDRSIM_SOURCE_DIR) + "/scenes/programs/shear_ramp_fixed_load.toml"),
        "shear"},
-      {with_springs(kApproachRetract, 1000), "retract"}};
+      {with_springs(kApproachRetract, 1000), "retract"},
+      // The stepping method: a step past the critical point is all flight.
+      {stepping(with_springs(
+           read_file(std::string(MDRSIM_SOURCE_DIR) + "/scenes/fig2_fixed_load.toml"), 1000)),
+       "pull-off"},
+      {stepping(with_springs(kApproachRetract, 1000)), "retract"}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.stage);
     const Scene scene = test::build_scene_text(c.text);
