@@ -26,14 +26,13 @@ class CascadeBuffer final : public Observer {
     held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(count));
   }
   void flush() { flush(held_.size()); }
-  /// Drops the held rows but, with `keep_critical`, the let-go that starts the cascade: the
-  /// event method's first detachment of a cascade is the critical state itself (a stepping
-  /// step's detachments are all past it).
-  void discard_flight(bool keep_critical) {
+  /// Drops the held rows but those at the critical state: a halved step's (taken back to
+  /// it) and, with `keep_first_let_go`, the let-go that starts the cascade (the event
+  /// method's is at the critical state; a stepping step's detachments are all past it).
+  void discard_flight(bool keep_first_let_go) {
     for (const Event& e : held_) {
-      if (keep_critical && e.kind == EventKind::spring_detached && !e.in_cascade) {
-        inner_->emit(e);
-      }
+      const bool first = e.kind == EventKind::spring_detached && !e.in_cascade;
+      if (e.kind == EventKind::step_halved || (keep_first_let_go && first)) inner_->emit(e);
     }
     held_.clear();
   }

@@ -119,6 +119,11 @@ void ShorthandPath::advanced(const Contact& contact, const AdvanceOutcome& out, 
 
 JumpEnd ShorthandPath::finish(const Contact& contact, std::vector<StageRecord>& stages,
                               std::vector<JumpRecord>& jumps, std::optional<AxisWork>& work) {
+  if (contact.springs_in_contact() > 0) {
+    // Stopped at a limit with the contact in place: the stage ends where the control is.
+    last_ = contact.save();
+    add_work(contact, last_);
+  }
   const JumpEnd flight = shorthand_flight(last_, normal_, tangential_);
   if (flight == JumpEnd::state) {
     close_cascade(contact);

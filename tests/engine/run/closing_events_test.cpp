@@ -28,8 +28,10 @@ TEST(ClosingEvents, StepLimitFinishesWhereTheRunStopped) {
   const Event& last = recorder.events().back();
   EXPECT_EQ(last.kind, EventKind::finished);
   EXPECT_EQ(last.status, RunStatus::step_limit);
-  // Twenty steps of 1e-3 of the control's scale leave the glued contact in place.
+  // Twenty steps of 1e-3 of the control's scale leave the glued contact in place, the held
+  // force 2 % below the preload's.
   EXPECT_EQ(last.state.springs_in_contact, 1000);
+  EXPECT_LT(last.state.normal_force, r.stages.front().end.normal_force);
   EXPECT_EQ(last.state.indentation, r.stages.back().end.indentation);
   EXPECT_EQ(last.state.normal_force, r.stages.back().end.normal_force);
 }

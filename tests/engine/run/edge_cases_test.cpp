@@ -51,11 +51,15 @@ class SteppingTracker final : public mdrsim::Observer {
       before_last_step_ = in_a_row_;
       in_a_row_ = 0;
     }
+    // Under fixed load the step that ends the run is the flight's: its halvings are reported
+    // (taken back to the critical state), its accepted row is not (SPEC "A fixed load that
+    // loses the contact").
+    if (e.kind == EventKind::finished && in_a_row_ > 0) before_last_step_ = in_a_row_;
   }
   double preload_control() const { return preload_control_; }
   /// The control value at the first detachment (the event method's first let-go).
   double first_let_go_control() const { return first_let_go_control_.value_or(0.0); }
-  /// Halvings in a row before the last accepted step: the one that ended the run.
+  /// Halvings in a row before the step that ended the run.
   int halvings_before_last_step() const { return before_last_step_; }
 
  private:
