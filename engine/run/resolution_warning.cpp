@@ -18,7 +18,8 @@ std::optional<std::string> unresolved_critical(const RunResult& result, const Re
 }
 
 std::optional<std::string> never_in_contact(const RunResult& result, const ResolvedRow& row) {
-  if (result.counts.events != 0 || result.status == RunStatus::step_limit) return std::nullopt;
+  // Only where nothing else says so: a program ending in place, never having touched.
+  if (result.counts.events != 0 || result.status != RunStatus::completed) return std::nullopt;
   return fmt::format(
       "no spring of the row ({} springs across {:.6g} m) was ever in contact: nothing was "
       "loaded{}",

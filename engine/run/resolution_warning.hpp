@@ -28,7 +28,7 @@ struct ResolvedRow {
 /// 30 degree cone's compliant fold on 2 to 15 springs missed by up to 33 %).
 std::optional<std::string> unresolved_critical(const RunResult& result, const ResolvedRow& row);
 
-/// A program whose row never brought a spring into contact (nothing was loaded): with
+/// A program `completed` whose row never brought a spring into contact (nothing was loaded): with
 /// adhesion the first spring needs touch, which a row of one spring at an adhesive front
 /// never reaches.
 std::optional<std::string> never_in_contact(const RunResult& result, const ResolvedRow& row);
