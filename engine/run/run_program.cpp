@@ -80,8 +80,9 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
 }
 
 /// The frame of a front at radius a_max reached at depth d: g there, or the front value it
-/// equals up to rounding, taken down by ulps until the row's own test (glue: g_N - limit <= d;
-/// touch: g_N <= d) holds at d, so that spring N is reached at the deepest point (SPEC).
+/// equals up to rounding, taken down by ulps until the row's own test at d (glue: g_N - d <=
+/// limit, as ProgramRunner::due() has it; touch: g_N - d <= 0) holds, so that spring N is
+/// reached at the deepest point (SPEC).
 ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
   const double g = scene.profile->mdr_image(a_max);
   const double limit = glued_edge ? ProgramRow::front_limit_at(scene.material, a_max) : 0.0;
@@ -89,7 +90,12 @@ ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, b
   if (!(std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)))) {
     return {a_max, g};
   }
-  for (int i = 0; i < 64 && front - limit > indentation; ++i) {
+  // Just inside the gluing limit: a reversible front (dgamma_a = dgamma) lets spring N go
+  // again where its gap reaches the same limit, and a tie at the stage's end (the criterion's
+  // rounding against the limit's) must not undo it. 1e-12 of the limit moves g_N no more than
+  // the rounding accepted above.
+  if (glued_edge) front = indentation + limit * (1.0 - 1e-12);
+  for (int i = 0; i < 64 && front - indentation > limit; ++i) {
     front = std::nextafter(front, -INFINITY);
   }
   return {a_max, front};
