@@ -30,6 +30,8 @@ struct StageRecord {
   /// With rtol: a posteriori bounds on |reported - continuum| of the end's forces [N].
   std::optional<double> normal_force_error_estimate;
   std::optional<double> tangential_force_error_estimate;
+  /// With rtol or Richardson: a posteriori bounds on |reported - continuum| of `work` [J].
+  std::optional<AxisWork> work_error_estimate;
 };
 
 /// A cascade of springs gluing or letting go at one value of the stage parameter.
