@@ -66,8 +66,10 @@ VaryValue number_value(double value) { return {value, number_field(value)}; }
 /// A value inside a range as a person writes it: the shortest decimal of at most 15
 /// significant digits within `noise` (the rounding error of the range's formula) of the
 /// computed value, so that 0:0.4:5 gives 0.3, not 0.30000000000000004, and 1e7:1.7e7:8 whole
-/// numbers, not 11000000.000000002; else the computed value.
+/// numbers, not 11000000.000000002, and -2e-3:1e-3:4 a zero, not -1e-19 (no digit count of
+/// -1e-19 reaches 0, so zero is decided on the noise first); else the computed value.
 double tidy(double value, double noise) {
+  if (std::abs(value) <= noise) return 0.0;
   const auto rounded = [value](int digits) {
     const std::string text = fmt::format("{:.{}e}", value, digits - 1);
     double near = value;

@@ -6,8 +6,9 @@
 # Installs what is missing, builds mdrsim (in $BUILD_DIR, default build, configured like the
 # tests), runs the scenes and sweeps into results/ ($RESULTS_DIR), draws the figures (PNG and
 # SVG) and prints the comparison table, then measures speed against accuracy (bench/) and
-# draws that chart. Exits non-zero if a run fails or any simulated critical force is
-# further than 2e-3 F0 from the paper's analytic value. Works from any directory.
+# draws that chart. Exits non-zero if a run fails, any simulated critical force is further
+# than 2e-3 F0 from the paper's analytic value, or an accuracy target of the bench is missed;
+# never for a speed target (see below). Works from any directory.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -60,8 +61,13 @@ echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
 
 # Speed against accuracy (issue 4): one CSV row per method, springs and increment, the
-# chart, and the targets checked on this machine (MET/MISS lines; a MISS fails the job).
+# chart, and the targets checked on this machine (MET/MISS lines). An accuracy MISS (a wrong
+# number) fails the job; a speed MISS, declared only after the target was measured three
+# times, is reported and does not: a busy machine must not fail the main job. The chart is
+# drawn either way.
 echo "== speed against accuracy (bench/, about 15 s)" >&2
 echo
-"$build_dir/bench/mdrsim_accuracy" --out "$results/speed_accuracy.csv"
+bench_status=0
+"$build_dir/bench/mdrsim_accuracy" --out "$results/speed_accuracy.csv" || bench_status=$?
 "$py" scripts/plot_speed_accuracy.py --csv "$results/speed_accuracy.csv" --out "$results"
+exit "$bench_status"

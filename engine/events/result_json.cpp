@@ -130,7 +130,13 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       a["critical_error_estimate"] = *accuracy.critical_error_estimate;
     }
     if (accuracy.peak_error_estimate) a["peak_error_estimate"] = *accuracy.peak_error_estimate;
+    if (accuracy.work_error_estimate) {
+      a["work_error_estimate"] = work_json(*accuracy.work_error_estimate);
+    }
     if (scene.discretization.rtol) a["rtol_met"] = accuracy.rtol_met;
+    a["covers"] = accuracy.covers.empty() ? std::vector<std::string>{"critical.normal_force",
+                                                                     "peak_adhesion.normal_force"}
+                                          : accuracy.covers;
     j["accuracy"] = a;
   }
   if (result.critical) {
@@ -157,6 +163,9 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
         record["end_error_estimate"] = {
             {"normal_force", *stage.normal_force_error_estimate},
             {"tangential_force", stage.tangential_force_error_estimate.value_or(0.0)}};
+      }
+      if (stage.work_error_estimate) {
+        record["work_error_estimate"] = work_json(*stage.work_error_estimate);
       }
       stages.push_back(record);
     }

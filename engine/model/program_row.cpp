@@ -14,8 +14,7 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
       reference_springs_(reference_springs),
       reference_image_(reference_image),
       spacing_(reference_radius / static_cast<double>(reference_springs)),
-      front_coefficient_(2.0 * std::numbers::pi *
-                         (material.approach_work_of_adhesion / material.effective_modulus)),
+      front_coefficient_(front_coefficient(material)),
       rebinding_(rebinding) {}
 
 void ProgramRow::springs_changed(bool normal, bool tangential) {

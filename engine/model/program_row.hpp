@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 #include "controllers/controller.hpp"
@@ -47,6 +48,11 @@ class ProgramRow {
   }
   double spacing() const { return spacing_; }
   std::int64_t reference_springs() const { return reference_springs_; }
+  /// The gap g(x) - d at which spring i > 1 of an adhesive front glues at x [m]:
+  /// sqrt(2 pi x dgamma_a / E*), in the very arithmetic of front_limit.
+  static double front_limit_at(const Material& material, double x) {
+    return std::sqrt(front_coefficient(material) * x);
+  }
 
   std::int64_t glued() const { return glued_; }            ///< k
   std::int64_t in_contact() const { return in_contact_; }  ///< m
@@ -121,6 +127,11 @@ class ProgramRow {
   void record_edge_forces(bool on) { edge_forces_ = on; }
 
  private:
+  static double front_coefficient(const Material& material) {
+    return 2.0 * std::numbers::pi *
+           (material.approach_work_of_adhesion / material.effective_modulus);
+  }
+
   /// The equilibrium of each axis, computed once per change of the row or of that axis: a
   /// step asks for it many times.
   struct AxisEquilibrium {

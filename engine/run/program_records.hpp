@@ -30,6 +30,8 @@ struct StageRecord {
   /// With rtol: a posteriori bounds on |reported - continuum| of the end's forces [N].
   std::optional<double> normal_force_error_estimate;
   std::optional<double> tangential_force_error_estimate;
+  /// With rtol or Richardson: a posteriori bounds on |reported - continuum| of `work` [J].
+  std::optional<AxisWork> work_error_estimate;
 };
 
 /// Where a jump lands: an equilibrium, or none because a held fixed load lost what held it

@@ -87,7 +87,8 @@ class ProgramRunner {
         max_springs_(spec.max_springs),
         observers_(observers),
         observe_springs_(observers.wants(EventKind::spring_detached)),
-        largest_(largest) {
+        largest_(largest),
+        zero_(spec.zero) {
     row_.record_edge_forces(spec.edge_forces);
     if (spec.refine && !stepping_) front_.emplace(criterion_);
   }
@@ -150,6 +151,7 @@ class ProgramRunner {
   /// Asked once: whether anyone observes single springs (a log observer asks spdlog).
   bool observe_springs_;
   LargestContact* largest_;
+  ZeroScale zero_;  ///< below it a force is rounding: no peak, no critical point
   RunResult result_;
   std::optional<ProgramFront> front_;  ///< refining rows only
   ProgressLog progress_;
@@ -280,7 +282,7 @@ void ProgramRunner::advance_to(double t) {
 void ProgramRunner::observe(const ContactSnapshot& s) {
   if (!finite(s)) return;
   largest_force_ = std::max(largest_force_, std::abs(s.normal_force));
-  if (s.springs_in_contact > 0 && s.normal_force < 0.0 &&
+  if (s.springs_in_contact > 0 && s.normal_force < -zero_.force &&
       (!peak_ || s.normal_force < peak_->normal_force)) {
     peak_ = s;
   }
@@ -572,7 +574,11 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
   observe(after);
   if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
   if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
-  if (cascade.changes < 2) return;
+  // Springs that carry no force and no glue leaving together (a flat tip at rounding) is no jump.
+  const bool idle = cascade.glued == 0 && row_.glued() == 0 &&
+                    zero_.zero_force(cascade.before.normal_force) &&
+                    zero_.zero_force(after.normal_force);
+  if (cascade.changes < 2 || idle) return;
   JumpRecord jump;
   jump.stage = stage_->name;
   jump.springs = row_.in_contact() - cascade.in_contact;
@@ -780,7 +786,11 @@ void ProgramRunner::run_stage(const Stage& stage) {
       if (!next) {
         if (std::isfinite(t_end)) {
           advance_to(t_end);
-          observe(row_.snapshot());
+          // What the end's exact held value makes due there (spring N reached at a_max).
+          Cascade cascade = begin_cascade();
+          run_changes(std::nullopt, cascade, std::numeric_limits<std::int64_t>::max());
+          finish_cascade(cascade);
+          track_front(cascade);
         } else {
           stop_ = Stop::no_end;
         }
@@ -827,7 +837,10 @@ void ProgramRunner::finish(RunResult& r) {
   r.work = total_work_;
   const bool lost = row_.in_contact() == 0 && ever_in_contact_;
   const auto loss_status = [&](const Cascade& c) {
-    if (c.changes >= 2) {
+    if (zero_.zero_force(c.before.normal_force) && c.glued == 0) {
+      // Nothing carried a force or glue when the contact went: no critical point.
+      r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::no_instability;
+    } else if (c.changes >= 2) {
       r.status = c.second_by_shear ? RunStatus::shear_off : RunStatus::instability;
       r.critical = c.before;
       r.refined_critical = c.refined_before;

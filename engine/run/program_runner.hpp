@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "engine/base/zero_scale.hpp"
 #include "engine/events/observer.hpp"
 #include "engine/model/program_row.hpp"
 #include "engine/run/pull_off.hpp"
@@ -28,6 +29,8 @@ struct ProgramRowSpec {
   /// Event method: the reported states also located between springs (program_front.hpp),
   /// for extrapolation across rows.
   bool refine = false;
+  /// What is zero on this row: the same for every row of a resolution sequence.
+  ZeroScale zero;
 };
 
 /// Runs every stage of scene.program on one row. Emits every event but `finished`.

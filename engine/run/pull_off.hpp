@@ -27,7 +27,12 @@ struct Accuracy {
   /// differences of the rows actually run; empty for a single plain row.
   std::optional<double> critical_error_estimate;
   std::optional<double> peak_error_estimate;  ///< the same for the peak adhesive force [N]
-  bool rtol_met = true;                       ///< with rtol: the estimate is within it
+  /// Programs: the same for the total work per axis [J] (each stage's is in its record).
+  std::optional<AxisWork> work_error_estimate;
+  bool rtol_met = true;  ///< with rtol: every estimate of `covers` is within it
+  /// The reported numbers the estimates (and rtol) cover, as JSON paths; empty: the
+  /// critical and the peak normal force (the shorthand's).
+  std::vector<std::string> covers;
 };
 
 struct RunResult {

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "engine/base/bracketed_root.hpp"
+#include "engine/model/program_row.hpp"
 #include "engine/run/program_runner.hpp"
 
 namespace mdrsim {
@@ -79,15 +80,25 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
 }
 
 /// The frame of a front at radius a_max reached at depth d: g there, or the front value it
-/// equals up to rounding, so that spring N is reached at the deepest point (SPEC).
+/// equals up to rounding, taken down by ulps until the row's own test at d (glue: g_N - d <=
+/// limit, as ProgramRunner::due() has it; touch: g_N - d <= 0) holds, so that spring N is
+/// reached at the deepest point (SPEC).
 ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
   const double g = scene.profile->mdr_image(a_max);
-  const double front =
-      indentation + (glued_edge ? std::sqrt(2.0 * std::numbers::pi * a_max *
-                                            (scene.material.approach_work_of_adhesion /
-                                             scene.material.effective_modulus))
-                                : 0.0);
-  return {a_max, std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)) ? front : g};
+  const double limit = glued_edge ? ProgramRow::front_limit_at(scene.material, a_max) : 0.0;
+  double front = indentation + limit;
+  if (!(std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)))) {
+    return {a_max, g};
+  }
+  // Just inside the gluing limit: a reversible front (dgamma_a = dgamma) lets spring N go
+  // again where its gap reaches the same limit, and a tie at the stage's end (the criterion's
+  // rounding against the limit's) must not undo it. 1e-12 of the limit moves g_N no more than
+  // the rounding accepted above.
+  if (glued_edge) front = indentation + limit * (1.0 - 1e-12);
+  for (int i = 0; i < 64 && front - indentation > limit; ++i) {
+    front = std::nextafter(front, -INFINITY);
+  }
+  return {a_max, front};
 }
 
 /// Where every normal stage holds the depth (fixed grips), the deepest depth d_max is known
@@ -140,7 +151,10 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
 
 }  // namespace
 
-ProgramRowFrame program_row_frame(const Scene& scene) {
+namespace {
+
+/// The frame's radius and image: without a pilot where the deepest depth is known, else from one.
+ProgramRowFrame located_frame(const Scene& scene) {
   if (const auto frame = frame_without_pilot(scene)) return *frame;
   double radius = guess_radius(scene);
   double pilot_radius = radius;  // the radius of the pilot that found `largest`
@@ -167,11 +181,32 @@ ProgramRowFrame program_row_frame(const Scene& scene) {
   return frame_at(scene, a_max, largest.indentation, largest.glued_edge);
 }
 
+}  // namespace
+
+ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
+  double held_force = 0.0;
+  for (const Stage& stage : scene.program->stages) {
+    if (stage.normal && stage.normal->control == "fixed-load" &&
+        stage.normal->motion == StageAxis::Motion::to) {
+      held_force = std::max(held_force, std::abs(stage.normal->value));
+    }
+  }
+  return zero_scale(scene.material.effective_modulus, radius, image,
+                    scene.material.work_of_adhesion, held_force);
+}
+
+ProgramRowFrame program_row_frame(const Scene& scene) {
+  ProgramRowFrame frame = located_frame(scene);
+  frame.zero = program_zero_scale(scene, frame.radius, frame.image);
+  return frame;
+}
+
 ProgramRowSpec program_row(const ProgramRowFrame& frame, std::int64_t springs) {
   return {.reference_radius = frame.radius,
           .reference_springs = springs,
           .reference_image = frame.image,
-          .max_springs = 2 * springs + 64};
+          .max_springs = 2 * springs + 64,
+          .zero = frame.zero};
 }
 
 RunResult run_program(const Scene& scene, const ObserverList& observers) {

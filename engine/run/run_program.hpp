@@ -11,9 +11,14 @@ namespace mdrsim {
 /// Where a program's rows put their springs: spring N of any row sits at `radius`, the
 /// largest contact radius the program reaches, with g there taken as `image`.
 struct ProgramRowFrame {
-  double radius;  ///< a_max [m]
-  double image;   ///< g(a_max), or the front value it equals up to rounding [m]
+  double radius;   ///< a_max [m]
+  double image;    ///< g(a_max), or the front value it equals up to rounding [m]
+  ZeroScale zero;  ///< what is zero on every row of the frame (program_zero_scale)
 };
+
+/// What is zero on a program's rows spanning `radius` [m] with g = `image` [m] there: the
+/// scene's E*, work of adhesion and largest force a fixed-load stage holds (zero_scale.hpp).
+ZeroScale program_zero_scale(const Scene& scene, double radius, double image);
 
 /// Runs a 256-spring pilot to find a_max (the continuum front at the deepest indentation).
 ProgramRowFrame program_row_frame(const Scene& scene);

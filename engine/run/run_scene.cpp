@@ -9,14 +9,12 @@
 
 #include "engine/run/adaptive_resolution.hpp"
 #include "engine/run/program_resolution.hpp"
+#include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"
 
 namespace mdrsim {
 namespace {
-
-/// Fewer springs than this in contact at the critical point do not resolve it.
-constexpr std::int64_t kResolvedSprings = 100;
 
 /// Rows of N/2, N and 2N springs across the glued radius; the finest row's events.
 RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
@@ -65,12 +63,19 @@ void warn_resolution(const Scene& scene, RunResult& result) {
         "the contact peeled off down to its last spring (a = {:.6g} m of {:.6g} m, {} springs): "
         "a fold below it is not resolved; discretization.rtol zooms in on it",
         glued / static_cast<double>(springs), glued, springs));
-  } else if (result.critical && result.critical->springs_in_contact < kResolvedSprings &&
-             result.critical->springs_in_contact < springs) {
-    result.warnings.push_back(fmt::format(
-        "the critical point has only {} springs in contact (a = {:.6g} m of the glued {:.6g} m, "
-        "{} springs): the row does not resolve it; discretization.rtol zooms in on it",
-        result.critical->springs_in_contact, result.critical->contact_radius, glued, springs));
+  } else if (auto w = unresolved_critical(
+                 result, {springs, glued, "glued", "discretization.rtol zooms in on it"})) {
+    result.warnings.push_back(std::move(*w));
+  }
+}
+
+/// A program's fixed row (or Richardson's rows): the shorthand's rule on its a_max.
+void warn_program_resolution(const Scene& scene, RunResult& result) {
+  if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
+  const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
+                        "discretization.rtol refines the row until it is resolved"};
+  for (auto w : {never_in_contact(result, row), unresolved_critical(result, row)}) {
+    if (w) result.warnings.push_back(std::move(*w));
   }
 }
 
@@ -100,7 +105,11 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
         scene, {.springs = scene.springs, .outer_radius = scene.glued_radius, .record_path = true},
         observers);
   }
-  if (!scene.program) warn_resolution(scene, result);
+  if (scene.program) {
+    warn_program_resolution(scene, result);
+  } else {
+    warn_resolution(scene, result);
+  }
   result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());
   for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
   result.wall_time_s =

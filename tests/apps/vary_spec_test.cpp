@@ -59,6 +59,10 @@ TEST(VarySpec, RangeValuesAreTheDecimalsAPersonWritesWithinTheFormulasRounding) 
                                       "15000000", "16000000", "17000000"}));
   EXPECT_EQ(fields(parse_vary("a.b=0:2e-5:5")),
             (std::vector<std::string>{"0", "5e-06", "1e-05", "1.5e-05", "2e-05"}));
+  // A range through zero: (1 - 2/3) (-2e-3) + (2/3) 1e-3 is -1e-19 in doubles; zero is within
+  // the rounding error, and the row runs the value 0 (a held depth of 0, not -1e-19 m).
+  EXPECT_EQ(fields(parse_vary("a.b=-2e-3:1e-3:4")),
+            (std::vector<std::string>{"-0.002", "-0.001", "0", "0.001"}));
   // Values with no short decimal move by no more than the formula's rounding error (two
   // ulps of the larger end).
   const VarySpec sevenths = parse_vary("a.b=0:1:8");

@@ -213,3 +213,53 @@ TEST(ProgramRunner, EveryJumpOfTheExampleScenesChangesTheRow) {
 
 }  // namespace
 }  // namespace mdrsim
+
+namespace mdrsim {
+namespace {
+
+// SPEC "Discretization": spring N sits at a_max and is in contact when the indenter reaches
+// it, whatever the rounding. The approach to 3 d0 reaches a_max at its very end.
+TEST(ProgramRunner, TheApproachEndsWithEveryOneOfItsSprings) {
+  const double depth = 3.0 * jkr_scales().depth;
+  for (const std::int64_t springs : {1000, 4000, 12345}) {
+    const RunResult r = run_scene(cycle_scene(kWork, depth, springs), {});
+    ASSERT_GE(r.stages.size(), 1u);
+    EXPECT_EQ(r.stages[0].end.springs_in_contact, springs);
+  }
+}
+
+// Pressed springs carry no tension: once a shear of 4 d0 has broken the glue of the parabola
+// glued at 2 a0 (the paper's Fig. 3a, fixed grips), the pull-off lifts them one by one and
+// no state is tensile; the last ones sit near the apex at forces of rounding (-2.6e-24 N on
+// 1e5 springs was reported as a peak before the zero scale).
+TEST(ProgramRunner, NoPeakAndNoCriticalPointFromRounding) {
+  const std::string text = R"(
+[material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[[loading.stage]]
+name = "preload"
+normal = { control = "fixed-grips", to = 2.713782e-5 }
+[[loading.stage]]
+name = "tangential"
+tangential = { control = "fixed-grips", to = 9.04594e-6 }
+[[loading.stage]]
+name = "pull-off"
+normal = { control = "fixed-grips", by = -1.0e-5 }
+until = "separation"
+[discretization]
+springs = 100000
+)";
+  const RunResult r =
+      run_scene(SceneDocument::from_text(text, "sheared.toml").build(Registries::builtin()), {});
+  EXPECT_EQ(r.status, RunStatus::no_instability);
+  EXPECT_FALSE(r.critical);
+  EXPECT_FALSE(r.peak);
+}
+
+}  // namespace
+}  // namespace mdrsim
