@@ -74,6 +74,11 @@ class Result:
         """instability, shear-off, no-instability, step-limit or completed (SPEC)."""
         return self._raw.status
 
+    @property
+    def title(self):
+        """The scene's title ("" without one)."""
+        return self._raw.title
+
     @cached_property
     def scales(self):
         """The scales {"force": F0 [N], "radius": a0 [m], "depth": d0 [m], "basis": the closed
@@ -140,8 +145,20 @@ class Result:
     def trajectory(self):
         """One row per event, as `mdrsim run --trajectory` writes them: a dict of NumPy
         arrays (read-only views of the engine's own buffers, no copy), and the lists
-        "stage" and "event"; None for mdrsim.run(scene, trajectory=False)."""
+        "stage" and "event"; None for mdrsim.run(scene, trajectory=False). Within the row
+        budget of mdrsim.run (trajectory_stride > 1 when rows were thinned)."""
         return self._raw.trajectory()
+
+    @property
+    def trajectory_rows_seen(self):
+        """The rows the run gave (0 without a trajectory); more than len(trajectory["event"])
+        when the budget thinned them."""
+        return self._raw.trajectory_rows_seen
+
+    @property
+    def trajectory_stride(self):
+        """1 when the trajectory holds every row; else every k-th ordinary row is held."""
+        return self._raw.trajectory_stride
 
     def to_dict(self):
         """The JSON of `mdrsim run --json`, as Python objects."""

@@ -6,6 +6,7 @@
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -19,6 +20,7 @@
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "python/src/interrupt_check.hpp"
 #include "python/src/python_parts.hpp"
 #include "python/src/python_sweep.hpp"
 #include "python/src/trajectory_recorder.hpp"
@@ -49,7 +51,9 @@ struct ResultHandle {
   RunResult result;
   /// The recorded trajectory until its arrays take the columns over; null without one.
   std::unique_ptr<TrajectoryColumns> columns;
-  py::object trajectory;  ///< the dict of arrays, made on first access
+  py::object trajectory;                   ///< the dict of arrays, made on first access
+  std::uint64_t trajectory_rows_seen = 0;  ///< rows the run gave, held or not
+  std::uint64_t trajectory_stride = 1;     ///< 1, or the thinning of the ordinary rows
 };
 
 /// SPEC: messages are one line, as the command prints them.
@@ -61,19 +65,25 @@ std::string one_line(std::string text) {
   return text;
 }
 
-std::unique_ptr<ResultHandle> run(const SceneHandle& handle, bool trajectory) {
+/// `trajectory_rows`: the row budget of the trajectory (TrajectoryRecorder), none without one.
+std::unique_ptr<ResultHandle> run(const SceneHandle& handle,
+                                  std::optional<std::uint64_t> trajectory_rows) {
   auto out = std::make_unique<ResultHandle>();
   out->scene = handle.scene;
   std::optional<std::string> not_finite;
   {
+    const InterruptibleRun interruptible;
     py::gil_scoped_release release;
-    TrajectoryRecorder recorder;
+    TrajectoryRecorder recorder(trajectory_rows.value_or(1));
     ObserverList observers;
-    if (trajectory) observers.add(recorder);
+    if (trajectory_rows) observers.add(recorder);
     out->result = run_scene(*out->scene, observers);
     not_finite = first_not_finite(*out->scene, out->result);
-    if (trajectory)
-      out->columns = std::make_unique<TrajectoryColumns>(std::move(recorder.columns()));
+    if (trajectory_rows) {
+      out->columns = std::make_unique<TrajectoryColumns>(recorder.take());
+      out->trajectory_rows_seen = out->columns->rows_seen;
+      out->trajectory_stride = out->columns->stride;
+    }
   }
   if (not_finite) {
     throw std::runtime_error(fmt::format(
@@ -185,6 +195,7 @@ void bind_results(py::module_& m) {
   py::class_<ResultHandle>(m, "RunResult", "The engine's result of one run (internal).")
       .def_property_readonly("status",
                              [](const ResultHandle& r) { return to_string(r.result.status); })
+      .def_property_readonly("title", [](const ResultHandle& r) { return r.scene->title; })
       .def_property_readonly(
           "critical", [](const ResultHandle& r) { return optional_snapshot(r.result.critical); })
       .def_property_readonly("peak",
@@ -250,6 +261,8 @@ void bind_results(py::module_& m) {
                                d["basis"] = s->basis;
                                return d;
                              })
+      .def_readonly("trajectory_rows_seen", &ResultHandle::trajectory_rows_seen)
+      .def_readonly("trajectory_stride", &ResultHandle::trajectory_stride)
       .def("json", [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })
       .def("trajectory", [](ResultHandle& r) -> py::object {
         if (!r.trajectory && r.columns) {
@@ -267,6 +280,7 @@ void bind_results(py::module_& m) {
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "The C++ engine of mdrsim; use the package mdrsim, not this module.";
+  mdrsim::python::remember_main_thread();
   // Never freed: a static py::object would be released after the interpreter is gone.
   static PyObject* scene_error =
       (new py::exception<mdrsim::SceneError>(m, "SceneError", PyExc_ValueError))->ptr();

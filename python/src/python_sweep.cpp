@@ -22,6 +22,7 @@
 #include "apps/vary_spec.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "python/src/interrupt_check.hpp"
 #include "python/src/python_parts.hpp"
 
 namespace py = pybind11;
@@ -94,6 +95,7 @@ class SweepPlan {
       throw py::index_error("SweepPlan.run_rows: rows beyond the grid");
     }
     std::vector<std::string> lines;
+    const InterruptibleRun interruptible;
     py::gil_scoped_release release;
     SceneDocument document = *base_;  // a copy re-parses: once per call, as once per worker
     for (std::uint64_t row = first; row < first + count; ++row) {
