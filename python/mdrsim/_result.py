@@ -63,11 +63,46 @@ class Jump:
     by_shear: bool
 
 
+# What a pickled Result keeps of the engine's result (the attributes of _core.RunResult).
+_RAW_FIELDS = ("status", "title", "critical", "peak", "tangential_strength", "stages", "jumps",
+               "work", "warnings", "has_warnings", "counts", "springs", "wall_time_s", "scales",
+               "trajectory_rows_seen", "trajectory_stride")
+
+
+class _StoredRun:
+    """A run's values without the engine: what a Result unpickles to, in any process (a
+    ProcessPoolExecutor's), whether or not the parts its scene used are registered there."""
+
+    def __init__(self, values, json_text, trajectory):
+        self.__dict__.update(values)
+        self._json = json_text
+        self._trajectory = trajectory
+        if trajectory is not None:  # read-only, as the engine's own buffers are
+            for value in trajectory.values():
+                if hasattr(value, "flags"):
+                    value.flags.writeable = False
+
+    def json(self):
+        return self._json
+
+    def trajectory(self):
+        return self._trajectory
+
+
+def _result_from_values(values, json_text, trajectory):
+    return Result(_StoredRun(values, json_text, trajectory))
+
+
 class Result:
-    """What mdrsim.run returns. Every attribute is computed on first access."""
+    """What mdrsim.run returns. Every attribute is computed on first access. Picklable (with
+    its trajectory), so that ProcessPoolExecutor().map(mdrsim.run, scenes) works."""
 
     def __init__(self, raw):
         self._raw = raw
+
+    def __reduce__(self):
+        values = {name: getattr(self._raw, name) for name in _RAW_FIELDS}
+        return (_result_from_values, (values, self._raw.json(), self._raw.trajectory()))
 
     @property
     def status(self):

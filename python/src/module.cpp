@@ -168,7 +168,7 @@ void bind_scenes(py::module_& m) {
       .def_static(
           "from_text",
           [](const std::string& text, const std::string& source_name, const std::string& base_dir) {
-            return built(SceneDocument::from_text(text, source_name, base_dir));
+            return built(SceneDocument::from_scene_text(text, source_name, base_dir));
           },
           py::arg("text"), py::arg("source_name"), py::arg("base_dir"))
       .def(
@@ -181,6 +181,7 @@ void bind_scenes(py::module_& m) {
           py::arg("values"), "Overrides as (dotted key, TOML value text), checked like --set.")
       .def_property_readonly("source_name",
                              [](const SceneHandle& h) { return h.document.source_name(); })
+      .def("to_toml", [](const SceneHandle& h) { return h.document.to_toml(); })
       .def_property_readonly("title", [](const SceneHandle& h) { return h.scene->title; })
       .def_property_readonly("springs", [](const SceneHandle& h) { return h.scene->springs; })
       .def_property_readonly("material", [](const SceneHandle& h) { return h.scene->material; })

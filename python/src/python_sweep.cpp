@@ -61,7 +61,7 @@ class SweepPlan {
     for (const auto& [key, value] : overrides) sets.push_back(key + "=" + value);
     scene_hash_ = cli::scene_hash(text, sets);
     py::gil_scoped_release release;  // Python parts take the GIL back in their factories
-    base_.emplace(SceneDocument::from_text(text, source_name, base_dir));
+    base_.emplace(SceneDocument::from_scene_text(text, source_name, base_dir));
     for (const auto& [key, value] : overrides) base_->set_value(key, value);
     dimensionless_ = dimensionless ? *dimensionless : check_values(*base_, grid_, *registries_);
   }
