@@ -49,8 +49,8 @@ SceneHandle built(SceneDocument document) {
 struct ResultHandle {
   std::shared_ptr<const Scene> scene;
   RunResult result;
-  /// The recorded trajectory until its arrays take the columns over; null without one.
-  std::unique_ptr<TrajectoryColumns> columns;
+  /// The recorded trajectory until its arrays are made; null without one.
+  std::unique_ptr<TrajectoryRows> rows;
   py::object trajectory;                   ///< the dict of arrays, made on first access
   std::uint64_t trajectory_rows_seen = 0;  ///< rows the run gave, held or not
   std::uint64_t trajectory_stride = 1;     ///< 1, or the thinning of the ordinary rows
@@ -80,9 +80,9 @@ std::unique_ptr<ResultHandle> run(const SceneHandle& handle,
     out->result = run_scene(*out->scene, observers);
     not_finite = first_not_finite(*out->scene, out->result);
     if (trajectory_rows) {
-      out->columns = std::make_unique<TrajectoryColumns>(recorder.take());
-      out->trajectory_rows_seen = out->columns->rows_seen;
-      out->trajectory_stride = out->columns->stride;
+      out->rows = std::make_unique<TrajectoryRows>(recorder.take());
+      out->trajectory_rows_seen = out->rows->rows_seen;
+      out->trajectory_stride = out->rows->stride;
     }
   }
   if (not_finite) {
@@ -266,9 +266,11 @@ void bind_results(py::module_& m) {
       .def_readonly("trajectory_stride", &ResultHandle::trajectory_stride)
       .def("json", [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })
       .def("trajectory", [](ResultHandle& r) -> py::object {
-        if (!r.trajectory && r.columns) {
-          r.trajectory = take_trajectory(*r.columns);
-          r.columns.reset();
+        // Under the GIL throughout: another thread may ask for the same result's arrays.
+        if (!r.trajectory && r.rows) {
+          TrajectoryColumns columns = r.rows->columns();
+          r.rows.reset();
+          r.trajectory = take_trajectory(columns);
         }
         return r.trajectory ? r.trajectory : py::object(py::none());
       });
