@@ -38,6 +38,7 @@ setup(
     description="Adhesive contact under normal and tangential loading (MDR spring model)",
     packages=["mdrsim"],
     package_dir={"": "python"},
+    package_data={"mdrsim": ["py.typed", "*.pyi"]},  # PEP 561 type stubs
     ext_modules=[Extension("mdrsim._core", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     python_requires=">=3.9",

@@ -1,11 +1,17 @@
 // When a long run should say how far it is: at most once per interval, checked on every
-// 65536th call so that a loop can ask at each iteration for the cost of an increment.
+// 65536th call so that a loop can ask at each iteration for the cost of an increment. There
+// too a caller's interrupt check runs (Python's Ctrl-C).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 
 namespace mdrsim {
+
+/// Called by the runs of this thread every 65536 events or so (a few milliseconds); throws to
+/// stop the run. Null: none (the command stops on a signal by ending the process).
+using InterruptCheck = void (*)();
+inline thread_local InterruptCheck interrupt_check = nullptr;
 
 class ProgressLog {
  public:
@@ -15,8 +21,10 @@ class ProgressLog {
   /// every 65536th call only.
   bool due() { return (++calls_ & 0xFFFF) == 0 && interval_passed(); }
 
-  /// The same, reading the clock at each call: for a caller that asks seldom.
+  /// The same, reading the clock at each call: for a caller that asks seldom. Runs the
+  /// interrupt check first.
   bool interval_passed() {
+    if (interrupt_check != nullptr) interrupt_check();
     const auto now = std::chrono::steady_clock::now();
     if (now - last_ < kInterval) return false;
     last_ = now;

@@ -13,6 +13,8 @@
 #include <cstring>
 #include <memory>
 #include <optional>
+#include <sstream>
+#include <string>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -306,6 +308,13 @@ SceneDocument& SceneDocument::operator=(SceneDocument&&) noexcept = default;
 SceneDocument::~SceneDocument() = default;
 
 const std::string& SceneDocument::source_name() const { return impl_->source_name; }
+
+std::string SceneDocument::to_toml() const {
+  std::ostringstream out;
+  out << toml::toml_formatter(impl_->root);
+  out << '\n';
+  return out.str();
+}
 
 SceneDocument SceneDocument::from_file(const std::filesystem::path& path) {
   const std::string name = path.string();

@@ -48,6 +48,9 @@ class SceneDocument {
   Scene build(const Registries& registries) const;
 
   const std::string& source_name() const;
+  /// The scene's values as TOML text, overrides applied: what from_text reads back to the same
+  /// scene (comments and layout are not kept).
+  std::string to_toml() const;
 
  private:
   struct Impl;

@@ -11,6 +11,7 @@ Bad input raises mdrsim.SceneError (a ValueError) with the message `mdrsim run` 
 mdrsim.run releases the GIL while the engine runs: threads run scenes in parallel.
 """
 
+import numbers
 import warnings
 
 from . import _core
@@ -23,7 +24,7 @@ from ._sweep import SweepResult, sweep
 __version__ = "0.1.0"
 __all__ = ["Jump", "Material", "Parameter", "Result", "RunWarning", "Scene", "SceneError",
            "StageEnd", "State", "SweepResult", "Work", "parts", "register_criterion",
-           "register_profile", "run", "set_log_level", "sweep"]
+           "register_profile", "run", "TRAJECTORY_ROWS", "set_log_level", "sweep"]
 
 
 class RunWarning(UserWarning):
@@ -31,15 +32,37 @@ class RunWarning(UserWarning):
     the same lines are in Result.warnings."""
 
 
+#: The rows mdrsim.run(scene) keeps of the trajectory by default (about 7 MB).
+TRAJECTORY_ROWS = 100_000
+
+
+def _row_budget(trajectory):
+    if trajectory is None or trajectory is False:
+        return None
+    if trajectory is True:
+        return TRAJECTORY_ROWS
+    if isinstance(trajectory, numbers.Integral) and trajectory >= 1:
+        return int(trajectory)
+    raise ValueError(f"trajectory={trajectory!r}: expected True, False or a number of rows >= 1")
+
+
 def run(scene, trajectory=True):
     """Runs a Scene (or a scene file path, or a dict) and returns its Result.
 
-    trajectory=False keeps no per-event rows (Result.trajectory is then None). The GIL is
-    released while the engine runs; criteria and profiles written in Python take it back
-    for each call, so they run one thread at a time.
+    trajectory: the rows of Result.trajectory to keep at most (True: TRAJECTORY_ROWS,
+    100,000; an int: that many; False: none, Result.trajectory is then None). A longer run
+    keeps every row of the preload, the tangential load, each stage end and the instability,
+    and the first and last row; the rows on either side of a cascade and the jump rows while
+    they fit; and of the ordinary rows (detached, glued, step ...) every k-th, k a power of two
+    (Result.trajectory_stride), so that memory stays within the budget however many springs
+    the run has.
+
+    The GIL is released while the engine runs; criteria and profiles written in Python take
+    it back for each call, so they run one thread at a time. Ctrl-C stops the run
+    (KeyboardInterrupt) within milliseconds.
     """
     scene = as_scene(scene, "run")
-    raw = _core.run(scene._doc, trajectory)
+    raw = _core.run(scene._doc, _row_budget(trajectory))
     if raw.has_warnings:
         for line in raw.warnings:
             warnings.warn(line, RunWarning, stacklevel=2)

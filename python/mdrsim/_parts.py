@@ -82,7 +82,11 @@ def register_profile(name, shape, image=None, *, parameters=None, tip_radius=Non
 
     shape(r, **parameters) returns f(r) [m] at r >= 0 [m]; image(x, **parameters), optional,
     the MDR image g(x) [m] (paper eq. 4), non-decreasing. Without image, g is computed from f
-    by eq. 4 at every call (tanh-sinh over a numerical f'): correct but about 100x slower.
+    by eq. 4 (tanh-sinh over a numerical f', thousands of calls of shape) at a few knots per
+    octave of x, the first time the octave is needed, and interpolated (log g over log x, to
+    1e-11 relative; an octave where that fails keeps eq. 4 at every call): a scene of 2000
+    springs builds in 0.2 s instead of 4 minutes. The tables are kept for the last 8
+    parameter sets, so that a sweep builds them once.
     tip_radius, optional, makes the dimensionless output (F/F0, ...) available: the radius R
     of a tip that is the parabola r^2/(2R), as a number, the name of a parameter, or a
     callable(**parameters).

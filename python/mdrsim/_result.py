@@ -64,16 +64,56 @@ class Jump:
     by_shear: bool
 
 
+# What a pickled Result keeps of the engine's result (the attributes of _core.RunResult).
+_RAW_FIELDS = ("status", "title", "critical", "peak", "tangential_strength", "stages", "jumps",
+               "work", "warnings", "has_warnings", "counts", "springs", "wall_time_s", "scales",
+               "trajectory_rows_seen", "trajectory_stride")
+
+
+class _StoredRun:
+    """A run's values without the engine: what a Result unpickles to, in any process (a
+    ProcessPoolExecutor's), whether or not the parts its scene used are registered there."""
+
+    def __init__(self, values, json_text, trajectory):
+        self.__dict__.update(values)
+        self._json = json_text
+        self._trajectory = trajectory
+        if trajectory is not None:  # read-only, as the engine's own buffers are
+            for value in trajectory.values():
+                if hasattr(value, "flags"):
+                    value.flags.writeable = False
+
+    def json(self):
+        return self._json
+
+    def trajectory(self):
+        return self._trajectory
+
+
+def _result_from_values(values, json_text, trajectory):
+    return Result(_StoredRun(values, json_text, trajectory))
+
+
 class Result:
-    """What mdrsim.run returns. Every attribute is computed on first access."""
+    """What mdrsim.run returns. Every attribute is computed on first access. Picklable (with
+    its trajectory), so that ProcessPoolExecutor().map(mdrsim.run, scenes) works."""
 
     def __init__(self, raw):
         self._raw = raw
+
+    def __reduce__(self):
+        values = {name: getattr(self._raw, name) for name in _RAW_FIELDS}
+        return (_result_from_values, (values, self._raw.json(), self._raw.trajectory()))
 
     @property
     def status(self):
         """instability, shear-off, no-instability, step-limit or completed (SPEC)."""
         return self._raw.status
+
+    @property
+    def title(self):
+        """The scene's title ("" without one)."""
+        return self._raw.title
 
     @cached_property
     def scales(self):
@@ -141,8 +181,20 @@ class Result:
     def trajectory(self):
         """One row per event, as `mdrsim run --trajectory` writes them: a dict of NumPy
         arrays (read-only views of the engine's own buffers, no copy), and the lists
-        "stage" and "event"; None for mdrsim.run(scene, trajectory=False)."""
+        "stage" and "event"; None for mdrsim.run(scene, trajectory=False). Within the row
+        budget of mdrsim.run (trajectory_stride > 1 when rows were thinned)."""
         return self._raw.trajectory()
+
+    @property
+    def trajectory_rows_seen(self):
+        """The rows the run gave (0 without a trajectory); more than len(trajectory["event"])
+        when the budget thinned them."""
+        return self._raw.trajectory_rows_seen
+
+    @property
+    def trajectory_stride(self):
+        """1 when the trajectory holds every row; else every k-th ordinary row is held."""
+        return self._raw.trajectory_stride
 
     def to_dict(self):
         """The JSON of `mdrsim run --json`, as Python objects."""

@@ -1,14 +1,22 @@
 """Scenes from a TOML file, TOML text or a nested dict, checked as soon as they are made."""
 
+import json
 import math
 import numbers
 import os
 import re
 from collections.abc import Mapping
 
+try:
+    import tomllib  # Python 3.11
+except ImportError:  # pragma: no cover
+    tomllib = None
+
 from . import _core
 from ._core import SceneError
 
+# The tables of a scene in the order the README and the scene files have them.
+_ORDER = ("title", "material", "profile", "loading", "detachment", "discretization", "solver")
 _BARE_KEY = re.compile(r"[A-Za-z0-9_-]+\Z")
 _ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
 
@@ -61,6 +69,12 @@ def toml_value(value, where):
                      "(expected a number, string, boolean, list or table)")
 
 
+def _inline(value, path):
+    """A table below the top level with plain values only (`normal = { control = ... }`)."""
+    return bool(path) and isinstance(value, Mapping) and len(value) <= 4 and all(
+        not isinstance(v, Mapping) and not _is_table_array(v) for v in value.values())
+
+
 def _table_lines(table, path, lines, name):
     where = f"{name}: {'.'.join(path)}" if path else name
     if not isinstance(table, Mapping):
@@ -68,7 +82,7 @@ def _table_lines(table, path, lines, name):
     tables, arrays = [], []
     for key, value in table.items():
         _key(key, where)
-        if isinstance(value, Mapping):
+        if isinstance(value, Mapping) and not _inline(value, path):
             tables.append((key, value))
         elif _is_table_array(value):
             arrays.append((key, value))
@@ -76,12 +90,16 @@ def _table_lines(table, path, lines, name):
             lines.append(f"{_key(key, where)} = {toml_value(value, f'{name}: ' + '.'.join(path + [key]))}")
     for key, value in tables:
         header = ".".join(_key(k, where) for k in path + [key])
-        lines.append(f"[{header}]")
+        # A table of tables alone needs no header of its own ([loading] before
+        # [[loading.stage]]).
+        if not value or any(not (isinstance(v, Mapping) and not _inline(v, path + [key]))
+                            and not _is_table_array(v) for v in value.values()):
+            lines.extend(["", f"[{header}]"])
         _table_lines(value, path + [key], lines, name)
     for key, value in arrays:
         header = ".".join(_key(k, where) for k in path + [key])
         for item in value:
-            lines.append(f"[[{header}]]")
+            lines.extend(["", f"[[{header}]]"])
             _table_lines(item, path + [key], lines, name)
 
 
@@ -93,9 +111,10 @@ def to_toml(table, name="<dict>"):
 
 
 class Scene:
-    """A checked scene: made by from_file, from_toml or from_dict, changed by with_values.
+    """A checked scene: made by from_file, from_toml or from_dict, changed by with_values or
+    set, shown by to_toml or to_dict, written by save.
 
-    Immutable: with_values returns a new Scene. Every make builds the scene at once (parts
+    Immutable: with_values and set return a new Scene. Every make builds the scene at once (parts
     created, preload solved), so bad input raises mdrsim.SceneError there, with the one-line
     message `mdrsim run` prints; the built scene is kept for every run of it.
     """
@@ -117,7 +136,9 @@ class Scene:
 
     @classmethod
     def from_file(cls, path):
-        """Reads a scene file; messages name it as given, with line and column."""
+        """Reads a scene file, TOML or JSON (a scene, or the JSON of `mdrsim run --json`,
+        whose `scene` is read, as `mdrsim run result.json` does); messages name it as given,
+        with line and column."""
         path = os.fspath(path)
         # Read here, so that the bytes kept are the ones built (`mdrsim run` reads them so).
         try:
@@ -149,6 +170,44 @@ class Scene:
         pairs = [(key, toml_value(value, f"--set: {key}")) for key, value in dict(values).items()]
         return Scene._wrap(self._doc.with_values(pairs), self._overrides + tuple(pairs),
                            self._text, self._base_dir)
+
+    def set(self, key, value):
+        """A new Scene with one value set: scene.set("material.poisson_ratio", 0.3) is
+        scene.with_values({"material.poisson_ratio": 0.3}), checked like --set."""
+        return self.with_values({key: value})
+
+    def to_dict(self):
+        """The scene's values, overrides applied, as a nested dict laid out like the file
+        (what from_dict takes)."""
+        text = self._doc.to_toml()
+        if tomllib is None:  # pragma: no cover
+            raise RuntimeError("Scene.to_dict needs Python 3.11 (tomllib)")
+        return tomllib.loads(text)
+
+    def to_toml(self):
+        """The scene's values as TOML, overrides applied, keys in order: what `mdrsim run`
+        and Scene.from_toml read back to the same scene. Comments are not kept."""
+        if tomllib is None:  # pragma: no cover
+            return self._doc.to_toml()
+        head = f"# From {self.source}"
+        for key, value in self._overrides:
+            head += f"\n#   --set {key}={value}"
+        values = self.to_dict()
+        ordered = {key: values[key] for key in _ORDER if key in values}
+        ordered.update((key, value) for key, value in values.items() if key not in ordered)
+        return head + "\n" + to_toml(ordered, self.source)
+
+    def save(self, path):
+        """Writes to_toml() to `path` (or JSON when it ends in .json). A relative path in the
+        scene (a tabulated profile's file) is read from the saved file's folder: save it
+        beside the original, or make that path absolute first with set()."""
+        path = os.fspath(path)
+        if path.endswith(".json"):
+            text = json.dumps(self.to_dict(), indent=2) + "\n"
+        else:
+            text = self.to_toml()
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
 
     def _state(self):
         """What remakes this scene in another process: (text, source, absolute base
@@ -196,8 +255,10 @@ class Scene:
         return self._doc.control
 
     def __repr__(self):
+        title = f" {self.title!r}" if self.title else ""
         sets = "".join(f", {k}={v}" for k, v in self._overrides)
-        return f"<mdrsim.Scene {self.source!r}{sets}>"
+        return (f"<mdrsim.Scene {self.source!r}{title}: {self.profile} profile, {self.criterion}, "
+                f"{self.springs} springs{sets}>")
 
 
 def _scene_from_state(text, source, base_dir, overrides):

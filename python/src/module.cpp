@@ -6,6 +6,7 @@
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -19,6 +20,7 @@
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "python/src/interrupt_check.hpp"
 #include "python/src/python_parts.hpp"
 #include "python/src/python_sweep.hpp"
 #include "python/src/trajectory_recorder.hpp"
@@ -47,9 +49,11 @@ SceneHandle built(SceneDocument document) {
 struct ResultHandle {
   std::shared_ptr<const Scene> scene;
   RunResult result;
-  /// The recorded trajectory until its arrays take the columns over; null without one.
-  std::unique_ptr<TrajectoryColumns> columns;
-  py::object trajectory;  ///< the dict of arrays, made on first access
+  /// The recorded trajectory until its arrays are made; null without one.
+  std::unique_ptr<TrajectoryRows> rows;
+  py::object trajectory;                   ///< the dict of arrays, made on first access
+  std::uint64_t trajectory_rows_seen = 0;  ///< rows the run gave, held or not
+  std::uint64_t trajectory_stride = 1;     ///< 1, or the thinning of the ordinary rows
 };
 
 /// SPEC: messages are one line, as the command prints them.
@@ -61,19 +65,25 @@ std::string one_line(std::string text) {
   return text;
 }
 
-std::unique_ptr<ResultHandle> run(const SceneHandle& handle, bool trajectory) {
+/// `trajectory_rows`: the row budget of the trajectory (TrajectoryRecorder), none without one.
+std::unique_ptr<ResultHandle> run(const SceneHandle& handle,
+                                  std::optional<std::uint64_t> trajectory_rows) {
   auto out = std::make_unique<ResultHandle>();
   out->scene = handle.scene;
   std::optional<std::string> not_finite;
   {
+    const InterruptibleRun interruptible;
     py::gil_scoped_release release;
-    TrajectoryRecorder recorder;
+    TrajectoryRecorder recorder(trajectory_rows.value_or(1));
     ObserverList observers;
-    if (trajectory) observers.add(recorder);
+    if (trajectory_rows) observers.add(recorder);
     out->result = run_scene(*out->scene, observers);
     not_finite = first_not_finite(*out->scene, out->result);
-    if (trajectory)
-      out->columns = std::make_unique<TrajectoryColumns>(std::move(recorder.columns()));
+    if (trajectory_rows) {
+      out->rows = std::make_unique<TrajectoryRows>(recorder.take());
+      out->trajectory_rows_seen = out->rows->rows_seen;
+      out->trajectory_stride = out->rows->stride;
+    }
   }
   if (not_finite) {
     throw std::runtime_error(fmt::format(
@@ -158,7 +168,7 @@ void bind_scenes(py::module_& m) {
       .def_static(
           "from_text",
           [](const std::string& text, const std::string& source_name, const std::string& base_dir) {
-            return built(SceneDocument::from_text(text, source_name, base_dir));
+            return built(SceneDocument::from_scene_text(text, source_name, base_dir));
           },
           py::arg("text"), py::arg("source_name"), py::arg("base_dir"))
       .def(
@@ -171,6 +181,7 @@ void bind_scenes(py::module_& m) {
           py::arg("values"), "Overrides as (dotted key, TOML value text), checked like --set.")
       .def_property_readonly("source_name",
                              [](const SceneHandle& h) { return h.document.source_name(); })
+      .def("to_toml", [](const SceneHandle& h) { return h.document.to_toml(); })
       .def_property_readonly("title", [](const SceneHandle& h) { return h.scene->title; })
       .def_property_readonly("springs", [](const SceneHandle& h) { return h.scene->springs; })
       .def_property_readonly("material", [](const SceneHandle& h) { return h.scene->material; })
@@ -185,6 +196,7 @@ void bind_results(py::module_& m) {
   py::class_<ResultHandle>(m, "RunResult", "The engine's result of one run (internal).")
       .def_property_readonly("status",
                              [](const ResultHandle& r) { return to_string(r.result.status); })
+      .def_property_readonly("title", [](const ResultHandle& r) { return r.scene->title; })
       .def_property_readonly(
           "critical", [](const ResultHandle& r) { return optional_snapshot(r.result.critical); })
       .def_property_readonly("peak",
@@ -257,11 +269,15 @@ void bind_results(py::module_& m) {
                                d["basis"] = s->basis;
                                return d;
                              })
+      .def_readonly("trajectory_rows_seen", &ResultHandle::trajectory_rows_seen)
+      .def_readonly("trajectory_stride", &ResultHandle::trajectory_stride)
       .def("json", [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })
       .def("trajectory", [](ResultHandle& r) -> py::object {
-        if (!r.trajectory && r.columns) {
-          r.trajectory = take_trajectory(*r.columns);
-          r.columns.reset();
+        // Under the GIL throughout: another thread may ask for the same result's arrays.
+        if (!r.trajectory && r.rows) {
+          TrajectoryColumns columns = r.rows->columns();
+          r.rows.reset();
+          r.trajectory = take_trajectory(columns);
         }
         return r.trajectory ? r.trajectory : py::object(py::none());
       });
@@ -274,6 +290,7 @@ void bind_results(py::module_& m) {
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "The C++ engine of mdrsim; use the package mdrsim, not this module.";
+  mdrsim::python::remember_main_thread();
   // Never freed: a static py::object would be released after the interpreter is gone.
   static PyObject* scene_error =
       (new py::exception<mdrsim::SceneError>(m, "SceneError", PyExc_ValueError))->ptr();

@@ -8,12 +8,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "profiles/mdr_transform.hpp"
+#include "python/src/octave_image.hpp"
 
 namespace py = pybind11;
 
@@ -132,23 +134,20 @@ class PythonCriterion final : public DetachmentCriterion {
   Held<py::dict> kwargs_;      ///< the parameters' values
 };
 
-class PythonProfile final : public Profile {
+/// A registered shape with the scene's parameters: f(r), and g(x) by eq. 4 from f alone.
+class PythonShape {
  public:
-  PythonProfile(const PartSpec& spec, py::dict kwargs, std::optional<double> tip_radius)
-      : spec_(&spec), kwargs_(std::move(kwargs)), tip_radius_(tip_radius) {}
+  PythonShape(const PartSpec& spec, py::dict kwargs) : spec_(&spec), kwargs_(std::move(kwargs)) {}
 
-  double shape(double radius) const override {
-    py::gil_scoped_acquire gil;
-    return shape_held(radius);
+  /// f(r), the GIL held.
+  double shape_held(double radius) const {
+    return finite_number(call(spec_->first, kwargs(), radius), *spec_, "shape");
   }
 
-  double mdr_image(double x) const override {
+  /// Eq. 4 from f alone: f'(r) by a fourth-order central difference of f(|r|) (an
+  /// axisymmetric f is even), integrated by tanh-sinh (profiles/mdr_transform). Takes the GIL.
+  double image(double x) const {
     py::gil_scoped_acquire gil;
-    if (!spec_->second.is_none()) {
-      return finite_number(call(spec_->second, kwargs(), x), *spec_, "image");
-    }
-    // Eq. 4 from f alone: f'(r) by a fourth-order central difference of f(|r|) (an
-    // axisymmetric f is even), integrated by tanh-sinh (profiles/mdr_transform).
     const auto slope = [&](double r) {
       const double h = 1e-4 * std::max(r, 1e-3 * x);
       const auto f = [&](double at) { return shape_held(std::abs(at)); };
@@ -157,15 +156,58 @@ class PythonProfile final : public Profile {
     return mdr_transform(slope, x);
   }
 
+  const py::dict& kwargs() const { return kwargs_.get(); }
+  const PartSpec& spec() const { return *spec_; }
+
+ private:
+  const PartSpec* spec_;
+  Held<py::dict> kwargs_;
+};
+
+/// The image tables of the last few (profile, parameters) built: a sweep or with_values builds
+/// a scene per value from the same shape. Read and written with the GIL held.
+std::shared_ptr<const OctaveImage> shared_image(const std::shared_ptr<const PythonShape>& shape) {
+  static constexpr std::size_t kKept = 8;
+  struct Entry {
+    const PartSpec* spec;
+    std::string parameters;
+    std::shared_ptr<const OctaveImage> image;
+  };
+  static auto* cache = new std::vector<Entry>;  // never freed: see parts()
+  std::string parameters = py::repr(shape->kwargs());
+  for (const Entry& e : *cache) {
+    if (e.spec == &shape->spec() && e.parameters == parameters) return e.image;
+  }
+  auto image = std::make_shared<const OctaveImage>([shape](double x) { return shape->image(x); });
+  if (cache->size() == kKept) cache->erase(cache->begin());
+  cache->push_back({&shape->spec(), std::move(parameters), image});
+  return image;
+}
+
+class PythonProfile final : public Profile {
+ public:
+  PythonProfile(std::shared_ptr<const PythonShape> shape, std::optional<double> tip_radius)
+      : shape_(std::move(shape)), tip_radius_(tip_radius) {
+    if (shape_->spec().second.is_none()) image_table_ = shared_image(shape_);
+  }
+
+  double shape(double radius) const override {
+    py::gil_scoped_acquire gil;
+    return shape_->shape_held(radius);
+  }
+
+  double mdr_image(double x) const override {
+    if (image_table_) return (*image_table_)(x);
+    py::gil_scoped_acquire gil;
+    return finite_number(call(shape_->spec().second, shape_->kwargs(), x), shape_->spec(), "image");
+  }
+
   std::optional<double> jkr_scale_radius() const override { return tip_radius_; }
 
  private:
-  double shape_held(double radius) const {
-    return finite_number(call(spec_->first, kwargs(), radius), *spec_, "shape");
-  }
-  const py::dict& kwargs() const { return kwargs_.get(); }
-  const PartSpec* spec_;
-  Held<py::dict> kwargs_;
+  std::shared_ptr<const PythonShape> shape_;
+  /// Without an `image` callable: eq. 4, tabulated (octave_image.hpp).
+  std::shared_ptr<const OctaveImage> image_table_;
   std::optional<double> tip_radius_;  ///< [m]
 };
 
@@ -242,7 +284,8 @@ ProfileRegistry::Entry profile_entry(const PartSpec* spec) {
               const py::object r = call(spec->third, kwargs);
               if (!r.is_none()) tip = finite_number(r, *spec, "tip_radius");
             }
-            return std::make_unique<PythonProfile>(*spec, std::move(kwargs), tip);
+            return std::make_unique<PythonProfile>(
+                std::make_shared<const PythonShape>(*spec, std::move(kwargs)), tip);
           }};
 }
 

@@ -22,6 +22,7 @@
 #include "apps/vary_spec.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "python/src/interrupt_check.hpp"
 #include "python/src/python_parts.hpp"
 
 namespace py = pybind11;
@@ -60,7 +61,7 @@ class SweepPlan {
     for (const auto& [key, value] : overrides) sets.push_back(key + "=" + value);
     scene_hash_ = cli::scene_hash(text, sets);
     py::gil_scoped_release release;  // Python parts take the GIL back in their factories
-    base_.emplace(SceneDocument::from_text(text, source_name, base_dir));
+    base_.emplace(SceneDocument::from_scene_text(text, source_name, base_dir));
     for (const auto& [key, value] : overrides) base_->set_value(key, value);
     dimensionless_ = dimensionless ? *dimensionless : check_values(*base_, grid_, *registries_);
   }
@@ -94,6 +95,7 @@ class SweepPlan {
       throw py::index_error("SweepPlan.run_rows: rows beyond the grid");
     }
     std::vector<std::string> lines;
+    const InterruptibleRun interruptible;
     py::gil_scoped_release release;
     SceneDocument document = *base_;  // a copy re-parses: once per call, as once per worker
     for (std::uint64_t row = first; row < first + count; ++row) {

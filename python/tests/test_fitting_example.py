@@ -71,3 +71,31 @@ def test_notebook_runs_and_recovers_the_parameters(tmp_path, monkeypatch):
     assert text(nb.cells[-2]).strip() == "every parameter within tolerance"
     assert any("image/png" in o.get("data", {}) for c in nb.cells if c.cell_type == "code"
                for o in c.outputs), "the notebook draws its figure inline"
+
+
+def test_notebook_runs_on_its_own_kernel(tmp_path, monkeypatch):
+    """The notebook names the kernel "mdrsim", which `python -m mdrsim.kernel` makes for the
+    Python mdrsim is installed in (Debian's "python3" kernel does not see a venv)."""
+    pytest.importorskip("scipy", reason="the fitting example needs scipy (python3-scipy)")
+    nbformat = pytest.importorskip("nbformat", reason="needs nbformat (python3-nbformat)")
+    nbclient = pytest.importorskip("nbclient", reason="needs nbclient (python3-nbclient)")
+    pytest.importorskip("ipykernel", reason="needs ipykernel (python3-ipykernel)")
+    made = subprocess.run([sys.executable, "-m", "mdrsim.kernel", "--prefix", str(tmp_path)],
+                          capture_output=True, text=True)
+    assert made.returncode == 0, made.stderr
+    spec = json.loads((tmp_path / "share/jupyter/kernels/mdrsim/kernel.json").read_text())
+    assert spec["argv"][0] == sys.executable
+    monkeypatch.setenv("JUPYTER_PATH", str(tmp_path / "share" / "jupyter"))
+    monkeypatch.setenv("JUPYTER_RUNTIME_DIR", str(tmp_path / "runtime"))
+    monkeypatch.setenv("IPYTHONDIR", str(tmp_path / "ipython"))
+    monkeypatch.delenv("MPLBACKEND", raising=False)
+    # A kernel must find mdrsim without the environment of the process that starts it.
+    monkeypatch.delenv("PYTHONPATH", raising=False)
+
+    nb = nbformat.read(EXAMPLES / "fit_adhesion.ipynb", as_version=4)
+    assert nb.metadata.kernelspec.name == "mdrsim"
+    nb.cells.append(nbformat.v4.new_code_cell("import sys, mdrsim; print(sys.executable)"))
+    nbclient.NotebookClient(nb, timeout=120,
+                            resources={"metadata": {"path": str(tmp_path)}}).execute()
+    outputs = "".join(o.get("text", "") for o in nb.cells[-1].outputs)
+    assert outputs.split() == [sys.executable]

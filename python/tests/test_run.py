@@ -133,3 +133,24 @@ def test_set_log_level():
     mdrsim.set_log_level("off")
     with pytest.raises(ValueError, match="unknown log level 'loud'"):
         mdrsim.set_log_level("loud")
+
+
+def test_plot_frames_the_path_not_the_jumps_far_end():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    result = mdrsim.run(mdrsim.Scene.from_file(FIG2))
+    ax = result.plot()
+    # The path runs from the preload (d = 12 d0, F = 8.0 F0: the scene's 2 a0, eq. 18) to the
+    # critical point (d = -d0, F = -F0, eq. 19); the jump after it lands at d = -1e4 d0 (the
+    # last spring's reach), which is named at the frame's edge, not framed.
+    lo, hi = ax.get_xlim()
+    assert -2.0 < lo < -1.0 and 12.0 < hi < 13.0
+    lo, hi = ax.get_ylim()
+    assert -1.6 < lo < -1.0 and 8.0 < hi < 8.6
+    assert ax.get_xlabel() == "indentation d / d0" and ax.get_ylabel() == "normal force F / F0"
+    notes = [child.get_text() for child in ax.texts]
+    assert notes == ["to d = -1e+04 d0, F = 0 F0"]
+    assert ax.get_title().startswith("Fig. 2: JKR pull-off, fixed-load\ninstability")
+    plt.close(ax.figure)
