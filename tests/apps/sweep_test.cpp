@@ -234,7 +234,8 @@ TEST_F(Sweep, BadValuesFailBeforeTheCsvExists) {
                             "detachment.criterion=mode-mixed,stres", "--csv", csv})),
             2);
   EXPECT_EQ(err(),
-            "--vary: detachment.criterion: unknown 'stres' (known: deformation, mode-dependent, "
+            "--vary: detachment.criterion: unknown 'stres'; did you mean 'stress'? (known: "
+            "deformation, mode-dependent, "
             "mode-mixed, normal-only, stress)\n");
   EXPECT_FALSE(fs::exists(csv));
   // A long range checks its first, second and last values before any run.
