@@ -149,6 +149,9 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
 }  // namespace
 
 int run_command(const RunOptions& options) {
+  if (options.trajectory.empty() && options.trajectory_stride != 1) {
+    throw UsageError("--trajectory-stride: thins --trajectory, which is not given");
+  }
   if (options.json == "-" && options.trajectory == "-") {
     throw UsageError("--trajectory: cannot share standard output with --json -");
   }

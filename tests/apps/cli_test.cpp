@@ -600,6 +600,13 @@ TEST_F(Cli, FlagGivenTwiceTakesTheLater) {
   EXPECT_NE(s.err.find("sweep: 2 rows on 1 thread in"), std::string::npos) << s.err;
 }
 
+TEST_F(Cli, TrajectoryStrideWithoutTrajectory) {
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --trajectory-stride 10", scene_)),
+                        "--trajectory-stride: thins --trajectory, which is not given"));
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --trajectory-stride 0", scene_)),
+                        "--trajectory-stride: value 0 not in range 1 to 9223372036854775807"));
+}
+
 TEST_F(Cli, SweepThreadsFollowTheAffinityMask) {
   // As `taskset -c N` does: a mask of one CPU, which the command started from this thread
   // inherits. The default is then 1 thread however many the machine has.
