@@ -1,6 +1,7 @@
 // The known name a mistyped one most likely meant: the "did you mean" of unknown-key messages.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
