@@ -1,6 +1,7 @@
 // The subcommands of mdrsim: options as parsed, and the functions that carry them out.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -8,9 +9,10 @@ namespace mdrsim::cli {
 
 struct RunOptions {
   std::string scene;
-  std::vector<std::string> sets;  ///< KEY=VALUE
-  std::string json;               ///< path, "-" or empty (print a summary)
-  std::string trajectory;         ///< CSV path or empty
+  std::vector<std::string> sets;       ///< KEY=VALUE
+  std::string json;                    ///< path, "-" or empty (print a summary)
+  std::string trajectory;              ///< CSV path or empty
+  std::int64_t trajectory_stride = 1;  ///< every K-th ordinary row (trajectory_stride.hpp)
 };
 
 struct SweepOptions {

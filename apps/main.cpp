@@ -7,16 +7,18 @@
 
 #include <cctype>
 #include <csignal>
+#include <cstdint>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <utility>
 
 #include "apps/commands.hpp"
 #include "apps/run_label.hpp"
 #include "apps/usage_error.hpp"
+#include "engine/base/available_cpus.hpp"
 #include "engine/events/program_version.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
@@ -131,11 +133,16 @@ int main(int argc, char** argv) {
   run_app->add_option("--json", run.json,
                       "write the JSON result to PATH, or - for standard output");
   run_app->add_option("--trajectory", run.trajectory, "write one CSV row per event to PATH");
+  run_app
+      ->add_option("--trajectory-stride", run.trajectory_stride,
+                   "write every K-th ordinary event row of --trajectory (stage ends, jumps, the "
+                   "critical state and a cascade's first and last rows always; default 1)")
+      ->check(CLI::Range(std::int64_t{1}, std::numeric_limits<std::int64_t>::max()));
   run_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 
   mdrsim::cli::SweepOptions sweep;
-  sweep.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  sweep.threads = mdrsim::available_cpus();
   CLI::App* sweep_app =
       app.add_subcommand("sweep", "one run per row of a grid of scene values, as CSV");
   sweep_app->add_option("scene", sweep.scene, "scene file (TOML)")->required();
@@ -148,7 +155,9 @@ int main(int argc, char** argv) {
   sweep_app->add_option("--set", sweep.sets, "override one scene value: KEY=VALUE (repeatable)")
       ->allow_extra_args(false);
   sweep_app->add_option("--csv", sweep.csv, "write the CSV to PATH, or - (default)");
-  sweep_app->add_option("--threads", sweep.threads, "runs in parallel (default: all cores)")
+  sweep_app
+      ->add_option("--threads", sweep.threads,
+                   "runs in parallel (default: the CPUs this process may use)")
       ->check(CLI::Range(1, 1024));
   sweep_app->add_option("--shard", sweep.shard, "I/N: run rows I, I+N, I+2N, ... of the sweep");
   sweep_app->add_flag("--resume", sweep.resume,
@@ -165,6 +174,16 @@ int main(int argc, char** argv) {
       ->required();
   merge_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
+
+  // A single-valued option given twice takes the later value, as users expect of a command
+  // line they append to (CLI11 refuses it by default); --set and --vary collect every one.
+  for (CLI::App* sub : {run_app, sweep_app, merge_app}) {
+    for (CLI::Option* option : sub->get_options()) {
+      if (option->get_expected_max() == 1 && !option->get_positional()) {
+        option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+      }
+    }
+  }
 
   CLI::App* list_app =
       app.add_subcommand("list", "the registered profiles, criteria and controllers, with keys");

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,8 @@
 #include "apps/interrupt_cleanup.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
+#include "apps/trajectory_estimate.hpp"
+#include "apps/trajectory_stride.hpp"
 #include "apps/usage_error.hpp"
 #include "engine/events/log_observer.hpp"
 #include "engine/events/result_json.hpp"
@@ -151,6 +154,9 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
 }  // namespace
 
 int run_command(const RunOptions& options) {
+  if (options.trajectory.empty() && options.trajectory_stride != 1) {
+    throw UsageError("--trajectory-stride: thins --trajectory, which is not given");
+  }
   if (options.json == "-" && options.trajectory == "-") {
     throw UsageError("--trajectory: cannot share standard output with --json -");
   }
@@ -165,17 +171,23 @@ int run_command(const RunOptions& options) {
   if (!options.json.empty()) json_file.emplace("--json", options.json);
   std::optional<OutputFile> trajectory_file;
   std::unique_ptr<TrajectoryCsvWriter> trajectory;
+  std::unique_ptr<TrajectoryStride> stride;
   ObserverList observers;
   LogObserver log;
   observers.add(log);
   if (!options.trajectory.empty()) {
     trajectory_file.emplace("--trajectory", options.trajectory);
     trajectory = std::make_unique<TrajectoryCsvWriter>(trajectory_file->stream());
-    observers.add(*trajectory);
+    stride = std::make_unique<TrajectoryStride>(*trajectory, options.trajectory_stride);
+    observers.add(*stride);
+    if (const auto warning = large_trajectory_warning(scene, options.trajectory_stride)) {
+      spdlog::warn("{}", *warning);
+    }
   }
 
   const RunResult result = run_scene(scene, observers);
   require_finite(scene, result);
+  if (stride) stride->finish();
 
   if (trajectory_file) trajectory_file->commit();
   if (json_file) {

@@ -30,20 +30,38 @@ def read_rows(path):
 
 
 def stage_segments(rows):
-    """The path per stage in order: (name, [(d, F, ux, Fx, is_jump)]). Rows inside a cascade
+    """The path per stage in order: (name, [(d, F, ux, Fx, is_jump, after_jump)]). Rows inside a cascade
     (in_cascade = 1) are not equilibria and are left out; a `jump` row is the state after the
     cascade, reached from the point before it without passing through equilibria."""
     stages = []
+    previous = None
     for r in rows:
         if r["in_cascade"] == "1" or r["event"] in ("instability", "finished"):
             continue
-        point = (float(r["indentation"]), float(r["normal_force"]),
-                 float(r["tangential_displacement"]), float(r["tangential_force"]),
-                 r["event"] == "jump")
+        state = (float(r["indentation"]), float(r["normal_force"]),
+                 float(r["tangential_displacement"]), float(r["tangential_force"]))
+        # p[5]: the state a jump left, also as the stage end that repeats it (not an
+        # equilibrium the loading passed through: left out of the axis limits).
+        jumped = r["event"] == "jump" or (previous is not None and previous[5]
+                                          and previous[:4] == state)
+        point = state + (r["event"] == "jump", jumped)
+        previous = point
         if not stages or stages[-1][0] != r["stage"]:
             stages.append((r["stage"], []))
         stages[-1][1].append(point)
     return stages
+
+
+def equilibrium_limits(stages, i):
+    """The range of coordinate i over the equilibria (not the states after jumps), with a
+    margin: a jump off the contact under fixed load ends wherever the runaway stopped
+    (millimetres away, or anywhere), which would squash every loop into a vertical line."""
+    values = [p[i] for _, points in stages for p in points if not p[5]]
+    if not values:
+        return None
+    lo, hi = min(values), max(values)
+    pad = 0.05 * (hi - lo) if hi > lo else (abs(hi) * 0.05 or 1e-12)
+    return lo - pad, hi + pad
 
 
 def draw(ax, stages, xi, yi, xlabel, ylabel):
@@ -66,6 +84,11 @@ def draw(ax, stages, xi, yi, xlabel, ylabel):
             ax.plot(xs, ys, color=colour, lw=1.4, label=None if labelled else name)
         if points:
             last = points[-1]
+    # Zero stays in view (the force axis crosses it); jumps that leave the frame are clipped.
+    for limits, setter, values in ((equilibrium_limits(stages, xi), ax.set_xlim, 0),
+                                   (equilibrium_limits(stages, yi), ax.set_ylim, 0)):
+        if limits is not None:
+            setter(min(limits[0], values), max(limits[1], values))
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.axhline(0.0, color="grey", lw=0.5)
@@ -87,8 +110,9 @@ def main():
     stages = stage_segments(rows)
     # The tangential panel only where the program moves that axis.
     sheared = any(p[2] != 0.0 or p[3] != 0.0 for _, points in stages for p in points)
-    fig, axes = plt.subplots(1, 2 if sheared else 1, figsize=(11 if sheared else 6, 4.2),
-                             squeeze=False)
+    # Constrained layout keeps the right panel's axis label clear of the left panel.
+    fig, axes = plt.subplots(1, 2 if sheared else 1, figsize=(12 if sheared else 6, 4.6),
+                             squeeze=False, constrained_layout=True)
     draw(axes[0][0], stages, 0, 1, "indentation d [m]", "normal force F [N]")
     if sheared:
         draw(axes[0][1], stages, 2, 3, "tangential displacement u_x [m]",

@@ -8,6 +8,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "engine/scene/embedded_table.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
@@ -125,8 +126,10 @@ toml::table json_scene_table(std::string_view text, const std::string& source_na
       throw SceneError(
           fmt::format("{}: scene: expected an object (the scene of a result)", source_name));
     }
+    use_embedded_table(*scene, source_name);
     return convert_object(*scene, "", source_name, 1);
   }
+  use_embedded_table(document, source_name);
   return convert_object(document, "", source_name, 1);
 }
 

@@ -12,6 +12,7 @@
 
 #include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/preload.hpp"
+#include "engine/scene/embedded_table.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -308,6 +309,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     const auto* entry = registries.profiles.find(scene.profile_name);
     const ParameterValues values = profile.read_all(entry->parameters);
     scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
+    // The result's scene carries the table, so that it reruns after the CSV moved.
+    if (scene.profile_name == "tabulated" && values.has("file")) {
+      embed_profile_table((*resolved)["profile"], values.text("file"));
+    }
   }
   profile.finish();
 

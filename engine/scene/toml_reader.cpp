@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "engine/base/nearest_name.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
@@ -137,11 +138,10 @@ void TomlReader::fail_unknown(const toml::key& key, const toml::node& node) cons
   known.insert(asked_.begin(), asked_.end());
   // A key inserted by --set has no source of its own; its value does.
   const std::string location = key.source().begin.line != 0 ? where(key.source()) : where(node);
+  const std::vector<std::string> names(known.begin(), known.end());
   throw SceneError(fmt::format(
-      "{} {}: unknown key{}", location, key_path(key.str()),
-      known.empty() ? std::string()
-                    : fmt::format(" (known: {})",
-                                  join(std::vector<std::string>(known.begin(), known.end())))));
+      "{} {}: unknown key{}{}", location, key_path(key.str()), did_you_mean(key.str(), names),
+      names.empty() ? std::string() : fmt::format(" (known: {})", join(names))));
 }
 
 const toml::node* TomlReader::find(std::string_view key) {
@@ -294,7 +294,8 @@ std::string TomlReader::name(std::string_view key, const std::vector<std::string
   }
   const std::string& given = std::get<std::string>(*v);
   if (std::find(known.begin(), known.end(), given) == known.end()) {
-    fail_at(key, fmt::format("unknown '{}' (known: {})", printable(given), join(known)));
+    fail_at(key, fmt::format("unknown '{}'{} (known: {})", printable(given),
+                             did_you_mean(given, known), join(known)));
   }
   return given;
 }

@@ -5,7 +5,6 @@ import collections
 import logging
 import math
 import numbers
-import os
 import threading
 import time
 import uuid
@@ -192,8 +191,8 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1):
     command's own parser ("0:1e-5:41", "1e2:1e6:9:log", "mode-mixed,stress"), or a list of
     numbers and names (a str item is read as the command reads one: "2" is the number 2).
     executor: any concurrent.futures.Executor (a Dask cluster: Client.get_executor()); None
-    runs the rows on a ThreadPoolExecutor of os.cpu_count() threads, as the command runs
-    --threads all cores.
+    runs the rows on a ThreadPoolExecutor of one thread per CPU this process may use (its
+    affinity mask: taskset, a SLURM allocation), as the command's --threads default.
 
     Every value is checked before any run, as the command checks it: a bad key or value
     raises SceneError with the command's message. Row 0 then runs in the calling thread,
@@ -230,7 +229,7 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1):
 
     own = executor is None
     if own:
-        executor = ThreadPoolExecutor(os.cpu_count() or 1, thread_name_prefix="mdrsim-sweep")
+        executor = ThreadPoolExecutor(_core.available_cpus(), thread_name_prefix="mdrsim-sweep")
     pending = collections.deque()
     progress = _core.SweepProgress(rows, _PROGRESS_SECONDS)
 

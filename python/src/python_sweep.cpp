@@ -20,6 +20,7 @@
 #include "apps/sweep_rows.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/vary_spec.hpp"
+#include "engine/base/available_cpus.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "python/src/interrupt_check.hpp"
@@ -115,6 +116,9 @@ class SweepPlan {
 }  // namespace
 
 void bind_sweep(py::module_& m) {
+  m.def("available_cpus", &available_cpus,
+        "The CPUs this process may run on (its affinity mask): sweep()'s default thread count, "
+        "as `mdrsim sweep` takes it.");
   py::class_<SweepPlan>(m, "SweepPlan",
                         "The rows of a sweep, as `mdrsim sweep` makes them (internal).")
       .def(py::init<const std::string&, const std::string&, const std::string&, const Overrides&,

@@ -87,7 +87,8 @@ BAD = [
     pytest.param(FIG2, {"material.poisson_ratio": 0.7},
                  "--set: material.poisson_ratio = 0.7 is outside (-1, 0.5]", id="bad-value"),
     pytest.param(FIG2, {"material.poisson": 0.3},
-                 "--set: material.poisson: unknown key (known: approach_work_of_adhesion, "
+                 "--set: material.poisson: unknown key; did you mean 'poisson_ratio'? "
+                 "(known: approach_work_of_adhesion, "
                  "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
                  "youngs_modulus)", id="bad-key"),
     pytest.param(FIG2, {"loading.stage.2.normal.by": 1e-6},
@@ -127,7 +128,8 @@ def test_bad_key_in_a_file_names_its_line():
     with pytest.raises(mdrsim.SceneError) as caught:
         mdrsim.Scene.from_toml(text, name="typo.toml")
     assert str(caught.value) == (
-        "typo.toml:8:1: material.poisson_rate: unknown key (known: approach_work_of_adhesion, "
+        "typo.toml:8:1: material.poisson_rate: unknown key; did you mean 'poisson_ratio'? "
+        "(known: approach_work_of_adhesion, "
         "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
         "youngs_modulus)")
 

@@ -2,6 +2,7 @@
 // no output file left behind; and on good input: exit 0, clean JSON on stdout, help texts.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sched.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -184,8 +185,11 @@ TEST_F(Cli, TypoInAKey) {
   const std::string scene = bad_scene("youngs_modulus", "youngs_modulu");
   const std::string json = path("out.json");
   const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
-  EXPECT_TRUE(bad_input(r, fmt::format("{}:2:1: material.youngs_modulu: unknown key (known: {})",
-                                       scene, kMaterialKeys)));
+  EXPECT_TRUE(bad_input(
+      r,
+      fmt::format(
+          "{}:2:1: material.youngs_modulu: unknown key; did you mean 'youngs_modulus'? (known: {})",
+          scene, kMaterialKeys)));
   EXPECT_TRUE(nothing_at(json));
 }
 
@@ -233,7 +237,10 @@ TEST_F(Cli, NewlineInAValueStaysOnOneLine) {
   }
   const auto r = run_mdrsim("run " + scene);
   EXPECT_TRUE(bad_input(
-      r, fmt::format(R"({}:6:8: profile.type: unknown 'para\nbolic' (known: {}))", scene, known)));
+      r,
+      fmt::format(
+          R"({}:6:8: profile.type: unknown 'para\nbolic'; did you mean 'parabolic'? (known: {}))",
+          scene, known)));
 }
 
 TEST_F(Cli, SceneFileThatIsADanglingLink) {
@@ -316,8 +323,10 @@ TEST_F(Cli, SetUnknownKey) {
   const std::string json = path("out.json");
   const auto r =
       run_mdrsim(fmt::format("run {} --set material.poisson=0.3 --json {}", scene_, json));
-  EXPECT_TRUE(
-      bad_input(r, fmt::format("--set: material.poisson: unknown key (known: {})", kMaterialKeys)));
+  EXPECT_TRUE(bad_input(
+      r,
+      fmt::format("--set: material.poisson: unknown key; did you mean 'poisson_ratio'? (known: {})",
+                  kMaterialKeys)));
   EXPECT_TRUE(nothing_at(json));
 }
 
@@ -377,15 +386,19 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
        "0.05 }",
        "--set: material.effective_shear_modulus = -1 is outside (0, inf)"},
       {"material.youngs_modulu=1",
-       fmt::format("--set: material.youngs_modulu: unknown key (known: {})", kMaterialKeys)},
+       fmt::format(
+           "--set: material.youngs_modulu: unknown key; did you mean 'youngs_modulus'? (known: {})",
+           kMaterialKeys)},
       {"profile.type=3", "--set: profile.type: expected a string, got 3"},
       {"profile.type=cone2",
-       fmt::format("--set: profile.type: unknown 'cone2' (known: {})", profiles)},
+       fmt::format("--set: profile.type: unknown 'cone2'; did you mean 'cone'? (known: {})",
+                   profiles)},
       {"profile={ radius = 0.01 }",
        fmt::format("--set: profile.type: missing, expected a string (one of: {})", profiles)},
       {"profile.radius=[1]", "--set: profile.radius: expected a number, got an array"},
       {"profile.radius=0", "--set: profile.radius = 0 is outside (0, inf)"},
-      {"profile.radus=1", "--set: profile.radus: unknown key (known: radius, type)"},
+      {"profile.radus=1",
+       "--set: profile.radus: unknown key; did you mean 'radius'? (known: radius, type)"},
       {"loading.x=1", "--set: loading.x: unknown key (known: normal, preload, tangential)"},
       {"loading.preload={}",
        "--set: loading.preload: give exactly one of depth [m], force [N] or contact_radius [m]"},
@@ -429,7 +442,9 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
        "--set: loading.normal.x: unknown key (known: control, stiffness)"},
       {"detachment.criterion=2", "--set: detachment.criterion: expected a string, got 2"},
       {"detachment.criterion=stres",
-       fmt::format("--set: detachment.criterion: unknown 'stres' (known: {})", criteria)},
+       fmt::format(
+           "--set: detachment.criterion: unknown 'stres'; did you mean 'stress'? (known: {})",
+           criteria)},
       {"detachment.x=1", "--set: detachment.x: unknown key (known: criterion)"},
       {"detachment={ criterion = \"mode-dependent\" }",
        "--set: detachment.lambda: missing, expected a number (mode sensitivity: 0 = "
@@ -448,7 +463,8 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
       {"discretization.x=1",
        "--set: discretization.x: unknown key (known: extrapolation, rtol, springs)"},
       {"solver.method=1", "--set: solver.method: expected a string, got 1"},
-      {"solver.method=events", "--set: solver.method: unknown 'events' (known: event, stepping)"},
+      {"solver.method=events",
+       "--set: solver.method: unknown 'events'; did you mean 'event'? (known: event, stepping)"},
       {"solver={ method = \"stepping\", step = \"s\" }",
        R"(--set: solver.step: expected a number, got string "s")"},
       {"solver={ method = \"stepping\", step = 0 }", "--set: solver.step = 0 is outside (0, inf)"},
@@ -498,9 +514,11 @@ TEST_F(Cli, VaryBadSpecs) {
   EXPECT_TRUE(bad_input(sweep("material.poisson_ratio=0:0.3:2.5"),
                         "--vary: material.poisson_ratio: COUNT '2.5' is not a whole number from "
                         "1 to 1000000"));
-  EXPECT_TRUE(
-      bad_input(sweep("material.poisson=0:0.3:2"),
-                fmt::format("--vary: material.poisson: unknown key (known: {})", kMaterialKeys)));
+  EXPECT_TRUE(bad_input(
+      sweep("material.poisson=0:0.3:2"),
+      fmt::format(
+          "--vary: material.poisson: unknown key; did you mean 'poisson_ratio'? (known: {})",
+          kMaterialKeys)));
   EXPECT_TRUE(bad_input(sweep("material..poisson_ratio=0:0.3:2"),
                         "--vary: 'material..poisson_ratio' is not a dotted scene key like "
                         "material.poisson_ratio"));
@@ -560,9 +578,57 @@ TEST_F(Cli, MissingOrUnknownSubcommand) {
   EXPECT_TRUE(bad_input(run_mdrsim("run"), "mdrsim: scene is required"));
 }
 
-TEST_F(Cli, FlagGivenTwiceOrWithoutValue) {
-  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --json a.json --json b.json", scene_)),
-                        "--json: at most 1 required but received 2"));
+TEST_F(Cli, FlagGivenTwiceTakesTheLater) {
+  // Every single-valued option of run and sweep: a command line appended to overrides.
+  const auto r = run_mdrsim(fmt::format(
+      "run {} --json {} --json {} --trajectory {} --trajectory {} --trajectory-stride 1 "
+      "--trajectory-stride 2 --log-level off --log-level error",
+      scene_, path("a.json"), path("b.json"), path("a.csv"), path("b.csv")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(nothing_at(path("a.json")));
+  EXPECT_TRUE(nothing_at(path("a.csv")));
+  EXPECT_TRUE(fs::exists(path("b.json")));
+  EXPECT_TRUE(fs::exists(path("b.csv")));
+  const auto s = run_mdrsim(
+      fmt::format("sweep {} --vary material.poisson_ratio=0,0.3 --csv {} --csv {} --threads 1024 "
+                  "--threads 1 --shard 1/2 --shard 0/1 --log-level off --log-level info",
+                  scene_, path("a.csv"), path("c.csv")));
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  EXPECT_TRUE(nothing_at(path("a.csv")));
+  EXPECT_TRUE(fs::exists(path("c.csv")));
+  // The later --threads (1) and --shard (0/1: both rows) and --log-level (info) won.
+  EXPECT_NE(s.err.find("sweep: 2 rows on 1 thread in"), std::string::npos) << s.err;
+}
+
+TEST_F(Cli, TrajectoryStrideWithoutTrajectory) {
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --trajectory-stride 10", scene_)),
+                        "--trajectory-stride: thins --trajectory, which is not given"));
+  EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --trajectory-stride 0", scene_)),
+                        "--trajectory-stride: value 0 not in range 1 to 9223372036854775807"));
+}
+
+TEST_F(Cli, SweepThreadsFollowTheAffinityMask) {
+  // As `taskset -c N` does: a mask of one CPU, which the command started from this thread
+  // inherits. The default is then 1 thread however many the machine has.
+  CommandResult r{};
+  std::thread([&] {
+    cpu_set_t mask;
+    CPU_ZERO(&mask);
+    ASSERT_EQ(sched_getaffinity(0, sizeof mask, &mask), 0);
+    int first = 0;
+    while (first < CPU_SETSIZE && !CPU_ISSET(first, &mask)) ++first;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(first, &one);
+    ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+    r = run_mdrsim(fmt::format("sweep {} --vary material.poisson_ratio=0,0.3 --csv {}", scene_,
+                               path("out.csv")));
+  }).join();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("sweep: 2 rows on 1 thread in"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, FlagWithoutValue) {
   EXPECT_TRUE(bad_input(run_mdrsim(fmt::format("run {} --log-level", scene_)),
                         "--log-level: 1 required TEXT:{trace,debug,info,warn,error,off} missing"));
 }

@@ -91,6 +91,28 @@ TEST_F(Provenance, TabulatedFilesAreAbsolute) {
   EXPECT_TRUE(fs::equivalent(file, fs::path(MDRSIM_SOURCE_DIR) / "scenes/tabulated_cone.csv"));
 }
 
+TEST_F(Provenance, ATabulatedResultRerunsAfterItsCsvIsGone) {
+  // The result's scene embeds the table: moving or deleting the CSV does not stop a rerun.
+  fs::copy_file(fs::path(MDRSIM_SOURCE_DIR) / "scenes/tabulated_cone.csv", path("t.csv"));
+  std::ifstream in(fs::path(MDRSIM_SOURCE_DIR) / "scenes/tabulated_cone_fixed_load.toml");
+  std::string text(std::istreambuf_iterator<char>(in), {});
+  const std::string file = "file = \"tabulated_cone.csv\"";
+  text.replace(text.find(file), file.size(), "file = \"t.csv\"");
+  std::ofstream(path("scene.toml")) << text;
+  const nlohmann::json first = run(path("scene.toml"), "r.json");
+  EXPECT_EQ(first["scene"]["profile"]["table"]["r"].size(), 51u);  // the CSV's 51 points
+  fs::remove(path("t.csv"));
+  const auto r = run_mdrsim(
+      fmt::format("run {} --json {} --log-level warn", path("r.json"), path("again.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, fmt::format("[warning] {}: profile.file '{}' is gone; running the table "
+                               "embedded in the result\n",
+                               path("r.json"), path("t.csv")));
+  const nlohmann::json again = read_json(path("again.json"));
+  EXPECT_EQ(again["critical"], first["critical"]);
+  EXPECT_EQ(again["peak_adhesion"], first["peak_adhesion"]);
+}
+
 // Acceptance 2: the scene of r.json run again gives identical numbers, from the result file
 // itself and from its scene alone, for shorthand scenes (one under --set, one with a table
 // file) and loading programs.

@@ -234,7 +234,8 @@ TEST_F(Sweep, BadValuesFailBeforeTheCsvExists) {
                             "detachment.criterion=mode-mixed,stres", "--csv", csv})),
             2);
   EXPECT_EQ(err(),
-            "--vary: detachment.criterion: unknown 'stres' (known: deformation, mode-dependent, "
+            "--vary: detachment.criterion: unknown 'stres'; did you mean 'stress'? (known: "
+            "deformation, mode-dependent, "
             "mode-mixed, normal-only, stress)\n");
   EXPECT_FALSE(fs::exists(csv));
   // A long range checks its first, second and last values before any run.
@@ -351,6 +352,67 @@ TEST_F(Sweep, SlurmScriptRunsOneShardPerArrayTaskAndMerges) {
                    "SLURM_ARRAY_TASK_MAX=2",
                    fmt::format("shard '{}' '{}' {}", out, scene_, grid)),
             0);
+}
+
+TEST_F(Sweep, SlurmScriptFromAnyFolderWithJobOptionsNeverWaitsOnAMissingShard) {
+  // From a folder other than the repository, with the installed mdrsim (on PATH, no MDRSIM)
+  // and sbatch stubbed: it logs its arguments and the MDRSIM the jobs get, and says job 4242.
+  const std::string bin = path("bin");
+  fs::create_directories(bin);
+  fs::create_symlink(MDRSIM_BINARY, bin + "/mdrsim");
+  std::ofstream(bin + "/sbatch") << "#!/bin/sh\necho \"MDRSIM=$MDRSIM $*\" >>'"
+                                 << path("sbatch.log") << "'\necho 4242\n";
+  fs::permissions(bin + "/sbatch", fs::perms::owner_all);
+  const std::string grid = "--vary material.poisson_ratio=0:0.45:5";
+  const auto script = [&](const std::string& env, const std::string& args) {
+    return std::system(fmt::format("cd '{}' && env -u MDRSIM PATH='{}':\"$PATH\" {} bash '{}' {} "
+                                   ">'{}' 2>&1 </dev/null",
+                                   dir_, bin, env, MDRSIM_SOURCE_DIR "/scripts/slurm_sweep.sh",
+                                   args, path("slurm.log"))
+                           .c_str());
+  };
+  ASSERT_EQ(script("", fmt::format("submit --account=acct --time=4:00:00 2 out.csv '{}' {}", scene_,
+                                   grid)),
+            0)
+      << slurp(path("slurm.log"));
+  const std::string mdrsim = fs::canonical(MDRSIM_BINARY).string();
+  EXPECT_EQ(lines_of(slurp(path("sbatch.log"))),
+            (std::vector<std::string>{
+                fmt::format("MDRSIM={} --parsable --account=acct --time=4:00:00 --array=0-1 {} "
+                            "shard out.csv {} {}",
+                            mdrsim, MDRSIM_SOURCE_DIR "/scripts/slurm_sweep.sh", scene_, grid),
+                fmt::format("MDRSIM={} --account=acct --time=4:00:00 --dependency=afterany:4242 "
+                            "--job-name=mdrsim-merge --cpus-per-task=1 {} merge out.csv 2",
+                            mdrsim, MDRSIM_SOURCE_DIR "/scripts/slurm_sweep.sh")}));
+  // Task 1 of 2 ran out of time before it wrote anything: the merge names it and stops.
+  ASSERT_EQ(script("SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=2",
+                   fmt::format("shard out.csv '{}' {} --log-level off", scene_, grid)),
+            0)
+      << slurp(path("slurm.log"));
+  const int status = script("", "merge out.csv 2");
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1) << slurp(path("slurm.log"));
+  EXPECT_NE(
+      slurp(path("slurm.log")).find("1 of 2 shards have no CSV (out.shard-I-of-2.csv for I = 1)"),
+      std::string::npos)
+      << slurp(path("slurm.log"));
+  EXPECT_FALSE(fs::exists(path("out.csv")));
+  // A shard cut short (a task killed at its time limit): mdrsim merge names it.
+  ASSERT_EQ(script("SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=2",
+                   fmt::format("shard out.csv '{}' {} --log-level off", scene_, grid)),
+            0);
+  const std::string shard = path("out.shard-1-of-2.csv");
+  const std::string text = slurp(shard);
+  std::ofstream(shard, std::ios::trunc) << text.substr(0, text.rfind('\n', text.size() - 2) + 1);
+  EXPECT_NE(script("", "merge out.csv 2"), 0);
+  EXPECT_NE(slurp(path("slurm.log")).find("(shard 1/2) has 1 of its 2 rows"), std::string::npos)
+      << slurp(path("slurm.log"));
+  // Finished again (--resume), the merge goes through.
+  ASSERT_EQ(script("SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=2",
+                   fmt::format("shard out.csv '{}' {} --log-level off", scene_, grid)),
+            0);
+  EXPECT_EQ(script("", "merge out.csv 2"), 0) << slurp(path("slurm.log"));
+  EXPECT_EQ(lines_of(slurp(path("out.csv"))).size(), 7u);  // identity, header, 5 rows
 }
 
 TEST_F(Sweep, MoreShardsThanRowsLeaveSomeEmpty) {

@@ -271,7 +271,8 @@ std::vector<BadProgram> material_and_loading_cases() {
       {"NormalBeforeStages", "rebinding = true\n", "normal = { control = \"fixed-load\" }\n",
        fmt::format("scene.toml:11:10: loading.normal: {}", kNotBoth)},
       {"LoadingTypo", "rebinding = true", "rebind = true",
-       "scene.toml:11:1: loading.rebind: unknown key (known: rebinding, stage)"},
+       "scene.toml:11:1: loading.rebind: unknown key; did you mean 'rebinding'? (known: rebinding, "
+       "stage)"},
       {"RebindingNotABoolean", "rebinding = true", "rebinding = 1",
        "scene.toml:11:13: loading.rebinding: expected true or false, got 1"},
       {"RebindingString", "rebinding = true", "rebinding = \"yes\"",
@@ -296,7 +297,8 @@ INSTANTIATE_TEST_SUITE_P(MaterialAndLoading, BadProgramTest,
 std::vector<BadProgram> stage_cases() {
   return {
       {"StageKeyTypo", "name = \"approach\"", "nmae = \"approach\"",
-       "scene.toml:13:1: loading.stage.1.nmae: unknown key (known: name, normal, tangential, "
+       "scene.toml:13:1: loading.stage.1.nmae: unknown key; did you mean 'name'? (known: name, "
+       "normal, tangential, "
        "until)"},
       {"NameWithSpace", "name = \"shear\"", "name = \"pure shear\"",
        "scene.toml:16:8: loading.stage.2.name: \"pure shear\" is not a stage name: give letters, "
@@ -316,13 +318,15 @@ std::vector<BadProgram> stage_cases() {
       {"AxisNotATable", "tangential = { by = 4.0e-6 }", "tangential = 4.0e-6",
        "scene.toml:18:14: loading.stage.2.tangential: expected a table, got 4e-06"},
       {"AxisKeyTypo", "tangential = { by = 4.0e-6 }", "tangential = { bye = 4.0e-6 }",
-       "scene.toml:18:16: loading.stage.2.tangential.bye: unknown key (known: by, control, to)"},
+       "scene.toml:18:16: loading.stage.2.tangential.bye: unknown key; did you mean 'by'? (known: "
+       "by, control, to)"},
       {"ShorthandKeyInAStage", "tangential = { by = 4.0e-6 }",
        "tangential = { displacement = 4.0e-6 }",
        "scene.toml:18:16: loading.stage.2.tangential.displacement: unknown key (known: by, "
        "control, to)"},
       {"ControlUnknown", "control = \"fixed-grips\", to", "control = \"fixed-grip\", to",
-       fmt::format("scene.toml:14:22: loading.stage.1.normal.control: unknown 'fixed-grip' "
+       fmt::format("scene.toml:14:22: loading.stage.1.normal.control: unknown 'fixed-grip'; did "
+                   "you mean 'fixed-grips'? "
                    "(known: {})",
                    controllers())},
       {"StiffnessOfAnotherControl", "control = \"fixed-grips\", to = 2.0e-5",

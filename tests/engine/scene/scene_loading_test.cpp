@@ -125,9 +125,11 @@ std::vector<BadScene> root_cases() {
       {"TitleTable", R"(title = "test scene")", "title = { text = \"a\" }",
        "test.toml:1:9: title: expected a string, got a table"},
       {"TitleTypo", R"(title = "test scene")", R"(tittle = "test scene")",
-       fmt::format("test.toml:1:1: tittle: unknown key (known: {})", kRootKeys)},
+       fmt::format("test.toml:1:1: tittle: unknown key; did you mean 'title'? (known: {})",
+                   kRootKeys)},
       {"UnknownTopLevelTable", "[solver]", "[solvr]",
-       fmt::format("test.toml:17:2: solvr: unknown key (known: {})", kRootKeys)},
+       fmt::format("test.toml:17:2: solvr: unknown key; did you mean 'solver'? (known: {})",
+                   kRootKeys)},
       {"KeyWithNewlineIsEscaped", R"(title = "test scene")", R"("a\nb" = 1)",
        fmt::format("test.toml:1:1: a\\nb: unknown key (known: {})", kRootKeys)},
       {"MissingMaterial",
@@ -177,7 +179,8 @@ std::vector<BadScene> material_cases() {
       {"YoungsModulusMinusInf", "youngs_modulus = 1.0e6", "youngs_modulus = -inf",
        "test.toml:3:18: material.youngs_modulus = -inf is not a finite number"},
       {"YoungsModulusTypo", "youngs_modulus = 1.0e6", "youngs_modulu = 1.0e6",
-       fmt::format("test.toml:3:1: material.youngs_modulu: unknown key (known: {})",
+       fmt::format("test.toml:3:1: material.youngs_modulu: unknown key; did you mean "
+                   "'youngs_modulus'? (known: {})",
                    kMaterialKeys)},
       {"PoissonRatioAboveHalf", "poisson_ratio = 0.0", "poisson_ratio = 0.7",
        "test.toml:4:17: material.poisson_ratio = 0.7 is outside (-1, 0.5]"},
@@ -191,7 +194,9 @@ std::vector<BadScene> material_cases() {
        "test.toml:2:1: material.poisson_ratio: missing, expected a number (Poisson's ratio nu in "
        "(-1, 0.5])"},
       {"PoissonRatioTypo", "poisson_ratio = 0.0", "poisson = 0.0",
-       fmt::format("test.toml:4:1: material.poisson: unknown key (known: {})", kMaterialKeys)},
+       fmt::format("test.toml:4:1: material.poisson: unknown key; did you mean 'poisson_ratio'? "
+                   "(known: {})",
+                   kMaterialKeys)},
       {"WorkOfAdhesionNegative", "work_of_adhesion = 0.05", "work_of_adhesion = -0.01",
        "test.toml:5:20: material.work_of_adhesion = -0.01 is outside [0, inf)"},
       {"WorkOfAdhesionInf", "work_of_adhesion = 0.05", "work_of_adhesion = +inf",
@@ -201,7 +206,8 @@ std::vector<BadScene> material_cases() {
       {"WorkOfAdhesionString", "work_of_adhesion = 0.05", "work_of_adhesion = \"sticky\"",
        R"(test.toml:5:20: material.work_of_adhesion: expected a number, got string "sticky")"},
       {"WorkOfAdhesionTypo", "work_of_adhesion = 0.05", "work_of_adhesio = 0.05",
-       fmt::format("test.toml:5:1: material.work_of_adhesio: unknown key (known: {})",
+       fmt::format("test.toml:5:1: material.work_of_adhesio: unknown key; did you mean "
+                   "'work_of_adhesion'? (known: {})",
                    kMaterialKeys)},
       {"EffectiveShearModulusString", "youngs_modulus = 1.0e6\npoisson_ratio = 0.0",
        "effective_modulus = 1.0e6\neffective_shear_modulus = \"soft\"",
@@ -236,7 +242,8 @@ std::vector<BadScene> material_cases() {
        "test.toml:4:27: material.effective_shear_modulus = inf is not a finite number"},
       {"EffectiveModulusTypo", "youngs_modulus = 1.0e6\npoisson_ratio = 0.0",
        "effective_modulus = 1.0e6\neffective_shear = 1.0e6",
-       fmt::format("test.toml:4:1: material.effective_shear: unknown key (known: {})",
+       fmt::format("test.toml:4:1: material.effective_shear: unknown key; did you mean "
+                   "'effective_shear_modulus'? (known: {})",
                    kMaterialKeys)},
       {"ModuliOverflow", "youngs_modulus = 1.0e6\npoisson_ratio = 0.0",
        "youngs_modulus = 1.0e308\npoisson_ratio = -0.999",
@@ -257,12 +264,15 @@ std::vector<BadScene> profile_cases() {
       {"TypeNumber", "type = \"parabolic\"", "type = 2",
        "test.toml:7:8: profile.type: expected a string, got 2"},
       {"TypeWithNewlineIsEscaped", "type = \"parabolic\"", "type = \"\"\"para\nbolic\"\"\"",
-       fmt::format(R"(test.toml:7:8: profile.type: unknown 'para\nbolic' (known: {}))",
-                   profiles())},
+       fmt::format(
+           R"(test.toml:7:8: profile.type: unknown 'para\nbolic'; did you mean 'parabolic'? (known: {}))",
+           profiles())},
       {"TypeArray", "type = \"parabolic\"", "type = [\"parabolic\"]",
        "test.toml:7:8: profile.type: expected a string, got an array"},
       {"TypeUnknown", "type = \"parabolic\"", "type = \"parabola\"",
-       fmt::format("test.toml:7:8: profile.type: unknown 'parabola' (known: {})", profiles())},
+       fmt::format(
+           "test.toml:7:8: profile.type: unknown 'parabola'; did you mean 'parabolic'? (known: {})",
+           profiles())},
       {"RadiusMissing", "radius = 0.01\n", "",
        fmt::format("test.toml:6:1: profile.radius: missing, expected a number ({})", radius_help)},
       {"RadiusNegative", "radius = 0.01", "radius = -0.01",
@@ -274,7 +284,7 @@ std::vector<BadScene> profile_cases() {
       {"RadiusTable", "radius = 0.01", "radius = { value = 0.01 }",
        "test.toml:8:10: profile.radius: expected a number, got a table"},
       {"RadiusTypo", "radius = 0.01", "radiuss = 0.01",
-       "test.toml:8:1: profile.radiuss: unknown key (known: radius, type)"},
+       "test.toml:8:1: profile.radiuss: unknown key; did you mean 'radius'? (known: radius, type)"},
   };
 }
 INSTANTIATE_TEST_SUITE_P(Profile, BadSceneTest, ::testing::ValuesIn(profile_cases()), case_name);
@@ -292,7 +302,8 @@ std::vector<BadScene> loading_cases() {
   const std::string stiffness_help = help(registries().controllers, "compliant", "stiffness");
   return {
       {"Typo", kPreload, std::string(kPreload) + "\nprelod = 1",
-       "test.toml:11:1: loading.prelod: unknown key (known: normal, preload, tangential)"},
+       "test.toml:11:1: loading.prelod: unknown key; did you mean 'preload'? (known: normal, "
+       "preload, tangential)"},
       // preload
       {"PreloadMissing", std::string(kPreload) + "\n", "",
        "test.toml:9:1: loading.preload: missing, expected a table"},
@@ -305,7 +316,8 @@ std::vector<BadScene> loading_cases() {
        "preload = { depth = 1.0e-5, force = 0.01, contact_radius = 5.0e-4 }",
        fmt::format("test.toml:10:11: {}", kExactlyOne)},
       {"PreloadTypo", kPreload, "preload = { contact_radiu = 5.0e-4 }",
-       "test.toml:10:13: loading.preload.contact_radiu: unknown key (known: contact_radius, "
+       "test.toml:10:13: loading.preload.contact_radiu: unknown key; did you mean "
+       "'contact_radius'? (known: contact_radius, "
        "depth, force)"},
       {"PreloadDepthZero", kPreload, "preload = { depth = 0.0 }",
        "test.toml:10:21: loading.preload.depth = 0 is outside (0, inf)"},
@@ -334,7 +346,8 @@ std::vector<BadScene> loading_cases() {
        "test.toml:11:26: loading.tangential.control: expected a string, got 1"},
       {"TangentialControlUnknown", kTangential,
        R"(tangential = { control = "fixed-grip", displacement = 0.0 })",
-       fmt::format("test.toml:11:26: loading.tangential.control: unknown 'fixed-grip' (known: {})",
+       fmt::format("test.toml:11:26: loading.tangential.control: unknown 'fixed-grip'; did you "
+                   "mean 'fixed-grips'? (known: {})",
                    controllers())},
       {"TangentialDisplacementMissing", kTangential, R"(tangential = { control = "fixed-grips" })",
        "test.toml:11:14: loading.tangential.displacement: missing, expected a number (the held "
@@ -347,7 +360,8 @@ std::vector<BadScene> loading_cases() {
        "test.toml:11:56: loading.tangential.displacement = nan is not a finite number"},
       {"TangentialDisplacementTypo", kTangential,
        R"(tangential = { control = "fixed-grips", displacment = 0.0 })",
-       "test.toml:11:41: loading.tangential.displacment: unknown key (known: control, "
+       "test.toml:11:41: loading.tangential.displacment: unknown key; did you mean 'displacement'? "
+       "(known: control, "
        "displacement, force)"},
       {"TangentialForceUnderFixedGrips", kTangential,
        R"(tangential = { control = "fixed-grips", force = 0.0 })",
@@ -376,7 +390,8 @@ std::vector<BadScene> loading_cases() {
                    "(one of: {})",
                    controllers())},
       {"NormalControlUnknown", kNormal, R"(normal = { control = "fixed_load" })",
-       fmt::format("test.toml:12:22: loading.normal.control: unknown 'fixed_load' (known: {})",
+       fmt::format("test.toml:12:22: loading.normal.control: unknown 'fixed_load'; did you mean "
+                   "'fixed-load'? (known: {})",
                    controllers())},
       {"NormalControlTable", kNormal, "normal = { control = { name = \"fixed-load\" } }",
        "test.toml:12:22: loading.normal.control: expected a string, got a table"},
@@ -396,7 +411,8 @@ std::vector<BadScene> loading_cases() {
       {"NormalStiffnessInf", kNormal, R"(normal = { control = "compliant", stiffness = inf })",
        "test.toml:12:47: loading.normal.stiffness = inf is not a finite number"},
       {"NormalStiffnessTypo", kNormal, R"(normal = { control = "compliant", stifness = 10.0 })",
-       "test.toml:12:35: loading.normal.stifness: unknown key (known: control, stiffness)"},
+       "test.toml:12:35: loading.normal.stifness: unknown key; did you mean 'stiffness'? (known: "
+       "control, stiffness)"},
   };
 }
 INSTANTIATE_TEST_SUITE_P(Loading, BadSceneTest, ::testing::ValuesIn(loading_cases()), case_name);
@@ -407,12 +423,14 @@ std::vector<BadScene> detachment_cases() {
   const std::string lambda_help = help(registries().criteria, "mode-dependent", "lambda");
   return {
       {"CriterionUnknown", "criterion = \"mode-mixed\"", "criterion = \"stres\"",
-       fmt::format("test.toml:14:13: detachment.criterion: unknown 'stres' (known: {})",
+       fmt::format("test.toml:14:13: detachment.criterion: unknown 'stres'; did you mean 'stress'? "
+                   "(known: {})",
                    criteria())},
       {"CriterionNumber", "criterion = \"mode-mixed\"", "criterion = 20",
        "test.toml:14:13: detachment.criterion: expected a string, got 20"},
       {"CriterionTypo", "criterion = \"mode-mixed\"", "criterio = \"stress\"",
-       "test.toml:14:1: detachment.criterio: unknown key (known: criterion)"},
+       "test.toml:14:1: detachment.criterio: unknown key; did you mean 'criterion'? (known: "
+       "criterion)"},
       {"LambdaMissing", "criterion = \"mode-mixed\"", "criterion = \"mode-dependent\"",
        fmt::format("test.toml:13:1: detachment.lambda: missing, expected a number ({})",
                    lambda_help)},
@@ -428,7 +446,8 @@ std::vector<BadScene> detachment_cases() {
        "criterion = \"mode-dependent\"\nlambda = \"half\"",
        R"(test.toml:15:10: detachment.lambda: expected a number, got string "half")"},
       {"LambdaTypo", "criterion = \"mode-mixed\"", "criterion = \"mode-dependent\"\nlamda = 0.5",
-       "test.toml:15:1: detachment.lamda: unknown key (known: criterion, lambda)"},
+       "test.toml:15:1: detachment.lamda: unknown key; did you mean 'lambda'? (known: criterion, "
+       "lambda)"},
       {"LambdaWithOtherCriterion", "criterion = \"mode-mixed\"",
        "criterion = \"mode-mixed\"\nlambda = 0.5",
        "test.toml:15:10: detachment.lambda: applies to criterion = \"mode-dependent\" only"},
@@ -454,7 +473,8 @@ std::vector<BadScene> discretization_cases() {
       {"SpringsArray", "springs = 100", "springs = [100]",
        "test.toml:16:11: discretization.springs: expected a whole number, got an array"},
       {"SpringsTypo", "springs = 100", "spring = 100",
-       "test.toml:16:1: discretization.spring: unknown key (known: extrapolation, rtol, springs)"},
+       "test.toml:16:1: discretization.spring: unknown key; did you mean 'springs'? (known: "
+       "extrapolation, rtol, springs)"},
       {"RtolTooLoose", "springs = 100", "rtol = 0.5",
        "test.toml:16:8: discretization.rtol = 0.5 is outside [1e-12, 0.1]"},
       {"RtolString", "springs = 100", "rtol = \"tight\"",
@@ -473,11 +493,13 @@ constexpr const char* kStepping = "method = \"stepping\"";
 std::vector<BadScene> solver_cases() {
   return {
       {"MethodUnknown", "method = \"event\"", "method = \"events\"",
-       "test.toml:18:10: solver.method: unknown 'events' (known: event, stepping)"},
+       "test.toml:18:10: solver.method: unknown 'events'; did you mean 'event'? (known: event, "
+       "stepping)"},
       {"MethodNumber", "method = \"event\"", "method = 1",
        "test.toml:18:10: solver.method: expected a string, got 1"},
       {"MethodTypo", "method = \"event\"", "mehtod = \"event\"",
-       "test.toml:18:1: solver.mehtod: unknown key (known: max_halvings, max_steps, method, step)"},
+       "test.toml:18:1: solver.mehtod: unknown key; did you mean 'method'? (known: max_halvings, "
+       "max_steps, method, step)"},
       {"StepWithEvent", "method = \"event\"", "method = \"event\"\nstep = 1e-6",
        "test.toml:19:8: solver.step: applies to method = \"stepping\" only"},
       {"StepWithDefaultMethod", "method = \"event\"", "step = 1e-6",
@@ -493,7 +515,8 @@ std::vector<BadScene> solver_cases() {
       {"StepString", "method = \"event\"", std::string(kStepping) + "\nstep = \"small\"",
        R"(test.toml:19:8: solver.step: expected a number, got string "small")"},
       {"StepTypo", "method = \"event\"", std::string(kStepping) + "\nsteps = 1e-6",
-       "test.toml:19:1: solver.steps: unknown key (known: max_halvings, max_steps, method, step)"},
+       "test.toml:19:1: solver.steps: unknown key; did you mean 'step'? (known: max_halvings, "
+       "max_steps, method, step)"},
       {"MaxHalvingsNegative", "method = \"event\"", std::string(kStepping) + "\nmax_halvings = -1",
        "test.toml:19:16: solver.max_halvings = -1 is outside [0, 60]"},
       {"MaxHalvingsTooMany", "method = \"event\"", std::string(kStepping) + "\nmax_halvings = 61",
@@ -700,11 +723,12 @@ TEST(BadScene, ArrayOfTablesWhereATableIsExpected) {
 
 TEST(BadScene, UnknownKeyIsReportedBeforeAMissingOne) {
   // The typo, not the missing youngs_modulus, is what the user must fix.
-  EXPECT_THROW_MSG(
-      build_scene_text(scene_with("youngs_modulus = 1.0e6\npoisson_ratio = 0.0",
-                                  "poisson_ratio = 0.0\nyoungs_modulu = 1.0e6")),
-      SceneError,
-      fmt::format("test.toml:4:1: material.youngs_modulu: unknown key (known: {})", kMaterialKeys));
+  EXPECT_THROW_MSG(build_scene_text(scene_with("youngs_modulus = 1.0e6\npoisson_ratio = 0.0",
+                                               "poisson_ratio = 0.0\nyoungs_modulu = 1.0e6")),
+                   SceneError,
+                   fmt::format("test.toml:4:1: material.youngs_modulu: unknown key; did you mean "
+                               "'youngs_modulus'? (known: {})",
+                               kMaterialKeys));
 }
 
 TEST(BadScene, LongStringValueIsCutShort) {
@@ -731,14 +755,17 @@ TEST(SetValue, UnknownKeyNamesTheFlag) {
   d.set_value("material.youngs_modulu", "1e6");
   EXPECT_THROW_MSG(
       d.build(registries()), SceneError,
-      fmt::format("--set: material.youngs_modulu: unknown key (known: {})", kMaterialKeys));
+      fmt::format(
+          "--set: material.youngs_modulu: unknown key; did you mean 'youngs_modulus'? (known: {})",
+          kMaterialKeys));
 }
 
 TEST(SetValue, UnknownKeyInsideASetTableNamesTheFlag) {
   SceneDocument d = document();
   d.set_value("loading.normal", R"({ control = "compliant", stifness = 1 })");
   EXPECT_THROW_MSG(d.build(registries()), SceneError,
-                   "--set: loading.normal.stifness: unknown key (known: control, stiffness)");
+                   "--set: loading.normal.stifness: unknown key; did you mean 'stiffness'? (known: "
+                   "control, stiffness)");
 }
 
 TEST(SetValue, BareWordIsAString) {
