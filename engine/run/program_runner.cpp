@@ -192,6 +192,8 @@ class ProgramRunner {
   double inverse_ = 0.0;
   std::optional<Cascade> last_contact_loss_;
   std::optional<Cascade> last_glue_loss_;
+  std::int64_t contact_losses_ = 0;     ///< cascades that left no spring in contact
+  std::int64_t glue_loss_contact_ = 0;  ///< contact_losses_ before the last glue loss
   bool ever_in_contact_ = false;
   enum class Stop {
     none,
@@ -572,8 +574,14 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
     return;
   }
   observe(after);
-  if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
-  if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
+  if (cascade.glued > 0 && row_.glued() == 0) {
+    last_glue_loss_ = cascade;
+    glue_loss_contact_ = contact_losses_;
+  }
+  if (cascade.in_contact > 0 && row_.in_contact() == 0) {
+    last_contact_loss_ = cascade;
+    ++contact_losses_;
+  }
   // Springs that carry no force and no glue leaving together (a flat tip at rounding) is no jump.
   const bool idle = cascade.glued == 0 && row_.glued() == 0 &&
                     zero_.zero_force(cascade.before.normal_force) &&
@@ -852,6 +860,22 @@ void ProgramRunner::finish(RunResult& r) {
       r.critical = c.before;
     }
   };
+  // Springs pressed without glue carry no tension and no tangential force (frictionless):
+  // once the glue is gone they lift one by one as the indenter withdraws, to zero force,
+  // whatever the jump that broke the glue. That jump is the instability (SPEC: "the glue
+  // letting go at one parameter value while springs stay in contact is a jump like any
+  // other"; Fig. 3a's positive branch, a compressive critical force), so it decides the
+  // status and the critical point: the shorthand, whose row has no pressed springs, ends
+  // there too.
+  const auto deciding_loss = [&]() -> const Cascade& {
+    // The glue's jump counts for the contact it broke: not for one pressed again later.
+    const bool same_contact = glue_loss_contact_ == contact_losses_ - 1;
+    const bool glue_jumped = last_glue_loss_ && last_glue_loss_->changes >= 2;
+    if (glue_jumped && same_contact && last_contact_loss_->glued == 0) {
+      return *last_glue_loss_;
+    }
+    return *last_contact_loss_;
+  };
   switch (stop_) {
     case Stop::outgrew:
       r.status = RunStatus::step_limit;
@@ -912,13 +936,13 @@ void ProgramRunner::finish(RunResult& r) {
             stage_->name, row_.normal().held, normal_start_ + normal_rate_));
         return;
       }
-      loss_status(*last_contact_loss_);
+      loss_status(deciding_loss());
       return;
     case Stop::none:
       break;
   }
   if (lost && last_contact_loss_) {
-    loss_status(*last_contact_loss_);
+    loss_status(deciding_loss());
     return;
   }
   r.status = RunStatus::completed;
