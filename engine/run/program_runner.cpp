@@ -123,6 +123,8 @@ class ProgramRunner {
   /// How a cascade that just ran ends: with the contact lost under a fixed load that nothing
   /// holds any more, in a flight (SPEC "A fixed load that loses the contact").
   JumpEnd flight_of(const Cascade& cascade) const;
+  /// Notes a cascade that left no glue or no spring in contact (what finish decides by).
+  void record_losses(const Cascade& cascade);
   /// A flight: the stage ends at the cascade's critical point, with the work up to it.
   void end_in_flight(const Cascade& cascade, JumpEnd end);
   /// The stages after the one under way, which a flight does not run.
@@ -529,6 +531,17 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
   }
 }
 
+void ProgramRunner::record_losses(const Cascade& cascade) {
+  if (cascade.glued > 0 && row_.glued() == 0) {
+    last_glue_loss_ = cascade;
+    glue_loss_contact_ = contact_losses_;
+  }
+  if (cascade.in_contact > 0 && row_.in_contact() == 0) {
+    last_contact_loss_ = cascade;
+    ++contact_losses_;
+  }
+}
+
 void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   // What the cascade did after its critical point is the flight: its springs' stretches
   // (the held force on the last spring alone) and the work at constant force grow with the
@@ -544,8 +557,7 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   stage_work_ = cascade.work_before;
   flight_end_ = cascade.before;
   flight_refined_end_ = cascade.refined_before;
-  if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
-  if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
+  record_losses(cascade);
   if (cascade.changes < 2) return;
   JumpRecord jump;
   jump.stage = stage_->name;
@@ -574,14 +586,7 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
     return;
   }
   observe(after);
-  if (cascade.glued > 0 && row_.glued() == 0) {
-    last_glue_loss_ = cascade;
-    glue_loss_contact_ = contact_losses_;
-  }
-  if (cascade.in_contact > 0 && row_.in_contact() == 0) {
-    last_contact_loss_ = cascade;
-    ++contact_losses_;
-  }
+  record_losses(cascade);
   // Springs that carry no force and no glue leaving together (a flat tip at rounding) is no jump.
   const bool idle = cascade.glued == 0 && row_.glued() == 0 &&
                     zero_.zero_force(cascade.before.normal_force) &&
