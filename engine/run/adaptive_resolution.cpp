@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/run/row_sequence.hpp"
+#include "engine/run/status_margin.hpp"
 
 namespace mdrsim {
 namespace {
@@ -139,6 +140,33 @@ Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
   return out;
 }
 
+/// Finer rows across the refined rows' radius until the finest tells its status apart
+/// (status_margin.hpp). Returns that row where its status differs from the refined one, for
+/// the force to be refined again from it; warns where no row up to the limit tells.
+std::optional<RunResult> resolve_status(const Scene& scene, const Refined& c, RunCounts& counts,
+                                        std::vector<std::string>& warnings) {
+  RunResult row = c.sequence.last();
+  while (!status_resolved(row) && 2 * row.springs <= scene.discretization.max_row_springs) {
+    RunResult next = run_row(scene,
+                             {.springs = 2 * row.springs,
+                              .outer_radius = c.finest.outer_radius,
+                              .zoomed = c.finest.zoomed},
+                             {});
+    counts += next.counts;
+    row = std::move(next);
+  }
+  if (!status_resolved(row)) {
+    warnings.push_back(fmt::format(
+        "the branch folds {:.3g} spacings above the radius where the glue shears off "
+        "unstretched, in rows of up to {} springs across {:.6g} m: instability and shear-off "
+        "cannot be told apart; the status is the finest row's",
+        row.fold_above_shear_off.value_or(0.0), row.springs, c.finest.outer_radius));
+    return std::nullopt;
+  }
+  if (row.status == c.sequence.last().status) return std::nullopt;
+  return row;
+}
+
 /// Whether a row's peak lies inside it: not at a zoomed row's outermost let-go (the path
 /// goes on outside it) and not the tension of its last spring.
 bool peak_inside(const RunResult& row, bool zoomed) {
@@ -218,6 +246,13 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
   if (result.status != RunStatus::no_instability) {
     Refined c =
         refine(scene, RowSequence(Target::critical, rows), zoom.outer_radius, rtol, route, counts);
+    // The status before the force: a fold just above the radius where the glue shears off
+    // unstretched is an instability, but a row reports shear-off until a spring fits between
+    // them (the force is the same to that spacing, so rtol alone can stop short of it).
+    if (const std::optional<RunResult> other = resolve_status(scene, c, counts, result.warnings)) {
+      c = refine(scene, RowSequence(Target::critical, {*other}), zoom.outer_radius, rtol, route,
+                 counts);
+    }
     result.status = c.sequence.last().status;
     result.critical = c.value ? c.value : c.sequence.last().critical;
     result.accuracy.route = c.route;

@@ -123,6 +123,8 @@ class ProgramRunner {
   /// How a cascade that just ran ends: with the contact lost under a fixed load that nothing
   /// holds any more, in a flight (SPEC "A fixed load that loses the contact").
   JumpEnd flight_of(const Cascade& cascade) const;
+  /// Notes a cascade that left no glue or no spring in contact (what finish decides by).
+  void record_losses(const Cascade& cascade);
   /// A flight: the stage ends at the cascade's critical point, with the work up to it.
   void end_in_flight(const Cascade& cascade, JumpEnd end);
   /// The stages after the one under way, which a flight does not run.
@@ -192,6 +194,8 @@ class ProgramRunner {
   double inverse_ = 0.0;
   std::optional<Cascade> last_contact_loss_;
   std::optional<Cascade> last_glue_loss_;
+  std::int64_t contact_losses_ = 0;     ///< cascades that left no spring in contact
+  std::int64_t glue_loss_contact_ = 0;  ///< contact_losses_ before the last glue loss
   bool ever_in_contact_ = false;
   enum class Stop {
     none,
@@ -527,6 +531,17 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
   }
 }
 
+void ProgramRunner::record_losses(const Cascade& cascade) {
+  if (cascade.glued > 0 && row_.glued() == 0) {
+    last_glue_loss_ = cascade;
+    glue_loss_contact_ = contact_losses_;
+  }
+  if (cascade.in_contact > 0 && row_.in_contact() == 0) {
+    last_contact_loss_ = cascade;
+    ++contact_losses_;
+  }
+}
+
 void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   // What the cascade did after its critical point is the flight: its springs' stretches
   // (the held force on the last spring alone) and the work at constant force grow with the
@@ -542,8 +557,7 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   stage_work_ = cascade.work_before;
   flight_end_ = cascade.before;
   flight_refined_end_ = cascade.refined_before;
-  if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
-  if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
+  record_losses(cascade);
   if (cascade.changes < 2) return;
   JumpRecord jump;
   jump.stage = stage_->name;
@@ -572,8 +586,7 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
     return;
   }
   observe(after);
-  if (cascade.in_contact > 0 && row_.in_contact() == 0) last_contact_loss_ = cascade;
-  if (cascade.glued > 0 && row_.glued() == 0) last_glue_loss_ = cascade;
+  record_losses(cascade);
   // Springs that carry no force and no glue leaving together (a flat tip at rounding) is no jump.
   const bool idle = cascade.glued == 0 && row_.glued() == 0 &&
                     zero_.zero_force(cascade.before.normal_force) &&
@@ -852,6 +865,22 @@ void ProgramRunner::finish(RunResult& r) {
       r.critical = c.before;
     }
   };
+  // Springs pressed without glue carry no tension and no tangential force (frictionless):
+  // once the glue is gone they lift one by one as the indenter withdraws, to zero force,
+  // whatever the jump that broke the glue. That jump is the instability (SPEC: "the glue
+  // letting go at one parameter value while springs stay in contact is a jump like any
+  // other"; Fig. 3a's positive branch, a compressive critical force), so it decides the
+  // status and the critical point: the shorthand, whose row has no pressed springs, ends
+  // there too.
+  const auto deciding_loss = [&]() -> const Cascade& {
+    // The glue's jump counts for the contact it broke: not for one pressed again later.
+    const bool same_contact = glue_loss_contact_ == contact_losses_ - 1;
+    const bool glue_jumped = last_glue_loss_ && last_glue_loss_->changes >= 2;
+    if (glue_jumped && same_contact && last_contact_loss_->glued == 0) {
+      return *last_glue_loss_;
+    }
+    return *last_contact_loss_;
+  };
   switch (stop_) {
     case Stop::outgrew:
       r.status = RunStatus::step_limit;
@@ -912,13 +941,13 @@ void ProgramRunner::finish(RunResult& r) {
             stage_->name, row_.normal().held, normal_start_ + normal_rate_));
         return;
       }
-      loss_status(*last_contact_loss_);
+      loss_status(deciding_loss());
       return;
     case Stop::none:
       break;
   }
   if (lost && last_contact_loss_) {
-    loss_status(*last_contact_loss_);
+    loss_status(deciding_loss());
     return;
   }
   r.status = RunStatus::completed;

@@ -20,6 +20,7 @@
 #include "engine/run/fold_refinement.hpp"
 #include "engine/run/progress_log.hpp"
 #include "engine/run/shorthand_path.hpp"
+#include "engine/run/status_margin.hpp"
 
 namespace mdrsim {
 namespace {
@@ -127,8 +128,12 @@ void fill_critical(RunResult& result, const Contact& contact, const DetachmentCr
   if (const auto outer = track.before_last(1)) {
     if (result.status == RunStatus::instability) {
       result.refined_critical = refine_fold(contact, criterion, *outer, critical);
+      result.fold_above_shear_off =
+          fold_above_shear_off(contact, criterion, std::nullopt, *outer, critical);
     } else if (const auto outer2 = track.before_last(2)) {
       result.refined_critical = refine_shear_off(contact, criterion, *outer2, *outer, critical);
+      result.fold_above_shear_off =
+          fold_above_shear_off(contact, criterion, outer2, *outer, critical);
     }
   }
   result.peak = contact.snapshot_of(track.peak());
@@ -307,6 +312,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   if (smooth) {
     result.critical.reset();
     result.refined_critical.reset();  // Richardson and rtol must not find one either
+    result.fold_above_shear_off.reset();
     // A smooth peel ends at F -> 0: a "peak" at the last spring is only that spring's own
     // tension, which vanishes as the row is refined.
     if (result.peak && result.peak->springs_in_contact == 1) {

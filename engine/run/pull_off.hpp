@@ -56,6 +56,10 @@ struct RunResult {
   /// Springs in contact at the first equilibrium of the unbroken run of single let-gos that
   /// ends at the critical point: the zoom may restart anywhere in that run.
   std::int64_t stable_run_top = 0;
+  /// How far above the radius where the glue shears off unstretched the row's branch folds,
+  /// in spacings, where the two lie close (status_margin.hpp): the status of a row with a
+  /// fold closer than kStatusSpacings may change with its resolution.
+  std::optional<double> fold_above_shear_off;
 
   /// Loading programs: every stage's end and work, every jump, and the total work.
   std::vector<StageRecord> stages;

@@ -12,6 +12,7 @@
 #include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"
+#include "engine/run/status_margin.hpp"
 
 namespace mdrsim {
 namespace {
@@ -63,6 +64,12 @@ void warn_resolution(const Scene& scene, RunResult& result) {
         "the contact peeled off down to its last spring (a = {:.6g} m of {:.6g} m, {} springs): "
         "a fold below it is not resolved; discretization.rtol zooms in on it",
         glued / static_cast<double>(springs), glued, springs));
+  } else if (!status_resolved(result)) {
+    result.warnings.push_back(
+        fmt::format("the branch folds {:.3g} spacings above the radius where the glue shears off "
+                    "unstretched ({} springs): the row cannot tell instability from shear-off; "
+                    "discretization.rtol resolves it",
+                    result.fold_above_shear_off.value_or(0.0), springs));
   } else if (auto w = unresolved_critical(
                  result, {springs, glued, "glued", "discretization.rtol zooms in on it"})) {
     result.warnings.push_back(std::move(*w));

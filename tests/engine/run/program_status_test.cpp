@@ -1,0 +1,72 @@
+// The program's status where the glue and the contact part at different times: springs
+// pressed without glue stay after a glue jump and lift off later, smoothly.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "engine/run/run_scene.hpp"
+#include "tests/support/jkr_scenario.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr double kDepth = 2.5e-5;  ///< d = a_g^2 / R for a_g = 5e-4 m, R = 1e-2 m
+
+/// u = 0.85 u_s, u_s = sqrt(2 pi a_g dgamma / G*): the glue at a_g holds it at the preload,
+/// and Fig. 3a's fixed-grips line puts the critical force above zero there.
+double tangential() { return 0.85 * std::sqrt(2.0 * std::numbers::pi * 5e-4 * 0.05 / 1e6); }
+
+std::string scene_text(const std::string& extra_stages) {
+  return fmt::format(
+      "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[loading]\n"
+      "[[loading.stage]]\nname = \"preload\"\nnormal = {{ control = \"fixed-grips\", to = {} }}\n"
+      "[[loading.stage]]\nname = \"shear\"\n"
+      "tangential = {{ control = \"fixed-grips\", to = {:.17g} }}\n"
+      "[[loading.stage]]\nname = \"pull\"\nnormal = {{ by = -1e-5 }}\nuntil = \"separation\"\n"
+      "{}"
+      "[discretization]\nsprings = 2000\n",
+      kDepth, tangential(), extra_stages);
+}
+
+// The glue shears off at a compressive force with the inner springs still pressed: that jump
+// is the instability (Fig. 3a's positive branch), though the pressed springs lift off one by
+// one afterwards, to zero force.
+TEST(ProgramStatus, AGlueJumpWhilePressedIsTheInstability) {
+  const RunResult r = run_scene(test::build_scene_text(scene_text("")), {});
+  EXPECT_EQ(r.status, RunStatus::instability);
+  ASSERT_TRUE(r.critical.has_value());
+  EXPECT_GT(r.critical->normal_force, 0.0);
+  // The critical point is the state before the glue's jump, which left springs in contact.
+  ASSERT_FALSE(r.jumps.empty());
+  const JumpRecord& jump = r.jumps.front();
+  EXPECT_EQ(jump.critical.springs_in_contact, r.critical->springs_in_contact);
+  EXPECT_EQ(jump.critical.normal_force, r.critical->normal_force);
+  EXPECT_GT(jump.after.springs_in_contact, 0);
+  EXPECT_EQ(jump.glued_springs, -r.critical->springs_in_contact);
+}
+
+// A glue jump decides only the contact it broke: separated, pressed in again (no rebinding:
+// pressed springs only, which cannot pull) and pulled off, the contact lifts off smoothly and
+// the program has no critical point.
+TEST(ProgramStatus, AGlueJumpDoesNotDecideALaterContact) {
+  const RunResult r = run_scene(
+      test::build_scene_text(scene_text(fmt::format(
+          "[[loading.stage]]\nname = \"press\"\nnormal = {{ control = \"fixed-grips\", to = {} "
+          "}}\n"
+          "[[loading.stage]]\nname = \"pull-again\"\nnormal = {{ by = -1e-5 }}\n"
+          "until = \"separation\"\n",
+          kDepth))),
+      {});
+  ASSERT_EQ(r.stages.size(), 5u);
+  EXPECT_GT(r.stages[3].end.springs_in_contact, 0);
+  EXPECT_EQ(r.status, RunStatus::no_instability);
+  EXPECT_FALSE(r.critical.has_value());
+}
+
+}  // namespace
+}  // namespace mdrsim

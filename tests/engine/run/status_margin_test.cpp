@@ -1,0 +1,117 @@
+// The status before the force: a fold just above the shear-off radius is told from a
+// shear-off there by the rows that rtol runs, whatever rtol, and a plain row says when it
+// cannot tell them apart.
+#include "engine/run/status_margin.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "engine/run/run_scene.hpp"
+#include "profiles/power_law_profile.hpp"
+#include "tests/support/continuum_reference.hpp"
+#include "tests/support/jkr_scenario.hpp"
+
+namespace mdrsim {
+namespace {
+
+using test::ContinuumCritical;
+
+// Random scene 113 of tests/support/random_scenes (seed 20240611) with its held u_x raised
+// from 4.37e-6 m to 8e-6 m: the continuum branch now folds 1.5e-7 m (6e-5 a_s) above the
+// radius a_s where the glue shears off unstretched. Before the status was resolved, rtol 1e-4
+// reported shear-off at F = 1.775463 N (off by 1.6e-4) and rtol 1e-6 instability.
+constexpr double kYoungs = 3328120.2599937879;
+constexpr double kPoisson = 0.25307243525486056;
+constexpr double kWork = 0.012201932522354424;
+constexpr double kCoefficient = 515337.41624245938;
+constexpr double kExponent = 3.867905885752509;
+constexpr double kGluedRadius = 0.011139227790790003;
+constexpr double kTangential = 8e-6;
+
+std::string scene_text(const std::string& discretization) {
+  return fmt::format(
+      "[material]\nyoungs_modulus = {:.17g}\npoisson_ratio = {:.17g}\nwork_of_adhesion = "
+      "{:.17g}\n"
+      "[profile]\ntype = \"power_law\"\ncoefficient = {:.17g}\nexponent = {:.17g}\n"
+      "[loading]\npreload = {{ contact_radius = {:.17g} }}\n"
+      "tangential = {{ control = \"fixed-grips\", displacement = {:.17g} }}\n"
+      "normal = {{ control = \"fixed-grips\" }}\n"
+      "[detachment]\ncriterion = \"mode-mixed\"\n"
+      "[discretization]\n{}",
+      kYoungs, kPoisson, kWork, kCoefficient, kExponent, kGluedRadius, kTangential, discretization);
+}
+
+/// The independent continuum pull-off (tests/support/continuum_reference: the branch from
+/// SPEC's law, no engine code).
+ContinuumCritical reference() {
+  const PowerLawProfile profile(kCoefficient, kExponent);
+  return test::ContinuumReference(
+             profile, test::ContinuumMaterial::from_youngs_modulus(kYoungs, kPoisson, kWork), {},
+             {test::TangentialLoad::Kind::displacement, kTangential},
+             test::NormalControl::fixed_grips())
+      .pull_off(kGluedRadius);
+}
+
+// The scene is on the edge: the continuum folds, just above a_s.
+TEST(StatusMargin, TheSceneFoldsJustAboveTheShearOffRadius) {
+  const ContinuumCritical ref = reference();
+  ASSERT_EQ(ref.kind, ContinuumCritical::Kind::fold);
+  const double above = ref.point.contact_radius - ref.shear_off_radius;
+  EXPECT_GT(above, 0.0);
+  EXPECT_LT(above, 1e-4 * ref.shear_off_radius);
+}
+
+// The row's fit of the branch next to a_s finds the continuum's fold: a row of 2^19 springs
+// across a_g puts it 7.1 spacings above a_s. The fit is exact for the branch's form there
+// (control A + B t - C sqrt(t)) up to the O(dx) of the row and the next order of the branch;
+// 0.1 % of the distance covers both at this spacing (measured: 1e-6).
+TEST(StatusMargin, TheRowsFoldIsTheContinuumsFold) {
+  const ContinuumCritical ref = reference();
+  const Scene scene = test::build_scene_text(scene_text("springs = 524288\n"));
+  const RunResult row =
+      run_row(scene, {.springs = scene.springs, .outer_radius = scene.glued_radius}, {});
+  EXPECT_EQ(row.status, RunStatus::instability);
+  ASSERT_TRUE(row.fold_above_shear_off.has_value());
+  const double dx = kGluedRadius / static_cast<double>(scene.springs);
+  const double above = ref.point.contact_radius - ref.shear_off_radius;
+  EXPECT_NEAR(*row.fold_above_shear_off * dx, above, 1e-3 * above);
+  EXPECT_TRUE(status_resolved(row));
+}
+
+// rtol 1e-4 and 1e-6, on every route, give the continuum's status and a force within rtol
+// of it (the reference is exact to 1e-12).
+TEST(StatusMargin, TheStatusDoesNotDependOnRtol) {
+  const ContinuumCritical ref = reference();
+  for (const char* rtol : {"1e-4", "1e-6"}) {
+    for (const char* route : {"", "none", "richardson"}) {
+      SCOPED_TRACE(fmt::format("rtol {} extrapolation '{}'", rtol, route));
+      std::string discretization = fmt::format("rtol = {}\n", rtol);
+      if (*route != '\0') discretization += fmt::format("extrapolation = \"{}\"\n", route);
+      const RunResult r = run_scene(test::build_scene_text(scene_text(discretization)), {});
+      EXPECT_EQ(r.status, RunStatus::instability);
+      ASSERT_TRUE(r.critical.has_value());
+      EXPECT_NEAR(r.critical->normal_force, ref.point.normal_force,
+                  std::stod(rtol) * std::abs(ref.point.normal_force));
+      EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    }
+  }
+}
+
+// A plain row of 4096 springs reports shear-off: the fold lies 0.06 of its spacing above a_s,
+// which it cannot tell from a_s. It says so; a row of 2^20 springs sees the fold and does not.
+TEST(StatusMargin, APlainRowSaysWhenItCannotTell) {
+  const RunResult coarse = run_scene(test::build_scene_text(scene_text("springs = 4096\n")), {});
+  EXPECT_EQ(coarse.status, RunStatus::shear_off);
+  ASSERT_EQ(coarse.warnings.size(), 1u);
+  EXPECT_NE(coarse.warnings[0].find("cannot tell instability from shear-off"), std::string::npos)
+      << coarse.warnings[0];
+  const RunResult fine = run_scene(test::build_scene_text(scene_text("springs = 1048576\n")), {});
+  EXPECT_EQ(fine.status, RunStatus::instability);
+  EXPECT_TRUE(fine.warnings.empty()) << fine.warnings.front();
+}
+
+}  // namespace
+}  // namespace mdrsim
