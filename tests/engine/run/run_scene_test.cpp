@@ -227,3 +227,26 @@ TEST(Rtol, BelowTheValidatedRangeWarns) {
   s.rtol = 1e-8;
   EXPECT_TRUE(mdrsim::run_scene(s.build(), {}).warnings.empty());
 }
+
+namespace {
+
+// Fig. 3a at u = 4 d0 (paper eqs. 25-29): the fixed-load pull-off jumps at a compressive force,
+// F/F0 = +0.628 here, so its most tensile equilibrium is still compressive: no adhesive peak.
+// At u = 0 the peak is the JKR pull-off -F0 (eq. 19). The program of the same path says the same.
+TEST(PeakAdhesion, APathThatNeverPullsHasNone) {
+  JkrScenario s;
+  s.normal = "fixed-load";
+  s.springs = 2000;
+  s.tangential_displacement = 4.0;
+  const mdrsim::RunResult sheared = mdrsim::test::run_quietly(s.build());
+  ASSERT_TRUE(sheared.critical);
+  EXPECT_GT(sheared.critical->normal_force, 0.0);
+  EXPECT_FALSE(sheared.peak);
+  s.tangential_displacement = 0.0;
+  const mdrsim::RunResult plain = mdrsim::test::run_quietly(s.build());
+  ASSERT_TRUE(plain.peak);
+  // 2000 springs: the row's O(1/N) error of the critical force is below 1e-3 F0.
+  EXPECT_NEAR(plain.peak->normal_force / s.scales().force, -1.0, 1e-3);
+}
+
+}  // namespace
