@@ -17,6 +17,18 @@ std::optional<std::string> unresolved_critical(const RunResult& result, const Re
       row.radius, row.springs, row.remedy);
 }
 
+std::optional<std::string> unresolved_smooth_peel(const RunResult& result, const ResolvedRow& row,
+                                                  bool adhesive) {
+  // Without adhesion nothing can fold: a smooth peel is all there is.
+  if (result.status != RunStatus::no_instability || row.springs <= 1 || !adhesive) {
+    return std::nullopt;
+  }
+  return fmt::format(
+      "the contact peeled off down to its last spring (a = {:.6g} m of {:.6g} m, {} springs): "
+      "a fold below it is not resolved; {}",
+      row.radius / static_cast<double>(row.springs), row.radius, row.springs, row.remedy);
+}
+
 std::optional<std::string> never_in_contact(const RunResult& result, const ResolvedRow& row) {
   // Only where nothing else says so: a program ending in place, never having touched.
   if (result.counts.events != 0 || result.status != RunStatus::completed) return std::nullopt;

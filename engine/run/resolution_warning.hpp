@@ -28,6 +28,12 @@ struct ResolvedRow {
 /// 30 degree cone's compliant fold on 2 to 15 springs missed by up to 33 %).
 std::optional<std::string> unresolved_critical(const RunResult& result, const ResolvedRow& row);
 
+/// "the contact peeled off down to its last spring ...": a row that ends an adhesive contact in a
+/// smooth peel cannot tell it from a fold below its first spring (a 30 degree cone's compliant
+/// pull on 512 springs peels smoothly; on 16384 it folds at -2.6e-8 N).
+std::optional<std::string> unresolved_smooth_peel(const RunResult& result, const ResolvedRow& row,
+                                                  bool adhesive);
+
 /// A program `completed` whose row never brought a spring into contact (nothing was loaded): with
 /// adhesion the first spring needs touch, which a row of one spring at an adhesive front
 /// never reaches.

@@ -57,21 +57,16 @@ void warn_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // the zoom resolves the critical point
   const std::int64_t springs = result.springs;
   const double glued = scene.glued_radius;
-  // Without adhesion nothing can fold: a smooth peel is all there is.
-  const bool adhesive = scene.material.work_of_adhesion > 0.0;
-  if (result.status == RunStatus::no_instability && springs > 1 && adhesive) {
-    result.warnings.push_back(fmt::format(
-        "the contact peeled off down to its last spring (a = {:.6g} m of {:.6g} m, {} springs): "
-        "a fold below it is not resolved; discretization.rtol zooms in on it",
-        glued / static_cast<double>(springs), glued, springs));
+  const ResolvedRow row{springs, glued, "glued", "discretization.rtol zooms in on it"};
+  if (auto w = unresolved_smooth_peel(result, row, scene.material.work_of_adhesion > 0.0)) {
+    result.warnings.push_back(std::move(*w));
   } else if (!status_resolved(result)) {
     result.warnings.push_back(
         fmt::format("the branch folds {:.3g} spacings above the radius where the glue shears off "
                     "unstretched ({} springs): the row cannot tell instability from shear-off; "
                     "discretization.rtol resolves it",
                     result.fold_above_shear_off.value_or(0.0), springs));
-  } else if (auto w = unresolved_critical(
-                 result, {springs, glued, "glued", "discretization.rtol zooms in on it"})) {
+  } else if (auto w = unresolved_critical(result, row)) {
     result.warnings.push_back(std::move(*w));
   }
 }
@@ -81,7 +76,9 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
   const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
                         "discretization.rtol refines the row until it is resolved"};
-  for (auto w : {never_in_contact(result, row), unresolved_critical(result, row)}) {
+  const bool adhesive = scene.material.work_of_adhesion > 0.0;
+  for (auto w : {never_in_contact(result, row), unresolved_critical(result, row),
+                 unresolved_smooth_peel(result, row, adhesive)}) {
     if (w) result.warnings.push_back(std::move(*w));
   }
 }

@@ -2,11 +2,13 @@
 // programs giving it as the shorthand does.
 #include "engine/run/resolution_warning.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "engine/run/run_scene.hpp"
+#include "tests/support/jkr_scenario.hpp"
 #include "tests/support/program_examples.hpp"
 
 namespace mdrsim {
@@ -58,6 +60,33 @@ TEST(ResolutionWarning, AProgramRowThatNeverTouchedSaysSo) {
       run_scene(test::program_example("jkr_cycle_reversible.toml", "springs = 1"), {});
   EXPECT_EQ(r.status, RunStatus::completed);
   EXPECT_TRUE(has_warning(r, "no spring of the row (1 springs")) << r.warnings.size();
+}
+
+// A 30 degree cone glued on touch to a = 1e-4 m, pulled through a spring of 50 N/m: the
+// contact's stiffness 2 E* a falls to k near a = 2.5e-5 m and the fold's force is -2.6e-8 N
+// (rows of 16384 and 65536 springs: -2.610e-8 and -2.570e-8 N, converging as 1/N). On 512
+// springs the row ends in a smooth peel: it says the fold below its last spring is unresolved,
+// as the shorthand's row does.
+TEST(ResolutionWarning, AProgramsSmoothPeelSaysAFoldBelowItIsUnresolved) {
+  const auto cone = [](int springs) {
+    return run_scene(test::build_scene_text(fmt::format(
+                         "[material]\neffective_modulus = 1e6\nwork_of_adhesion = 0.05\n"
+                         "[profile]\ntype = \"cone\"\nslope_angle_deg = 30\n[loading]\n"
+                         "[[loading.stage]]\nnormal = {{ control = \"fixed-grips\", to = "
+                         "9.0690e-5 }}\n[[loading.stage]]\nnormal = {{ control = \"compliant\", "
+                         "stiffness = 50.0, by = -1e-4 }}\nuntil = \"separation\"\n"
+                         "[discretization]\nsprings = {}\n",
+                         springs)),
+                     {});
+  };
+  const RunResult coarse = cone(512);
+  EXPECT_EQ(coarse.status, RunStatus::no_instability);
+  EXPECT_TRUE(has_warning(coarse, "the contact peeled off down to its last spring"));
+  const RunResult fine = cone(16384);
+  ASSERT_EQ(fine.status, RunStatus::instability);
+  EXPECT_FALSE(has_warning(fine, "the contact peeled off down to its last spring"));
+  // Without adhesion nothing folds: a smooth peel is all there is.
+  EXPECT_FALSE(unresolved_smooth_peel(coarse, kRow, false));
 }
 
 }  // namespace
