@@ -19,8 +19,10 @@ std::optional<std::string> unresolved_critical(const RunResult& result, const Re
 
 std::optional<std::string> unresolved_smooth_peel(const RunResult& result, const ResolvedRow& row,
                                                   bool adhesive) {
-  // Without adhesion nothing can fold: a smooth peel is all there is.
-  if (result.status != RunStatus::no_instability || row.springs <= 1 || !adhesive) {
+  // Without adhesion nothing can fold: a smooth peel is all there is. Without an event there
+  // was no contact to peel (a fixed load pulling on nothing).
+  if (result.status != RunStatus::no_instability || row.springs <= 1 || !adhesive ||
+      result.counts.events == 0) {
     return std::nullopt;
   }
   return fmt::format(
