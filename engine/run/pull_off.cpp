@@ -12,7 +12,6 @@
 #include <memory>
 
 #include "controllers/builtin_controllers.hpp"
-#include "engine/base/zero_scale.hpp"
 #include "engine/events/cascade_buffer.hpp"
 #include "engine/methods/boundary_let_go.hpp"
 #include "engine/methods/event_method.hpp"
@@ -310,15 +309,6 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
                   : cascade.by_shear ? RunStatus::shear_off
                                      : RunStatus::instability;
   fill_critical(result, contact, *scene.criterion, track);
-  // A path that never pulls has no adhesive peak (Fig. 3a's positive branch: its most tensile
-  // equilibrium is still compressive), as a program of the same path reports none.
-  const ZeroScale zero = zero_scale(scene.material.effective_modulus, scene.glued_radius,
-                                    scene.profile->mdr_image(scene.glued_radius),
-                                    scene.material.work_of_adhesion, scene.preload_force);
-  if (result.peak && result.peak->normal_force >= -zero.force) {
-    result.peak.reset();
-    result.refined_peak.reset();
-  }
   if (smooth) {
     result.critical.reset();
     result.refined_critical.reset();  // Richardson and rtol must not find one either

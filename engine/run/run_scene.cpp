@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "engine/base/zero_scale.hpp"
 #include "engine/run/adaptive_resolution.hpp"
 #include "engine/run/program_resolution.hpp"
 #include "engine/run/resolution_warning.hpp"
@@ -71,6 +72,21 @@ void warn_resolution(const Scene& scene, RunResult& result) {
   }
 }
 
+/// A path that never pulls has no adhesive peak (Fig. 3a's positive branch: its most tensile
+/// equilibrium is still compressive), as a program of the same path reports none. Decided on
+/// the reported value, after the rows are combined: a row's own peak may cross zero where the
+/// continuum's is barely tensile, and rtol refines through it.
+void drop_peak_that_never_pulls(const Scene& scene, RunResult& result) {
+  const ZeroScale zero = zero_scale(scene.material.effective_modulus, scene.glued_radius,
+                                    scene.profile->mdr_image(scene.glued_radius),
+                                    scene.material.work_of_adhesion, scene.preload_force);
+  if (result.peak && result.peak->normal_force >= -zero.force) {
+    result.peak.reset();
+    result.refined_peak.reset();
+    result.accuracy.peak_error_estimate.reset();
+  }
+}
+
 /// A program's fixed row (or Richardson's rows): the shorthand's rule on its a_max.
 void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
@@ -112,6 +128,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   if (scene.program) {
     warn_program_resolution(scene, result);
   } else {
+    drop_peak_that_never_pulls(scene, result);
     warn_resolution(scene, result);
   }
   result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());

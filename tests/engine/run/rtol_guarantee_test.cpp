@@ -65,14 +65,19 @@ TEST_P(RtolGuarantee, WithinRtolOfTheContinuum) {
     } else {
       // Only the plain route at 1e-6 may run out of springs (2^25 per row) on the hardest
       // scenes; it must then say so, never miss silently.
-      EXPECT_EQ(extrapolation, "none");
+      EXPECT_EQ(extrapolation, "none") << (r.warnings.empty() ? "" : r.warnings.front());
       EXPECT_EQ(rtol, 1e-6);
       EXPECT_FALSE(r.warnings.empty());
       ++unmet;
     }
 
-    ASSERT_TRUE(r.peak.has_value());
     const double peak = ref.peak_adhesive_force;
+    if (peak >= 0.0) {
+      // The path never pulls (a critical force on the compressive branch): no adhesive peak.
+      EXPECT_FALSE(r.peak.has_value()) << r.peak->normal_force << " against " << peak;
+      continue;
+    }
+    ASSERT_TRUE(r.peak.has_value()) << peak;
     const double peak_error = std::abs(r.peak->normal_force - peak) / std::abs(peak);
     ASSERT_TRUE(r.accuracy.peak_error_estimate.has_value());
     EXPECT_LE(peak_error, *r.accuracy.peak_error_estimate / std::abs(r.peak->normal_force))

@@ -238,12 +238,12 @@ TEST(PeakAdhesion, APathThatNeverPullsHasNone) {
   s.normal = "fixed-load";
   s.springs = 2000;
   s.tangential_displacement = 4.0;
-  const mdrsim::RunResult sheared = mdrsim::test::run_quietly(s.build());
+  const mdrsim::RunResult sheared = mdrsim::run_scene(s.build(), {});
   ASSERT_TRUE(sheared.critical);
   EXPECT_GT(sheared.critical->normal_force, 0.0);
   EXPECT_FALSE(sheared.peak);
   s.tangential_displacement = 0.0;
-  const mdrsim::RunResult plain = mdrsim::test::run_quietly(s.build());
+  const mdrsim::RunResult plain = mdrsim::run_scene(s.build(), {});
   ASSERT_TRUE(plain.peak);
   // 2000 springs: the row's O(1/N) error of the critical force is below 1e-3 F0.
   EXPECT_NEAR(plain.peak->normal_force / s.scales().force, -1.0, 1e-3);
