@@ -39,12 +39,14 @@ def test_default_budget_holds_at_most_trajectory_rows():
         {"discretization.springs": springs}))
     t = result.trajectory
     n = len(t["event"])
-    # The whole run gives the preload, one row per detached spring and the instability.
-    assert result.trajectory_rows_seen == springs + 2
+    # The whole run gives the preload, one row per spring let go down to the critical point
+    # (a = a0 = a_g / 2, eq. 19: springs / 2 of them), the let-go that starts the flight and
+    # the instability: the fixed load's flight past the critical state has no rows (SPEC).
+    assert result.trajectory_rows_seen == springs // 2 + 3
     assert mdrsim.TRAJECTORY_ROWS == 100_000
     assert n <= mdrsim.TRAJECTORY_ROWS
-    # Thinned by halvings: a stride of 4 holds 75,000 ordinary rows, 2 would hold 150,000.
-    assert result.trajectory_stride == 4
+    # Thinned by halvings: a stride of 2 holds 75,000 ordinary rows, 1 would hold 150,001.
+    assert result.trajectory_stride == 2
     assert n >= springs // 4
     assert (t["event"][0], t["event"][-1]) == ("preload", "instability")
     # The critical point is held: the equilibrium before the cascade, a cascade's end.
@@ -80,8 +82,8 @@ def test_thinned_rows_are_the_full_trajectorys_rows_kept_by_rank():
 def test_a_budget_above_the_rows_holds_them_all():
     scene = mdrsim.Scene.from_file(FIG2).with_values({"discretization.springs": 500})
     full = mdrsim.run(scene, trajectory=True)
-    exact = mdrsim.run(scene, trajectory=502)
-    assert exact.trajectory_stride == 1 and exact.trajectory_rows_seen == 502
+    exact = mdrsim.run(scene, trajectory=253)  # 500 / 2 + 3 rows, as above
+    assert exact.trajectory_stride == 1 and exact.trajectory_rows_seen == 253
     assert exact.trajectory["normal_force"].tolist() == full.trajectory["normal_force"].tolist()
     assert mdrsim.run(scene, trajectory=False).trajectory_rows_seen == 0
 
