@@ -6,17 +6,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/run/error_estimate.hpp"
+
 namespace mdrsim {
-namespace {
-
-/// No estimate is below the rounding of the sums behind a value (rows of up to 2^25 springs).
-double rounding(double value) { return 1e-13 * std::abs(value); }
-
-}  // namespace
 
 ContactSnapshot extrapolate(const ContactSnapshot& coarse, const ContactSnapshot& fine) {
   ContactSnapshot out = fine;
-  for (const auto member : kBranchQuantities) out.*member = 2.0 * fine.*member - coarse.*member;
+  for (const auto member : kBranchQuantities) {
+    out.*member = richardson_value(coarse.*member, fine.*member);
+  }
   return out;
 }
 
@@ -49,16 +47,13 @@ std::optional<ContactSnapshot> RowSequence::value(Accuracy::Route route) const {
 std::optional<double> RowSequence::estimate(Accuracy::Route route) const {
   if (!usable()) return std::nullopt;
   const std::size_t j = rows_.size() - 1;
-  if (route == Accuracy::Route::row) {
-    if (j < 1) return std::nullopt;
-    double e = std::abs(q(j) - q(j - 1));
-    if (j >= 2) e = std::max(e, 0.5 * std::abs(q(j - 1) - q(j - 2)));
-    return std::max(2.0 * e, rounding(q(j)));
-  }
-  if (j < 2) return std::nullopt;
-  double e = std::abs(r(j) - r(j - 1));
-  if (j >= 3) e = std::max(e, 0.5 * std::abs(r(j - 1) - r(j - 2)));
-  return std::max(2.0 * e, rounding(r(j)));
+  const bool plain = route == Accuracy::Route::row;
+  if (j < (plain ? 1U : 2U)) return std::nullopt;
+  // The last three values (the last two where there are no more) of the route's sequence.
+  const std::size_t first = plain ? (j >= 2 ? j - 2 : j - 1) : (j >= 3 ? j - 2 : j - 1);
+  std::vector<double> values;
+  for (std::size_t i = first; i <= j; ++i) values.push_back(plain ? q(i) : r(i));
+  return std::max(change_estimate(values), rounding_floor(values.back()));
 }
 
 }  // namespace mdrsim

@@ -1,0 +1,117 @@
+// Stage ends, jumps and works combined across rows of doubling springs, with their estimates:
+// one rule for programs (program_resolution.hpp) and the shorthand (run_scene.cpp).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/base/zero_scale.hpp"
+#include "engine/run/pull_off.hpp"
+
+namespace mdrsim {
+
+/// The reported states a combination takes: a program's all (stage ends, jumps, the critical
+/// point, the peak); the shorthand's path only (stage ends, jumps), as its critical point and
+/// peak are combined by RowSequence (row_sequence.hpp).
+enum class PathStates { all, path };
+
+/// Whether rows end alike, so that they can be compared state by state: the status, the
+/// stages, every jump, the critical point and the peak.
+bool end_alike(const RunResult& a, const RunResult& b);
+
+/// Where the first two of the rows (springs, result) that end differently part, in one short
+/// phrase: a long program's rows list hundreds of jumps, most of them alike.
+std::string first_difference(const std::vector<std::pair<std::int64_t, const RunResult*>>& rows);
+
+/// One state's value and estimates as the last three or four rows give it.
+struct StateChoice {
+  ContactSnapshot value;
+  double normal_error;
+  double tangential_error;
+  bool extrapolated;
+};
+
+/// Every state's choice from the last three or four rows (which end alike): Richardson where
+/// every row located the state between springs and `extrapolation` allows it (automatic:
+/// where its estimate is the smaller), else the finest row's own value with the plain estimate
+/// (error_estimate.hpp) plus the edge spring's force, which bounds the front's place between
+/// two springs (two rows can put it alike by chance: a stage end at a let-go front gave
+/// 0.238017, 0.237967, 0.238015 F0 at 16000, 64000, 256000 springs against 0.238026).
+std::vector<StateChoice> choose_states(std::vector<RunResult>& rows,
+                                       DiscretizationOptions::Extrapolation extrapolation,
+                                       PathStates which);
+
+/// Writes the choices into the row. Returns whether any was extrapolated, and the states
+/// that were not though rows locate them (for the richardson route's warning).
+struct WrittenStates {
+  bool extrapolated = false;
+  std::vector<std::string> plain;
+};
+WrittenStates write_states(RunResult& r, const std::vector<StateChoice>& choices, PathStates which);
+
+/// One work's value and estimate from the last three or four rows (which end alike).
+struct WorkChoice {
+  double value;
+  double error;
+  /// The rows' differences grow geometrically: the work depends on the spring count, not
+  /// through a discretization error (a fixed load's flight after the last spring): no rtol
+  /// covers it, and a warning says so.
+  bool diverges = false;
+};
+
+/// Every work (each stage's per axis, then the total's) chosen as a state's force: the
+/// finest row's own with the plain estimate, or Richardson 2 W_j - W_j-1 with its estimate,
+/// where `extrapolation` allows it (automatic: where its estimate is the smaller). The work
+/// is a sum of exact trapezoids between the rows' changes, so its error is that of the
+/// changes' places: O(dx), smooth where the states are (the reversible cycle: -1.73e-3,
+/// -8.82e-4, -4.43e-4, -2.23e-4 relative on 256 ... 2048 springs). Only the stages need to
+/// match across rows.
+std::vector<WorkChoice> choose_works(std::vector<RunResult>& rows,
+                                     DiscretizationOptions::Extrapolation extrapolation);
+
+/// Writes the works' choices into the row: values, each stage's estimate, the total's.
+void write_works(RunResult& r, const std::vector<WorkChoice>& choices);
+
+/// What the estimates cover (Accuracy::covers): the forces, and the works unless one of them
+/// diverges, which the warning returned names (empty if none).
+std::string set_covers(RunResult& r, const std::vector<WorkChoice>& works_chosen);
+
+/// Whether every choice's estimate is within rtol of its force, and every work's of its
+/// work. A force (a work) below 1e-6 of the path's largest is held to that absolutely, and
+/// nothing to less than what is zero on the rows (zero_scale.hpp): a non-adhesive cycle's
+/// total work is rounding of its stages' (6e-21 J of 6.4e-9 J).
+bool within(const std::vector<StateChoice>& choices, const std::vector<WorkChoice>& work_choices,
+            const ZeroScale& zero, double rtol);
+
+/// The rows refine_path compares: four, so that each estimate compares two differences (a
+/// plain row's sawtooth can make two rows alike by chance).
+inline constexpr std::size_t kRowsKept = 4;
+
+/// What refine_path found.
+struct PathRefinement {
+  std::vector<RunResult> rows;        ///< the last kRowsKept rows run, coarsest first
+  std::vector<std::int64_t> springs;  ///< the springs of every row run
+  RunCounts counts;                   ///< of every row run
+  std::vector<StateChoice> choices;   ///< empty where the last rows end differently
+  std::vector<WorkChoice> work_choices;
+  bool met = false;
+  std::string why;  ///< why rtol is not met
+  /// The springs of the rows the choices come from (the last kRowsKept), finest last.
+  std::vector<std::int64_t> rows_used() const;
+};
+
+/// Rows of `first`, 2 `first`, ... springs, each run by `run` (without observers), until the
+/// last kRowsKept rows end alike and every state's and work's estimate over them meets rtol
+/// (within above), or the next row would have more than `max_springs`.
+PathRefinement refine_path(std::int64_t first, std::int64_t max_springs,
+                           const std::function<RunResult(std::int64_t)>& run,
+                           DiscretizationOptions::Extrapolation extrapolation, PathStates which,
+                           const ZeroScale& zero, double rtol);
+
+/// Items joined by ", ".
+std::string join_list(const std::vector<std::string>& items);
+
+}  // namespace mdrsim
