@@ -13,18 +13,21 @@
 #include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"
+#include "engine/run/shorthand_accuracy.hpp"
 #include "engine/run/status_margin.hpp"
 
 namespace mdrsim {
 namespace {
 
-/// Rows of N/2, N and 2N springs across the glued radius; the finest row's events.
+/// Rows of N/2, N and 2N springs across the glued radius; the finest row's events. The
+/// critical point and the peak combined by RowSequence, the path as a program's.
 RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
   const std::int64_t n = scene.springs;
   RowSequence seq(Target::critical);
   RunCounts counts;
   for (const std::int64_t springs : {n / 2, n}) {
-    seq.add(run_row(scene, {.springs = springs, .outer_radius = scene.glued_radius}, {}));
+    seq.add(run_row(
+        scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {}));
     counts += seq.last().counts;
   }
   seq.add(run_row(scene,
@@ -51,6 +54,7 @@ RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
     result.peak = value;
     result.accuracy.peak_error_estimate = peaks.estimate(Accuracy::Route::richardson);
   }
+  combine_shorthand_path(seq.rows(), result);
   return result;
 }
 
@@ -118,6 +122,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
     if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;
     if (scene.discretization.richardson()) route = Accuracy::Route::richardson;
     result = run_adaptive(scene, *scene.discretization.rtol, route, observers);
+    refine_shorthand_path(scene, *scene.discretization.rtol, result);
   } else if (scene.discretization.richardson()) {
     result = run_richardson(scene, observers);
   } else {

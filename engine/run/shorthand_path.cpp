@@ -10,6 +10,12 @@ bool through_spring(const AffineConstraint& c) {
   return c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0;
 }
 
+/// A stage that ends with every spring of the row in contact ends at a right-endpoint sum
+/// over the springs, smooth in the spacing: its end is located as it is, for Richardson.
+void locate_whole_row(const Contact& contact, StageRecord& stage) {
+  if (stage.end.springs_in_contact == contact.foundation().springs()) stage.refined_end = stage.end;
+}
+
 }  // namespace
 
 JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
@@ -70,6 +76,7 @@ void ShorthandPath::preload(const Contact& contact) {
   const double squares = n * d * d - 2.0 * d * row.total_image() + row.total_image_squares();
   StageRecord stage{"preload", contact.snapshot(), {}};
   stage.work.normal = contact.material().effective_modulus * row.spacing() * squares;
+  locate_whole_row(contact, stage);
   stages_.push_back(stage);
 }
 
@@ -80,6 +87,7 @@ void ShorthandPath::tangential(const Contact& contact, std::optional<double> mac
   if (machine_stiffness) {
     stage.work.tangential += 0.5 * s.tangential_force * s.tangential_force / *machine_stiffness;
   }
+  locate_whole_row(contact, stage);
   stages_.push_back(stage);
   last_ = contact.save();
   force_ = s.normal_force;

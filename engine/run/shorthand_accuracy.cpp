@@ -1,0 +1,106 @@
+// The shorthand's path through the rule programs use: rows that end alike, their states and
+// works chosen and written back, and what the estimates cover.
+#include "engine/run/shorthand_accuracy.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <utility>
+
+#include "engine/base/zero_scale.hpp"
+#include "engine/run/path_estimates.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr std::int64_t kFirstPathRow = 512;
+
+/// The critical point's and the peak's estimates, which RowSequence made, as `covers`
+/// entries; the path's with them where `path` (its works unless they diverge).
+void shorthand_covers(RunResult& result, bool path, const std::vector<WorkChoice>& works,
+                      std::vector<std::string>& warnings) {
+  if (path) {
+    if (std::string w = set_covers(result, works); !w.empty()) warnings.push_back(std::move(w));
+    return;
+  }
+  result.accuracy.covers = {"critical.normal_force", "peak_adhesion.normal_force"};
+}
+
+/// Row detail the shorthand's rows leave implicit: its stage ends and jumps where they are
+/// the critical point, located between springs as it is (fold_refinement.hpp).
+void locate_at_critical(RunResult& row) {
+  if (!row.critical || !row.refined_critical) return;
+  const auto at_critical = [&](const ContactSnapshot& s) {
+    return s.springs_in_contact == row.critical->springs_in_contact &&
+           s.normal_force == row.critical->normal_force;
+  };
+  for (StageRecord& stage : row.stages) {
+    if (!stage.refined_end && at_critical(stage.end)) stage.refined_end = row.refined_critical;
+  }
+  for (JumpRecord& jump : row.jumps) {
+    if (!jump.refined_critical && at_critical(jump.critical)) {
+      jump.refined_critical = row.refined_critical;
+    }
+  }
+}
+
+}  // namespace
+
+void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result) {
+  if (rows.size() < 3 || !result.work) return;
+  for (RunResult& row : rows) {
+    if (!row.work) return;  // a row's work left the range of a double: nothing to combine
+    locate_at_critical(row);
+  }
+  const std::size_t n = rows.size();
+  if (!end_alike(rows[n - 3], rows[n - 2]) || !end_alike(rows[n - 2], rows[n - 1])) {
+    result.warnings.push_back(fmt::format(
+        "richardson: the rows of {}, {} and {} springs end differently along the path ({}); the "
+        "stages, jumps and work are the finest row's, without estimates",
+        rows[n - 3].springs, rows[n - 2].springs, rows[n - 1].springs,
+        first_difference({{rows[n - 3].springs, &rows[n - 3]},
+                          {rows[n - 2].springs, &rows[n - 2]},
+                          {rows[n - 1].springs, &rows[n - 1]}})));
+    shorthand_covers(result, false, {}, result.warnings);
+    return;
+  }
+  using Extrapolation = DiscretizationOptions::Extrapolation;
+  write_states(result, choose_states(rows, Extrapolation::richardson, PathStates::path),
+               PathStates::path);
+  const std::vector<WorkChoice> works = choose_works(rows, Extrapolation::richardson);
+  write_works(result, works);
+  shorthand_covers(result, true, works, result.warnings);
+}
+
+void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result) {
+  const ZeroScale zero = zero_scale(scene.material.effective_modulus, scene.glued_radius,
+                                    scene.profile->mdr_image(scene.glued_radius),
+                                    scene.material.work_of_adhesion, scene.preload_force);
+  const auto run = [&](std::int64_t springs) {
+    RunResult row = run_row(
+        scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {});
+    locate_at_critical(row);
+    return row;
+  };
+  PathRefinement p = refine_path(kFirstPathRow, scene.discretization.max_row_springs, run,
+                                 scene.discretization.extrapolation, PathStates::path, zero, rtol);
+  result.counts += p.counts;
+  RunResult& finest = p.rows.back();
+  result.stages = std::move(finest.stages);
+  result.jumps = std::move(finest.jumps);
+  result.work = finest.work;
+  if (!result.work) return;  // the work left the range of a double: the row said so
+  if (!p.choices.empty()) write_states(result, p.choices, PathStates::path);
+  if (!p.work_choices.empty()) write_works(result, p.work_choices);
+  std::vector<std::string> warnings;
+  shorthand_covers(result, p.met, p.work_choices, warnings);
+  if (!p.met) {
+    warnings.push_back(fmt::format(
+        "rtol = {} not met for the stages, jumps and work with rows of up to {} springs across "
+        "the glued radius: {}; they are the finest row's, and the estimates do not cover them",
+        rtol, p.springs.back(), p.why.empty() ? "too few rows" : p.why));
+  }
+  result.warnings.insert(result.warnings.end(), warnings.begin(), warnings.end());
+}
+
+}  // namespace mdrsim
