@@ -5,6 +5,7 @@
 #include <numbers>
 #include <optional>
 
+#include "engine/base/hess_scale.hpp"
 #include "engine/base/material.hpp"
 
 namespace mdrsim {
@@ -19,9 +20,7 @@ struct BoundarySpring {
 /// The rule of Hess (paper eq. 12): the elongation dl(a) [m] at which a spring of a pure
 /// normal contact lets go at contact radius a [m].
 inline double hess_elongation_limit(const InterfaceProperties& p, double contact_radius) {
-  // dgamma / E* first: 2 pi dgamma alone overflows for dgamma near the largest double.
-  return std::sqrt(2.0 * std::numbers::pi * contact_radius *
-                   (p.work_of_adhesion / p.effective_modulus));
+  return std::sqrt(hess_scale(p.work_of_adhesion, p.effective_modulus) * contact_radius);
 }
 
 /// Ratios the closed-form criteria need at every let-go, computed once.
@@ -30,8 +29,7 @@ struct ElongationScales {
   double shear_ratio;              ///< G* / E* [1]
 
   explicit ElongationScales(const InterfaceProperties& p)
-      : hess_squared_per_radius(2.0 * std::numbers::pi *
-                                (p.work_of_adhesion / p.effective_modulus)),
+      : hess_squared_per_radius(hess_scale(p.work_of_adhesion, p.effective_modulus)),
         shear_ratio(p.effective_shear_modulus / p.effective_modulus) {}
 };
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/base/hess_scale.hpp"
+
 namespace mdrsim {
 
 /// A run's sums (of up to 2^25 springs) round at 1e-16 to 1e-13 of their terms; the values
@@ -32,7 +34,7 @@ struct ZeroScale {
 /// D. Each times kRoundingShare.
 inline ZeroScale zero_scale(double effective_modulus, double radius, double image,
                             double work_of_adhesion, double held_force = 0.0) {
-  const double hess = 2.0 * std::numbers::pi * work_of_adhesion / effective_modulus;
+  const double hess = hess_scale(work_of_adhesion, effective_modulus);
   const double depth = std::max(std::abs(image), hess);
   const double force = std::max(effective_modulus * radius * depth, std::abs(held_force));
   const auto finite = [](double v) { return std::isfinite(v) ? v : 0.0; };

@@ -1,10 +1,19 @@
 // Let-go of the boundary spring, in elongation (criterion) and in control value (constraint).
 #include "engine/methods/boundary_let_go.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace mdrsim {
+
+void require_let_go(const LetGo& go, double contact_radius) {
+  if (go.kind != LetGo::Kind::never) return;
+  throw std::runtime_error(fmt::format(
+      "the detachment criterion never lets go of the boundary spring at a = {} m", contact_radius));
+}
 
 BoundaryLetGo locate_boundary_let_go(const Contact& contact, const DetachmentCriterion& criterion) {
   const double a = contact.contact_radius();

@@ -18,6 +18,11 @@ struct BoundaryLetGo {
 /// d = g(a) - e and the control value follows from the constraint.
 BoundaryLetGo locate_boundary_let_go(const Contact& contact, const DetachmentCriterion& criterion);
 
+/// Throws std::runtime_error naming the radius where `go` is LetGo::Kind::never: a criterion
+/// that never lets go of the boundary spring at contact radius a [m] is faulty (both engines
+/// ask this after every let-go they locate).
+void require_let_go(const LetGo& go, double contact_radius);
+
 /// The criterion evaluated at the contact's current state, as the paper's stepping does:
 /// the spring lets go when its margin is <= 0 while stretched, or < 0 at zero elongation.
 bool boundary_lets_go_now(const Contact& contact, const DetachmentCriterion& criterion);

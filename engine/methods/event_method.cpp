@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 #include "engine/methods/boundary_let_go.hpp"
 
@@ -15,11 +13,7 @@ AdvanceOutcome EventMethod::advance(Contact& contact, const DetachmentCriterion&
                                     const ObserverList& observers, RunCounts& counts) {
   const BoundaryLetGo go = locate_boundary_let_go(contact, criterion);
   counts.root_iterations += go.let_go.root_iterations;
-  if (go.let_go.kind == LetGo::Kind::never) {
-    throw std::runtime_error(
-        "the detachment criterion never lets go of the boundary spring at a = " +
-        std::to_string(contact.contact_radius()) + " m");
-  }
+  require_let_go(go.let_go, contact.contact_radius());
   AdvanceOutcome out;
   out.first_by_shear = go.let_go.kind == LetGo::Kind::now;
   const double held = contact.normal_control();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "controllers/controller.hpp"
+#include "engine/base/hess_scale.hpp"
 #include "engine/base/material.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/contact_snapshot.hpp"
@@ -128,8 +129,7 @@ class ProgramRow {
 
  private:
   static double front_coefficient(const Material& material) {
-    return 2.0 * std::numbers::pi *
-           (material.approach_work_of_adhesion / material.effective_modulus);
+    return hess_scale(material.approach_work_of_adhesion, material.effective_modulus);
   }
 
   /// The equilibrium of each axis, computed once per change of the row or of that axis: a

@@ -2,6 +2,7 @@
 #include "engine/reference/branch_reference.hpp"
 
 #include "engine/base/bracketed_root.hpp"
+#include "engine/base/hess_scale.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -16,8 +17,7 @@ EquilibriumBranch::EquilibriumBranch(const Profile& profile, const Material& mat
     : profile_(&profile),
       material_(material),
       tangential_(tangential),
-      adhesion_length_(2.0 * std::numbers::pi * material.work_of_adhesion /
-                       material.effective_modulus) {}
+      adhesion_length_(hess_scale(material.work_of_adhesion, material.effective_modulus)) {}
 
 // Held u: (G*/E*) u^2. Held F_x: u = F_x/(2 G* a), so (G*/E*) u^2 = F_x^2/(4 E* G* a^2).
 double EquilibriumBranch::shear_term(double a) const {

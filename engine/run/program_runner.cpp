@@ -17,6 +17,8 @@
 
 #include "detachment/let_go.hpp"
 #include "engine/base/bracketed_root.hpp"
+#include "engine/methods/boundary_let_go.hpp"
+#include "engine/run/loss_status.hpp"
 #include "engine/run/program_front.hpp"
 #include "engine/run/progress_log.hpp"
 
@@ -24,8 +26,6 @@ namespace mdrsim {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-/// A last spring carrying less than this share of the path's largest |F| peels off smoothly.
-constexpr double kNegligibleForce = 1e-3;
 /// Spring changes per spring of the row a stage may take: a stage sweeps its row a few times
 /// at most, but stick-slip (rebinding under a shear ramp) changes the edge spring once per
 /// slip, and a large ramp slips without end.
@@ -326,10 +326,7 @@ LetGo ProgramRunner::boundary_let_go(double u) {
   }
   const LetGo go = locate_let_go(criterion_, a, stretch_x, std::abs(stretch_x) + row_.spacing());
   result_.counts.root_iterations += go.root_iterations;
-  if (go.kind == LetGo::Kind::never) {
-    throw std::runtime_error(fmt::format(
-        "the detachment criterion never lets go of the boundary spring at a = {} m", a));
-  }
+  require_let_go(go, a);
   let_go_cache_ = {row_.glued(), stretch_x, go};
   return go;
 }
@@ -849,19 +846,23 @@ void ProgramRunner::run_stage(const Stage& stage) {
 void ProgramRunner::finish(RunResult& r) {
   r.work = total_work_;
   const bool lost = row_.in_contact() == 0 && ever_in_contact_;
-  const auto loss_status = [&](const Cascade& c) {
+  const auto decide_loss = [&](const Cascade& c) {
     if (zero_.zero_force(c.before.normal_force) && c.glued == 0) {
       // Nothing carried a force or glue when the contact went: no critical point.
       r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::no_instability;
-    } else if (c.changes >= 2) {
-      r.status = c.second_by_shear ? RunStatus::shear_off : RunStatus::instability;
+      return;
+    }
+    const LossCascade loss{.changes = c.changes,
+                           .springs_before = c.in_contact,
+                           .force_before = c.before.normal_force,
+                           .largest_force = largest_force_,
+                           .first_by_shear = c.first_by_shear,
+                           .second_by_shear = c.second_by_shear};
+    r.status = loss_status(loss);
+    if (c.changes >= 2) {
       r.critical = c.before;
       r.refined_critical = c.refined_before;
-    } else if (std::abs(c.before.normal_force) <= kNegligibleForce * largest_force_ &&
-               c.in_contact <= 1) {
-      r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::no_instability;
-    } else {
-      r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::instability;
+    } else if (!peels_smoothly(loss)) {
       r.critical = c.before;
     }
   };
@@ -922,7 +923,7 @@ void ProgramRunner::finish(RunResult& r) {
       return;
     case Stop::cannot_hold_tangential:
       if (last_glue_loss_) {
-        loss_status(*last_glue_loss_);
+        decide_loss(*last_glue_loss_);
         if (last_glue_loss_->changes < 2) r.status = RunStatus::shear_off;
       } else {
         r.status = RunStatus::no_instability;
@@ -941,13 +942,13 @@ void ProgramRunner::finish(RunResult& r) {
             stage_->name, row_.normal().held, normal_start_ + normal_rate_));
         return;
       }
-      loss_status(deciding_loss());
+      decide_loss(deciding_loss());
       return;
     case Stop::none:
       break;
   }
   if (lost && last_contact_loss_) {
-    loss_status(deciding_loss());
+    decide_loss(deciding_loss());
     return;
   }
   r.status = RunStatus::completed;

@@ -18,6 +18,7 @@
 #include "engine/methods/stepping_method.hpp"
 #include "engine/model/tangential_strength.hpp"
 #include "engine/run/fold_refinement.hpp"
+#include "engine/run/loss_status.hpp"
 #include "engine/run/progress_log.hpp"
 #include "engine/run/shorthand_path.hpp"
 #include "engine/run/status_margin.hpp"
@@ -298,16 +299,16 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
     result.tangential_strength = tangential_strength(at_application, *scene.criterion);
     return result;
   }
-  // The last spring let go on its own, the control still falling, and carried next to no
-  // force: the contact peeled off smoothly to zero force and nothing jumped. (A last spring
-  // that still carries a finite tension jumps off; in the continuum a smooth peel ends at
-  // F -> 0, which the row approaches as x_1 -> 0.)
-  constexpr double kNegligibleForce = 1e-3;  ///< of the largest |F| on the path
-  const bool smooth = cascade.size == 1 && track.last().springs_in_contact == 1 &&
-                      std::abs(track.last_force()) <= kNegligibleForce * track.largest_force();
-  result.status = smooth             ? RunStatus::no_instability
-                  : cascade.by_shear ? RunStatus::shear_off
-                                     : RunStatus::instability;
+  // The status from the cascade that lost the contact (loss_status.hpp). A single let-go's
+  // cascade.by_shear is false: the first spring let go at an equilibrium, stretched.
+  const LossCascade loss{.changes = cascade.size,
+                         .springs_before = track.last().springs_in_contact,
+                         .force_before = track.last_force(),
+                         .largest_force = track.largest_force(),
+                         .first_by_shear = cascade.by_shear,
+                         .second_by_shear = cascade.by_shear};
+  result.status = loss_status(loss);
+  const bool smooth = result.status == RunStatus::no_instability;
   fill_critical(result, contact, *scene.criterion, track);
   if (smooth) {
     result.critical.reset();

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "engine/base/bracketed_root.hpp"
+#include "engine/base/hess_scale.hpp"
 #include "engine/model/program_row.hpp"
 #include "engine/run/program_runner.hpp"
 
@@ -66,8 +67,7 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
   if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
   const double coefficient =
       largest.glued_edge
-          ? 2.0 * std::numbers::pi *
-                (scene.material.approach_work_of_adhesion / scene.material.effective_modulus)
+          ? hess_scale(scene.material.approach_work_of_adhesion, scene.material.effective_modulus)
           : 0.0;
   if (coefficient == 0.0) return profile.contact_radius_at_depth(largest.indentation);
   const auto excess = [&](double x) {
@@ -125,8 +125,7 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   // touch), as ProgramRow's front does.
   const double coefficient =
       scene.material.work_of_adhesion > 0.0
-          ? 2.0 * std::numbers::pi *
-                (scene.material.approach_work_of_adhesion / scene.material.effective_modulus)
+          ? hess_scale(scene.material.approach_work_of_adhesion, scene.material.effective_modulus)
           : 0.0;
   const auto excess = [&](double x) {
     return profile.mdr_image(x) - std::sqrt(coefficient * x) - deepest;
