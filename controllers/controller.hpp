@@ -36,7 +36,21 @@ inline double held_value_at(const AffineConstraint& c, const LinearResponse& r,
          c.force_coefficient * (r.stiffness * displacement - r.offset);
 }
 
-/// Required: constraint() and held_value_key().
+/// What the engine asks of a machine axis, answered from its constraint alone (the one home of
+/// these rules; AxisController answers the same for its constraint()).
+/// Fixed load: a_u = 0, the held value is the force, and the indenter moves at constant force
+/// as springs let go (it separates or slides away once nothing holds it).
+inline bool holds_force(const AffineConstraint& c) { return c.displacement_coefficient == 0.0; }
+/// Compliant: both coefficients positive, the machine end (the held value) drives the indenter
+/// through a spring of stiffness 1 / a_F; the machine's work is done at that end.
+inline bool drives_through_spring(const AffineConstraint& c) {
+  return c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0;
+}
+/// Fixed grips: a_F = 0, the held value is the indenter's own displacement.
+inline bool is_fixed_grips(const AffineConstraint& c) { return c.force_coefficient == 0.0; }
+
+/// Required: constraint() and held_value_key(). Optional: the questions below, which default to
+/// the answers of constraint() (a controller may answer them without building it).
 class AxisController {
  public:
   virtual ~AxisController() = default;
@@ -47,6 +61,13 @@ class AxisController {
   /// Required: the scene key of the value it holds on the tangential axis
   /// ("displacement" [m] or "force" [N]).
   virtual std::string_view held_value_key() const = 0;
+
+  /// Optional: whether the held value is the force (fixed load).
+  virtual bool holds_force() const { return mdrsim::holds_force(constraint()); }
+  /// Optional: whether the machine drives the indenter through a spring (compliant).
+  virtual bool drives_through_spring() const { return mdrsim::drives_through_spring(constraint()); }
+  /// Optional: whether the held value is the indenter's displacement itself (fixed grips).
+  virtual bool is_fixed_grips() const { return mdrsim::is_fixed_grips(constraint()); }
 };
 
 }  // namespace mdrsim

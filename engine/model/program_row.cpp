@@ -21,13 +21,13 @@ void ProgramRow::springs_changed(bool normal, bool tangential) {
   // Under fixed grips (a_F = 0) d(displacement)/d(held) = 1/a_u does not depend on the springs.
   if (normal) {
     normal_cached_ = false;
-    if (normal_.constraint.force_coefficient != 0.0 || normal_per_held_ == 0.0) {
+    if (!is_fixed_grips(normal_.constraint) || normal_per_held_ == 0.0) {
       normal_response_cached_ = false;
     }
   }
   if (tangential) {
     tangential_cached_ = false;
-    if (tangential_.constraint.force_coefficient != 0.0 || tangential_per_held_ == 0.0) {
+    if (!is_fixed_grips(tangential_.constraint) || tangential_per_held_ == 0.0) {
       tangential_response_cached_ = false;
     }
   }
@@ -140,7 +140,7 @@ void ProgramRow::glue_next_as_boundary() {
 bool ProgramRow::tangential_unchanged_by(double offset) const {
   // Where the tangential displacement does not depend on the springs (a_F = 0), a spring at
   // zero tangential stretch adds or removes no tangential force.
-  return tangential_.constraint.force_coefficient == 0.0 && tangential_cached_ &&
+  return is_fixed_grips(tangential_.constraint) && tangential_cached_ &&
          offset == tangential_equilibrium_.displacement;
 }
 

@@ -55,10 +55,6 @@ bool finite(const ContactSnapshot& s) {
          std::isfinite(s.normal_control);
 }
 
-bool drives_through_spring(const AffineConstraint& c) {
-  return c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0;
-}
-
 /// A cascade: the changes at one value of the stage parameter after the one that was found.
 struct Cascade {
   ContactSnapshot before;
@@ -477,8 +473,8 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
 void ProgramRunner::apply(Change change, Cascade& cascade) {
   // At one t only a fixed-load axis moves its driving point (the indenter, at constant force);
   // under fixed grips and compliant the driving point is the held value, which stays.
-  const bool normal_moves = row_.normal().constraint.displacement_coefficient == 0.0;
-  const bool tangential_moves = row_.tangential().constraint.displacement_coefficient == 0.0;
+  const bool normal_moves = holds_force(row_.normal().constraint);
+  const bool tangential_moves = holds_force(row_.tangential().constraint);
   const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   const std::int64_t k = row_.glued();
@@ -749,9 +745,8 @@ void ProgramRunner::run_stage(const Stage& stage) {
         "stage '{}' runs until separation but starts with no spring in contact: it ends at once",
         stage.name));
   } else {
-    const bool buffer_cascades =
-        observe_springs_ && (row_.normal().constraint.displacement_coefficient == 0.0 ||
-                             row_.tangential().constraint.displacement_coefficient == 0.0);
+    const bool buffer_cascades = observe_springs_ && (holds_force(row_.normal().constraint) ||
+                                                      holds_force(row_.tangential().constraint));
     {
       Cascade cascade = begin_cascade();
       buffering_ = buffer_cascades;

@@ -211,8 +211,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
     }
   }
   if (path) {
-    const bool spring = tangential_constraint.displacement_coefficient > 0.0 &&
-                        tangential_constraint.force_coefficient > 0.0;
+    const bool spring = drives_through_spring(tangential_constraint);
     path->tangential(contact,
                      spring ? std::optional<double>(1.0 / tangential_constraint.force_coefficient)
                             : std::nullopt);
@@ -233,9 +232,9 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   CascadeBuffer buffer(observers);
   ObserverList buffered;
   buffered.add(buffer);
-  const bool may_fly = (scene.normal.controller->constraint().displacement_coefficient == 0.0 ||
-                        tangential_constraint.displacement_coefficient == 0.0) &&
-                       !observers.empty();
+  const bool may_fly =
+      (holds_force(scene.normal.controller->constraint()) || holds_force(tangential_constraint)) &&
+      !observers.empty();
   const ObserverList& pull_off_observers = may_fly ? buffered : observers;
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {

@@ -30,12 +30,19 @@ double guess_radius(const Scene& scene) {
   double radius = 0.0;
   double held = 0.0;  // the normal held value, while its unit is known
   bool known = true;
-  std::string control = "fixed-grips";
+  // A program starts under fixed grips (docs: loading programs); the held value keeps its
+  // meaning while the controller holds the same quantity, and the machine end of a spring is
+  // no depth.
+  bool holds_force = false;
+  bool through_spring = false;
   for (const Stage& stage : scene.program->stages) {
     if (!stage.normal) continue;
     const StageAxis& axis = *stage.normal;
-    if (axis.control != control || axis.control == "compliant") known = false;
-    control = axis.control;
+    const bool now_force = axis.controller->holds_force();
+    const bool now_spring = axis.controller->drives_through_spring();
+    if (now_force != holds_force || now_spring != through_spring || now_spring) known = false;
+    holds_force = now_force;
+    through_spring = now_spring;
     if (axis.motion == StageAxis::Motion::to) {
       held = axis.value;
       known = true;
@@ -43,9 +50,8 @@ double guess_radius(const Scene& scene) {
     if (axis.motion == StageAxis::Motion::by && !stage.until_separation) held += axis.value;
     if (!known || !(held > 0.0)) continue;
     try {
-      const bool force = axis.controller->held_value_key() == "force";
-      const double a = force ? contact_radius_at_force(profile, held, e_star)
-                             : profile.contact_radius_at_depth(held);
+      const double a = holds_force ? contact_radius_at_force(profile, held, e_star)
+                                   : profile.contact_radius_at_depth(held);
       if (std::isfinite(a)) radius = std::max(radius, a);
     } catch (const std::exception&) {
       // Out of the profile's reach: the pilot finds out.
@@ -111,7 +117,7 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   for (const Stage& stage : scene.program->stages) {
     if (!stage.normal) continue;
     const StageAxis& axis = *stage.normal;
-    if (axis.control != "fixed-grips") return std::nullopt;
+    if (!axis.controller->is_fixed_grips()) return std::nullopt;
     if (axis.motion == StageAxis::Motion::to) held = axis.value;
     if (axis.motion == StageAxis::Motion::by) {
       if (stage.until_separation && axis.value > 0.0) return std::nullopt;
@@ -185,7 +191,7 @@ ProgramRowFrame located_frame(const Scene& scene) {
 ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
   double held_force = 0.0;
   for (const Stage& stage : scene.program->stages) {
-    if (stage.normal && stage.normal->control == "fixed-load" &&
+    if (stage.normal && stage.normal->controller->holds_force() &&
         stage.normal->motion == StageAxis::Motion::to) {
       held_force = std::max(held_force, std::abs(stage.normal->value));
     }

@@ -6,10 +6,6 @@ namespace mdrsim {
 
 namespace {
 
-bool through_spring(const AffineConstraint& c) {
-  return c.displacement_coefficient > 0.0 && c.force_coefficient > 0.0;
-}
-
 /// A stage that ends with every spring of the row in contact ends at a right-endpoint sum
 /// over the springs, smooth in the spacing: its end is located as it is, for Richardson.
 void locate_whole_row(const Contact& contact, StageRecord& stage) {
@@ -22,10 +18,10 @@ JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& nor
                          const AffineConstraint& tangential) {
   if (lost.springs_in_contact > 0) return JumpEnd::state;
   // The held normal value falls during the pull-off: a fixed load at zero pulls next.
-  if (normal.displacement_coefficient == 0.0 && lost.normal_control <= 0.0) {
+  if (holds_force(normal) && lost.normal_control <= 0.0) {
     return JumpEnd::separated;
   }
-  if (tangential.displacement_coefficient == 0.0 && lost.tangential_held != 0.0) {
+  if (holds_force(tangential) && lost.tangential_held != 0.0) {
     return JumpEnd::sliding;
   }
   return JumpEnd::state;
@@ -34,8 +30,8 @@ JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& nor
 ShorthandPath::ShorthandPath(const AffineConstraint& normal, const AffineConstraint& tangential)
     : normal_(normal),
       tangential_(tangential),
-      normal_through_spring_(through_spring(normal)),
-      tangential_fixed_load_(tangential.displacement_coefficient == 0.0) {}
+      normal_through_spring_(drives_through_spring(normal)),
+      tangential_fixed_load_(holds_force(tangential)) {}
 
 ContactSnapshot ShorthandPath::snapshot(const Contact& contact, const Contact::State& state) const {
   if (state.springs_in_contact > 0) return contact.snapshot_of(state);

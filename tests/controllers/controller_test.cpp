@@ -3,6 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string_view>
+#include <utility>
+#include <vector>
+
 #include "controllers/builtin_controllers.hpp"
 #include "controllers/controller_registry.hpp"
 
@@ -49,4 +54,45 @@ TEST(Controllers, CompliantSpringAndItsLimits) {
   EXPECT_NEAR(contact.stiffness * u_soft - contact.offset, held_force,
               1e-9 * std::abs(u_soft) + 1e-15);
   EXPECT_THROW(mdrsim::CompliantController(0.0), std::invalid_argument);
+}
+
+// The questions the engine asks instead of comparing names: each built-in answers them as its
+// constraint does (one rule: fixed load a_u = 0, compliant a_u, a_F > 0, fixed grips a_F = 0),
+// and an outside controller that answers none gets its constraint's answers.
+TEST(Controllers, QuestionsAgreeWithTheConstraint) {
+  struct Answers {
+    bool force;
+    bool spring;
+    bool grips;
+  };
+  const auto answers = [](const mdrsim::AxisController& c) {
+    return Answers{c.holds_force(), c.drives_through_spring(), c.is_fixed_grips()};
+  };
+  const auto of_constraint = [](const mdrsim::AxisController& c) {
+    const AffineConstraint k = c.constraint();
+    return Answers{mdrsim::holds_force(k), mdrsim::drives_through_spring(k),
+                   mdrsim::is_fixed_grips(k)};
+  };
+  struct Outside final : mdrsim::AxisController {
+    AffineConstraint constraint() const override { return {0.0, 2.0}; }  // a load cell
+    std::string_view held_value_key() const override { return "force"; }
+  };
+  const mdrsim::FixedGripsController grips;
+  const mdrsim::FixedLoadController load;
+  const mdrsim::CompliantController spring(40.0);
+  const mdrsim::CompliantController infinitely_stiff(INFINITY);  // 1 / k = 0: fixed grips
+  const Outside outside;
+  const std::vector<std::pair<const mdrsim::AxisController*, Answers>> expected{
+      {&grips, {false, false, true}},
+      {&load, {true, false, false}},
+      {&spring, {false, true, false}},
+      {&infinitely_stiff, {false, false, true}},
+      {&outside, {true, false, false}}};
+  for (const auto& [controller, want] : expected) {
+    for (const Answers got : {answers(*controller), of_constraint(*controller)}) {
+      EXPECT_EQ(got.force, want.force);
+      EXPECT_EQ(got.spring, want.spring);
+      EXPECT_EQ(got.grips, want.grips);
+    }
+  }
 }
