@@ -34,6 +34,23 @@ struct ElongationScales {
 };
 
 /// Required: margin(). Optional: critical_elongation().
+///
+/// The contract both engines rely on, at every contact radius a, for elongations >= 0:
+/// 1. The margin is continuous and non-increasing in the elongation (u_x and a fixed): the
+///    spring lets go at the first elongation where it reaches 0 and stays let go beyond it.
+///    The let-go is located by doubling the elongation until the margin is <= 0 and
+///    bracketing the root below (let_go.hpp): a margin that dips to 0 and rises again is
+///    found at a later root or never, and a margin that rises back past 0 lets a spring hold
+///    at a larger stretch than the one it let go at: the critical point is wrong.
+/// 2. The set where the spring holds (margin > 0) is convex in (elongation, u_x): along any
+///    line in that plane the margin is positive on one interval. A loading program moves the
+///    indentation and u_x together along lines, and locates the next let-go on a line by one
+///    sign change of the margin from the present state to the line's end: a holding set that
+///    is not convex (a margin positive, then <= 0, then positive again on one line) loses the
+///    let-go in between, and the spring is found to hold where it had let go.
+/// The engine samples both on a grid at the run's radii before a run (criterion_contract.hpp)
+/// and stops with an error naming the criterion where they fail. Every built-in criterion
+/// satisfies them (tests/engine/run/criterion_contract_test.cpp).
 class DetachmentCriterion {
  public:
   virtual ~DetachmentCriterion() = default;

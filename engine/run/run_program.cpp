@@ -13,6 +13,7 @@
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
 #include "engine/model/program_row.hpp"
+#include "engine/run/criterion_contract.hpp"
 #include "engine/run/program_runner.hpp"
 
 namespace mdrsim {
@@ -202,6 +203,8 @@ ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
 
 ProgramRowFrame program_row_frame(const Scene& scene) {
   ProgramRowFrame frame = located_frame(scene);
+  // Once per run, at the radii it reaches: what the program's let-gos rely on.
+  check_criterion_contract(*scene.criterion, scene.criterion_name, scene.material, frame.radius);
   frame.zero = program_zero_scale(scene, frame.radius, frame.image);
   return frame;
 }

@@ -9,6 +9,7 @@
 
 #include "engine/base/zero_scale.hpp"
 #include "engine/run/adaptive_resolution.hpp"
+#include "engine/run/criterion_contract.hpp"
 #include "engine/run/program_resolution.hpp"
 #include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
@@ -109,6 +110,11 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   const auto started = std::chrono::steady_clock::now();
   using Extrapolation = DiscretizationOptions::Extrapolation;
   RunResult result;
+  // Once per run, at the glued radius; a program checks at the radius its rows reach.
+  if (!scene.program) {
+    check_criterion_contract(*scene.criterion, scene.criterion_name, scene.material,
+                             scene.glued_radius);
+  }
   if (scene.program) {
     if (scene.discretization.rtol) {
       result = run_program_rtol(scene, *scene.discretization.rtol, observers);
