@@ -21,6 +21,7 @@
 #include "engine/run/loss_status.hpp"
 #include "engine/run/program_front.hpp"
 #include "engine/run/progress_log.hpp"
+#include "engine/run/stage_motion.hpp"
 
 namespace mdrsim {
 namespace {
@@ -130,7 +131,7 @@ class ProgramRunner {
             bool in_cascade = false);
   void finish(RunResult& result);
   StageLine line() const {
-    return {normal_start_, normal_rate_, tangential_start_, tangential_rate_};
+    return {normal_.start, normal_.rate, tangential_.start, tangential_.rate};
   }
   /// Tells the front what a cascade of one change did to it.
   void track_front(const Cascade& cascade);
@@ -158,8 +159,8 @@ class ProgramRunner {
   // The stage under way: held = start + rate * t on each axis.
   const Stage* stage_ = nullptr;
   double t_ = 0.0;
-  double normal_start_ = 0.0, normal_rate_ = 0.0;
-  double tangential_start_ = 0.0, tangential_rate_ = 0.0;
+  AxisMotion normal_;  ///< stage_motion.hpp
+  AxisMotion tangential_;
   AxisWork stage_work_;
   AxisWork total_work_;
 
@@ -221,19 +222,14 @@ class ProgramRunner {
 };
 
 void ProgramRunner::set_parameter(double t) {
-  // An axis that does not move keeps its cached equilibrium.
-  if (normal_rate_ != 0.0) row_.set_normal_held(normal_start_ + normal_rate_ * t);
-  if (tangential_rate_ != 0.0) {
-    row_.set_tangential_held(tangential_start_ + tangential_rate_ * t);
+  // An axis that does not move keeps its cached equilibrium; `to` lands exactly on its value.
+  const bool until_separation = stage_ && stage_->until_separation;
+  const bool lands = t == 1.0 && !until_separation;
+  if (normal_.rate != 0.0 || (lands && normal_.end)) {
+    row_.set_normal_held(normal_.at(t, until_separation));
   }
-  if (t == 1.0 && stage_ && !stage_->until_separation) {
-    // `to` lands exactly on its value.
-    if (stage_->normal && stage_->normal->motion == StageAxis::Motion::to) {
-      row_.set_normal_held(stage_->normal->value);
-    }
-    if (stage_->tangential && stage_->tangential->motion == StageAxis::Motion::to) {
-      row_.set_tangential_held(stage_->tangential->value);
-    }
+  if (tangential_.rate != 0.0 || (lands && tangential_.end)) {
+    row_.set_tangential_held(tangential_.at(t, until_separation));
   }
 }
 
@@ -264,8 +260,8 @@ void ProgramRunner::add_work(const AxisPoint* normal_from, const AxisPoint* tang
 
 void ProgramRunner::advance_to(double t) {
   // While the row stays as it is, an axis whose held value does not move stays where it is.
-  const bool normal_moves = normal_rate_ != 0.0;
-  const bool tangential_moves = tangential_rate_ != 0.0;
+  const bool normal_moves = normal_.rate != 0.0;
+  const bool tangential_moves = tangential_.rate != 0.0;
   const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   set_parameter(t);
@@ -329,12 +325,12 @@ LetGo ProgramRunner::boundary_let_go(double u) {
 
 bool ProgramRunner::normal_cannot_hold() const {
   return !row_.normal_has_stiffness() && row_.in_contact() == 0 &&
-         (row_.normal().held < 0.0 || (row_.normal().held == 0.0 && normal_rate_ < 0.0));
+         (row_.normal().held < 0.0 || (row_.normal().held == 0.0 && normal_.rate < 0.0));
 }
 
 bool ProgramRunner::tangential_cannot_hold() const {
   return !row_.tangential_has_stiffness() &&
-         (row_.tangential().held != 0.0 || tangential_rate_ != 0.0);
+         (row_.tangential().held != 0.0 || tangential_.rate != 0.0);
 }
 
 JumpEnd ProgramRunner::flight_of(const Cascade& cascade) const {
@@ -349,7 +345,7 @@ std::optional<Change> ProgramRunner::due() {
   const std::int64_t k = row_.glued();
   const std::int64_t m = row_.in_contact();
   if (m == 0 && !row_.normal_has_stiffness() &&
-      (row_.normal().held > 0.0 || (row_.normal().held == 0.0 && normal_rate_ > 0.0)) &&
+      (row_.normal().held > 0.0 || (row_.normal().held == 0.0 && normal_.rate > 0.0)) &&
       row_.normal().rest < row_.image(1)) {
     return Change::fall_in;  // a compressive load with nothing to hold it: the indenter falls in
   }
@@ -392,8 +388,8 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
   const std::int64_t m = row_.in_contact();
   const double d = row_.indentation();
   const double u = row_.tangential_displacement();
-  const double vd = normal_rate_ != 0.0 ? row_.indentation_per_held() * normal_rate_ : 0.0;
-  const double vu = tangential_rate_ != 0.0 ? row_.tangential_per_held() * tangential_rate_ : 0.0;
+  const double vd = normal_.rate != 0.0 ? row_.indentation_per_held() * normal_.rate : 0.0;
+  const double vu = tangential_.rate != 0.0 ? row_.tangential_per_held() * tangential_.rate : 0.0;
   const double soonest = next_parameter(t_);
   double best = t_end;
   std::optional<Change> change;
@@ -413,8 +409,8 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
   const double per_indentation = inverse_;
   const auto when_indentation = [&](double target) { return t_ + (target - d) * per_indentation; };
 
-  if (m == 0 && !row_.normal_has_stiffness() && normal_rate_ > 0.0) {
-    consider(-normal_start_ / normal_rate_, Change::fall_in);
+  if (m == 0 && !row_.normal_has_stiffness() && normal_.rate > 0.0) {
+    consider(-normal_.start / normal_.rate, Change::fall_in);
   }
   const bool front_glues = row_.adhesive() && row_.can_glue(k + 1);
   if (front_glues && vd > 0.0) {
@@ -607,8 +603,8 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
 void ProgramRunner::start_stage(const Stage& stage) {
   stage_ = &stage;
   stage_work_ = {};
-  const auto start_axis = [&](const std::optional<StageAxis>& axis, bool normal, double& start,
-                              double& rate) {
+  const auto start_axis = [&](const std::optional<StageAxis>& axis, bool normal,
+                              AxisMotion& motion) {
     if (axis) {
       // A new controller takes its held value from the present state: nothing jumps.
       const AffineConstraint c = axis->controller->constraint();
@@ -617,13 +613,10 @@ void ProgramRunner::start_stage(const Stage& stage) {
       MachineAxis& machine = normal ? row_.edit_normal() : row_.edit_tangential();
       machine = {c, held, rest};
     }
-    start = normal ? row_.normal().held : row_.tangential().held;
-    rate = 0.0;
-    if (axis && axis->motion == StageAxis::Motion::to) rate = axis->value - start;
-    if (axis && axis->motion == StageAxis::Motion::by) rate = axis->value;
+    motion = axis_motion(axis, normal ? row_.normal().held : row_.tangential().held);
   };
-  start_axis(stage.normal, true, normal_start_, normal_rate_);
-  start_axis(stage.tangential, false, tangential_start_, tangential_rate_);
+  start_axis(stage.normal, true, normal_);
+  start_axis(stage.tangential, false, tangential_);
   t_ = 0.0;
   guards_ = {};
   if (front_) front_->stage_started();
@@ -934,7 +927,7 @@ void ProgramRunner::finish(RunResult& r) {
         r.warnings.push_back(fmt::format(
             "stage '{}': a fixed load pulls (F = {:.6g} N, moving towards {:.6g} N) with no "
             "spring in contact, so nothing holds it: the program ends here",
-            stage_->name, row_.normal().held, normal_start_ + normal_rate_));
+            stage_->name, row_.normal().held, normal_.start + normal_.rate));
         return;
       }
       decide_loss(deciding_loss());

@@ -15,6 +15,7 @@
 #include "engine/model/program_row.hpp"
 #include "engine/run/criterion_contract.hpp"
 #include "engine/run/program_runner.hpp"
+#include "engine/run/stage_motion.hpp"
 
 namespace mdrsim {
 namespace {
@@ -44,11 +45,8 @@ double guess_radius(const Scene& scene) {
     if (now_force != holds_force || now_spring != through_spring || now_spring) known = false;
     holds_force = now_force;
     through_spring = now_spring;
-    if (axis.motion == StageAxis::Motion::to) {
-      held = axis.value;
-      known = true;
-    }
-    if (axis.motion == StageAxis::Motion::by && !stage.until_separation) held += axis.value;
+    if (axis.motion == StageAxis::Motion::to) known = true;
+    held = held_after(axis, held, stage.until_separation);
     if (!known || !(held > 0.0)) continue;
     try {
       const double a = holds_force ? contact_radius_at_force(profile, held, e_star)
@@ -119,11 +117,11 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
     if (!stage.normal) continue;
     const StageAxis& axis = *stage.normal;
     if (!axis.controller->is_fixed_grips()) return std::nullopt;
-    if (axis.motion == StageAxis::Motion::to) held = axis.value;
-    if (axis.motion == StageAxis::Motion::by) {
-      if (stage.until_separation && axis.value > 0.0) return std::nullopt;
-      if (!stage.until_separation) held += axis.value;
+    // Pushing on until separation has no deepest point.
+    if (axis.motion == StageAxis::Motion::by && stage.until_separation && axis.value > 0.0) {
+      return std::nullopt;
     }
+    held = held_after(axis, held, stage.until_separation);
     deepest = std::max(deepest, held);
   }
   const Profile& profile = *scene.profile;
@@ -194,7 +192,7 @@ ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
   for (const Stage& stage : scene.program->stages) {
     if (stage.normal && stage.normal->controller->holds_force() &&
         stage.normal->motion == StageAxis::Motion::to) {
-      held_force = std::max(held_force, std::abs(stage.normal->value));
+      held_force = std::max(held_force, std::abs(held_after(*stage.normal, 0.0, false)));
     }
   }
   return zero_scale(scene.material.effective_modulus, radius, image,
