@@ -18,8 +18,8 @@
 #include "detachment/let_go.hpp"
 #include "engine/base/bracketed_root.hpp"
 #include "engine/methods/boundary_let_go.hpp"
-#include "engine/run/loss_status.hpp"
 #include "engine/run/program_front.hpp"
+#include "engine/run/program_losses.hpp"
 #include "engine/run/progress_log.hpp"
 #include "engine/run/stage_motion.hpp"
 
@@ -40,8 +40,6 @@ double next_parameter(double t) {
   return std::bit_cast<double>(std::bit_cast<std::uint64_t>(t) + 1);
 }
 
-enum class Change { fall_in, let_go, glue, touch, lift };
-
 /// The force on one axis and the displacement of the machine's driving point: the indenter
 /// under fixed grips and fixed load, the machine end (the held value) under compliant.
 struct AxisPoint {
@@ -55,21 +53,6 @@ bool finite(const ContactSnapshot& s) {
          std::isfinite(s.tangential_displacement) && std::isfinite(s.tangential_force) &&
          std::isfinite(s.normal_control);
 }
-
-/// A cascade: the changes at one value of the stage parameter after the one that was found.
-struct Cascade {
-  ContactSnapshot before;
-  std::int64_t in_contact = 0;  ///< m before
-  std::int64_t glued = 0;       ///< k before
-  std::int64_t changes = 0;
-  bool second_by_shear = false;
-  bool first_by_shear = false;
-  std::optional<Change> first;
-  /// `before` located at the fold between springs (refining rows only).
-  std::optional<ContactSnapshot> refined_before;
-  AxisWork work_before;          ///< the stage's work up to `before`
-  const Stage* stage = nullptr;  ///< the stage it happened in
-};
 
 class ProgramRunner {
  public:
@@ -120,8 +103,6 @@ class ProgramRunner {
   /// How a cascade that just ran ends: with the contact lost under a fixed load that nothing
   /// holds any more, in a flight (SPEC "A fixed load that loses the contact").
   JumpEnd flight_of(const Cascade& cascade) const;
-  /// Notes a cascade that left no glue or no spring in contact (what finish decides by).
-  void record_losses(const Cascade& cascade);
   /// A flight: the stage ends at the cascade's critical point, with the work up to it.
   void end_in_flight(const Cascade& cascade, JumpEnd end);
   /// The stages after the one under way, which a flight does not run.
@@ -189,10 +170,7 @@ class ProgramRunner {
   std::optional<ContactSnapshot> peak_;
   double inverse_of_ = 0.0;  ///< next_change: the d(d)/dt whose inverse is `inverse_`
   double inverse_ = 0.0;
-  std::optional<Cascade> last_contact_loss_;
-  std::optional<Cascade> last_glue_loss_;
-  std::int64_t contact_losses_ = 0;     ///< cascades that left no spring in contact
-  std::int64_t glue_loss_contact_ = 0;  ///< contact_losses_ before the last glue loss
+  ProgramLosses losses_;  ///< what finish decides the status by
   bool ever_in_contact_ = false;
   enum class Stop {
     none,
@@ -434,10 +412,10 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
         }
       }
     } else {
-      // Both displacements move: root-find the margin along the line. For a criterion
-      // whose failure set is convex in (stretch, |u_x|), as every built-in one is, the
-      // margin along a line is positive on one interval, so one sign change brackets the
-      // first let-go.
+      // Both displacements move: root-find the margin along the line. The criterion's
+      // holding states are convex in (stretch, u_x) (its contract, criterion.hpp, sampled
+      // before the run), so the margin along a line is positive on one interval and one
+      // sign change brackets the first let-go.
       const double a = row_.position(k);
       const double g = row_.image(k);
       const double s = row_.boundary_offset();
@@ -520,17 +498,6 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
   }
 }
 
-void ProgramRunner::record_losses(const Cascade& cascade) {
-  if (cascade.glued > 0 && row_.glued() == 0) {
-    last_glue_loss_ = cascade;
-    glue_loss_contact_ = contact_losses_;
-  }
-  if (cascade.in_contact > 0 && row_.in_contact() == 0) {
-    last_contact_loss_ = cascade;
-    ++contact_losses_;
-  }
-}
-
 void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   // What the cascade did after its critical point is the flight: its springs' stretches
   // (the held force on the last spring alone) and the work at constant force grow with the
@@ -546,7 +513,7 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   stage_work_ = cascade.work_before;
   flight_end_ = cascade.before;
   flight_refined_end_ = cascade.refined_before;
-  record_losses(cascade);
+  losses_.record(cascade, row_.glued(), row_.in_contact());
   if (cascade.changes < 2) return;
   JumpRecord jump;
   jump.stage = stage_->name;
@@ -575,7 +542,7 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
     return;
   }
   observe(after);
-  record_losses(cascade);
+  losses_.record(cascade, row_.glued(), row_.in_contact());
   // Springs that carry no force and no glue leaving together (a flat tip at rounding) is no jump.
   const bool idle = cascade.glued == 0 && row_.glued() == 0 &&
                     zero_.zero_force(cascade.before.normal_force) &&
@@ -835,41 +802,11 @@ void ProgramRunner::finish(RunResult& r) {
   r.work = total_work_;
   const bool lost = row_.in_contact() == 0 && ever_in_contact_;
   const auto decide_loss = [&](const Cascade& c) {
-    if (zero_.zero_force(c.before.normal_force) && c.glued == 0) {
-      // Nothing carried a force or glue when the contact went: no critical point.
-      r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::no_instability;
-      return;
-    }
-    const LossCascade loss{.changes = c.changes,
-                           .springs_before = c.in_contact,
-                           .force_before = c.before.normal_force,
-                           .largest_force = largest_force_,
-                           .first_by_shear = c.first_by_shear,
-                           .second_by_shear = c.second_by_shear};
-    r.status = loss_status(loss);
-    if (c.changes >= 2) {
-      r.critical = c.before;
-      r.refined_critical = c.refined_before;
-    } else if (!peels_smoothly(loss)) {
-      r.critical = c.before;
-    }
+    ProgramLosses::decide(c, zero_, largest_force_, r);
   };
-  // Springs pressed without glue carry no tension and no tangential force (frictionless):
-  // once the glue is gone they lift one by one as the indenter withdraws, to zero force,
-  // whatever the jump that broke the glue. That jump is the instability (SPEC: "the glue
-  // letting go at one parameter value while springs stay in contact is a jump like any
-  // other"; Fig. 3a's positive branch, a compressive critical force), so it decides the
-  // status and the critical point: the shorthand, whose row has no pressed springs, ends
-  // there too.
-  const auto deciding_loss = [&]() -> const Cascade& {
-    // The glue's jump counts for the contact it broke: not for one pressed again later.
-    const bool same_contact = glue_loss_contact_ == contact_losses_ - 1;
-    const bool glue_jumped = last_glue_loss_ && last_glue_loss_->changes >= 2;
-    if (glue_jumped && same_contact && last_contact_loss_->glued == 0) {
-      return *last_glue_loss_;
-    }
-    return *last_contact_loss_;
-  };
+  const auto& glue_loss = losses_.last_glue_loss();
+  const auto& contact_loss = losses_.last_contact_loss();
+  const auto deciding_loss = [&]() -> const Cascade& { return losses_.deciding(); };
   switch (stop_) {
     case Stop::outgrew:
       r.status = RunStatus::step_limit;
@@ -910,9 +847,9 @@ void ProgramRunner::finish(RunResult& r) {
           stage_->name, kSweepsPerStage, result_.counts.events, row_.in_contact(), row_.glued()));
       return;
     case Stop::cannot_hold_tangential:
-      if (last_glue_loss_) {
-        decide_loss(*last_glue_loss_);
-        if (last_glue_loss_->changes < 2) r.status = RunStatus::shear_off;
+      if (glue_loss) {
+        decide_loss(*glue_loss);
+        if (glue_loss->changes < 2) r.status = RunStatus::shear_off;
       } else {
         r.status = RunStatus::no_instability;
         r.warnings.push_back(fmt::format(
@@ -922,7 +859,7 @@ void ProgramRunner::finish(RunResult& r) {
       }
       return;
     case Stop::cannot_hold_normal:
-      if (!last_contact_loss_) {
+      if (!contact_loss) {
         r.status = RunStatus::no_instability;
         r.warnings.push_back(fmt::format(
             "stage '{}': a fixed load pulls (F = {:.6g} N, moving towards {:.6g} N) with no "
@@ -935,14 +872,14 @@ void ProgramRunner::finish(RunResult& r) {
     case Stop::none:
       break;
   }
-  if (lost && last_contact_loss_) {
+  if (lost && contact_loss) {
     decide_loss(deciding_loss());
     return;
   }
   r.status = RunStatus::completed;
-  if (last_contact_loss_) {
-    r.critical = last_contact_loss_->before;
-    r.refined_critical = last_contact_loss_->refined_before;
+  if (contact_loss) {
+    r.critical = contact_loss->before;
+    r.refined_critical = contact_loss->refined_before;
   }
 }
 
@@ -973,7 +910,7 @@ RunResult ProgramRunner::run() {
   finish(result_);
   result_.sliding = flight_ == JumpEnd::sliding;
   // The stage of the critical point, for the closing events (finish picks it from a loss).
-  for (const auto* loss : {&last_contact_loss_, &last_glue_loss_}) {
+  for (const auto* loss : {&losses_.last_contact_loss(), &losses_.last_glue_loss()}) {
     if (*loss && result_.critical &&
         (*loss)->before.springs_in_contact == result_.critical->springs_in_contact &&
         (*loss)->before.indentation == result_.critical->indentation &&

@@ -1,0 +1,31 @@
+// A cascade of a program row: the spring changes at one value of the stage parameter, as the
+// program loop (program_runner.cpp) records them and its parts read them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "engine/model/contact_snapshot.hpp"
+#include "engine/run/program_records.hpp"
+#include "engine/scene/program.hpp"
+
+namespace mdrsim {
+
+enum class Change { fall_in, let_go, glue, touch, lift };
+
+/// A cascade: the changes at one value of the stage parameter after the one that was found.
+struct Cascade {
+  ContactSnapshot before;
+  std::int64_t in_contact = 0;  ///< m before
+  std::int64_t glued = 0;       ///< k before
+  std::int64_t changes = 0;
+  bool second_by_shear = false;
+  bool first_by_shear = false;
+  std::optional<Change> first;
+  /// `before` located at the fold between springs (refining rows only).
+  std::optional<ContactSnapshot> refined_before;
+  AxisWork work_before;          ///< the stage's work up to `before`
+  const Stage* stage = nullptr;  ///< the stage it happened in
+};
+
+}  // namespace mdrsim
