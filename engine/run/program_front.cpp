@@ -11,8 +11,8 @@
 namespace mdrsim {
 
 void StageLine::place(ProgramRow& row, double t) const {
-  if (normal_rate != 0.0) row.set_normal_held(normal_start + normal_rate * t);
-  if (tangential_rate != 0.0) row.set_tangential_held(tangential_start + tangential_rate * t);
+  if (normal.rate != 0.0) row.set_normal_held(normal.start + normal.rate * t);
+  if (tangential.rate != 0.0) row.set_tangential_held(tangential.start + tangential.rate * t);
 }
 
 double ProgramFront::let_go_margin(const ProgramRow& row) const {
@@ -116,8 +116,8 @@ std::optional<ContactSnapshot> ProgramFront::fold(ProgramRow& row, const StageLi
   // stay): it is due already at t, so it lies behind, where the margin is still positive.
   const double d = row.indentation();
   const double u = row.tangential_displacement();
-  const double d_per_t = row.indentation_per_held() * line.normal_rate;
-  const double u_per_t = row.tangential_per_held() * line.tangential_rate;
+  const double d_per_t = row.indentation_per_held() * line.normal.rate;
+  const double u_per_t = row.tangential_per_held() * line.tangential.rate;
   const double g = row.image(k - 1);
   const double s = row.boundary_offset();
   const double a = row.position(k - 1);

@@ -9,16 +9,15 @@
 #include "detachment/criterion.hpp"
 #include "engine/model/contact_snapshot.hpp"
 #include "engine/model/program_row.hpp"
+#include "engine/run/stage_motion.hpp"
 
 namespace mdrsim {
 
-/// The line of a stage: the held value of each axis is start + rate t.
+/// The line of a stage: the held value of each axis is start + rate t (stage_motion.hpp).
 struct StageLine {
-  double normal_start = 0.0;
-  double normal_rate = 0.0;
-  double tangential_start = 0.0;
-  double tangential_rate = 0.0;
-  /// Puts `row`'s held values at parameter t.
+  AxisMotion normal;
+  AxisMotion tangential;
+  /// Puts `row`'s held values at parameter t (inside the stage: start + rate t).
   void place(ProgramRow& row, double t) const;
 };
 

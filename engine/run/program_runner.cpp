@@ -111,9 +111,7 @@ class ProgramRunner {
   void emit(EventKind kind, const ContactSnapshot& state, std::int64_t spring = 0,
             bool in_cascade = false);
   void finish(RunResult& result);
-  StageLine line() const {
-    return {normal_.start, normal_.rate, tangential_.start, tangential_.rate};
-  }
+  StageLine line() const { return {normal_, tangential_}; }
   /// Tells the front what a cascade of one change did to it.
   void track_front(const Cascade& cascade);
   /// The progress line of a long stage, when its interval has passed; asked every 65536
