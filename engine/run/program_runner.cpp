@@ -18,6 +18,7 @@
 #include "detachment/let_go.hpp"
 #include "engine/base/bracketed_root.hpp"
 #include "engine/methods/boundary_let_go.hpp"
+#include "engine/run/machine_work.hpp"
 #include "engine/run/program_front.hpp"
 #include "engine/run/program_losses.hpp"
 #include "engine/run/progress_log.hpp"
@@ -39,13 +40,6 @@ constexpr double kDefaultStageStep = 1e-3;
 double next_parameter(double t) {
   return std::bit_cast<double>(std::bit_cast<std::uint64_t>(t) + 1);
 }
-
-/// The force on one axis and the displacement of the machine's driving point: the indenter
-/// under fixed grips and fixed load, the machine end (the held value) under compliant.
-struct AxisPoint {
-  double force;
-  double driving;
-};
 
 /// Whether a state's numbers are all within a double (extreme scenes can leave it).
 bool finite(const ContactSnapshot& s) {
@@ -210,27 +204,21 @@ void ProgramRunner::set_parameter(double t) {
 }
 
 AxisPoint ProgramRunner::normal_point() const {
-  const bool spring = drives_through_spring(row_.normal().constraint);
-  return {row_.normal_force(), spring ? row_.normal().held : row_.indentation()};
+  return {row_.normal_force(),
+          driving_point(row_.normal().constraint, row_.normal().held, row_.indentation())};
 }
 
 AxisPoint ProgramRunner::tangential_point() const {
-  const bool spring = drives_through_spring(row_.tangential().constraint);
   return {row_.tangential_force(),
-          spring ? row_.tangential().held : row_.tangential_displacement()};
+          driving_point(row_.tangential().constraint, row_.tangential().held,
+                        row_.tangential_displacement())};
 }
 
 void ProgramRunner::add_work(const AxisPoint* normal_from, const AxisPoint* tangential_from) {
   // Force and driving point are affine in between (the springs stay): the trapezoid is exact.
-  if (normal_from) {
-    const AxisPoint to = normal_point();
-    stage_work_.normal +=
-        0.5 * (normal_from->force + to.force) * (to.driving - normal_from->driving);
-  }
+  if (normal_from) stage_work_.normal += trapezoid_work(*normal_from, normal_point());
   if (tangential_from) {
-    const AxisPoint to = tangential_point();
-    stage_work_.tangential +=
-        0.5 * (tangential_from->force + to.force) * (to.driving - tangential_from->driving);
+    stage_work_.tangential += trapezoid_work(*tangential_from, tangential_point());
   }
 }
 

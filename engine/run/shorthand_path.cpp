@@ -2,6 +2,8 @@
 // springs stay); a let-go moves the driving point only under fixed load, at constant force.
 #include "engine/run/shorthand_path.hpp"
 
+#include "engine/run/machine_work.hpp"
+
 namespace mdrsim {
 
 namespace {
@@ -28,10 +30,7 @@ JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& nor
 }
 
 ShorthandPath::ShorthandPath(const AffineConstraint& normal, const AffineConstraint& tangential)
-    : normal_(normal),
-      tangential_(tangential),
-      normal_through_spring_(drives_through_spring(normal)),
-      tangential_fixed_load_(holds_force(tangential)) {}
+    : normal_(normal), tangential_(tangential), tangential_fixed_load_(holds_force(tangential)) {}
 
 ContactSnapshot ShorthandPath::snapshot(const Contact& contact, const Contact::State& state) const {
   if (state.springs_in_contact > 0) return contact.snapshot_of(state);
@@ -49,8 +48,8 @@ void ShorthandPath::add_work(const Contact& contact, const Contact::State& to) {
     return;
   }
   const auto [d, force] = contact.normal_state_of(to);
-  const double driving = normal_through_spring_ ? to.normal_control : d;
-  pull_off_work_.normal += 0.5 * (force_ + force) * (driving - driving_);
+  const double driving = driving_point(normal_, to.normal_control, d);
+  pull_off_work_.normal += trapezoid_work({force_, driving_}, {force, driving});
   force_ = force;
   driving_ = driving;
   last_indentation_ = d;
@@ -87,7 +86,7 @@ void ShorthandPath::tangential(const Contact& contact, std::optional<double> mac
   stages_.push_back(stage);
   last_ = contact.save();
   force_ = s.normal_force;
-  driving_ = normal_through_spring_ ? s.normal_control : s.indentation;
+  driving_ = driving_point(normal_, s.normal_control, s.indentation);
   last_indentation_ = s.indentation;
   tangential_displacement_ = s.tangential_displacement;
 }

@@ -49,7 +49,6 @@ class ShorthandPath {
 
   AffineConstraint normal_;
   AffineConstraint tangential_;
-  bool normal_through_spring_;
   bool tangential_fixed_load_;  ///< u_x moves at constant F_x as springs let go
   std::vector<StageRecord> stages_;
   std::vector<JumpRecord> jumps_;
