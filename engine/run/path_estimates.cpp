@@ -69,7 +69,7 @@ std::vector<StateRef> states(RunResult& r, PathStates which) {
     const auto* located = j.critical.springs_in_contact == 0 ? nullptr : &j.refined_critical;
     q.push_back({fmt::format("the critical point of the jump in stage '{}'", j.stage), &j.critical,
                  located, &j.critical_error_estimate, nullptr});
-    // A flight has no state after it (SPEC "A fixed load that loses the contact").
+    // A flight has no state after it (docs: a fixed load that loses the contact).
     if (j.end == JumpEnd::state) {
       q.push_back({fmt::format("the state after the jump in stage '{}'", j.stage), &j.after,
                    &j.refined_after, &j.after_error_estimate, nullptr});
