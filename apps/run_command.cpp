@@ -89,6 +89,8 @@ void print_program(std::FILE* out, const RunResult& r) {
         jump.end == JumpEnd::separated ? "the indenter separates (nothing holds the fixed load)"
         : jump.end == JumpEnd::sliding
             ? "the indenter slides away (nothing holds the tangential fixed load)"
+        : jump.end == JumpEnd::pressed
+            ? "the indenter pressed in on springs without glue (not followed by the shorthand)"
             : fmt::format("d = {:.6g} m, F = {:.6g} N ({} springs)", jump.after.indentation,
                           jump.after.normal_force, jump.after.springs_in_contact);
     fmt::print(out, "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N ({} springs) to {}\n",

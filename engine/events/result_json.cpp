@@ -37,6 +37,8 @@ nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<Pu
       return {{"separated", true}};
     case JumpEnd::sliding:
       return {{"sliding", true}};
+    case JumpEnd::pressed:
+      return {{"pressed", true}};
     case JumpEnd::state:
       break;
   }

@@ -230,6 +230,7 @@ void bind_results(py::module_& m) {
                                                   : py::object(py::none());
                                  d["end"] = j.end == JumpEnd::separated ? "separated"
                                             : j.end == JumpEnd::sliding ? "sliding"
+                                            : j.end == JumpEnd::pressed ? "pressed"
                                                                         : "state";
                                  d["springs"] = j.springs;
                                  d["glued_springs"] = j.glued_springs;
