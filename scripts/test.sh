@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it (.ci/run), in four stages:
-#   1. check the layout's include rule (scripts/check_includes.sh), build (Release, warnings as
-#      errors) and run every test with ctest;
-#   2. install the Python module the way the README says, offline into a fresh venv
-#      (pip install --no-build-isolation --no-deps --no-index .), run the README's check, and
+#   1. check the layout's include rule (scripts/check_includes.sh) and the docs' relative links
+#      (scripts/check_doc_links.py), build (Release, warnings as errors) and run every test with
+#      ctest;
+#   2. install the Python module the way docs/python.md says, offline into a fresh venv
+#      (pip install --no-build-isolation --no-deps --no-index .), run its one-line check, and
 #      the module's tests with pytest (python/tests) on the installed module. (The module's
 #      build is its own, in build-python-package: it needs position-independent code, which
 #      costs the command 10-20 % per event, so the C++ build of stage 1 stays without it.)
@@ -53,6 +54,7 @@ if [ "$quick" -eq 1 ]; then bash scripts/setup.sh; else bash scripts/setup.sh fu
 
 stage "1/4 build and test ($build_dir)"
 bash scripts/check_includes.sh
+/usr/bin/python3 scripts/check_doc_links.py
 # Without the Python module (an earlier configuration may have cached it on): see stage 2.
 cmake -S . -B "$build_dir" -DMDRSIM_PYTHON=OFF >/dev/null
 BUILD_DIR="$build_dir" bash scripts/build.sh
@@ -62,7 +64,7 @@ if [ "$quick" -eq 1 ]; then
   exit 0
 fi
 
-stage "2/4 install the Python module offline into a fresh venv (README \"Python\"), pytest"
+stage "2/4 install the Python module offline into a fresh venv (docs/python.md), pytest"
 venv="$logs/venv"
 /usr/bin/python3 -m venv --system-site-packages "$venv"
 "$venv/bin/pip" install -q --no-build-isolation --no-deps --no-index .
