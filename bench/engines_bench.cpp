@@ -10,7 +10,9 @@
 // time, the finest row's springs and whether rtol was met. Each measurement is the best of
 // `repeats` runs (default 3), the engines interleaved (shorthand, program, shorthand, ...) so
 // that the load of a shared machine hits both alike. CSV rows to --out (default standard
-// output); progress to standard error.
+// output; with --out, one line per row on standard output); progress to standard error. Exit
+// code 1 where the engines disagree (status, or critical force beyond 1e-9 on one row and 2 rtol
+// with rtol), 2 for bad arguments.
 #include <fmt/format.h>
 #include <fmt/os.h>
 #include <spdlog/spdlog.h>
@@ -158,6 +160,17 @@ std::string relative_difference(const RunResult& s, const RunResult& p) {
   return fmt::format("{:.2e}", std::abs(*fp - *fs) / std::abs(*fs));
 }
 
+/// The engines agree: the same status and, with a critical point, the same force -- to 1e-9
+/// on one row (the same sums in another order, as ShorthandProgramGrid checks) and to 2 rtol
+/// where both met rtol (each within rtol of the continuum by its estimate).
+bool agree(double rtol, const RunResult& s, const RunResult& p) {
+  const auto fs = critical_force(s), fp = critical_force(p);
+  if (s.status != p.status || fs.has_value() != fp.has_value()) return false;
+  if (!fs) return true;
+  if (rtol > 0.0 && !(s.accuracy.rtol_met && p.accuracy.rtol_met)) return true;
+  return std::abs(*fp - *fs) <= (rtol > 0.0 ? 2.0 * rtol : 1e-9) * std::abs(*fs);
+}
+
 std::string force(const RunResult& r) {
   const auto f = critical_force(r);
   return f ? fmt::format("{:.10g}", *f) : std::string();
@@ -200,9 +213,10 @@ int main(int argc, char** argv) {
              "ns_per_event_ratio,shorthand_finest_springs,program_finest_springs,"
              "shorthand_rtol_met,program_rtol_met,program_preload_s,program_pull_ns_per_event,"
              "pull_ratio\n");
-  const auto row = [&](const char* kind, const Case& c, const std::string& springs,
-                       const std::string& rtol, const Best& s, const Best& p,
-                       std::optional<double> preload_s) {
+  int disagree = 0;
+  const auto row = [&](const char* kind, const Case& c, const std::string& springs, double tol,
+                       const Best& s, const Best& p, std::optional<double> preload_s) {
+    const std::string rtol = tol > 0.0 ? fmt::format("{}", tol) : std::string();
     const auto ns = [](const Best& b) {
       return b.result.counts.events > 0
                  ? 1e9 * b.seconds / static_cast<double>(b.result.counts.events)
@@ -224,6 +238,23 @@ int main(int argc, char** argv) {
                preload_s ? fmt::format("{:.1f}", pull_ns(*preload_s)) : "",
                preload_s ? fmt::format("{:.3f}", pull_ns(*preload_s) / ns(s)) : "");
     std::fflush(out);
+    const bool same = agree(tol, s.result, p.result);
+    if (!same) ++disagree;
+    if (out == stdout) return;
+    // With --out, one line per row on standard output.
+    const std::string what = tol > 0.0 ? "rtol " + rtol : springs + " springs";
+    fmt::print("{:4} {} {} {} {}: program/shorthand {:.2f}x in time", same ? "SAME" : "DIFF",
+               c.name, c.criterion, c.normal, what, p.seconds / s.seconds);
+    if (preload_s) {
+      fmt::print(", {:.2f}x per event, {:.2f}x per detachment past the preload", ns(p) / ns(s),
+                 pull_ns(*preload_s) / ns(s));
+    } else {
+      fmt::print(", finest rows {} and {} springs, rtol met {}/{}", s.result.springs,
+                 p.result.springs, s.result.accuracy.rtol_met ? "yes" : "no",
+                 p.result.accuracy.rtol_met ? "yes" : "no");
+    }
+    fmt::print("; critical force differs by {}\n", relative_difference(s.result, p.result));
+    std::fflush(stdout);
   };
   for (const Case& c : cases()) {
     if (!only.empty() && c.name != only) continue;
@@ -235,7 +266,7 @@ int main(int argc, char** argv) {
         const Scene program = build(text);
         const Scene preload = build(preload_text(text));
         const auto b = measure({&shorthand, &program, &preload}, repeats);
-        row("springs", c, std::to_string(n), "", b[0], b[1], b[2].seconds);
+        row("springs", c, std::to_string(n), 0.0, b[0], b[1], b[2].seconds);
       }
     }
     if (part == "all" || part == "rtol") {
@@ -244,11 +275,15 @@ int main(int argc, char** argv) {
         const Scene shorthand = build(shorthand_text(c, d));
         const Scene program = build(program_text(c, shorthand, d));
         const auto b = measure({&shorthand, &program}, repeats);
-        row("rtol", c, "", fmt::format("{}", rtol), b[0], b[1], std::nullopt);
+        row("rtol", c, "", rtol, b[0], b[1], std::nullopt);
       }
     }
     fmt::print(stderr, "engines: {} {} {} done\n", c.name, c.criterion, c.normal);
   }
   if (out != stdout) std::fclose(out);
+  if (disagree > 0) {
+    fmt::print(stderr, "mdrsim_engines: the engines disagree on {} row(s)\n", disagree);
+    return 1;
+  }
   return 0;
 }
