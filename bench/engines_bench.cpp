@@ -14,13 +14,14 @@
 // code 1 where the engines disagree (status, or critical force beyond 1e-9 on one row and 2 rtol
 // with rtol), 2 for bad arguments.
 #include <fmt/format.h>
-#include <fmt/os.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
