@@ -14,7 +14,9 @@
 #      springs: a minute in Release);
 #   4. fuzz the scene reader and the engine for FUZZ_SECONDS (default 60, scripts/fuzz.sh) with
 #      the libFuzzer target of that same build.
-# `bash scripts/test.sh --quick` runs stage 1 only (no Python). Installs what is missing first.
+# `bash scripts/test.sh --quick` runs stage 1 only (no Python), and of its tests only the
+# everyday subset (ctest -L quick: every test under about 2 s, under two minutes on 2 cores;
+# tests/test_labels.cmake lists the slow ones). Installs what is missing first.
 # Exit code: 0 when every stage passes. Works from any directory.
 # BUILD_DIR and FUZZ_BUILD_DIR move the two build directories (default: build, build-fuzz);
 # stage 2 builds in build-python-package (setup.py; MDRSIM_PYTHON_BUILD_DIR moves it).
@@ -58,7 +60,9 @@ bash scripts/check_includes.sh
 # Without the Python module (an earlier configuration may have cached it on): see stage 2.
 cmake -S . -B "$build_dir" -DMDRSIM_PYTHON=OFF >/dev/null
 BUILD_DIR="$build_dir" bash scripts/build.sh
-ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" | tee "$logs/ctest1.log"
+labels=()
+if [ "$quick" -eq 1 ]; then labels=(-L quick); fi
+ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" "${labels[@]}" | tee "$logs/ctest1.log"
 if [ "$quick" -eq 1 ]; then
   echo "tests: $(totals)"
   exit 0
