@@ -16,7 +16,7 @@
 #include "engine/methods/boundary_let_go.hpp"
 #include "engine/methods/event_method.hpp"
 #include "engine/methods/stepping_method.hpp"
-#include "engine/model/tangential_strength.hpp"
+#include "engine/methods/tangential_strength.hpp"
 #include "engine/run/fold_refinement.hpp"
 #include "engine/run/progress_log.hpp"
 #include "engine/run/shorthand_path.hpp"

@@ -10,6 +10,7 @@
 #include "engine/base/zero_scale.hpp"
 #include "engine/run/adaptive_resolution.hpp"
 #include "engine/run/program_resolution.hpp"
+#include "engine/run/pull_off.hpp"
 #include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"

@@ -9,7 +9,7 @@
 #include "controllers/controller.hpp"
 #include "engine/methods/pull_off_method.hpp"
 #include "engine/model/contact.hpp"
-#include "engine/run/program_records.hpp"
+#include "engine/result/program_records.hpp"
 
 namespace mdrsim {
 

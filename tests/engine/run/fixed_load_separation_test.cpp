@@ -27,12 +27,12 @@
 #include <string>
 #include <vector>
 
-#include "engine/events/result_json.hpp"
-#include "engine/events/trajectory_csv.hpp"
+#include "engine/output/result_json.hpp"
+#include "engine/output/trajectory_csv.hpp"
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace mdrsim {
 namespace {
