@@ -1,5 +1,5 @@
 // The rows of mdrsim.sweep, parsed, built, checked and written by `mdrsim sweep`'s own code
-// (apps/), so that each row is the command's, byte for byte.
+// (engine/sweep/, engine/output/), so that each row is the command's, byte for byte.
 #include "python/src/python_sweep.hpp"
 
 #include <pybind11/stl.h>
