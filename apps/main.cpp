@@ -16,13 +16,13 @@
 #include <utility>
 
 #include "apps/commands.hpp"
-#include "apps/run_label.hpp"
-#include "apps/usage_error.hpp"
 #include "engine/base/available_cpus.hpp"
 #include "engine/events/program_version.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/run_label.hpp"
+#include "engine/sweep/usage_error.hpp"
 
 namespace {
 

@@ -10,9 +10,9 @@
 
 #include "apps/commands.hpp"
 #include "apps/output_file.hpp"
-#include "apps/sweep_csv.hpp"
-#include "apps/usage_error.hpp"
+#include "engine/output/sweep_csv.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/usage_error.hpp"
 
 namespace mdrsim::cli {
 namespace {

@@ -10,8 +10,8 @@
 #include <stdexcept>
 
 #include "apps/interrupt_cleanup.hpp"
-#include "apps/usage_error.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/usage_error.hpp"
 
 namespace mdrsim::cli {
 namespace {

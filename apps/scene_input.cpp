@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "apps/usage_error.hpp"
+#include "engine/sweep/usage_error.hpp"
 
 namespace mdrsim::cli {
 

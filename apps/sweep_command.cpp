@@ -32,13 +32,13 @@
 #include "apps/commands.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
-#include "apps/sweep_csv.hpp"
-#include "apps/sweep_grid.hpp"
-#include "apps/sweep_progress.hpp"
-#include "apps/sweep_rows.hpp"
-#include "apps/usage_error.hpp"
-#include "apps/vary_spec.hpp"
+#include "engine/output/sweep_csv.hpp"
+#include "engine/output/sweep_rows.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/sweep_grid.hpp"
+#include "engine/sweep/sweep_progress.hpp"
+#include "engine/sweep/usage_error.hpp"
+#include "engine/sweep/vary_spec.hpp"
 
 namespace mdrsim::cli {
 namespace {

@@ -19,9 +19,9 @@
 #include "apps/commands.hpp"
 #include "bench/bench_cases.hpp"
 #include "bench/timing.hpp"
+#include "engine/reference/program_reference.hpp"
+#include "engine/reference/random_scenes.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/program_reference.hpp"
-#include "tests/support/random_scenes.hpp"
 
 namespace {
 

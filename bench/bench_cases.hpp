@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/jkr_scenario.hpp"
+#include "engine/reference/jkr_scenario.hpp"
 
 namespace mdrsim::bench {
 

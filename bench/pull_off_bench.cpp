@@ -7,9 +7,9 @@
 #include <string>
 
 #include "bench/bench_cases.hpp"
+#include "engine/reference/part_examples.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
-#include "tests/support/part_examples.hpp"
 
 namespace {
 

@@ -7,8 +7,9 @@
 # tests), runs the scenes and sweeps into results/ ($RESULTS_DIR), draws the figures (PNG and
 # SVG) and prints the comparison table, then measures speed against accuracy (bench/) and
 # draws that chart. Exits non-zero if a run fails, any simulated critical force is further
-# than 2e-3 F0 from the paper's analytic value, or an accuracy target of the bench is missed;
-# never for a speed target (see below). Works from any directory.
+# than 2e-3 F0 from the paper's analytic value, an accuracy target of the bench is missed, or
+# the two engines disagree on a Fig. 2 critical force; never for a speed target (see below).
+# Works from any directory.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -21,7 +22,7 @@ py=/usr/bin/python3
 # Installation and build logs go to standard error: standard output is the report alone
 # (the figures written and the comparison table), e.g. bash scripts/reproduce.sh > report.txt
 bash scripts/setup.sh >&2
-BUILD_DIR="$build_dir" bash scripts/build.sh mdrsim mdrsim_accuracy >&2
+BUILD_DIR="$build_dir" bash scripts/build.sh mdrsim mdrsim_accuracy mdrsim_engines >&2
 mkdir -p "$results"
 
 # u/d0 from 0 to 4 in 41 values; d0 = 2.2614848269449475e-6 m for the Fig. 3a scenes (R = 1 cm,
@@ -70,4 +71,11 @@ echo
 bench_status=0
 "$build_dir/bench/mdrsim_accuracy" --out "$results/speed_accuracy.csv" || bench_status=$?
 "$py" scripts/plot_speed_accuracy.py --csv "$results/speed_accuracy.csv" --out "$results"
+
+# The shorthand against its equal three-stage program on Fig. 2 (issue 20): the ratios are
+# reported, a disagreement of the two engines (a DIFF line) fails the job. All the cases:
+# build/bench/mdrsim_engines --repeats 5 --out engines.csv (a few minutes).
+echo "== the shorthand against its equal program (bench/engines_bench.cpp, Fig. 2, a few s)" >&2
+echo
+"$build_dir/bench/mdrsim_engines" --case fig2 --out "$results/engines_fig2.csv" || bench_status=1
 exit "$bench_status"

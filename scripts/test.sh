@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it (.ci/run), in four stages:
-#   1. check the layout's include rule (scripts/check_includes.sh), build (Release, warnings as
-#      errors) and run every test with ctest;
-#   2. install the Python module the way the README says, offline into a fresh venv
-#      (pip install --no-build-isolation --no-deps --no-index .), run the README's check, and
+#   1. check the layout's include rule (scripts/check_includes.sh) and the docs' relative links
+#      (scripts/check_doc_links.py), build (Release, warnings as errors) and run every test with
+#      ctest;
+#   2. install the Python module the way docs/python.md says, offline into a fresh venv
+#      (pip install --no-build-isolation --no-deps --no-index .), run its one-line check, and
 #      the module's tests with pytest (python/tests) on the installed module. (The module's
 #      build is its own, in build-python-package: it needs position-independent code, which
 #      costs the command 10-20 % per event, so the C++ build of stage 1 stays without it.)
@@ -13,7 +14,9 @@
 #      springs: a minute in Release);
 #   4. fuzz the scene reader and the engine for FUZZ_SECONDS (default 60, scripts/fuzz.sh) with
 #      the libFuzzer target of that same build.
-# `bash scripts/test.sh --quick` runs stage 1 only (no Python). Installs what is missing first.
+# `bash scripts/test.sh --quick` runs stage 1 only (no Python), and of its tests only the
+# everyday subset (ctest -L quick: every test under about 2 s, under two minutes on 2 cores;
+# tests/test_labels.cmake lists the slow ones). Installs what is missing first.
 # Exit code: 0 when every stage passes. Works from any directory.
 # BUILD_DIR and FUZZ_BUILD_DIR move the two build directories (default: build, build-fuzz);
 # stage 2 builds in build-python-package (setup.py; MDRSIM_PYTHON_BUILD_DIR moves it).
@@ -53,16 +56,19 @@ if [ "$quick" -eq 1 ]; then bash scripts/setup.sh; else bash scripts/setup.sh fu
 
 stage "1/4 build and test ($build_dir)"
 bash scripts/check_includes.sh
+/usr/bin/python3 scripts/check_doc_links.py
 # Without the Python module (an earlier configuration may have cached it on): see stage 2.
 cmake -S . -B "$build_dir" -DMDRSIM_PYTHON=OFF >/dev/null
 BUILD_DIR="$build_dir" bash scripts/build.sh
-ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" | tee "$logs/ctest1.log"
+labels=()
+if [ "$quick" -eq 1 ]; then labels=(-L quick); fi
+ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" "${labels[@]}" | tee "$logs/ctest1.log"
 if [ "$quick" -eq 1 ]; then
   echo "tests: $(totals)"
   exit 0
 fi
 
-stage "2/4 install the Python module offline into a fresh venv (README \"Python\"), pytest"
+stage "2/4 install the Python module offline into a fresh venv (docs/python.md), pytest"
 venv="$logs/venv"
 /usr/bin/python3 -m venv --system-site-packages "$venv"
 "$venv/bin/pip" install -q --no-build-isolation --no-deps --no-index .

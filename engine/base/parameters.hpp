@@ -37,7 +37,7 @@ struct ParameterSpec {
   std::optional<Bound> upper;
   /// Numbers only: a value that makes a working part in the tests' JKR scene (R = 1 cm,
   /// E = 1 MPa, dgamma = 0.05 J/m^2), so that tests over every registered part build each
-  /// one from its declaration, with no switch on part names (tests/support/part_examples).
+  /// one from its declaration, with no switch on part names (engine/reference/part_examples).
   std::optional<double> example;
 };
 

@@ -8,6 +8,7 @@
 set(MDRSIM_PUBLIC_HEADERS
     # vocabulary of the parts: material and interface properties, parameters, the registry
     engine/base/material.hpp
+    engine/base/hess_scale.hpp
     engine/base/parameters.hpp
     engine/base/part_registry.hpp
     engine/base/pull_off_scales.hpp
@@ -27,17 +28,19 @@ set(MDRSIM_PUBLIC_HEADERS
     # the run and its result
     engine/run/run_scene.hpp
     engine/run/pull_off.hpp
-    engine/run/program_records.hpp
+    engine/result/run_result.hpp
+    engine/result/program_records.hpp
     engine/methods/run_counts.hpp
     engine/model/contact_snapshot.hpp
     engine/model/jkr_scales.hpp
     engine/model/dimensionless_scales.hpp
-    # events, observers and the stock outputs
+    # events and observers
     engine/events/event.hpp
     engine/events/event_format.hpp
     engine/events/observer.hpp
     engine/events/event_recorder.hpp
     engine/events/log_observer.hpp
-    engine/events/trajectory_csv.hpp
-    engine/events/result_json.hpp
-    engine/events/program_version.hpp)
+    engine/events/program_version.hpp
+    # the stock outputs
+    engine/output/trajectory_csv.hpp
+    engine/output/result_json.hpp)

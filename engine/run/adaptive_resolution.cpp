@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/run/pull_off.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/status_margin.hpp"
 

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "engine/events/observer.hpp"
-#include "engine/run/pull_off.hpp"
+#include "engine/result/run_result.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {

@@ -26,6 +26,8 @@ const char* jump_end_name(JumpEnd end) {
       return " (separated)";
     case JumpEnd::sliding:
       return " (sliding)";
+    case JumpEnd::pressed:
+      return " (pressed)";
     case JumpEnd::state:
       break;
   }

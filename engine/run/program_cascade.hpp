@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "engine/model/contact_snapshot.hpp"
-#include "engine/run/program_records.hpp"
+#include "engine/result/program_records.hpp"
 #include "engine/scene/program.hpp"
 
 namespace mdrsim {

@@ -6,12 +6,9 @@
 #include <chrono>
 #include <cstdint>
 
-namespace mdrsim {
+#include "engine/base/interrupt_check.hpp"
 
-/// Called by the runs of this thread every 65536 events or so (a few milliseconds); throws to
-/// stop the run. Null: none (the command stops on a signal by ending the process).
-using InterruptCheck = void (*)();
-inline thread_local InterruptCheck interrupt_check = nullptr;
+namespace mdrsim {
 
 class ProgressLog {
  public:
@@ -24,7 +21,7 @@ class ProgressLog {
   /// The same, reading the clock at each call: for a caller that asks seldom. Runs the
   /// interrupt check first.
   bool interval_passed() {
-    if (interrupt_check != nullptr) interrupt_check();
+    poll_interrupt();
     const auto now = std::chrono::steady_clock::now();
     if (now - last_ < kInterval) return false;
     last_ = now;

@@ -16,7 +16,7 @@
 #include "engine/methods/boundary_let_go.hpp"
 #include "engine/methods/event_method.hpp"
 #include "engine/methods/stepping_method.hpp"
-#include "engine/model/tangential_strength.hpp"
+#include "engine/methods/tangential_strength.hpp"
 #include "engine/run/fold_refinement.hpp"
 #include "engine/run/loss_status.hpp"
 #include "engine/run/progress_log.hpp"
@@ -271,6 +271,13 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
     buffer.discard_flight(scene.solver.method == SolverMethod::event);
   }
   result.sliding = flight == JumpEnd::sliding;
+  if (flight == JumpEnd::pressed && path) {
+    result.warnings.push_back(fmt::format(
+        "the glue let go with the indenter pressed in (held normal force {:.6g} N): the springs "
+        "pressed back carry that load, which the shorthand does not follow; its pull-off stage "
+        "ends where the glue let go, and the same path written as a program follows it on",
+        contact.save().normal_control));
+  }
   if (path) path->finish(contact, result.stages, result.jumps, result.work);
   if (result.work &&
       !(std::isfinite(result.work->normal) && std::isfinite(result.work->tangential))) {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "engine/run/pull_off.hpp"
+#include "engine/result/run_result.hpp"
 
 namespace mdrsim {
 

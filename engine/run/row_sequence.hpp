@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "engine/run/pull_off.hpp"
+#include "engine/result/run_result.hpp"
 
 namespace mdrsim {
 

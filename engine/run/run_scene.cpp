@@ -11,6 +11,7 @@
 #include "engine/run/adaptive_resolution.hpp"
 #include "engine/run/criterion_contract.hpp"
 #include "engine/run/program_resolution.hpp"
+#include "engine/run/pull_off.hpp"
 #include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"

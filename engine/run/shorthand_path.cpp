@@ -19,9 +19,11 @@ void locate_whole_row(const Contact& contact, StageRecord& stage) {
 JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
                          const AffineConstraint& tangential) {
   if (lost.springs_in_contact > 0) return JumpEnd::state;
-  // The held normal value falls during the pull-off: a fixed load at zero pulls next.
-  if (holds_force(normal) && lost.normal_control <= 0.0) {
-    return JumpEnd::separated;
+  // The held normal value falls during the pull-off: a fixed load at zero pulls next. A held
+  // compression (Fig. 3a's positive branch, or the glue sheared off as the tangential load
+  // was applied) pushed the row's last spring ever deeper instead, by F / (E* dx).
+  if (holds_force(normal)) {
+    return lost.normal_control <= 0.0 ? JumpEnd::separated : JumpEnd::pressed;
   }
   if (holds_force(tangential) && lost.tangential_held != 0.0) {
     return JumpEnd::sliding;

@@ -9,14 +9,15 @@
 #include "controllers/controller.hpp"
 #include "engine/methods/pull_off_method.hpp"
 #include "engine/model/contact.hpp"
-#include "engine/run/program_records.hpp"
+#include "engine/result/program_records.hpp"
 
 namespace mdrsim {
 
 /// How the pull-off of a contact that ended in `lost` (no spring left) goes on: under a
-/// fixed load that holds a tension the indenter separates; under a tangential fixed load that
-/// holds a force it slides away (SPEC "A fixed load that loses the contact"); otherwise the
-/// machine holds it where the last spring left it.
+/// fixed load that holds a tension the indenter separates (one that holds a
+/// compression presses it in on springs without glue, which the row does not follow); under a
+/// tangential fixed load that holds a force it slides away (SPEC "A fixed load that loses the
+/// contact"); otherwise the machine holds it where the last spring left it.
 JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
                          const AffineConstraint& tangential);
 

@@ -5,7 +5,7 @@
 
 #include "detachment/criterion.hpp"
 #include "engine/model/contact.hpp"
-#include "engine/run/pull_off.hpp"
+#include "engine/result/run_result.hpp"
 
 namespace mdrsim {
 

@@ -53,7 +53,8 @@ class StageEnd:
 class Jump:
     """A cascade at one value of a stage's parameter: `kind` "in" or "out", from the last
     equilibrium before it (`critical`) to the one after it; `after` is None where a fixed
-    load lost what held it and the indenter separated or slid away (SPEC)."""
+    load lost what held it and the indenter separated or slid away, or (the shorthand only)
+    where the glue let go under a held compression, which the shorthand does not follow."""
 
     stage: str
     kind: str

@@ -14,12 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "apps/run_label.hpp"
-#include "engine/events/finite_check.hpp"
-#include "engine/events/result_json.hpp"
+#include "engine/output/finite_check.hpp"
+#include "engine/output/result_json.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/run_label.hpp"
 #include "python/src/interrupt_check.hpp"
 #include "python/src/python_parts.hpp"
 #include "python/src/python_sweep.hpp"
@@ -230,6 +230,7 @@ void bind_results(py::module_& m) {
                                                   : py::object(py::none());
                                  d["end"] = j.end == JumpEnd::separated ? "separated"
                                             : j.end == JumpEnd::sliding ? "sliding"
+                                            : j.end == JumpEnd::pressed ? "pressed"
                                                                         : "state";
                                  d["springs"] = j.springs;
                                  d["glued_springs"] = j.glued_springs;

@@ -1,5 +1,5 @@
 // The rows of mdrsim.sweep, parsed, built, checked and written by `mdrsim sweep`'s own code
-// (apps/), so that each row is the command's, byte for byte.
+// (engine/sweep/, engine/output/), so that each row is the command's, byte for byte.
 #include "python/src/python_sweep.hpp"
 
 #include <pybind11/stl.h>
@@ -14,15 +14,15 @@
 #include <utility>
 #include <vector>
 
-#include "apps/sweep_csv.hpp"
-#include "apps/sweep_grid.hpp"
-#include "apps/sweep_progress.hpp"
-#include "apps/sweep_rows.hpp"
-#include "apps/usage_error.hpp"
-#include "apps/vary_spec.hpp"
 #include "engine/base/available_cpus.hpp"
+#include "engine/output/sweep_csv.hpp"
+#include "engine/output/sweep_rows.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/sweep_grid.hpp"
+#include "engine/sweep/sweep_progress.hpp"
+#include "engine/sweep/usage_error.hpp"
+#include "engine/sweep/vary_spec.hpp"
 #include "python/src/interrupt_check.hpp"
 #include "python/src/python_parts.hpp"
 

@@ -13,7 +13,7 @@
 
 namespace mdrsim::python {
 
-/// The rows of the trajectory CSV (engine/events/trajectory_csv.hpp) as columns.
+/// The rows of the trajectory CSV (engine/output/trajectory_csv.hpp) as columns.
 struct TrajectoryColumns {
   std::vector<std::string> stage_names;  ///< distinct stage names, in order of appearance
   std::vector<std::int32_t> stage;       ///< index into stage_names

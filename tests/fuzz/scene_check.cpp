@@ -9,7 +9,7 @@
 #include <exception>
 #include <utility>
 
-#include "engine/events/finite_check.hpp"
+#include "engine/output/finite_check.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"

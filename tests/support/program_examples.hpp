@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/reference/program_reference.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
-#include "tests/support/program_reference.hpp"
 
 namespace mdrsim::test {
 

@@ -1,6 +1,6 @@
 // The test-side continuum reference against JKR, the paper's eqs. 29-35, the held-force master
 // curves, the cone's closed forms, its own laws and a profile with two folds.
-#include "tests/support/continuum_reference.hpp"
+#include "engine/reference/continuum_reference.hpp"
 
 #include <gtest/gtest.h>
 

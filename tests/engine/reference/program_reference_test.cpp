@@ -1,9 +1,9 @@
-// The loading-program references (tests/support/program_reference) against hand values, the
+// The loading-program references (engine/reference/program_reference) against hand values, the
 // paper's closed forms and independent trapezoid integrations; all quantities dimensionless
 // (a/a0, d/d0, u/d0, F/F0, work/(F0 d0)). Tolerances: 1e-12..1e-14 where both sides are
 // closed forms or full-precision roots; 1e-6 against trapezoids with 1e5 intervals (their
 // error is O(h^2) ~ 1e-10 on smooth integrands, O(h^1.5) at a fold's square root).
-#include "tests/support/program_reference.hpp"
+#include "engine/reference/program_reference.hpp"
 
 #include <gtest/gtest.h>
 

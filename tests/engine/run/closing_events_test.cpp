@@ -2,8 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "engine/events/event_recorder.hpp"
+#include "engine/reference/jkr_scenario.hpp"
+#include "engine/run/pull_off.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace mdrsim {
 namespace {

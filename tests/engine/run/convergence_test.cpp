@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::test::JkrScenario;

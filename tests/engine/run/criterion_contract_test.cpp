@@ -11,12 +11,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/reference/jkr_scenario.hpp"
+#include "engine/reference/part_examples.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "tests/support/expect_throw_msg.hpp"
-#include "tests/support/jkr_scenario.hpp"
-#include "tests/support/part_examples.hpp"
 
 namespace {
 

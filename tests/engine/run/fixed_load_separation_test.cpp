@@ -16,6 +16,7 @@
 // 1.7/N relative of W when written (1.7e-3 at 1000, 1.6e-5 at 100000), so it is held to 2/N,
 // and rows of 2000 to 100000 springs to 1e-3 of each other. Before the fix the flight added
 // |F_c| F_c / (2 E* dx) per row, 5e-6 J at 1000 springs (30 |W|), growing as N.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,12 +27,12 @@
 #include <string>
 #include <vector>
 
-#include "engine/events/result_json.hpp"
-#include "engine/events/trajectory_csv.hpp"
+#include "engine/output/result_json.hpp"
+#include "engine/output/trajectory_csv.hpp"
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace mdrsim {
 namespace {
@@ -357,6 +358,64 @@ TEST(FixedLoadSeparation, TrajectoryEndsAtTheCriticalState) {
       // The deepest tension a row reaches before the critical point is a fraction of d_p.
       EXPECT_GT(row.indentation, -2.0 * 2.713781792333937e-5) << row.stage << " " << row.event;
     }
+  }
+}
+
+/// Fig. 3a under fixed load with the tangential displacement `ux` [m] held, at n springs.
+Scene fig3a_fixed_load(double ux, std::int64_t n) {
+  std::string text =
+      with_springs(read_file(std::string(MDRSIM_SOURCE_DIR) + "/scenes/fig3a_fixed_load.toml"), n);
+  const std::string key = "displacement = ";
+  const std::size_t at = text.find(key, text.find("tangential = {"));
+  const std::size_t end = text.find(' ', at + key.size());
+  text.replace(at + key.size(), end - at - key.size(), fmt::format("{:.17g}", ux));
+  return test::build_scene_text(text);
+}
+
+// Fig. 3a's positive branch (u = 4 d0): the fixed-load critical force is compressive, and once
+// the glue let go the shorthand's row (springs that let go are gone) pushed its last spring in
+// by F / (E* dx): the pull-off stage ended 0.0014 m deep at 1000 springs and 0.014 m at 10000,
+// its work 1.9e-6 J and 2.1e-5 J. Now the jump ends "pressed", the stage at the critical point,
+// and the work, counted to it, changes with N only by the row's O(1/N) (the total within 2e-3
+// between 1000 and 4000 springs; the critical force itself moves 2.7e-3 between them).
+TEST(FixedLoadSeparation, ShorthandHeldCompressionEndsPressedAtTheCriticalPoint) {
+  const double d0 = 2.2614848269449475e-6;
+  std::vector<double> works;
+  for (const std::int64_t n : {1000, 4000}) {
+    SCOPED_TRACE(n);
+    const Scene scene = fig3a_fixed_load(4.0 * d0, n);
+    const RunResult r = run_scene(scene, {});
+    ASSERT_EQ(r.status, RunStatus::instability);
+    ASSERT_TRUE(r.critical);
+    EXPECT_GT(r.critical->normal_force, 0.0);
+    ASSERT_EQ(r.jumps.size(), 1u);
+    EXPECT_EQ(r.jumps[0].end, JumpEnd::pressed);
+    const auto j = result_to_json(scene, r);
+    EXPECT_EQ(j["jumps"][0]["after"], nlohmann::ordered_json({{"pressed", true}}));
+    ASSERT_EQ(r.stages.size(), 3u);
+    EXPECT_EQ(r.stages[2].end.indentation, r.critical->indentation);
+    EXPECT_EQ(r.stages[2].end.springs_in_contact, r.critical->springs_in_contact);
+    ASSERT_FALSE(r.warnings.empty());
+    EXPECT_NE(r.warnings.back().find("pressed in"), std::string::npos) << r.warnings.back();
+    works.push_back(r.work->normal);
+  }
+  EXPECT_NEAR(works[1], works[0], 2e-3 * std::abs(works[1]));
+}
+
+// The glue sheared off as the tangential load was applied (u = 2e-5 m, far past the glue's
+// reach): nothing of the pull-off is an equilibrium, so it ends where the tangential stage
+// did, with no work; before, the row's last spring took the preload force alone and the stage
+// ended 0.018 m deep at 1000 springs (0.18 m at 10000) with 3.4e-4 J of work.
+TEST(FixedLoadSeparation, ShorthandGlueShearedOffAtApplicationUnderCompression) {
+  for (const std::int64_t n : {1000, 10000}) {
+    SCOPED_TRACE(n);
+    const RunResult r = run_scene(fig3a_fixed_load(2e-5, n), {});
+    ASSERT_EQ(r.status, RunStatus::shear_off);
+    ASSERT_TRUE(r.tangential_strength);
+    ASSERT_EQ(r.stages.size(), 3u);
+    EXPECT_EQ(r.stages[2].end.indentation, r.stages[1].end.indentation);
+    EXPECT_EQ(r.stages[2].work.normal, 0.0);
+    EXPECT_EQ(r.stages[2].work.tangential, 0.0);
   }
 }
 

@@ -7,9 +7,10 @@
 
 #include "controllers/controller.hpp"
 #include "engine/events/event_recorder.hpp"
+#include "engine/reference/jkr_scenario.hpp"
+#include "engine/reference/part_examples.hpp"
+#include "engine/run/pull_off.hpp"
 #include "engine/scene/registries.hpp"
-#include "tests/support/jkr_scenario.hpp"
-#include "tests/support/part_examples.hpp"
 
 using mdrsim::Event;
 using mdrsim::EventKind;

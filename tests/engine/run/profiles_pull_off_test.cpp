@@ -10,9 +10,10 @@
 #include "engine/events/event_recorder.hpp"
 #include "engine/model/jkr_scales.hpp"
 #include "engine/reference/branch_reference.hpp"
+#include "engine/reference/jkr_scenario.hpp"
+#include "engine/run/pull_off.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace br = mdrsim::branch_reference;
 using mdrsim::RunStatus;

@@ -1,5 +1,5 @@
 // The example loading programs of scenes/programs/ run through the mdrsim binary and compared
-// with the continuum references of tests/support/program_reference (issue 9, point 6).
+// with the continuum references of engine/reference/program_reference (issue 9, point 6).
 //
 // Tolerances. Every scene runs N = 4000 springs over the largest radius a_max it reaches, at
 // spacing h = a_max/(N a0). The row's force is a right Riemann sum of (1/2) int (d - 3 x^2) dx,
@@ -18,7 +18,7 @@
 #include <string>
 #include <string_view>
 
-#include "tests/support/program_reference.hpp"
+#include "engine/reference/program_reference.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace pr = mdrsim::program_reference;

@@ -1,15 +1,15 @@
 // Richardson on programs (issue 9, point 3): the reported states located between springs and
 // extrapolated across rows of N/2, N and 2N springs, against the continuum
-// (tests/support/program_reference), each estimate at least its error.
+// (engine/reference/program_reference), each estimate at least its error.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <optional>
 #include <string>
 
+#include "engine/reference/program_reference.hpp"
 #include "engine/run/run_scene.hpp"
 #include "tests/support/program_examples.hpp"
-#include "tests/support/program_reference.hpp"
 
 namespace mdrsim {
 namespace {

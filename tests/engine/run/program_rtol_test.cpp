@@ -1,5 +1,5 @@
 // rtol on programs (issue 9, point 3): every stage end's and jump's forces within rtol of the
-// continuum (tests/support/program_reference), and each error estimate at least the error.
+// continuum (engine/reference/program_reference), and each error estimate at least the error.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "engine/reference/program_reference.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "tests/support/program_examples.hpp"
-#include "tests/support/program_reference.hpp"
 
 namespace mdrsim {
 namespace {

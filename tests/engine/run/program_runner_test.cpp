@@ -7,7 +7,7 @@
 
 #include "controllers/builtin_controllers.hpp"
 #include "detachment/mode_mixed_criterion.hpp"
-#include "engine/events/result_json.hpp"
+#include "engine/output/result_json.hpp"
 #include "engine/reference/parabolic_reference.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
@@ -68,7 +68,7 @@ TEST(ProgramRunner, ReversibleJkrCycleJumpsInAtMinusEightNinthsAndOutAtMinusFive
   // The fixed-grips fold of eq. 18: d_c = -3^(2/3) d0 (paper eq. 21 at u = 0).
   EXPECT_NEAR(r.critical->indentation / s.depth, -std::cbrt(9.0), 2e-3);
   // The cycle's dissipation, the area between the JKR branch and F = 0 from d_c to 0:
-  // 0.9355 F0 |d_c| (derived in tests/support/program_reference.cpp); O(1/N) at N = 4000.
+  // 0.9355 F0 |d_c| (derived in engine/reference/program_reference.cpp); O(1/N) at N = 4000.
   EXPECT_NEAR(r.work->normal / (s.force * std::abs(r.critical->indentation)), 0.9355, 2e-3);
 }
 

@@ -4,8 +4,9 @@
 #include <cmath>
 
 #include "engine/events/event_recorder.hpp"
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
-#include "tests/support/jkr_scenario.hpp"
+#include "engine/run/pull_off.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::RunResult;

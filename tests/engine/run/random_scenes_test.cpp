@@ -1,5 +1,5 @@
 // The random scene set: fixed by its seed, loadable, and in line with a plain 200000-spring row.
-#include "tests/support/random_scenes.hpp"
+#include "engine/reference/random_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 using mdrsim::test::ContinuumCritical;
 using mdrsim::test::RandomScene;

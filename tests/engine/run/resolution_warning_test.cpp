@@ -7,8 +7,8 @@
 
 #include <string>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/jkr_scenario.hpp"
 #include "tests/support/program_examples.hpp"
 
 namespace mdrsim {

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace mdrsim {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 #include <tuple>
 
+#include "engine/reference/jkr_scenario.hpp"
+#include "engine/reference/random_scenes.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/jkr_scenario.hpp"
-#include "tests/support/random_scenes.hpp"
 
 using mdrsim::RunStatus;
 using mdrsim::test::ContinuumCritical;
@@ -31,7 +31,7 @@ class RtolGuarantee : public ::testing::TestWithParam<Case> {};
 
 }  // namespace
 
-// The reference is tests/support/continuum_reference: the continuum branch solved for each
+// The reference is engine/reference/continuum_reference: the continuum branch solved for each
 // criterion written from SPEC's table, with no engine code. rtol is relative to the critical
 // normal force, and the peak adhesive force is held to the same rtol. The error must also be
 // within the run's own a posteriori estimate, and the estimate within rtol.

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "tests/support/expect_throw_msg.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::test::JkrScenario;

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
-#include "tests/support/jkr_scenario.hpp"
-#include "tests/support/part_examples.hpp"
+#include "engine/reference/part_examples.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::RunStatus;

@@ -8,8 +8,8 @@
 #include <numbers>
 #include <string>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 using mdrsim::test::JkrScenario;
 

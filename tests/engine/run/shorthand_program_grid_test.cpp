@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace mdrsim {
 namespace {

@@ -9,17 +9,18 @@
 #include <cmath>
 #include <string>
 
+#include "engine/reference/continuum_reference.hpp"
+#include "engine/reference/jkr_scenario.hpp"
+#include "engine/run/pull_off.hpp"
 #include "engine/run/run_scene.hpp"
 #include "profiles/power_law_profile.hpp"
-#include "tests/support/continuum_reference.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace mdrsim {
 namespace {
 
 using test::ContinuumCritical;
 
-// Random scene 113 of tests/support/random_scenes (seed 20240611) with its held u_x raised
+// Random scene 113 of engine/reference/random_scenes (seed 20240611) with its held u_x raised
 // from 4.37e-6 m to 8e-6 m: the continuum branch now folds 1.5e-7 m (6e-5 a_s) above the
 // radius a_s where the glue shears off unstretched. Before the status was resolved, rtol 1e-4
 // reported shear-off at F = 1.775463 N (off by 1.6e-4) and rtol 1e-6 instability.
@@ -44,7 +45,7 @@ std::string scene_text(const std::string& discretization) {
       kYoungs, kPoisson, kWork, kCoefficient, kExponent, kGluedRadius, kTangential, discretization);
 }
 
-/// The independent continuum pull-off (tests/support/continuum_reference: the branch from
+/// The independent continuum pull-off (engine/reference/continuum_reference: the branch from
 /// SPEC's law, no engine code).
 ContinuumCritical reference() {
   const PowerLawProfile profile(kCoefficient, kExponent);

@@ -6,8 +6,8 @@
 #include <string>
 #include <tuple>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::RunStatus;

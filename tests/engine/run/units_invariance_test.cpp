@@ -12,7 +12,7 @@
 #include <tuple>
 #include <vector>
 
-#include "tests/support/jkr_scenario.hpp"
+#include "engine/reference/jkr_scenario.hpp"
 
 using mdrsim::RunResult;
 using mdrsim::test::JkrScenario;

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "tests/support/expect_throw_msg.hpp"
-#include "tests/support/jkr_scenario.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace mdrsim::test {

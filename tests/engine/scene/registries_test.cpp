@@ -13,9 +13,9 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/reference/part_examples.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/scene_document.hpp"
-#include "tests/support/part_examples.hpp"
 
 namespace {
 

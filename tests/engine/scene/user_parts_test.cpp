@@ -4,10 +4,10 @@
 #include <memory>
 
 #include "detachment/criterion.hpp"
+#include "engine/reference/jkr_scenario.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "profiles/profile.hpp"
-#include "tests/support/jkr_scenario.hpp"
 
 using mdrsim::test::JkrScenario;
 

@@ -1,0 +1,204 @@
+// Field names and order as in SPEC; dimensionless values only where the JKR scales exist.
+#include "engine/output/result_json.hpp"
+
+#include <algorithm>
+#include <span>
+
+#include "engine/events/program_version.hpp"
+#include "engine/model/snapshot_fields.hpp"
+
+namespace mdrsim {
+namespace {
+
+nlohmann::ordered_json snapshot_json(const ContactSnapshot& c) {
+  nlohmann::ordered_json j;
+  for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member;
+  j["springs_in_contact"] = c.springs_in_contact;
+  return j;
+}
+
+nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const PullOffScales& s) {
+  nlohmann::ordered_json j;
+  for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member / scale_of(s, f.scale);
+  return j;
+}
+
+/// A snapshot with its dimensionless values nested, where the scales exist.
+nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<PullOffScales>& s) {
+  nlohmann::ordered_json j = snapshot_json(c);
+  if (s) j["dimensionless"] = dimensionless_json(c, *s);
+  return j;
+}
+
+/// A jump's `after`: its state, or only how the indenter left when nothing held it.
+nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<PullOffScales>& s) {
+  switch (jump.end) {
+    case JumpEnd::separated:
+      return {{"separated", true}};
+    case JumpEnd::sliding:
+      return {{"sliding", true}};
+    case JumpEnd::pressed:
+      return {{"pressed", true}};
+    case JumpEnd::state:
+      break;
+  }
+  return state_json(jump.after, s);
+}
+
+nlohmann::ordered_json work_json(const AxisWork& w) {
+  return {{"normal", w.normal}, {"tangential", w.tangential}};
+}
+
+}  // namespace
+
+std::pair<std::string, std::string> final_controls(const Scene& scene, std::size_t stages_run) {
+  if (!scene.program) {
+    return {scene.normal.control, scene.tangential ? scene.tangential->control : "fixed-grips"};
+  }
+  std::pair<std::string, std::string> controls{"fixed-grips", "fixed-grips"};
+  const auto& stages = scene.program->stages;
+  const std::size_t n = std::min(std::max<std::size_t>(stages_run, 1), stages.size());
+  for (const Stage& stage : std::span(stages).first(n)) {
+    if (stage.normal) controls.first = stage.normal->control;
+    if (stage.tangential) controls.second = stage.tangential->control;
+  }
+  return controls;
+}
+
+namespace {
+
+const char* route_name(Accuracy::Route route) {
+  return route == Accuracy::Route::richardson ? "richardson" : "row";
+}
+
+/// What produced the result: the effective material, the preload, the scales, the rows run,
+/// the version and the resolved scene, which run again gives the same numbers.
+void add_provenance(nlohmann::ordered_json& j, const Scene& scene, const RunResult& result,
+                    const std::optional<PullOffScales>& scales) {
+  const Material& m = scene.material;
+  j["material"] = {{"effective_modulus", m.effective_modulus},
+                   {"effective_shear_modulus", m.effective_shear_modulus},
+                   {"work_of_adhesion", m.work_of_adhesion},
+                   {"approach_work_of_adhesion", m.approach_work_of_adhesion}};
+  if (!scene.program) {
+    j["preload"] = {{"glued_radius", scene.glued_radius},
+                    {"depth", scene.preload_depth},
+                    {"force", scene.preload_force}};
+  }
+  if (scales) {
+    j["scales"] = {{"force", scales->force},
+                   {"radius", scales->radius},
+                   {"depth", scales->depth},
+                   {"basis", scales->basis}};
+  }
+  const Accuracy& a = result.accuracy;
+  j["resolution"] = {
+      {"route", route_name(a.route)},
+      {"rows", a.rows.empty() ? std::vector<std::int64_t>{result.springs}
+                              : std::vector<std::int64_t>(a.rows.begin(), a.rows.end())}};
+  j["mdrsim_version"] = program_version();
+  if (scene.resolved) j["scene"] = nlohmann::ordered_json::parse(scene.resolved->dump());
+}
+
+}  // namespace
+
+std::optional<PullOffScales> dimensionless_scales(const Scene& scene) {
+  return dimensionless_scales(*scene.profile, scene.material);
+}
+
+nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result) {
+  using nlohmann::ordered_json;
+  const auto scales = dimensionless_scales(scene);
+  const Accuracy& accuracy = result.accuracy;
+  ordered_json j;
+  j["status"] = to_string(result.status);
+  if (result.sliding) j["sliding"] = true;
+  const auto [normal_control, tangential_control] = final_controls(scene, result.stages.size());
+  j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
+  j["criterion"] = scene.criterion_name;
+  j["method"] = scene.solver.method == SolverMethod::event ? "event" : "stepping";
+  j["springs"] = result.springs;
+  if (scene.discretization.rtol) j["rtol"] = *scene.discretization.rtol;
+  if (accuracy.route == Accuracy::Route::richardson) {
+    j["extrapolation"] = {{"method", "richardson"}, {"springs", accuracy.rows}};
+  }
+  if (scene.discretization.rtol || accuracy.critical_error_estimate ||
+      accuracy.peak_error_estimate) {
+    ordered_json a;
+    a["route"] = route_name(accuracy.route);
+    a["rows"] = accuracy.rows;
+    a["outer_radius"] = accuracy.outer_radius;
+    if (accuracy.critical_error_estimate) {
+      a["critical_error_estimate"] = *accuracy.critical_error_estimate;
+    }
+    if (accuracy.peak_error_estimate) a["peak_error_estimate"] = *accuracy.peak_error_estimate;
+    if (accuracy.work_error_estimate) {
+      a["work_error_estimate"] = work_json(*accuracy.work_error_estimate);
+    }
+    if (scene.discretization.rtol) a["rtol_met"] = accuracy.rtol_met;
+    a["covers"] = accuracy.covers.empty() ? std::vector<std::string>{"critical.normal_force",
+                                                                     "peak_adhesion.normal_force"}
+                                          : accuracy.covers;
+    j["accuracy"] = a;
+  }
+  if (result.critical) {
+    j["critical"] = snapshot_json(*result.critical);
+    if (scales) j["dimensionless"] = dimensionless_json(*result.critical, *scales);
+  }
+  if (result.peak) {
+    ordered_json p = snapshot_json(*result.peak);
+    if (scales) p["dimensionless"] = dimensionless_json(*result.peak, *scales);
+    j["peak_adhesion"] = p;
+  }
+  if (result.tangential_strength) {
+    j["tangential_strength"] = *result.tangential_strength;
+    if (scales)
+      j["dimensionless_tangential_strength"] = *result.tangential_strength / scales->force;
+  }
+  if (result.work) {
+    ordered_json stages = ordered_json::array();
+    for (const StageRecord& stage : result.stages) {
+      ordered_json record = {{"name", stage.name},
+                             {"end", state_json(stage.end, scales)},
+                             {"work", work_json(stage.work)}};
+      if (stage.normal_force_error_estimate) {
+        record["end_error_estimate"] = {
+            {"normal_force", *stage.normal_force_error_estimate},
+            {"tangential_force", stage.tangential_force_error_estimate.value_or(0.0)}};
+      }
+      if (stage.work_error_estimate) {
+        record["work_error_estimate"] = work_json(*stage.work_error_estimate);
+      }
+      stages.push_back(record);
+    }
+    j["stages"] = stages;
+    ordered_json jumps = ordered_json::array();
+    for (const JumpRecord& jump : result.jumps) {
+      jumps.push_back({{"stage", jump.stage},
+                       {"kind", jump.inward ? "in" : "out"},
+                       {"critical", state_json(jump.critical, scales)},
+                       {"after", after_json(jump, scales)},
+                       {"springs", jump.springs},
+                       {"glued_springs", jump.glued_springs},
+                       {"by_shear", jump.by_shear}});
+      if (jump.critical_error_estimate) {
+        jumps.back()["critical_error_estimate"] = *jump.critical_error_estimate;
+        if (jump.end == JumpEnd::state) {
+          jumps.back()["after_error_estimate"] = jump.after_error_estimate.value_or(0.0);
+        }
+      }
+    }
+    j["jumps"] = jumps;
+    j["work"] = work_json(*result.work);
+  }
+  j["warnings"] = result.warnings;
+  j["counts"] = {{"events", result.counts.events},
+                 {"steps", result.counts.steps},
+                 {"halvings", result.counts.halvings},
+                 {"root_iterations", result.counts.root_iterations}};
+  j["wall_time_s"] = result.wall_time_s;
+  add_provenance(j, scene, result, scales);
+  return j;
+}
+
+}  // namespace mdrsim

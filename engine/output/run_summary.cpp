@@ -1,0 +1,143 @@
+// The summary lines: status, program stages and jumps, accuracy, critical point, peak, counts.
+#include "engine/output/run_summary.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <string>
+
+#include "engine/model/dimensionless_scales.hpp"
+#include "engine/model/snapshot_fields.hpp"
+#include "engine/output/result_json.hpp"
+
+namespace mdrsim::cli {
+namespace {
+
+/// Why a run has no critical point, in the words of its status.
+const char* missing_critical(const RunResult& r) {
+  // A program that never touched (e.g. a tensile fixed load from the start).
+  if (r.work && r.counts.events == 0) return "none: no spring was ever in contact";
+  switch (r.status) {
+    case RunStatus::no_instability:
+      // A program may have jumped on its way (a jump-in, a jump that kept the contact).
+      return r.jumps.empty() ? "none: the contact peeled off smoothly, nothing jumped"
+                             : "none: the contact peeled off smoothly at its end (no jump lost it)";
+    case RunStatus::shear_off:
+      return "none: the tangential load broke the glue as it was applied";
+    case RunStatus::step_limit:
+      return "none: the run stopped at a limit first (see the warning)";
+    case RunStatus::completed:
+      return "none: the contact was never lost";
+    case RunStatus::instability:
+      break;
+  }
+  return "none";
+}
+
+void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
+  const Accuracy& a = r.accuracy;
+  if (!scene.discretization.rtol && !a.critical_error_estimate) return;
+  if (r.status == RunStatus::no_instability) {
+    // rtol followed the peel down to the zoom's floor and found no fold on the way.
+    fmt::print(out,
+               "accuracy: no fold down to the last spring at a = {:.6g} m (a row of {} springs "
+               "zoomed to {:.6g} m)\n",
+               a.outer_radius / static_cast<double>(r.springs), r.springs, a.outer_radius);
+    return;
+  }
+  std::string line =
+      a.route == Accuracy::Route::richardson ? "richardson over rows of " : "plain row; rows of ";
+  line += fmt::format("{} springs across {:.6g} m", fmt::join(a.rows, ", "), a.outer_radius);
+  if (a.critical_error_estimate && r.critical) {
+    line += fmt::format("; critical force error estimate {:.3g} N ({:.3g} relative)",
+                        *a.critical_error_estimate,
+                        *a.critical_error_estimate / std::abs(r.critical->normal_force));
+  }
+  if (scene.discretization.rtol) {
+    line += fmt::format("; rtol {} {}", *scene.discretization.rtol, a.rtol_met ? "met" : "NOT met");
+  }
+  fmt::print(out, "accuracy: {}\n", line);
+}
+
+/// A program's stages and jumps, one line each.
+void print_program(std::FILE* out, const RunResult& r) {
+  for (const StageRecord& stage : r.stages) {
+    const ContactSnapshot& e = stage.end;
+    fmt::print(out,
+               "stage {}: ends at d = {:.6g} m, F = {:.6g} N, ux = {:.6g} m, Fx = {:.6g} N, "
+               "{} springs in contact; work {:.6g} J normal, {:.6g} J tangential\n",
+               stage.name, e.indentation, e.normal_force, e.tangential_displacement,
+               e.tangential_force, e.springs_in_contact, stage.work.normal, stage.work.tangential);
+  }
+  for (const JumpRecord& jump : r.jumps) {
+    const std::string to =
+        jump.end == JumpEnd::separated ? "the indenter separates (nothing holds the fixed load)"
+        : jump.end == JumpEnd::sliding
+            ? "the indenter slides away (nothing holds the tangential fixed load)"
+        : jump.end == JumpEnd::pressed
+            ? "the indenter pressed in on springs without glue (not followed by the shorthand)"
+            : fmt::format("d = {:.6g} m, F = {:.6g} N ({} springs)", jump.after.indentation,
+                          jump.after.normal_force, jump.after.springs_in_contact);
+    fmt::print(out, "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N ({} springs) to {}\n",
+               jump.inward ? "in" : "out", jump.stage, jump.by_shear ? " (by shear)" : "",
+               jump.critical.indentation, jump.critical.normal_force,
+               jump.critical.springs_in_contact, to);
+  }
+  if (r.work) {
+    fmt::print(out, "work: {:.6g} J normal, {:.6g} J tangential\n", r.work->normal,
+               r.work->tangential);
+  }
+}
+
+}  // namespace
+
+void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
+  const auto [normal_control, tangential_control] = final_controls(scene, r.stages.size());
+  fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
+             to_string(r.status), normal_control, tangential_control, scene.criterion_name,
+             r.springs);
+  print_program(out, r);
+  print_accuracy(out, scene, r);
+  const auto s = dimensionless_scales(scene);
+  if (r.critical) {
+    const ContactSnapshot& c = *r.critical;
+    std::string line;
+    for (const SnapshotField& f : kSnapshotFields) {
+      line += fmt::format("{} = {:.8g} {}, ", f.symbol, c.*f.member, f.unit);
+    }
+    fmt::print(out, "critical: {}{} springs in contact\n", line, c.springs_in_contact);
+    if (s) {
+      line.clear();
+      for (const SnapshotField& f : kSnapshotFields) {
+        line += fmt::format("{}{}/{} = {:.8g}", line.empty() ? "" : ", ", f.symbol,
+                            scale_symbol(f.scale), c.*f.member / scale_of(*s, f.scale));
+      }
+      fmt::print(out, "dimensionless: {}\n", line);
+      fmt::print(out, "scales: F0 = {:.8g} N, a0 = {:.8g} m, d0 = {:.8g} m; {}\n", s->force,
+                 s->radius, s->depth, s->basis);
+    } else if (!(scene.material.work_of_adhesion > 0.0)) {
+      fmt::print(out, "dimensionless: not defined without adhesion (F0 = 0)\n");
+    } else {
+      fmt::print(out,
+                 "dimensionless: not defined for profile \"{}\" (no closed-form pull-off "
+                 "scales)\n",
+                 scene.profile_name);
+    }
+  } else {
+    fmt::print(out, "critical: {}\n", missing_critical(r));
+  }
+  if (r.peak) {
+    fmt::print(out, "peak adhesion: F = {:.8g} N at a = {:.8g} m, d = {:.8g} m{}\n",
+               r.peak->normal_force, r.peak->contact_radius, r.peak->indentation,
+               s ? fmt::format(" (F/F0 = {:.8g})", r.peak->normal_force / s->force) : "");
+  }
+  if (r.tangential_strength) {
+    fmt::print(out, "tangential strength: Fx = {:.8g} N{}\n", *r.tangential_strength,
+               s ? fmt::format(" (Fx/F0 = {:.8g})", *r.tangential_strength / s->force) : "");
+  }
+  fmt::print(out, "counts: {} events, {} steps, {} halvings; {:.3g} s\n", r.counts.events,
+             r.counts.steps, r.counts.halvings, r.wall_time_s);
+}
+
+}  // namespace mdrsim::cli

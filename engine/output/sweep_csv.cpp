@@ -1,0 +1,157 @@
+// Formatting sweep rows and reading sweep CSVs back, for --resume and merge.
+#include "engine/output/sweep_csv.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cinttypes>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "engine/model/snapshot_fields.hpp"
+#include "engine/output/result_json.hpp"
+#include "engine/scene/scene_error.hpp"
+#include "engine/sweep/usage_error.hpp"
+
+namespace mdrsim::cli {
+namespace {
+
+constexpr std::size_t kHeadBytes = 64 * 1024;
+
+template <class T>
+void append_field(fmt::memory_buffer& out, const std::optional<T>& value) {
+  out.push_back(',');
+  if (value) fmt::format_to(std::back_inserter(out), "{}", *value);
+}
+
+}  // namespace
+
+std::string identity_line(const SweepIdentity& id) {
+  return fmt::format("# mdrsim sweep: scene {:016x}, grid {:016x}, rows {}, shard {}/{}\n",
+                     id.scene, id.grid, id.rows, id.shard.index, id.shard.count);
+}
+
+std::optional<SweepIdentity> parse_identity_line(std::string_view line) {
+  if (line.size() > 200) return std::nullopt;
+  const std::string text(line);
+  SweepIdentity id;
+  unsigned long long scene = 0, grid = 0, rows = 0, index = 0, count = 0;
+  if (std::sscanf(text.c_str(),
+                  "# mdrsim sweep: scene %16llx, grid %16llx, rows %llu, shard %llu/%llu", &scene,
+                  &grid, &rows, &index, &count) != 5) {
+    return std::nullopt;
+  }
+  id = {scene, grid, rows, {index, count}};
+  // Only the exact form is one: no signs, spaces or leading zeros that sscanf lets through.
+  if (count == 0 || index >= count || identity_line(id) != text + "\n") return std::nullopt;
+  return id;
+}
+
+std::uint64_t scene_hash(std::string_view scene_bytes, const std::vector<std::string>& sets) {
+  std::uint64_t h = fnv1a(scene_bytes);
+  for (const std::string& set : sets) {
+    h = fnv1a(std::string_view("\0", 1), h);
+    h = fnv1a(set, h);
+  }
+  return h;
+}
+
+std::string csv_header(const SweepGrid& grid, bool dimensionless) {
+  std::string out = "status";
+  for (const VarySpec& spec : grid.keys()) out += "," + spec.key;
+  for (const SnapshotField& f : kSnapshotFields) out += std::string(",") + f.name;
+  out += ",springs_in_contact";
+  if (dimensionless) {
+    for (const SnapshotField& f : kSnapshotFields) out += std::string(",dimensionless_") + f.name;
+  }
+  out += ",peak_normal_force";
+  if (dimensionless) out += ",dimensionless_peak_normal_force";
+  out += ",tangential_strength,critical_error_estimate";
+  out += ",springs,glued_radius,preload_depth,preload_force,warnings\n";
+  return out;
+}
+
+// The status leads each row, and a run without a critical point leaves the critical columns
+// empty, so that no plot mistakes it for one.
+std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& values,
+                    const Scene& scene, const RunResult& r, bool dimensionless) {
+  fmt::memory_buffer out;
+  const auto s = dimensionless_scales(scene);
+  fmt::format_to(std::back_inserter(out), "{}", to_string(r.status));
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    out.push_back(',');
+    const std::string& text = grid.keys()[k].values[values[k]].text;
+    out.append(text.data(), text.data() + text.size());
+  }
+  const auto critical = [&](const SnapshotField& f, double scale) -> std::optional<double> {
+    if (!r.critical) return std::nullopt;
+    return *r.critical.*f.member / scale;
+  };
+  for (const SnapshotField& f : kSnapshotFields) append_field(out, critical(f, 1.0));
+  append_field(
+      out, r.critical ? std::optional<std::int64_t>(r.critical->springs_in_contact) : std::nullopt);
+  if (dimensionless) {
+    for (const SnapshotField& f : kSnapshotFields) {
+      append_field(out, s ? critical(f, scale_of(*s, f.scale)) : std::nullopt);
+    }
+  }
+  append_field(out, r.peak ? std::optional<double>(r.peak->normal_force) : std::nullopt);
+  if (dimensionless) {
+    append_field(
+        out, s && r.peak ? std::optional<double>(r.peak->normal_force / s->force) : std::nullopt);
+  }
+  append_field(out, r.tangential_strength);
+  append_field(out, r.accuracy.critical_error_estimate);
+  // What the row ran: its finest row of springs (rtol picks it) and its preload state (a
+  // program has none); then the number of warnings it logged, which a plot should not hide.
+  append_field(out, std::optional<std::int64_t>(r.springs));
+  const auto preload = [&](double value) {
+    return scene.program ? std::nullopt : std::optional<double>(value);
+  };
+  append_field(out, preload(scene.glued_radius));
+  append_field(out, preload(scene.preload_depth));
+  append_field(out, preload(scene.preload_force));
+  append_field(out, std::optional<std::size_t>(r.warnings.size()));
+  out.push_back('\n');
+  return fmt::to_string(out);
+}
+
+SweepFile read_sweep_file(const std::string& path, const std::string& who) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    std::string why = std::strerror(errno);
+    if (!why.empty()) why[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(why[0])));
+    throw UsageError(fmt::format("{}: cannot read '{}' ({})", who, printable(path), why));
+  }
+  SweepFile file;
+  std::uint64_t lines = 0;
+  std::string line;
+  char buffer[1 << 16];
+  while (in) {
+    in.read(buffer, sizeof buffer);
+    const std::size_t n = static_cast<std::size_t>(in.gcount());
+    if (file.head.size() < kHeadBytes) {
+      file.head.append(buffer, std::min(n, kHeadBytes - file.head.size()));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const char c = buffer[i];
+      if (lines < 2) line += c;
+      if (c != '\n') continue;
+      ++lines;
+      file.complete_bytes = file.size + i + 1;
+      if (lines == 1) file.first_line = line.substr(0, line.size() - 1);
+      if (lines == 2) file.header = line;
+      if (lines <= 2) line.clear();
+    }
+    file.size += n;
+  }
+  if (in.bad()) {
+    throw UsageError(fmt::format("{}: cannot read '{}' (read error)", who, printable(path)));
+  }
+  file.rows = lines > 2 ? lines - 2 : 0;
+  return file;
+}
+
+}  // namespace mdrsim::cli

@@ -1,0 +1,21 @@
+// CSV rows at full precision, so that plots and checks see the engine's own numbers.
+#include "engine/output/trajectory_csv.hpp"
+
+#include <fmt/ostream.h>
+
+namespace mdrsim {
+
+TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out) : out_(&out) {
+  *out_ << "stage,event,in_cascade,indentation,normal_force,contact_radius,tangential_displacement,"
+           "tangential_force,springs_in_contact\n";
+}
+
+void TrajectoryCsvWriter::on_event(const Event& e) {
+  if (e.kind == EventKind::finished) return;
+  const ContactSnapshot& s = e.state;
+  fmt::print(*out_, "{},{},{},{},{},{},{},{},{}\n", stage_name(e), to_string(e.kind),
+             e.in_cascade ? 1 : 0, s.indentation, s.normal_force, s.contact_radius,
+             s.tangential_displacement, s.tangential_force, s.springs_in_contact);
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,66 @@
+// What a loading program reports besides the critical point: stage ends, jumps and work.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "engine/model/contact_snapshot.hpp"
+
+namespace mdrsim {
+
+/// The work done by the machine on each axis [J]: the integral of the force over the
+/// displacement of the machine's driving point (SPEC "Loading programs").
+struct AxisWork {
+  double normal = 0.0;
+  double tangential = 0.0;
+  AxisWork& operator+=(const AxisWork& more) {
+    normal += more.normal;
+    tangential += more.tangential;
+    return *this;
+  }
+};
+
+struct StageRecord {
+  std::string name;
+  ContactSnapshot end;  ///< the state at the stage's end (or where the contact was lost)
+  AxisWork work;
+  /// `end` with the row's front located between springs (rows run to be extrapolated).
+  std::optional<ContactSnapshot> refined_end;
+  /// With rtol: a posteriori bounds on |reported - continuum| of the end's forces [N].
+  std::optional<double> normal_force_error_estimate;
+  std::optional<double> tangential_force_error_estimate;
+  /// With rtol or Richardson: a posteriori bounds on |reported - continuum| of `work` [J].
+  std::optional<AxisWork> work_error_estimate;
+};
+
+/// Where a jump lands: an equilibrium, or none because a held fixed load lost what held it
+/// (SPEC "A fixed load that loses the contact"): the indenter separates (normal) or slides
+/// away (tangential), and `after` holds nothing.
+/// How a jump ends: in a state, or (nothing left holding the indenter) in a flight: away from
+/// the surface under a held tension, sideways under a held tangential force; or, for the
+/// shorthand only, pressed in under a held compression once the glue is gone, where the
+/// springs pressed back would carry it, a state the shorthand's row does not follow.
+enum class JumpEnd { state, separated, sliding, pressed };
+
+/// A cascade of springs gluing or letting go at one value of the stage parameter.
+struct JumpRecord {
+  std::string stage;
+  bool inward = false;       ///< "in": the contact grew; "out": it shrank
+  ContactSnapshot critical;  ///< the last equilibrium before the jump
+  ContactSnapshot after;     ///< the equilibrium after it (end == state only)
+  JumpEnd end = JumpEnd::state;
+  std::int64_t springs = 0;        ///< change of the springs in contact
+  std::int64_t glued_springs = 0;  ///< change of the glued springs
+  bool by_shear = false;  ///< the first spring due after the critical point broke at zero stretch
+  /// `critical` and `after` with the row's front located between springs (rows run to be
+  /// extrapolated), where the branch allows it.
+  std::optional<ContactSnapshot> refined_critical;
+  std::optional<ContactSnapshot> refined_after;
+  /// With rtol: a posteriori bounds on |reported - continuum| of the normal force at the
+  /// critical point and after the jump [N].
+  std::optional<double> critical_error_estimate;
+  std::optional<double> after_error_estimate;
+};
+
+}  // namespace mdrsim

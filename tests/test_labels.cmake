@@ -1,0 +1,48 @@
+# Labels every gtest case `quick` or `slow` (ctest -L quick: the everyday subset), read by ctest
+# after the discovered tests (tests/CMakeLists.txt appends it to TEST_INCLUDE_FILES, with
+# mdrsim_test_lists naming each executable's TEST_LIST variable).
+#
+# `slow`: the cases measured at more than about 1.5 s each (ctest -j2 --output-junit on 2 shared
+# cores, issue 20); everything else, a new test too, is `quick`. `ctest -L quick` then runs in
+# well under two minutes on 2 cores; plain ctest still runs everything. A name matches if one
+# of these regular expressions finds it (ctest's full name: Suite.Case, or
+# Instance/Suite.Case/Param  # GetParam() = ... for a parameterized case).
+set(mdrsim_slow_tests
+    # rows of up to 2^25 springs on the plain route: 150 s and 12 s
+    "^RandomSet/RtolGuarantee\\.WithinRtolOfTheContinuum/rtol1e[46]_none"
+    "^RandomScenes\\.PlainRowAgreesWithTheReference$"  # 7.5 s
+    "^EdgeCasesLarge\\."  # 10^7 springs: 4 s
+    "^Determinism\\.SameSceneTwiceGivesByteIdenticalJson$"  # 8 s
+    "^PlotProgram\\.AJumpOffUnderFixedLoadDoesNotSetTheRange$"  # 5 s (matplotlib)
+    "^Cli\\.EveryKeyOfTheSceneWrongThroughSet$"  # 3.5 s
+    "^Cli\\.TabulatedProfileFromAnEndlessDevice$"  # 2.5 s
+    "^ModeDependentCriterion\\.MatchesTheLongDoubleRootOverLambdaAngleAndScale$"  # 3 s
+    "^Sweep\\.KilledMidwayThenResumedEqualsAnUninterruptedSweep$"  # 3 s
+    "^Sweep\\.InterruptedByCtrlCExits130WithWholeRows$"  # 1.7 s
+    "^StatusMargin\\.TheStatusDoesNotDependOnRtol$"  # 1.5 s
+    "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$")  # 1.4 s
+
+set(mdrsim_quick_names)
+set(mdrsim_slow_names)
+foreach(list IN LISTS mdrsim_test_lists)
+  foreach(name IN LISTS ${list})
+    set(slow FALSE)
+    foreach(pattern IN LISTS mdrsim_slow_tests)
+      if(name MATCHES "${pattern}")
+        set(slow TRUE)
+        break()
+      endif()
+    endforeach()
+    if(slow)
+      list(APPEND mdrsim_slow_names "${name}")
+    else()
+      list(APPEND mdrsim_quick_names "${name}")
+    endif()
+  endforeach()
+endforeach()
+if(mdrsim_quick_names)
+  set_tests_properties(${mdrsim_quick_names} PROPERTIES LABELS quick)
+endif()
+if(mdrsim_slow_names)
+  set_tests_properties(${mdrsim_slow_names} PROPERTIES LABELS slow)
+endif()
