@@ -21,6 +21,7 @@
 #include "engine/run/machine_work.hpp"
 #include "engine/run/program_front.hpp"
 #include "engine/run/program_losses.hpp"
+#include "engine/run/program_record.hpp"
 #include "engine/run/progress_log.hpp"
 #include "engine/run/stage_motion.hpp"
 
@@ -134,8 +135,7 @@ class ProgramRunner {
   double t_ = 0.0;
   AxisMotion normal_;  ///< stage_motion.hpp
   AxisMotion tangential_;
-  AxisWork stage_work_;
-  AxisWork total_work_;
+  ProgramRecord record_{result_};  ///< stages, jumps and work; its stage_work is the stage's
 
   // Guards at the present t, so that nothing flips back at the same parameter value when a
   // located change leaves its condition met only to rounding (or with equality, as the
@@ -216,9 +216,9 @@ AxisPoint ProgramRunner::tangential_point() const {
 
 void ProgramRunner::add_work(const AxisPoint* normal_from, const AxisPoint* tangential_from) {
   // Force and driving point are affine in between (the springs stay): the trapezoid is exact.
-  if (normal_from) stage_work_.normal += trapezoid_work(*normal_from, normal_point());
+  if (normal_from) record_.stage_work.normal += trapezoid_work(*normal_from, normal_point());
   if (tangential_from) {
-    stage_work_.tangential += trapezoid_work(*tangential_from, tangential_point());
+    record_.stage_work.tangential += trapezoid_work(*tangential_from, tangential_point());
   }
 }
 
@@ -232,7 +232,7 @@ void ProgramRunner::advance_to(double t) {
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
   // A force or displacement beyond a double makes the work of its moving axis so (an axis
   // that does not move keeps its state until a change, which finish_cascade checks).
-  if (!std::isfinite(stage_work_.normal) || !std::isfinite(stage_work_.tangential)) {
+  if (!std::isfinite(record_.stage_work.normal) || !std::isfinite(record_.stage_work.tangential)) {
     stop_ = Stop::overflow;
   }
   t_ = t;
@@ -496,20 +496,14 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   }
   pending_.clear();
   flight_ = end;
-  stage_work_ = cascade.work_before;
+  record_.stage_work = cascade.work_before;
   flight_end_ = cascade.before;
   flight_refined_end_ = cascade.refined_before;
   losses_.record(cascade, row_.glued(), row_.in_contact());
   if (cascade.changes < 2) return;
-  JumpRecord jump;
-  jump.stage = stage_->name;
-  jump.springs = row_.in_contact() - cascade.in_contact;
-  jump.glued_springs = row_.glued() - cascade.glued;
-  jump.critical = cascade.before;
+  JumpRecord& jump = record_.add_jump(cascade, row_.in_contact(), row_.glued());
   jump.end = end;
-  jump.by_shear = cascade.second_by_shear;
   jump.refined_critical = cascade.refined_before;
-  result_.jumps.push_back(jump);
   emit(EventKind::jump, cascade.before);
 }
 
@@ -522,8 +516,8 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
   pending_.clear();
   const ContactSnapshot after = row_.snapshot();
   // `before` is within range: advance_to checked the work up to it.
-  if (!finite(after) || !std::isfinite(stage_work_.normal) ||
-      !std::isfinite(stage_work_.tangential)) {
+  if (!finite(after) || !std::isfinite(record_.stage_work.normal) ||
+      !std::isfinite(record_.stage_work.tangential)) {
     stop_ = Stop::overflow;  // values beyond a double: nothing of it is recorded
     return;
   }
@@ -534,14 +528,9 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
                     zero_.zero_force(cascade.before.normal_force) &&
                     zero_.zero_force(after.normal_force);
   if (cascade.changes < 2 || idle) return;
-  JumpRecord jump;
-  jump.stage = stage_->name;
-  jump.springs = row_.in_contact() - cascade.in_contact;
-  jump.glued_springs = row_.glued() - cascade.glued;
+  JumpRecord& jump = record_.add_jump(cascade, row_.in_contact(), row_.glued());
   jump.inward = jump.springs > 0 || (jump.springs == 0 && jump.glued_springs > 0);
-  jump.critical = cascade.before;
   jump.after = after;
-  jump.by_shear = cascade.second_by_shear;
   if (front_) {
     jump.refined_critical = cascade.refined_before;
     jump.refined_after = front_->at_rest(row_);
@@ -549,13 +538,12 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
     front_->candidate(jump.refined_critical);
     front_->candidate(jump.refined_after);
   }
-  result_.jumps.push_back(jump);
   emit(EventKind::jump, after);
 }
 
 void ProgramRunner::start_stage(const Stage& stage) {
   stage_ = &stage;
-  stage_work_ = {};
+  record_.start_stage();
   const auto start_axis = [&](const std::optional<StageAxis>& axis, bool normal,
                               AxisMotion& motion) {
     if (axis) {
@@ -591,7 +579,7 @@ Cascade ProgramRunner::begin_cascade() {
   cascade.before = row_.snapshot();
   cascade.in_contact = row_.in_contact();
   cascade.glued = row_.glued();
-  cascade.work_before = stage_work_;
+  cascade.work_before = record_.stage_work;
   cascade.stage = stage_;
   observe(cascade.before);
   return cascade;
@@ -630,7 +618,7 @@ void ProgramRunner::take_step(double t_end) {
     double target = std::min(t_ + step, t_end);
     if (!(target > t_)) target = next_parameter(t_);
     const bool last_try = halvings >= scene_.solver.max_halvings || t_ + 0.5 * step == t_;
-    const Saved saved{row_, stage_work_, t_, guards_, result_.counts};
+    const Saved saved{row_, record_.stage_work, t_, guards_, result_.counts};
     Cascade cascade = begin_cascade();  // its `before` is the last accepted equilibrium
     pending_.clear();
     buffering_ = true;
@@ -640,7 +628,7 @@ void ProgramRunner::take_step(double t_end) {
     buffering_ = false;
     if (more && !last_try) {
       row_ = saved.row;
-      stage_work_ = saved.stage_work;
+      record_.stage_work = saved.stage_work;
       t_ = saved.t;
       guards_ = saved.guards;
       result_.counts = saved.counts;
@@ -767,25 +755,22 @@ void ProgramRunner::run_stage(const Stage& stage) {
                                                                      : Stop::cannot_hold_tangential;
     }
     // The stage ends where the flight began: its critical point.
-    result_.stages.push_back({stage.name, flight_end_, stage_work_});
-    result_.stages.back().refined_end = flight_refined_end_;
+    record_.end_stage(stage.name, flight_end_).refined_end = flight_refined_end_;
     if (front_) front_->candidate(flight_refined_end_);
-    total_work_ += stage_work_;
     emit(EventKind::stage_end, flight_end_);
     return;
   }
   const ContactSnapshot end = row_.snapshot();
-  result_.stages.push_back({stage.name, end, stage_work_});
+  StageRecord& record = record_.end_stage(stage.name, end);
   if (front_ && stop_ == Stop::none) {
-    result_.stages.back().refined_end = front_->at_rest(row_);
-    front_->candidate(result_.stages.back().refined_end);
+    record.refined_end = front_->at_rest(row_);
+    front_->candidate(record.refined_end);
   }
-  total_work_ += stage_work_;
   emit(EventKind::stage_end, end);
 }
 
 void ProgramRunner::finish(RunResult& r) {
-  r.work = total_work_;
+  r.work = record_.total_work();
   const bool lost = row_.in_contact() == 0 && ever_in_contact_;
   const auto decide_loss = [&](const Cascade& c) {
     ProgramLosses::decide(c, zero_, largest_force_, r);
