@@ -1,6 +1,8 @@
 // rtol is a guarantee: over a fixed random set of scenes, every run lands within it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -61,7 +63,15 @@ TEST_P(RtolGuarantee, WithinRtolOfTheContinuum) {
     if (r.accuracy.rtol_met) {
       EXPECT_LE(error, rtol) << r.critical->normal_force << " against " << exact;
       EXPECT_LE(estimate, rtol);
-      EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+      // The critical point and the peak met rtol: any warning may be only about the path's
+      // stages, jumps and works, whose rows stop at 2^17 springs (shorthand_accuracy.cpp); a
+      // path whose rtol was met is listed in `covers`, one that was not is not.
+      for (const std::string& w : r.warnings) {
+        EXPECT_NE(w.find("not met for the stages, jumps and work"), std::string::npos) << w;
+      }
+      const bool path_covered = std::find(r.accuracy.covers.begin(), r.accuracy.covers.end(),
+                                          "work") != r.accuracy.covers.end();
+      EXPECT_EQ(path_covered, r.warnings.empty());
     } else {
       // Only the plain route at 1e-6 may run out of springs (2^25 per row) on the hardest
       // scenes; it must then say so, never miss silently.
