@@ -1,4 +1,4 @@
-"""Builds the Python module mdrsim: setuptools drives CMake (-DMDRSIM_PYTHON=ON), see README "Python"."""
+"""Builds the Python module mdrsim: setuptools drives CMake (-DMDRSIM_PYTHON=ON), see docs/python.md "Installing"."""
 
 import os
 import re

@@ -17,7 +17,7 @@ struct RunOptions {
 
 struct SweepOptions {
   std::string scene;
-  std::vector<std::string> vary;  ///< KEY=VALUES, one per varied key (SPEC: the sweep)
+  std::vector<std::string> vary;  ///< KEY=VALUES, one per varied key (docs/sweeps.md)
   std::vector<std::string> sets;
   std::string csv = "-";
   int threads = 1;

@@ -97,7 +97,7 @@ int list_command() {
               [](const ControllerRegistry::Entry& e) { return held_value(e); });
   fmt::print(out,
              "\nThe scene's other tables ([material], [loading], [discretization], [solver]) are "
-             "described in the README and SPEC.md.\n");
+             "described in docs/scene.md.\n");
   std::fflush(out);
   return std::ferror(out) ? 1 : 0;
 }

@@ -83,7 +83,7 @@ std::string parts_footer() {
   };
   return fmt::format(
       "Profiles: {}\nCriteria: {}\nControllers: {}\n`mdrsim list` gives each one's keys and "
-      "units; README \"Scene values\" the keys a --set replaces.",
+      "units; docs/scene.md \"Changing values from the command line\" the keys a --set replaces.",
       join(registries.profiles.names()), join(registries.criteria.names()),
       join(registries.controllers.names()));
 }

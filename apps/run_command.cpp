@@ -32,7 +32,7 @@ int run_command(const RunOptions& options) {
   require_distinct_outputs({{"--json", options.json}, {"--trajectory", options.trajectory}},
                            options.scene == "-" ? std::string() : options.scene);
   const SceneDocument document = load_scene_document(options.scene, options.sets);
-  // From here on a signal removes the outputs' temporaries (SPEC "Exit codes").
+  // From here on a signal removes the outputs' temporaries (docs/cli.md "Exit codes").
   install_interrupt_cleanup();
   const Scene scene = document.build(Registries::builtin());
 

@@ -4,7 +4,7 @@
 1. Python-side overhead of mdrsim.run on a 1000-spring scene, against the engine's own time
    (Result.wall_time_s): target < 20 %.
 2. Two threads running scenes against one, on 2 cores: target >= 1.7x (the GIL is released).
-3. For the README: the cost per event of a criterion and a profile written in Python against
+3. For docs/reproduce.md: the cost per event of a criterion and a profile written in Python against
    the built-in ones (no target).
 
 Run with the module importable, e.g. PYTHONPATH=build-python/python /usr/bin/python3

@@ -8,7 +8,7 @@ namespace mdrsim {
 
 using CriterionRegistry = PartRegistry<DetachmentCriterion, const InterfaceProperties&>;
 
-/// Registers the built-in criteria of SPEC's table.
+/// Registers the built-in criteria of the criterion table of docs/scene.md.
 void register_builtin_criteria(CriterionRegistry& registry);
 
 }  // namespace mdrsim

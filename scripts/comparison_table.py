@@ -185,7 +185,7 @@ def main(argv=None):
     except (OSError, ValueError, KeyError, TypeError) as err:
         problems.append(f"{path}: {err}")
     # The same cycle by Richardson on rows of 64, 128 and 256 springs, each state located
-    # between springs (README "Loading programs").
+    # between springs (docs/programs.md).
     path = result("program_jkr_cycle_richardson.json")
     try:
         with open(path) as f:

@@ -38,7 +38,7 @@ RED, BLUE, BLACK, GREY = "#c0392b", "#1f4e9c", "black", "#7f7f7f"
 
 
 def read_csv(path):
-    # A sweep CSV starts with its identity line "# mdrsim sweep: ..." (SPEC "Sweeps").
+    # A sweep CSV starts with its identity line "# mdrsim sweep: ..." (docs/sweeps.md).
     with open(path, newline="") as f:
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 

@@ -11,7 +11,7 @@ packages=(
   libeigen3-dev libspdlog-dev libfmt-dev libgtest-dev libbenchmark-dev libboost-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   python3-matplotlib python3-numpy
-  # The Python module (python/, README "Python"): pybind11, a venv and pip that install
+  # The Python module (python/, docs/python.md "Installing"): pybind11, a venv and pip that install
   # offline, pytest; pandas for Result.to_dataframe (optional for users, tested here).
   pybind11-dev python3-dev python3-venv python3-pip python3-setuptools python3-wheel
   python3-pytest python3-pandas

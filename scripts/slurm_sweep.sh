@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # An mdrsim sweep as a SLURM job array: array task I of N runs shard I/N of the sweep into
 # OUT.shard-I-of-N.csv, and a job that runs after the array (however its tasks ended) merges
-# the shards into OUT, byte for byte the CSV of the sweep run in one piece (README "Sweeps").
+# the shards into OUT, byte for byte the CSV of the sweep run in one piece (docs/sweeps.md).
 #
 # From any folder, submit both at once (sbatch options, if any, before N):
 #   bash path/to/slurm_sweep.sh submit [--account=A --partition=P --time=4:00:00 ...] \

@@ -13,7 +13,7 @@ namespace mdrsim {
 
 /// Holds every event for `inner` until flush() (the cascade, or the step, ended in an
 /// equilibrium) or discard_flight() (it ended with the indenter flying off under a fixed load,
-/// SPEC "A fixed load that loses the contact": no rows beyond the critical point).
+/// docs/programs.md "A fixed load that loses the contact": no rows beyond the critical point).
 /// Memory is bounded: past `in_memory` events the rest wait in an anonymous temporary file
 /// (a fixed-load pull-off of 1e7 springs holds 5e6 let-gos, 1 GB in memory).
 class CascadeBuffer final : public Observer {

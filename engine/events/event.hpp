@@ -25,7 +25,7 @@ enum class EventKind {
   step_halved,         ///< stepping: an increment detached several springs and is halved
   instability,         ///< the critical point: the last equilibrium before the final jump
   finished,            ///< the run ends, with its status
-  // Loading programs (SPEC "Loading programs"):
+  // Loading programs (docs/programs.md):
   spring_glued,    ///< the spring just outside the glued contact glues (the advancing front)
   spring_touched,  ///< a spring without glue is pressed against the indenter
   spring_lifted,   ///< a spring without glue leaves the indenter
@@ -49,7 +49,7 @@ struct Event {
 
 const char* to_string(RunStatus status);
 /// The stage an event belongs to: a program's events name theirs; the shorthand's are named
-/// by kind (SPEC): preload, tangential, pull-off.
+/// by kind (docs): preload, tangential, pull-off.
 std::string_view stage_name(const Event& event);
 const char* to_string(EventKind kind);
 

@@ -8,8 +8,8 @@
 
 namespace mdrsim {
 
-/// The state the indenter is pressed to before the pull-off (README "Preload"): pressed in
-/// without adhesion, every spring it touches glued.
+/// The state the indenter is pressed to before the pull-off (docs/model.md "The spring row"):
+/// pressed in without adhesion, every spring it touches glued.
 struct PreloadState {
   double glued_radius;  ///< a_g [m]
   double depth;         ///< d at the preload [m]

@@ -39,15 +39,15 @@ inline const char* scale_symbol(ScaleKind kind) {
 }
 
 struct SnapshotField {
-  const char* name;    ///< JSON key and CSV column (SPEC)
+  const char* name;    ///< JSON key and CSV column (docs)
   const char* symbol;  ///< in the run summary
   const char* unit;    ///< SI
   ScaleKind scale;
   double ContactSnapshot::*member;
 };
 
-/// The physical quantities of a snapshot, in SPEC's order: the JSON's `critical` and
-/// `dimensionless`, the sweep's columns, the summary, the finiteness checks.
+/// The physical quantities of a snapshot, in the order of docs/outputs.md: the JSON's `critical`
+/// and `dimensionless`, the sweep's columns, the summary, the finiteness checks.
 inline constexpr std::array<SnapshotField, 5> kSnapshotFields{{
     {"normal_force", "F", "N", ScaleKind::force, &ContactSnapshot::normal_force},
     {"tangential_force", "Fx", "N", ScaleKind::force, &ContactSnapshot::tangential_force},

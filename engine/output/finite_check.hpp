@@ -1,4 +1,4 @@
-// SPEC: every number of a result is finite. One check for the command and the fuzz harness.
+// docs: every number of a result is finite. One check for the command and the fuzz harness.
 #pragma once
 
 #include <optional>

@@ -1,4 +1,4 @@
-// A run's reported numbers must be finite (SPEC): a NaN or infinity is a failure, not a result.
+// A run's reported numbers must be finite (docs): a NaN or infinity is a failure, not a result.
 #pragma once
 
 #include "engine/result/run_result.hpp"

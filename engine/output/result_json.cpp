@@ -1,4 +1,4 @@
-// Field names and order as in SPEC; dimensionless values only where the JKR scales exist.
+// Field names and order as in docs; dimensionless values only where the JKR scales exist.
 #include "engine/output/result_json.hpp"
 
 #include <algorithm>

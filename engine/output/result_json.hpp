@@ -1,4 +1,4 @@
-// The JSON result of `mdrsim run` (SPEC "JSON result of run").
+// The JSON result of `mdrsim run` (docs/outputs.md "The JSON result").
 #pragma once
 
 #include <limits>
@@ -26,7 +26,7 @@ std::pair<std::string, std::string> final_controls(
 std::optional<PullOffScales> dimensionless_scales(const Scene& scene);
 
 /// The result, then what produced it: the material's effective values, the preload, the
-/// scales, the resolution run, the program version and the resolved scene (SPEC).
+/// scales, the resolution run, the program version and the resolved scene (docs).
 nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result);
 
 }  // namespace mdrsim

@@ -201,9 +201,9 @@ double ContinuumReference::tangential_displacement(double a) const {
   return 0.0;
 }
 
-// The four closed-form laws share e^2 = (W - c u_x^2)/E* (SPEC's table solved for e). Written
-// against a_s, e^2 = w (a - a_s) for a held u and w (a - a_s)(1 + r + r^2), r = a_s/a, for a
-// held force (c u_x^2 falls like 1/a^2), so that e keeps its digits next to a_s.
+// The four closed-form laws share e^2 = (W - c u_x^2)/E* (the criterion table of docs/scene.md
+// solved for e). Written against a_s, e^2 = w (a - a_s) for a held u and w (a - a_s)(1 + r + r^2),
+// r = a_s/a, for a held force (c u_x^2 falls like 1/a^2), so that e keeps its digits next to a_s.
 ContinuumReference::Edge ContinuumReference::edge(double a) const {
   if (!(a > shear_off_radius_)) return {0.0, kInfinity};
   const double ux = tangential_displacement(a);

@@ -8,8 +8,8 @@
 
 namespace mdrsim::test {
 
-/// The detachment law at the contact edge, written here from SPEC's criterion table (not
-/// through detachment/): with W = 2 pi a dgamma and tan psi = sqrt(G*/E*) u_x / e, the
+/// The detachment law at the contact edge, written here from the criterion table of docs/scene.md
+/// (not through detachment/): with W = 2 pi a dgamma and tan psi = sqrt(G*/E*) u_x / e, the
 /// boundary spring lets go when
 ///   mode-mixed      E* e^2 + G* u_x^2 >= W
 ///   deformation     e^2 + u_x^2 >= W/E*
@@ -22,7 +22,7 @@ struct DetachmentLaw {
   double lambda = 1.0;  ///< mode-dependent only, in [0, 1] [1]
 };
 
-/// The half-space and the interface (SPEC: E* = E/(1 - nu^2), G* = 4G/(2 - nu)).
+/// The half-space and the interface (docs: E* = E/(1 - nu^2), G* = 4G/(2 - nu)).
 struct ContinuumMaterial {
   double effective_modulus;        ///< E* [Pa]
   double effective_shear_modulus;  ///< G* [Pa]

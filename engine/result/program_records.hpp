@@ -10,7 +10,7 @@
 namespace mdrsim {
 
 /// The work done by the machine on each axis [J]: the integral of the force over the
-/// displacement of the machine's driving point (SPEC "Loading programs").
+/// displacement of the machine's driving point (docs/programs.md).
 struct AxisWork {
   double normal = 0.0;
   double tangential = 0.0;
@@ -35,12 +35,12 @@ struct StageRecord {
 };
 
 /// Where a jump lands: an equilibrium, or none because a held fixed load lost what held it
-/// (SPEC "A fixed load that loses the contact"): the indenter separates (normal) or slides
-/// away (tangential), and `after` holds nothing.
-/// How a jump ends: in a state, or (nothing left holding the indenter) in a flight: away from
-/// the surface under a held tension, sideways under a held tangential force; or, for the
-/// shorthand only, pressed in under a held compression once the glue is gone, where the
-/// springs pressed back would carry it, a state the shorthand's row does not follow.
+/// (docs/programs.md "A fixed load that loses the contact"): the indenter separates (normal) or
+/// slides away (tangential), and `after` holds nothing. How a jump ends: in a state, or (nothing
+/// left holding the indenter) in a flight: away from the surface under a held tension, sideways
+/// under a held tangential force; or, for the shorthand only, pressed in under a held compression
+/// once the glue is gone, where the springs pressed back would carry it, a state the shorthand's
+/// row does not follow.
 enum class JumpEnd { state, separated, sliding, pressed };
 
 /// A cascade of springs gluing or letting go at one value of the stage parameter.

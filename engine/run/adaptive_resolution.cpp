@@ -21,7 +21,7 @@ constexpr std::int64_t kRowSprings = 512;
 constexpr double kZoomFloor = 1e-12;  ///< deepest zoom, relative to the glued radius
 /// The smallest rtol at which the estimates met the independent reference on every scene of
 /// the random set (tests/engine/run/rtol_guarantee_test.cpp runs 1e-4 and 1e-6; 1e-7 and 1e-8
-/// were checked by hand, see the README).
+/// were checked by hand, see docs/accuracy.md).
 constexpr double kValidatedRtol = 1e-8;
 
 /// The springs in contact at what a zoom must resolve; 0 where the row has nothing there.

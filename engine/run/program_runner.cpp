@@ -96,7 +96,7 @@ class ProgramRunner {
   bool tangential_cannot_hold() const;
   bool cannot_hold() const { return normal_cannot_hold() || tangential_cannot_hold(); }
   /// How a cascade that just ran ends: with the contact lost under a fixed load that nothing
-  /// holds any more, in a flight (SPEC "A fixed load that loses the contact").
+  /// holds any more, in a flight (docs/programs.md "A fixed load that loses the contact").
   JumpEnd flight_of(const Cascade& cascade) const;
   /// A flight: the stage ends at the cascade's critical point, with the work up to it.
   void end_in_flight(const Cascade& cascade, JumpEnd end);

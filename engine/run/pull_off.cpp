@@ -228,7 +228,8 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   CascadeStart cascade;
   ProgressLog progress;
   // An advance's rows wait until it ends in an equilibrium: under a fixed load the last one
-  // may end in a flight, which is not reported (SPEC "A fixed load that loses the contact").
+  // may end in a flight, which is not reported (docs/programs.md "A fixed load that loses the
+  // contact").
   CascadeBuffer buffer(observers);
   ObserverList buffered;
   buffered.add(buffer);

@@ -39,7 +39,7 @@ std::optional<std::string> never_in_contact(const RunResult& result, const Resol
       "loaded{}",
       row.springs, row.radius,
       row.springs < 2 ? "; a row of one spring sits at a_max, where an adhesive front glues "
-                        "short of touch, and the first spring needs touch (SPEC): use more springs"
+                        "short of touch, and the first spring needs touch: use more springs"
                       : "");
 }
 

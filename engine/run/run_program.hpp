@@ -26,7 +26,7 @@ ProgramRowFrame program_row_frame(const Scene& scene);
 ProgramRowSpec program_row(const ProgramRowFrame& frame, std::int64_t springs);
 
 /// Runs scene.program (which must be set) on scene.springs springs across the largest
-/// contact radius the program reaches (SPEC "Discretization"), and emits every event but
+/// contact radius the program reaches (docs/programs.md "How it runs"), and emits every event but
 /// `finished`.
 RunResult run_program(const Scene& scene, const ObserverList& observers);
 

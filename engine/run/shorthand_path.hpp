@@ -1,5 +1,5 @@
-// The shorthand's path as a program's three stages (SPEC "The shorthand is a program"): the
-// work of each stage and the jumps of the pull-off, recorded as the pull-off loop runs.
+// The shorthand's path as a program's three stages (docs/programs.md "The shorthand as a program"):
+// the work of each stage and the jumps of the pull-off, recorded as the pull-off loop runs.
 #pragma once
 
 #include <cstdint>
@@ -16,8 +16,8 @@ namespace mdrsim {
 /// How the pull-off of a contact that ended in `lost` (no spring left) goes on: under a
 /// fixed load that holds a tension the indenter separates (one that holds a
 /// compression presses it in on springs without glue, which the row does not follow); under a
-/// tangential fixed load that holds a force it slides away (SPEC "A fixed load that loses the
-/// contact"); otherwise the machine holds it where the last spring left it.
+/// tangential fixed load that holds a force it slides away (docs/programs.md "A fixed load that
+/// loses the contact"); otherwise the machine holds it where the last spring left it.
 JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
                          const AffineConstraint& tangential);
 

@@ -1,4 +1,4 @@
-// A loading program: stages that drive the held values of both axes (SPEC "Loading programs").
+// A loading program: stages that drive the held values of both axes (docs/programs.md).
 #pragma once
 
 #include <memory>

@@ -23,7 +23,7 @@ namespace {
 /// A cap that keeps a generated or corrupted file from building millions of stages.
 constexpr std::size_t kMaxStages = 100'000;
 
-/// SPEC: a program starts with both axes under fixed-grips holding 0.
+/// docs: a program starts with both axes under fixed-grips holding 0.
 constexpr const char* kStartControl = "fixed-grips";
 
 constexpr const char* kEitherShorthandOrStages =

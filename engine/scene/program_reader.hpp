@@ -1,5 +1,5 @@
 // Reads a loading program ([[loading.stage]], loading.rebinding) and keeps the shorthand and the
-// program apart (SPEC "Loading programs").
+// program apart (docs/programs.md).
 #pragma once
 
 #include "controllers/controller_registry.hpp"

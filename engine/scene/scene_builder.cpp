@@ -26,7 +26,7 @@ constexpr Bound kPositive{0.0, false};
 /// Springs across the glued radius when the scene gives neither springs nor rtol.
 constexpr std::int64_t kDefaultSprings = 2000;
 
-/// dgamma_a [J/m^2] of the advancing front: 0 <= dgamma_a <= dgamma (SPEC "Loading programs").
+/// dgamma_a [J/m^2] of the advancing front: 0 <= dgamma_a <= dgamma (docs/programs.md).
 double read_approach_work(TomlReader& t, double dgamma) {
   const double approach = t.optional_number({.key = "approach_work_of_adhesion",
                                              .help = "dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma",
@@ -193,7 +193,7 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   const double force_scale = e_star * scene.glued_radius * std::abs(scene.preload_depth);
   const double adhesion_scale =
       2.0 * std::numbers::pi * scene.glued_radius * scene.material.work_of_adhesion;
-  // The work of pressing the row in (the preload stage's, SPEC) is of the size E* a d^2.
+  // The work of pressing the row in (the preload stage's, docs) is of the size E* a d^2.
   const double work_scale = force_scale * std::abs(scene.preload_depth);
   if (!std::isfinite(scene.preload_depth) || !std::isfinite(scene.preload_force) ||
       !std::isfinite(force_scale) || !std::isfinite(adhesion_scale) || !std::isfinite(work_scale)) {
@@ -221,7 +221,7 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
   }
   // The dimensionless output divides the held value by F0 or d0 (paper eq. 16).
   check_dimensionless_tangential(t, scene);
-  // The work of applying it, F_x u_x / 2 (the tangential stage's, SPEC).
+  // The work of applying it, F_x u_x / 2 (the tangential stage's, docs).
   if (!std::isfinite(other * std::abs(axis.held_value))) {
     t.fail_range(
         key, fmt::format("= {} overflows the work of applying it (F_x u_x / 2)", axis.held_value));

@@ -145,8 +145,8 @@ toml::table parse_value(const std::string& value_toml, const std::string& origin
 }
 
 /// Keys of one table that exclude each other: setting a key of one group from the command line
-/// removes the keys of the table's other groups (README "Scene values"). In `table`, "N"
-/// stands for a stage number.
+/// removes the keys of the table's other groups (docs/scene.md "Changing values from the command
+/// line"). In `table`, "N" stands for a stage number.
 struct ExclusiveKeys {
   std::string_view table;
   std::vector<std::vector<std::string_view>> groups;

@@ -39,7 +39,7 @@ class SceneDocument {
 
   /// `--set KEY=VALUE`: VALUE is a TOML value; a bare word is taken as a string. A key of a
   /// group of exclusive keys (springs or rtol, the preload's depth, force or contact_radius,
-  /// ...: README "Scene values") removes the others of its table.
+  /// ...: docs/scene.md "Changing values from the command line") removes the others of its table.
   void set_value(std::string_view dotted_key, std::string_view value_text);
   /// `--vary`: sets a number at a dotted key; `origin` names the flag in messages.
   void set_number(std::string_view dotted_key, double value, std::string_view origin);

@@ -1,4 +1,4 @@
-// Messages follow SPEC: "scene.toml:7:16: material.poisson_ratio = 0.7 is outside (-1, 0.5]".
+// Messages follow docs: "scene.toml:7:16: material.poisson_ratio = 0.7 is outside (-1, 0.5]".
 #include "engine/scene/toml_reader.hpp"
 
 #include <fmt/format.h>

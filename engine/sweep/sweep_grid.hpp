@@ -42,7 +42,7 @@ class SweepGrid {
   std::uint64_t rows() const { return rows_; }
   /// The index into each key's values at `row`.
   std::vector<std::size_t> indices(std::uint64_t row) const;
-  /// FNV-1a of every key and its values as the CSV writes them (SPEC: the identity line).
+  /// FNV-1a of every key and its values as the CSV writes them (docs/sweeps.md: the identity line).
   std::uint64_t hash() const;
 
  private:

@@ -4,7 +4,7 @@ import json
 from dataclasses import dataclass
 from functools import cached_property
 
-# The dimensionless fields (SPEC, paper eq. 16) and the JKR scale each is divided by.
+# The dimensionless fields (docs, paper eq. 16) and the JKR scale each is divided by.
 _SCALED = (("normal_force", "force"), ("tangential_force", "force"),
            ("contact_radius", "radius"), ("indentation", "depth"),
            ("tangential_displacement", "depth"))
@@ -108,7 +108,7 @@ class Result:
 
     @property
     def status(self):
-        """instability, shear-off, no-instability, step-limit or completed (SPEC)."""
+        """instability, shear-off, no-instability, step-limit or completed (docs)."""
         return self._raw.status
 
     @property

@@ -56,7 +56,7 @@ struct ResultHandle {
   std::uint64_t trajectory_stride = 1;     ///< 1, or the thinning of the ordinary rows
 };
 
-/// SPEC: messages are one line, as the command prints them.
+/// docs: messages are one line, as the command prints them.
 std::string one_line(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   for (char& c : text) {
@@ -223,8 +223,8 @@ void bind_results(py::module_& m) {
                                  d["stage"] = j.stage;
                                  d["kind"] = j.inward ? "in" : "out";
                                  d["critical"] = snapshot(j.critical);
-                                 // A flight (SPEC "A fixed load that loses the contact")
-                                 // has no state after it.
+                                 // A flight (docs/programs.md "A fixed load that loses the
+                                 // contact") has no state after it.
                                  d["after"] = j.end == JumpEnd::state
                                                   ? py::object(snapshot(j.after))
                                                   : py::object(py::none());

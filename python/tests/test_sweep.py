@@ -99,7 +99,7 @@ def test_to_dataframe(command_csv):
 
 
 def test_default_executor_and_lists_give_the_same_rows(command_csv, tmp_path):
-    # A list of numbers is the same grid as the range that gives them (SPEC: G hashes the
+    # A list of numbers is the same grid as the range that gives them (docs/sweeps.md: G hashes the
     # values as the CSV writes them); executor=None: a thread pool of its own.
     # (1 - t) FROM + t TO at t = 3/4 is 1.5000000000000002e-05, within its rounding error of
     # 1.5e-05, which the range gives.

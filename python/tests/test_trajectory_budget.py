@@ -41,7 +41,7 @@ def test_default_budget_holds_at_most_trajectory_rows():
     n = len(t["event"])
     # The whole run gives the preload, one row per spring let go down to the critical point
     # (a = a0 = a_g / 2, eq. 19: springs / 2 of them), the let-go that starts the flight and
-    # the instability: the fixed load's flight past the critical state has no rows (SPEC).
+    # the instability: the fixed load's flight past the critical state has no rows (docs).
     assert result.trajectory_rows_seen == springs // 2 + 3
     assert mdrsim.TRAJECTORY_ROWS == 100_000
     assert n <= mdrsim.TRAJECTORY_ROWS

@@ -348,8 +348,8 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
-// Every key of SPEC's scene file through --set, each way a value can be wrong: of the wrong
-// type, out of range, missing (a --set table without it) and unknown (a typo in each table).
+// Every key of the scene file of docs/scene.md through --set, each way a value can be wrong: of the
+// wrong type, out of range, missing (a --set table without it) and unknown (a typo in each table).
 // The file itself is checked key by key in tests/engine/scene/scene_loading_test.cpp; this checks
 // that the command line turns each into exit code 2, exactly one line naming --set and the
 // key, nothing on standard output and no JSON file left behind.

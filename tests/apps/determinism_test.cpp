@@ -44,7 +44,7 @@ std::vector<std::string> example_scenes() {
 }
 
 // Nothing in a run depends on time, addresses or thread scheduling: the same scene and flags
-// must give the same bytes. The only exception SPEC allows is wall_time_s. Checked on every
+// must give the same bytes. The only exception docs allows is wall_time_s. Checked on every
 // example scene and on variants that take other code paths (stepping with halvings, a root
 // search for the let-go, a compliant machine, a held tangential force).
 TEST(Determinism, SameSceneTwiceGivesByteIdenticalJson) {

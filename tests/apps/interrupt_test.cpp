@@ -1,5 +1,5 @@
 // A run stopped by SIGINT or SIGTERM leaves no output behind, not even PATH.partial, and exits
-// 130 or 143 (SPEC "Exit codes"; apps/interrupt_cleanup).
+// 130 or 143 (docs/cli.md "Exit codes"; apps/interrupt_cleanup).
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <spawn.h>

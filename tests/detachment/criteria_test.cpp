@@ -1,4 +1,4 @@
-// Each built-in criterion: its closed-form let-go zeroes its margin, and SPEC's formulas hold.
+// Each built-in criterion: its closed-form let-go zeroes its margin, and the docs' formulas hold.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,7 +66,7 @@ INSTANTIATE_TEST_SUITE_P(Builtin, EveryCriterion,
                            return n;
                          });
 
-// SPEC's table, evaluated by hand at one state.
+// the criterion table of docs/scene.md, evaluated by hand at one state.
 TEST(Criteria, SpecFormulasAtOneState) {
   const double a = kRadius, e = 0.5 * dl(a), ux = 0.4 * dl(a);
   const double E = kInterface.effective_modulus, G = kInterface.effective_shear_modulus;

@@ -60,9 +60,9 @@ SceneCheck check_scene_text(std::string_view text) {
     // A scene the reader accepted must run: anything else is an engine bug (mdrsim exits 1).
     return {Outcome::broken, fmt::format("the run of an accepted scene threw: {}", e.what())};
   }
-  // SPEC: numbers are finite. The reader refuses values that overflow the run.
+  // docs: numbers are finite. The reader refuses values that overflow the run.
   if (const auto bad = first_not_finite(scene, result)) return {Outcome::broken, *bad};
-  // SPEC: an instability has its critical point; a status without one has none.
+  // docs: an instability has its critical point; a status without one has none.
   // (A completed program reports the last loss of contact, if there was one.)
   if ((result.status == RunStatus::instability) != result.critical.has_value() &&
       result.status != RunStatus::shear_off && result.status != RunStatus::completed) {

@@ -8,7 +8,7 @@ namespace mdrsim::test {
 
 struct SceneCheck {
   enum class Outcome {
-    refused,  ///< bad input: SceneError, as SPEC wants (exit code 2)
+    refused,  ///< bad input: SceneError, as docs wants (exit code 2)
     ran,      ///< a run to a status with finite numbers
     broken,   ///< anything else: another exception, or a number that is not finite
   };

@@ -211,7 +211,7 @@ TEST(ContinuumReference, ConeClosedForms) {
   }
 }
 
-// SPEC's inequalities, written here once more (mode-dependent with tan, as in the table):
+// the docs' inequalities, written here once more (mode-dependent with tan, as in the table):
 // the stretch is where each law's margin crosses zero, to 1e-12 of W (the stretch is solved
 // in closed form or to a few ulps of the phase angle), holding just below and letting go
 // just above. nu = 0.3, so that the mode-mixed, deformation and stress laws differ.
@@ -278,7 +278,7 @@ TEST(ContinuumReference, StretchIsWhereTheLawLetsGo) {
   }
 }
 
-// lambda = 1 is the mode-mixed law and lambda = 0 the normal-only one (SPEC: the tan term
+// lambda = 1 is the mode-mixed law and lambda = 0 the normal-only one (docs: the tan term
 // vanishes, or takes psi whole): the mode-dependent root search must give their closed-form
 // critical points, for every tangential hold and normal control, to 1e-12.
 TEST(ContinuumReference, ModeDependentEndsAreModeMixedAndNormalOnly) {
@@ -315,7 +315,7 @@ TEST(ContinuumReference, ModeDependentEndsAreModeMixedAndNormalOnly) {
 }
 
 // The glue at a_g breaks as the load is applied when c u^2 >= 2 pi a_g dgamma; its strength
-// is then 2 G* a_g u_max: sqrt(8 pi G* a_g^3 dgamma) for mode-mixed (README), and
+// is then 2 G* a_g u_max: sqrt(8 pi G* a_g^3 dgamma) for mode-mixed (docs/model.md), and
 // 2 G* a_g dl(a_g) for the deformation law. Normal-only never shears off.
 TEST(ContinuumReference, ShearOffAtApplication) {
   const mdrsim::ParabolicProfile parabola(kRadius);

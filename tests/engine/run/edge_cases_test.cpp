@@ -53,8 +53,8 @@ class SteppingTracker final : public mdrsim::Observer {
       in_a_row_ = 0;
     }
     // Under fixed load the step that ends the run is the flight's: its halvings are reported
-    // (taken back to the critical state), its accepted row is not (SPEC "A fixed load that
-    // loses the contact").
+    // (taken back to the critical state), its accepted row is not (docs/programs.md "A fixed load
+    // that loses the contact").
     if (e.kind == EventKind::finished && in_a_row_ > 0) before_last_step_ = in_a_row_;
   }
   double preload_control() const { return preload_control_; }
@@ -150,7 +150,7 @@ PathState exact_path_at(const Scene& scene, const std::vector<Event>& events, do
 //   control values, 8 eps);
 // - with the same springs as the event critical point the forces differ by dF/dw times the
 //   finest step at most. With coarse steps the stepping may stop a few springs earlier (the
-//   fixed-grips fold is flat, README "Accuracy"); its force then differs by the sawtooth, not a
+//   fixed-grips fold is flat, docs/accuracy.md); its force then differs by the sawtooth, not a
 //   defect: the point is still an exact equilibrium within one finest step of the fold.
 // All of this holds for any base step, also for max_halvings = 0 (no halving at all, every
 // step accepted with what it detaches).
@@ -243,7 +243,7 @@ TEST(FoldUnderSteppingBelowTheControlResolution, HalvingEndsAtTheFold) {
 // A base step below the resolution of the control value (1e-30 N against a preload of about
 // 0.02 N) moves it by one ulp per step, since a step never rounds to no movement: reaching the
 // fold would take some 10^16 steps, so the run ends at max_steps with status step-limit and
-// no critical point (SPEC: none was found), with a warning. That is the documented outcome of
+// no critical point (docs: none was found), with a warning. That is the documented outcome of
 // an exhausted step budget, not a hang.
 TEST(EdgeCases, SteppingBelowTheControlResolutionEndsAtTheStepLimit) {
   JkrScenario s = scenario("fixed-load", 200);
@@ -469,8 +469,8 @@ TEST_P(FewSprings, EndInAnInstabilityWithFiniteNumbers) {
     return;
   }
   // Stepping on the same springs: the default step, max_halvings 30. The default is 1e-3 of
-  // the larger of the control values at the preload and at the first let-go (README, stepping
-  // options): one spring under fixed load is preloaded at zero force, for instance.
+  // the larger of the control values at the preload and at the first let-go (docs/scene.md,
+  // stepping options): one spring under fixed load is preloaded at zero force, for instance.
   std::string stepping_text = text;
   stepping_text.replace(stepping_text.find("method = \"event\""), 16, "method = \"stepping\"");
   const Scene stepping_scene = mdrsim::test::build_scene_text(stepping_text);
@@ -509,7 +509,7 @@ TEST(EdgeCases, OneSpringUnderFixedLoadSteppingDefaultStep) {
 
 // 10^7 springs: the event method is O(1) per detachment and stores nothing per spring, so this
 // runs in about a second (Release) and must converge like 1/N: under fixed load the error is
-// about 1.5/N = 1.5e-7, under fixed grips a sawtooth below 3/N (README, Accuracy); 1e-6 leaves a
+// about 1.5/N = 1.5e-7, under fixed grips a sawtooth below 3/N (docs/accuracy.md); 1e-6 leaves a
 // margin of 3 or more and still fails an error of 10^-6, which 10^6 springs would give.
 // Excluded from the sanitizer build (ctest -E EdgeCasesLarge), where it takes minutes.
 TEST(EdgeCasesLarge, TenMillionSpringsConvergeToThePaper) {

@@ -1,5 +1,5 @@
-// SPEC "A fixed load that loses the contact": the flight after the last spring is not reported;
-// the work counts the path to the critical point and does not grow with the spring count.
+// docs/programs.md "A fixed load that loses the contact": the flight after the last spring is not
+// reported; the work counts the path to the critical point and does not grow with the spring count.
 //
 // The references are derived here from the paper's MDR, independently of the engine: the 1-D
 // profile of the parabola g(x) = x^2 / R, F = 2 E* int_0^a (d - g) dx, the glued contact's

@@ -119,7 +119,7 @@ INSTANTIATE_TEST_SUITE_P(Registered, EveryPart, ::testing::ValuesIn(every_combin
                            return name;
                          });
 
-// With E* = G* (nu = 0) mode-mixed, deformation and stress are the same rule (SPEC).
+// With E* = G* (nu = 0) mode-mixed, deformation and stress are the same rule (docs).
 TEST(CriteriaAgree, ModeMixedDeformationAndStressCoincideAtNuZero) {
   double forces[3];
   int i = 0;

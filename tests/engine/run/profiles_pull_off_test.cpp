@@ -42,7 +42,7 @@ double relative_error(double got, double want) { return std::abs(got / want - 1.
 
 // Acceptance 1 for the profiles without a classical closed form: sphere, power law and the
 // tabulated ones, 10^5 springs, against the branch solved to 1e-10. The row's first-order
-// error is 1e-5 to 7e-5 here; the bound is SPEC's 1e-3.
+// error is 1e-5 to 7e-5 here; the bound is the docs' 1e-3.
 class SceneAgainstBranch : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SceneAgainstBranch, CriticalForceWithinOnePerMille) {
@@ -115,7 +115,7 @@ TEST(ProfilesPullOff, FlatPunchIsKendallInOneCascade) {
         (e.in_cascade ? in_cascade : equilibria) += 1;
       }
       EXPECT_EQ(equilibria, 1) << name << " " << springs;
-      // Under fixed load the cascade is the flight, whose rows are not reported (SPEC "A
+      // Under fixed load the cascade is the flight, whose rows are not reported (docs "A
       // fixed load that loses the contact"); under fixed grips every spring goes in it.
       const bool fixed_load = std::string(name).find("fixed_load") != std::string::npos;
       EXPECT_EQ(in_cascade, fixed_load ? 0 : scene.springs - 1) << name << " " << springs;

@@ -217,8 +217,8 @@ TEST(ProgramRunner, EveryJumpOfTheExampleScenesChangesTheRow) {
 namespace mdrsim {
 namespace {
 
-// SPEC "Discretization": spring N sits at a_max and is in contact when the indenter reaches
-// it, whatever the rounding. The approach to 3 d0 reaches a_max at its very end.
+// docs/programs.md "How it runs": spring N sits at a_max and is in contact when the indenter
+// reaches it, whatever the rounding. The approach to 3 d0 reaches a_max at its very end.
 TEST(ProgramRunner, TheApproachEndsWithEveryOneOfItsSprings) {
   const double depth = 3.0 * jkr_scales().depth;
   for (const std::int64_t springs : {1000, 4000, 12345}) {

@@ -34,9 +34,9 @@ class RtolGuarantee : public ::testing::TestWithParam<Case> {};
 }  // namespace
 
 // The reference is engine/reference/continuum_reference: the continuum branch solved for each
-// criterion written from SPEC's table, with no engine code. rtol is relative to the critical
-// normal force, and the peak adhesive force is held to the same rtol. The error must also be
-// within the run's own a posteriori estimate, and the estimate within rtol.
+// criterion written from the criterion table of docs/scene.md, with no engine code. rtol is
+// relative to the critical normal force, and the peak adhesive force is held to the same rtol. The
+// error must also be within the run's own a posteriori estimate, and the estimate within rtol.
 TEST_P(RtolGuarantee, WithinRtolOfTheContinuum) {
   const auto& [rtol, extrapolation] = GetParam();
   int unmet = 0;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -153,7 +155,14 @@ TEST(Rtol, FoldsFarBelowTheGluedRadius) {
       EXPECT_LE(std::abs(r.critical->normal_force / exact - 1.0), kRtol) << theta << " " << normal;
       ASSERT_TRUE(r.peak.has_value());
       EXPECT_LE(std::abs(r.peak->normal_force / fixed_load - 1.0), kRtol) << theta << " " << normal;
-      EXPECT_TRUE(r.warnings.empty());
+      // The critical point and peak met rtol; the path's stage ends and works, refined on rows
+      // across the glued radius up to 2^17 springs, cannot resolve a fold at 4e-6 of it (one
+      // spring there needs 2.5e5): any warning is that one, and it keeps the path out of covers.
+      for (const std::string& w : r.warnings) {
+        EXPECT_NE(w.find("not met for the stages, jumps and work"), std::string::npos) << w;
+      }
+      EXPECT_EQ(std::count(r.accuracy.covers.begin(), r.accuracy.covers.end(), "work"),
+                r.warnings.empty() ? 1 : 0);
     }
   }
   for (const char* normal : {"fixed-load", "fixed-grips"}) {
@@ -216,7 +225,8 @@ TEST(Richardson, RefusesTooFewSpringsAndReportsTheFinestRow) {
             *r.accuracy.critical_error_estimate / std::abs(r.critical->normal_force));
 }
 
-// Below 1e-8 the estimates are not validated (README): the run says so, whatever it finds.
+// Below 1e-8 the estimates are not validated (docs/accuracy.md): the run says so, whatever it
+// finds.
 TEST(Rtol, BelowTheValidatedRangeWarns) {
   JkrScenario s;
   s.rtol = 1e-9;

@@ -1,5 +1,5 @@
-// SPEC "The shorthand is a program", over the whole grid: 3 profiles x 5 criteria x 3 normal
-// controls x 3 tangential displacements, each scene run as the shorthand and as its three
+// docs/programs.md "The shorthand as a program", over the whole grid: 3 profiles x 5 criteria x 3
+// normal controls x 3 tangential displacements, each scene run as the shorthand and as its three
 // stages on the same row, give the same status and the same critical point.
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// SPEC: the shorthand is a program. Each shorthand scene, written as its three stages
+// docs: the shorthand is a program. Each shorthand scene, written as its three stages
 // (preload: press to the preload depth; tangential: hold the normal axis under its pull-off
 // control and ramp u_x; pull-off: lower the normal held value until separation), gives the
 // same status and critical point on the same row of springs.
@@ -75,7 +75,7 @@ TEST_P(ShorthandAsProgram, GivesTheSameCriticalPoint) {
   }
   ASSERT_TRUE(a.peak && b.peak);
   EXPECT_NEAR(b.peak->normal_force, a.peak->normal_force, 1e-10 * std::abs(a.peak->normal_force));
-  // Both report the same stages, jumps and work (SPEC: "every run, shorthand included").
+  // Both report the same stages, jumps and work (docs: "every run, shorthand included").
   ASSERT_EQ(a.stages.size(), 3u);
   ASSERT_EQ(b.stages.size(), 3u);
   EXPECT_EQ(b.stages[0].end.springs_in_contact, program.springs);

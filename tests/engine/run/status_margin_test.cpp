@@ -46,7 +46,7 @@ std::string scene_text(const std::string& discretization) {
 }
 
 /// The independent continuum pull-off (engine/reference/continuum_reference: the branch from
-/// SPEC's law, no engine code).
+/// the docs' law, no engine code).
 ContinuumCritical reference() {
   const PowerLawProfile profile(kCoefficient, kExponent);
   return test::ContinuumReference(

@@ -33,7 +33,7 @@ const std::map<std::string, std::string>& pending() {
 
 class FuzzRegressions : public ::testing::TestWithParam<std::string> {};
 
-// SPEC: bad input exits 2 (SceneError), anything the reader accepts runs to a status with
+// docs: bad input exits 2 (SceneError), anything the reader accepts runs to a status with
 // finite numbers, in SI and in JKR units. A kept input is one that once broke this.
 TEST_P(FuzzRegressions, IsRefusedOrRunsWithFiniteNumbers) {
   if (const auto it = pending().find(GetParam()); it != pending().end()) GTEST_SKIP() << it->second;

@@ -428,8 +428,8 @@ TEST(ProgramSet, BadValuesNameTheFlagAndTheStage) {
   EXPECT_THROW_MSG(d.build(registries()), SceneError,
                    "--set: loading.stage.1.tangential.stiffness: applies to control = "
                    "\"compliant\" only");
-  // `to` replaces the stage's `by` (README "Scene values"), and a stage run until separation
-  // refuses it.
+  // `to` replaces the stage's `by` (docs/scene.md "Changing values from the command line"), and a
+  // stage run until separation refuses it.
   SceneDocument to = program_document();
   to.set_value("loading.stage.3.normal.to", "1e-6");
   EXPECT_THROW_MSG(to.build(registries()), SceneError,

@@ -1,4 +1,4 @@
-// Bad scene input: every key SPEC defines, each way it can be wrong, with the exact message.
+// Bad scene input: every key docs defines, each way it can be wrong, with the exact message.
 #include <gtest/gtest.h>
 
 #include "tests/support/expect_throw_msg.hpp"
@@ -592,7 +592,7 @@ TEST(GoodScene, EveryPreloadFormAndEffectiveModuli) {
   EXPECT_EQ(scene.material.effective_shear_modulus, 1.5e6);
   const Scene e_only = build_scene_text(
       scene_with("youngs_modulus = 1.0e6\npoisson_ratio = 0.0", "effective_modulus = 2.0e6"));
-  EXPECT_EQ(e_only.material.effective_shear_modulus, 2.0e6);  // SPEC: G* defaults to E*
+  EXPECT_EQ(e_only.material.effective_shear_modulus, 2.0e6);  // docs: G* defaults to E*
 }
 
 TEST(GoodScene, WholeFloatsAreWholeNumbersAndSteppingKeysApply) {

@@ -45,7 +45,7 @@ TEST(SweepGrid, HashOfTheValuesNotOfHowTheyWereWritten) {
   EXPECT_NE(grid_of({"a=0:1:3"}).hash(), grid_of({"b=0:1:3"}).hash());
   EXPECT_NE(grid_of({"a=1", "b=2"}).hash(), grid_of({"b=2", "a=1"}).hash());
   EXPECT_NE(grid_of({"a=1,2"}).hash(), grid_of({"a=1", "b=2"}).hash());
-  // FNV-1a 64 of "a=0,0.5,1\n" (SPEC: the identity line), as any language computes it.
+  // FNV-1a 64 of "a=0,0.5,1\n" (docs/sweeps.md: the identity line), as any language computes it.
   EXPECT_EQ(grid_of({"a=0:1:3"}).hash(), fnv1a("a=0,0.5,1\n"));
   EXPECT_EQ(fnv1a(""), 0xcbf29ce484222325ULL);
   EXPECT_EQ(fnv1a("a"), 0xaf63dc4c8601ec8cULL);
