@@ -32,16 +32,7 @@ nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<
 
 /// A jump's `after`: its state, or only how the indenter left when nothing held it.
 nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<PullOffScales>& s) {
-  switch (jump.end) {
-    case JumpEnd::separated:
-      return {{"separated", true}};
-    case JumpEnd::sliding:
-      return {{"sliding", true}};
-    case JumpEnd::pressed:
-      return {{"pressed", true}};
-    case JumpEnd::state:
-      break;
-  }
+  if (jump.end != JumpEnd::state) return {{to_string(jump.end), true}};
   return state_json(jump.after, s);
 }
 

@@ -35,13 +35,26 @@ struct StageRecord {
 };
 
 /// Where a jump lands: an equilibrium, or none because a held fixed load lost what held it
-/// (docs/programs.md "A fixed load that loses the contact"): the indenter separates (normal) or
-/// slides away (tangential), and `after` holds nothing. How a jump ends: in a state, or (nothing
-/// left holding the indenter) in a flight: away from the surface under a held tension, sideways
-/// under a held tangential force; or, for the shorthand only, pressed in under a held compression
-/// once the glue is gone, where the springs pressed back would carry it, a state the shorthand's
-/// row does not follow.
+/// (docs/programs.md "A fixed load that loses the contact"), and `after` holds nothing: the
+/// indenter separates under a held tension or slides away under a held tangential force; or,
+/// for the shorthand only, it stays pressed in under a held compression once the glue is gone,
+/// on springs pressed back that the shorthand's row does not follow.
 enum class JumpEnd { state, separated, sliding, pressed };
+
+/// The name of a jump's end, as the JSON's `after` key and Python's `end` spell it.
+inline const char* to_string(JumpEnd end) {
+  switch (end) {
+    case JumpEnd::separated:
+      return "separated";
+    case JumpEnd::sliding:
+      return "sliding";
+    case JumpEnd::pressed:
+      return "pressed";
+    case JumpEnd::state:
+      break;
+  }
+  return "state";
+}
 
 /// A cascade of springs gluing or letting go at one value of the stage parameter.
 struct JumpRecord {

@@ -20,28 +20,15 @@ using Extrapolation = DiscretizationOptions::Extrapolation;
 /// Forces below this share of the path's largest are held to it in absolute terms.
 constexpr double kForceFloor = 1e-6;
 
-const char* jump_end_name(JumpEnd end) {
-  switch (end) {
-    case JumpEnd::separated:
-      return " (separated)";
-    case JumpEnd::sliding:
-      return " (sliding)";
-    case JumpEnd::pressed:
-      return " (pressed)";
-    case JumpEnd::state:
-      break;
-  }
-  return "";
-}
-
 /// What must match for rows to be compared state by state, item by item: the status, the
 /// stages, every jump, the critical point and the peak.
 std::vector<std::string> ending_items(const RunResult& r) {
   std::vector<std::string> items{to_string(r.status), fmt::format("{} stages", r.stages.size())};
   for (std::size_t i = 0; i < r.jumps.size(); ++i) {
     const JumpRecord& j = r.jumps[i];
-    items.push_back(fmt::format("jump {} {} in '{}'{}", i + 1, j.inward ? "in" : "out", j.stage,
-                                jump_end_name(j.end)));
+    items.push_back(
+        fmt::format("jump {} {} in '{}'{}", i + 1, j.inward ? "in" : "out", j.stage,
+                    j.end == JumpEnd::state ? "" : fmt::format(" ({})", to_string(j.end))));
   }
   items.emplace_back(r.critical ? "a critical point" : "no critical point");
   items.emplace_back(r.peak ? "a peak" : "no peak");

@@ -83,9 +83,7 @@ void warn_resolution(const Scene& scene, RunResult& result) {
 /// the reported value, after the rows are combined: a row's own peak may cross zero where the
 /// continuum's is barely tensile, and rtol refines through it.
 void drop_peak_that_never_pulls(const Scene& scene, RunResult& result) {
-  const ZeroScale zero = zero_scale(scene.material.effective_modulus, scene.glued_radius,
-                                    scene.profile->mdr_image(scene.glued_radius),
-                                    scene.material.work_of_adhesion, scene.preload_force);
+  const ZeroScale zero = shorthand_zero_scale(scene);
   if (result.peak && result.peak->normal_force >= -zero.force) {
     result.peak.reset();
     result.refined_peak.reset();

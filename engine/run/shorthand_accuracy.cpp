@@ -78,10 +78,14 @@ void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result) {
   shorthand_covers(result, true, works, result.warnings);
 }
 
+ZeroScale shorthand_zero_scale(const Scene& scene) {
+  return zero_scale(scene.material.effective_modulus, scene.glued_radius,
+                    scene.profile->mdr_image(scene.glued_radius), scene.material.work_of_adhesion,
+                    scene.preload_force);
+}
+
 void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result) {
-  const ZeroScale zero = zero_scale(scene.material.effective_modulus, scene.glued_radius,
-                                    scene.profile->mdr_image(scene.glued_radius),
-                                    scene.material.work_of_adhesion, scene.preload_force);
+  const ZeroScale zero = shorthand_zero_scale(scene);
   const auto run = [&](std::int64_t springs) {
     RunResult row = run_row(
         scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {});

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "engine/base/zero_scale.hpp"
 #include "engine/run/pull_off.hpp"
 #include "engine/scene/scene.hpp"
 
@@ -21,5 +22,9 @@ void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result);
 /// critical point and peak stay as the zoom refined them); their values and estimates go into
 /// `result`. Where they do not meet it, a warning says which and `covers` leaves them out.
 void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result);
+
+/// What is zero on the shorthand's rows (zero_scale.hpp): its glued radius, its image there and
+/// its preload force, as program_zero_scale gives it for a program's frame.
+ZeroScale shorthand_zero_scale(const Scene& scene);
 
 }  // namespace mdrsim

@@ -228,10 +228,7 @@ void bind_results(py::module_& m) {
                                  d["after"] = j.end == JumpEnd::state
                                                   ? py::object(snapshot(j.after))
                                                   : py::object(py::none());
-                                 d["end"] = j.end == JumpEnd::separated ? "separated"
-                                            : j.end == JumpEnd::sliding ? "sliding"
-                                            : j.end == JumpEnd::pressed ? "pressed"
-                                                                        : "state";
+                                 d["end"] = to_string(j.end);
                                  d["springs"] = j.springs;
                                  d["glued_springs"] = j.glued_springs;
                                  d["by_shear"] = j.by_shear;
