@@ -131,6 +131,11 @@ std::vector<double*> works(RunResult& r) {
 
 }  // namespace
 
+bool is_critical_state(const RunResult& row, const ContactSnapshot& state) {
+  return row.critical && state.springs_in_contact == row.critical->springs_in_contact &&
+         state.normal_force == row.critical->normal_force;
+}
+
 bool end_alike(const RunResult& a, const RunResult& b) {
   return ending_items(a) == ending_items(b);
 }
@@ -184,6 +189,7 @@ std::vector<StateChoice> choose_states(std::vector<RunResult>& rows, Extrapolati
     // Only stage ends vouch for their tangential force (at a jump or the peak it is whatever
     // the state has; under a held normal force the peak is any state at that force).
     if (!f[i].tangential_estimate) chosen.tangential_error = 0.0;
+    chosen.at_critical = which == PathStates::path && is_critical_state(rows.back(), q2);
     out.push_back(chosen);
   }
   return out;
@@ -290,7 +296,7 @@ bool within(const std::vector<StateChoice>& choices, const std::vector<WorkChoic
   };
   return std::all_of(choices.begin(), choices.end(),
                      [&](const StateChoice& c) {
-                       return ok(c.value.normal_force, c.normal_error) &&
+                       return (c.at_critical || ok(c.value.normal_force, c.normal_error)) &&
                               ok(c.value.tangential_force, c.tangential_error);
                      }) &&
          std::all_of(work_choices.begin(), work_choices.end(),

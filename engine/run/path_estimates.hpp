@@ -22,6 +22,9 @@ enum class PathStates { all, path };
 /// stages, every jump, the critical point and the peak.
 bool end_alike(const RunResult& a, const RunResult& b);
 
+/// Whether `state` of `row` is the row's critical point (its last equilibrium before the loss).
+bool is_critical_state(const RunResult& row, const ContactSnapshot& state);
+
 /// Where the first two of the rows (springs, result) that end differently part, in one short
 /// phrase: a long program's rows list hundreds of jumps, most of them alike.
 std::string first_difference(const std::vector<std::pair<std::int64_t, const RunResult*>>& rows);
@@ -32,6 +35,11 @@ struct StateChoice {
   double normal_error;
   double tangential_error;
   bool extrapolated;
+  /// PathStates::path only: the state is the rows' critical point (a stage end or a jump's
+  /// start there), whose normal force RowSequence resolves on its own zoomed rows: the
+  /// shorthand writes that value and estimate in its place, and rtol does not wait for the
+  /// path's rows to reach it (they are not refined near the fold).
+  bool at_critical = false;
 };
 
 /// Every state's choice from the last three or four rows (which end alike): Richardson where

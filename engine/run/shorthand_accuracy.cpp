@@ -36,10 +36,7 @@ void shorthand_covers(RunResult& result, bool path, const std::vector<WorkChoice
 /// the critical point, located between springs as it is (fold_refinement.hpp).
 void locate_at_critical(RunResult& row) {
   if (!row.critical || !row.refined_critical) return;
-  const auto at_critical = [&](const ContactSnapshot& s) {
-    return s.springs_in_contact == row.critical->springs_in_contact &&
-           s.normal_force == row.critical->normal_force;
-  };
+  const auto at_critical = [&](const ContactSnapshot& s) { return is_critical_state(row, s); };
   for (StageRecord& stage : row.stages) {
     if (!stage.refined_end && at_critical(stage.end)) stage.refined_end = row.refined_critical;
   }
@@ -47,6 +44,18 @@ void locate_at_critical(RunResult& row) {
     if (!jump.refined_critical && at_critical(jump.critical)) {
       jump.refined_critical = row.refined_critical;
     }
+  }
+}
+
+/// The path's states at the critical point take the critical point's value and estimate, which
+/// RowSequence resolved on its zoomed rows (one number for one state, and a tighter one than
+/// the path's unzoomed rows give). The tangential estimate stays the path's.
+void take_critical(const RunResult& result, std::vector<StateChoice>& choices) {
+  if (!result.critical || !result.accuracy.critical_error_estimate) return;
+  for (StateChoice& c : choices) {
+    if (!c.at_critical) continue;
+    c.value = *result.critical;
+    c.normal_error = *result.accuracy.critical_error_estimate;
   }
 }
 
@@ -71,8 +80,10 @@ void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result) {
     return;
   }
   using Extrapolation = DiscretizationOptions::Extrapolation;
-  write_states(result, choose_states(rows, Extrapolation::richardson, PathStates::path),
-               PathStates::path);
+  std::vector<StateChoice> states =
+      choose_states(rows, Extrapolation::richardson, PathStates::path);
+  take_critical(result, states);
+  write_states(result, states, PathStates::path);
   const std::vector<WorkChoice> works = choose_works(rows, Extrapolation::richardson);
   write_works(result, works);
   shorthand_covers(result, true, works, result.warnings);
@@ -102,7 +113,10 @@ void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result) {
   result.jumps = std::move(finest.jumps);
   result.work = finest.work;
   if (!result.work) return;  // the work left the range of a double: the row said so
-  if (!p.choices.empty()) write_states(result, p.choices, PathStates::path);
+  if (!p.choices.empty()) {
+    take_critical(result, p.choices);
+    write_states(result, p.choices, PathStates::path);
+  }
   if (!p.work_choices.empty()) write_works(result, p.work_choices);
   std::vector<std::string> warnings;
   shorthand_covers(result, p.met, p.work_choices, warnings);
