@@ -19,8 +19,9 @@ using Extrapolation = DiscretizationOptions::Extrapolation;
 
 constexpr std::int64_t kFirstRow = 256;
 
-ProgramRowSpec resolving_row(const ProgramRowFrame& frame, std::int64_t springs) {
-  ProgramRowSpec spec = program_row(frame, springs);
+ProgramRowSpec resolving_row(const Scene& scene, const ProgramRowFrame& frame,
+                             std::int64_t springs) {
+  ProgramRowSpec spec = program_row(scene, frame, springs);
   spec.edge_forces = true;
   spec.refine = true;
   return spec;
@@ -34,7 +35,7 @@ RunResult run_program_richardson(const Scene& scene, const ObserverList& observe
   std::vector<RunResult> rows;
   RunCounts counts;
   for (const std::int64_t springs : {n / 2, n, 2 * n}) {
-    rows.push_back(run_program_row(scene, resolving_row(frame, springs),
+    rows.push_back(run_program_row(scene, resolving_row(scene, frame, springs),
                                    springs == 2 * n ? observers : ObserverList{}));
     counts += rows.back().counts;
   }
@@ -72,12 +73,13 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
   const ProgramRowFrame frame = program_row_frame(scene);
   PathRefinement p = refine_path(
       kFirstRow, scene.discretization.max_row_springs,
-      [&](std::int64_t n) { return run_program_row(scene, resolving_row(frame, n), {}); },
+      [&](std::int64_t n) { return run_program_row(scene, resolving_row(scene, frame, n), {}); },
       scene.discretization.extrapolation, PathStates::all, frame.zero, rtol);
   // The finest row again, for its events (the rows above ran without observers).
   RunResult result =
-      observers.empty() ? std::move(p.rows.back())
-                        : run_program_row(scene, resolving_row(frame, p.springs.back()), observers);
+      observers.empty()
+          ? std::move(p.rows.back())
+          : run_program_row(scene, resolving_row(scene, frame, p.springs.back()), observers);
   result.accuracy.route = Accuracy::Route::row;
   if (!p.choices.empty() && write_states(result, p.choices, PathStates::all).extrapolated) {
     result.accuracy.route = Accuracy::Route::richardson;

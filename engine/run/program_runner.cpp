@@ -253,6 +253,8 @@ void ProgramRunner::observe(const ContactSnapshot& s) {
       largest_->springs = s.springs_in_contact;
       largest_->indentation = s.indentation;
       largest_->glued_edge = row_.glued() == row_.in_contact();
+      largest_->normal_constraint = row_.normal().constraint;
+      largest_->normal_held = s.normal_control;
     }
   }
 }

@@ -18,6 +18,8 @@ struct LargestContact {
   std::int64_t springs = 0;       ///< springs in contact m at the deepest indentation
   double indentation = 0.0;       ///< the deepest indentation in contact [m]
   bool glued_edge = false;        ///< spring m was glued there (the advancing front), not pressed
+  AffineConstraint normal_constraint{1.0, 0.0};  ///< the normal machine there
+  double normal_held = 0.0;                      ///< its held value there [m or N]
 };
 
 struct ProgramRowSpec {

@@ -153,6 +153,31 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   return frame_at(scene, a_max, deepest, coefficient > 0.0);
 }
 
+/// The continuum front [m] at which the control a_u d + a_F F reaches the held value, with
+/// d = g(a) - l(a) and F = E* (2 int_0^a (g(a) - g) dx - 2 a l(a)) on the advancing branch,
+/// bracketed within a few of the pilot's spacings of its front; nullopt where it is not.
+std::optional<double> continuum_front_reaching_held(const Scene& scene, const HeldDeepest& held,
+                                                    double pilot_front, double pilot_spacing) {
+  const Profile& profile = *scene.profile;
+  const double e_star = scene.material.effective_modulus;
+  const auto excess = [&](double a) {
+    const double limit = std::sqrt(held.limit_coefficient * a);
+    const double d = profile.mdr_image(a) - limit;
+    const double force = e_star * (profile.nonadhesive_force_per_modulus(a) - 2.0 * a * limit);
+    return held.constraint.displacement_coefficient * d +
+           held.constraint.force_coefficient * force - held.held;
+  };
+  const double lo = std::max(0.5 * pilot_front, pilot_front - 4.0 * pilot_spacing);
+  const double hi = std::min(profile.outer_radius(), pilot_front + 4.0 * pilot_spacing);
+  const double at_lo = excess(lo);
+  const double at_hi = excess(hi);
+  if (!(lo > 0.0) || !std::isfinite(at_lo) || !std::isfinite(at_hi) || !(at_lo < 0.0) ||
+      !(at_hi > 0.0)) {
+    return std::nullopt;
+  }
+  return bracketed_root(excess, lo, hi);
+}
+
 }  // namespace
 
 namespace {
@@ -182,7 +207,20 @@ ProgramRowFrame located_frame(const Scene& scene) {
   }
   if (largest.springs == 0) return {radius, scene.profile->mdr_image(radius)};
   const double a_max = front_radius(scene, largest, pilot_radius / kPilotSprings);
-  return frame_at(scene, a_max, largest.indentation, largest.glued_edge);
+  ProgramRowFrame frame = frame_at(scene, a_max, largest.indentation, largest.glued_edge);
+  if (largest.normal_constraint.force_coefficient != 0.0 &&
+      !scene.profile->fixed_contact_radius()) {
+    const HeldDeepest held{largest.normal_constraint, largest.normal_held,
+                           largest.glued_edge ? hess_scale(scene.material.approach_work_of_adhesion,
+                                                           scene.material.effective_modulus)
+                                              : 0.0};
+    if (const auto a =
+            continuum_front_reaching_held(scene, held, a_max, pilot_radius / kPilotSprings)) {
+      frame = {*a, scene.profile->mdr_image(*a)};
+      frame.held = held;
+    }
+  }
+  return frame;
 }
 
 }  // namespace
@@ -207,16 +245,26 @@ ProgramRowFrame program_row_frame(const Scene& scene) {
   return frame;
 }
 
-ProgramRowSpec program_row(const ProgramRowFrame& frame, std::int64_t springs) {
-  return {.reference_radius = frame.radius,
+ProgramRowSpec program_row(const Scene& scene, const ProgramRowFrame& frame, std::int64_t springs) {
+  double radius = frame.radius;
+  double image = frame.image;
+  if (frame.held) {
+    if (const auto a = row_radius_reaching_held(*scene.profile, scene.material, *frame.held,
+                                                springs, frame.radius)) {
+      radius = *a;
+      image = scene.profile->mdr_image(radius);
+    }
+  }
+  return {.reference_radius = radius,
           .reference_springs = springs,
-          .reference_image = frame.image,
+          .reference_image = image,
           .max_springs = 2 * springs + 64,
           .zero = frame.zero};
 }
 
 RunResult run_program(const Scene& scene, const ObserverList& observers) {
-  return run_program_row(scene, program_row(program_row_frame(scene), scene.springs), observers);
+  return run_program_row(scene, program_row(scene, program_row_frame(scene), scene.springs),
+                         observers);
 }
 
 }  // namespace mdrsim
