@@ -59,6 +59,13 @@ class ProgramRow {
   std::int64_t in_contact() const { return in_contact_; }  ///< m
   bool can_glue(std::int64_t i) const { return rebinding_ || i > ever_glued_; }
   double boundary_offset() const { return runs_.back().offset; }  ///< s of spring k [m]
+  /// Whether every glued spring carries the same offset s (one run).
+  bool one_offset() const { return runs_.size() <= 1; }
+  /// Springs 1..n glue, each at the present u_x, on a row with nothing in contact: a zoomed
+  /// row's start (program_zoom.hpp).
+  void glue_first(std::int64_t n) {
+    for (std::int64_t i = 0; i < n; ++i) glue_next();
+  }
   bool adhesive() const { return material_.work_of_adhesion > 0.0; }
   const Material& material() const { return material_; }
 

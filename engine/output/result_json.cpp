@@ -126,6 +126,10 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     if (accuracy.work_error_estimate) {
       a["work_error_estimate"] = work_json(*accuracy.work_error_estimate);
     }
+    if (accuracy.critical_zoom) {
+      a["critical_zoom"] = {{"outer_radius", accuracy.critical_zoom->outer_radius},
+                            {"rows", accuracy.critical_zoom->rows}};
+    }
     if (scene.discretization.rtol) a["rtol_met"] = accuracy.rtol_met;
     a["covers"] = accuracy.covers.empty() ? std::vector<std::string>{"critical.normal_force",
                                                                      "peak_adhesion.normal_force"}

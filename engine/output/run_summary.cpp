@@ -49,6 +49,10 @@ void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
   std::string line =
       a.route == Accuracy::Route::richardson ? "richardson over rows of " : "plain row; rows of ";
   line += fmt::format("{} springs across {:.6g} m", fmt::join(a.rows, ", "), a.outer_radius);
+  if (a.critical_zoom) {
+    line += fmt::format("; critical point on zoomed rows of {} springs across {:.6g} m",
+                        fmt::join(a.critical_zoom->rows, ", "), a.critical_zoom->outer_radius);
+  }
   if (a.critical_error_estimate && r.critical) {
     line += fmt::format("; critical force error estimate {:.3g} N ({:.3g} relative)",
                         *a.critical_error_estimate,

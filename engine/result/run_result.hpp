@@ -29,6 +29,13 @@ struct Accuracy {
   /// Programs: the same for the total work per axis [J] (each stage's is in its record).
   std::optional<AxisWork> work_error_estimate;
   bool rtol_met = true;  ///< with rtol: every estimate of `covers` is within it
+  /// Programs under rtol whose critical point was refined on zoomed rows of its own
+  /// (program_zoom.hpp): their radius [m] and springs; `rows` and `outer_radius` are the path's.
+  struct CriticalZoom {
+    double outer_radius = 0.0;
+    std::vector<std::int64_t> rows;
+  };
+  std::optional<CriticalZoom> critical_zoom;
   /// The reported numbers the estimates (and rtol) cover, as JSON paths; empty: the
   /// critical and the peak normal force (the shorthand's).
   std::vector<std::string> covers;

@@ -75,26 +75,6 @@ std::vector<Zoom> zoom_onto(const Scene& scene, Zoom start, Target target, RunCo
   return chain;
 }
 
-bool meets(const RowSequence& seq, Accuracy::Route route, double rtol) {
-  const auto value = seq.value(route);
-  const auto estimate = seq.estimate(route);
-  return value && estimate && *estimate <= rtol * std::abs(value->normal_force);
-}
-
-/// The route predicted to meet rtol with the fewest springs: the plain row's error falls
-/// like 1/N, the extrapolated one's like 1/N^2.
-Accuracy::Route cheaper_route(const RowSequence& seq, double rtol) {
-  using Route = Accuracy::Route;
-  if (meets(seq, Route::richardson, rtol)) return Route::richardson;
-  if (meets(seq, Route::row, rtol)) return Route::row;
-  const auto value = seq.value(Route::row);
-  const auto plain = seq.estimate(Route::row);
-  const auto extrapolated = seq.estimate(Route::richardson);
-  if (!value || !plain || !extrapolated) return Route::richardson;
-  const double wanted = rtol * std::abs(value->normal_force);
-  return std::sqrt(*extrapolated / wanted) <= *plain / wanted ? Route::richardson : Route::row;
-}
-
 struct Refined {
   std::optional<ContactSnapshot> value;
   std::optional<double> estimate;

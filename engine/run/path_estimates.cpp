@@ -189,7 +189,7 @@ std::vector<StateChoice> choose_states(std::vector<RunResult>& rows, Extrapolati
     // Only stage ends vouch for their tangential force (at a jump or the peak it is whatever
     // the state has; under a held normal force the peak is any state at that force).
     if (!f[i].tangential_estimate) chosen.tangential_error = 0.0;
-    chosen.at_critical = which == PathStates::path && is_critical_state(rows.back(), q2);
+    chosen.at_critical = which != PathStates::all && is_critical_state(rows.back(), q2);
     out.push_back(chosen);
   }
   return out;
@@ -256,6 +256,15 @@ std::string set_covers(RunResult& r, const std::vector<WorkChoice>& works_chosen
       "{} grows with the spring count (the rows' differences double): it is no continuum value, "
       "and neither rtol nor its estimate covers the works",
       diverging);
+}
+
+void take_critical(const ContactSnapshot& value, double estimate,
+                   std::vector<StateChoice>& choices) {
+  for (StateChoice& c : choices) {
+    if (!c.at_critical) continue;
+    c.value = value;
+    c.normal_error = estimate;
+  }
 }
 
 WrittenStates write_states(RunResult& r, const std::vector<StateChoice>& choices,

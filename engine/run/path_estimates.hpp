@@ -16,7 +16,9 @@ namespace mdrsim {
 /// The reported states a combination takes: a program's all (stage ends, jumps, the critical
 /// point, the peak); the shorthand's path only (stage ends, jumps), as its critical point and
 /// peak are combined by RowSequence (row_sequence.hpp).
-enum class PathStates { all, path };
+/// `critical_elsewhere`: a program's all, with the critical point's force resolved on zoomed
+/// rows of its own (program_zoom.hpp).
+enum class PathStates { all, path, critical_elsewhere };
 
 /// Whether rows end alike, so that they can be compared state by state: the status, the
 /// stages, every jump, the critical point and the peak.
@@ -29,14 +31,21 @@ bool is_critical_state(const RunResult& row, const ContactSnapshot& state);
 /// phrase: a long program's rows list hundreds of jumps, most of them alike.
 std::string first_difference(const std::vector<std::pair<std::int64_t, const RunResult*>>& rows);
 
+/// Where the critical point is resolved on zoomed rows of its own (the shorthand's, a
+/// program's last stage), the path's rows stop here or at 4x the critical point's finest row,
+/// if larger: a held tangential force's stage work converges as a sawtooth, and refining it to
+/// rtol 1e-6 took rows of 2^24 springs (0.84 s against 0.01 s for the critical point); past
+/// the cap the path's values carry their estimates and a warning instead.
+inline constexpr std::int64_t kPathRowCap = std::int64_t{1} << 17;
+
 /// One state's value and estimates as the last three or four rows give it.
 struct StateChoice {
   ContactSnapshot value;
   double normal_error;
   double tangential_error;
   bool extrapolated;
-  /// PathStates::path only: the state is the rows' critical point (a stage end or a jump's
-  /// start there), whose normal force RowSequence resolves on its own zoomed rows: the
+  /// PathStates::path and critical_elsewhere: the state is the rows' critical point (a stage end or
+  /// a jump's start there), whose normal force RowSequence resolves on its own zoomed rows: the
   /// shorthand writes that value and estimate in its place, and rtol does not wait for the
   /// path's rows to reach it (they are not refined near the fold).
   bool at_critical = false;
@@ -51,6 +60,11 @@ struct StateChoice {
 std::vector<StateChoice> choose_states(std::vector<RunResult>& rows,
                                        DiscretizationOptions::Extrapolation extrapolation,
                                        PathStates which);
+
+/// The states at the critical point take `value` and its normal force's `estimate` [N], which
+/// rows of their own resolved (one number for one state); the tangential estimate stays.
+void take_critical(const ContactSnapshot& value, double estimate,
+                   std::vector<StateChoice>& choices);
 
 /// Writes the choices into the row. Returns whether any was extrapolated, and the states
 /// that were not though rows locate them (for the richardson route's warning).

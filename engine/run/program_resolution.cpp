@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/run/path_estimates.hpp"
+#include "engine/run/program_zoom.hpp"
 #include "engine/run/run_program.hpp"
 
 namespace mdrsim {
@@ -71,10 +72,37 @@ RunResult run_program_richardson(const Scene& scene, const ObserverList& observe
 
 RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& observers) {
   const ProgramRowFrame frame = program_row_frame(scene);
+  // The first full row also tells whether the last stage's critical point can be zoomed on.
+  LastStageStart start;
+  std::optional<RunResult> first =
+      run_program_row(scene, resolving_row(scene, frame, kFirstRow), {}, nullptr, &start);
+  const RunStatus first_status = first->status;
+  RunCounts counts = first->counts;
+  const std::optional<ZoomedCritical> zoomed = zoom_program_critical(scene, *first, start, rtol);
+  if (zoomed) counts += zoomed->counts;
+  // With the critical point zoomed, the path's rows stop where the shorthand's do
+  // (path_estimates.hpp): past the cap its states and works carry their estimates only.
+  const std::int64_t cap = zoomed ? std::min(scene.discretization.max_row_springs,
+                                             std::max(kPathRowCap, 4 * zoomed->rows.back()))
+                                  : scene.discretization.max_row_springs;
   PathRefinement p = refine_path(
-      kFirstRow, scene.discretization.max_row_springs,
-      [&](std::int64_t n) { return run_program_row(scene, resolving_row(scene, frame, n), {}); },
-      scene.discretization.extrapolation, PathStates::all, frame.zero, rtol);
+      kFirstRow, cap,
+      [&](std::int64_t n) {
+        if (first && n == kFirstRow) {
+          RunResult row = std::move(*first);
+          first.reset();
+          row.counts = {};  // counted above
+          return row;
+        }
+        return run_program_row(scene, resolving_row(scene, frame, n), {});
+      },
+      scene.discretization.extrapolation, zoomed ? PathStates::critical_elsewhere : PathStates::all,
+      frame.zero, rtol);
+  counts += p.counts;
+  const bool zoom_applies = zoomed && p.rows.back().status == first_status;
+  if (zoom_applies && !p.choices.empty()) {
+    take_critical(zoomed->value, zoomed->estimate, p.choices);
+  }
   // The finest row again, for its events (the rows above ran without observers).
   RunResult result =
       observers.empty()
@@ -88,10 +116,52 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
   if (std::string w = set_covers(result, p.work_choices); !w.empty()) {
     result.warnings.push_back(std::move(w));
   }
-  result.counts = p.counts;
+  result.counts = counts;
   result.accuracy.rows = p.rows_used();
   result.accuracy.outer_radius = frame.radius;
   result.accuracy.rtol_met = p.met;
+  if (zoomed && !zoom_applies) {
+    result.accuracy.rtol_met = false;
+    result.warnings.push_back(fmt::format(
+        "the critical point's zoomed rows end '{}', the finest full row '{}': the critical point "
+        "is the full rows', and rtol does not cover it",
+        to_string(first_status), to_string(result.status)));
+  }
+  if (zoom_applies) {
+    result.accuracy.critical_zoom = Accuracy::CriticalZoom{zoomed->outer_radius, zoomed->rows};
+    if (result.critical) {
+      result.critical = zoomed->value;
+      result.accuracy.critical_error_estimate = zoomed->estimate;
+    }
+    if (!zoomed->met) {
+      result.accuracy.rtol_met = false;
+      result.warnings.push_back(fmt::format(
+          "rtol = {} not met for the critical force on zoomed rows of up to {} springs across "
+          "{:.6g} m: error estimate {:.3g} relative",
+          rtol, zoomed->rows.back(), zoomed->outer_radius,
+          zoomed->estimate / std::abs(zoomed->value.normal_force)));
+    }
+    if (!p.met) {
+      // As on the shorthand: the critical force (and the peak, where its own estimate meets
+      // rtol) stay covered; the path's other states and works carry their estimates.
+      const auto& peak_estimate = result.accuracy.peak_error_estimate;
+      const bool peak_met =
+          !result.peak ||
+          (peak_estimate && *peak_estimate <= rtol * std::max(std::abs(result.peak->normal_force),
+                                                              frame.zero.force));
+      result.accuracy.covers = {"critical.normal_force"};
+      if (result.peak && peak_met)
+        result.accuracy.covers.emplace_back("peak_adhesion.normal_force");
+      result.accuracy.rtol_met = zoomed->met && peak_met;
+      result.warnings.push_back(fmt::format(
+          "rtol = {} not met for the stages, jumps and work with full rows of up to {} springs: "
+          "{}; {}",
+          rtol, p.springs.back(), p.why.empty() ? "too few rows" : p.why,
+          p.choices.empty() ? "they are the finest row's, without estimates"
+                            : "they carry their own error estimates, which rtol does not cover"));
+      return result;
+    }
+  }
   if (!p.met) {
     result.warnings.push_back(fmt::format(
         "rtol = {} not met with rows of up to {} springs: {}; the finest row is reported", rtol,

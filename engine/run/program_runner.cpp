@@ -52,7 +52,7 @@ bool finite(const ContactSnapshot& s) {
 class ProgramRunner {
  public:
   ProgramRunner(const Scene& scene, const ProgramRowSpec& spec, const ObserverList& observers,
-                LargestContact* largest)
+                LargestContact* largest, LastStageStart* last_stage)
       : stepping_(scene.solver.method == SolverMethod::stepping),
         step_(scene.solver.step.value_or(kDefaultStageStep)),
         scene_(scene),
@@ -63,6 +63,8 @@ class ProgramRunner {
         observers_(observers),
         observe_springs_(observers.wants(EventKind::spring_detached)),
         largest_(largest),
+        last_stage_(last_stage),
+        zoomed_(spec.zoomed),
         zero_(spec.zero) {
     row_.record_edge_forces(spec.edge_forces);
     if (spec.refine && !stepping_) front_.emplace(criterion_);
@@ -124,6 +126,12 @@ class ProgramRunner {
   /// Asked once: whether anyone observes single springs (a log observer asks spdlog).
   bool observe_springs_;
   LargestContact* largest_;
+  LastStageStart* last_stage_;  ///< null where nobody asks
+  std::optional<ZoomedStart> zoomed_;
+  bool keep_machine_ = false;  ///< a zoomed row's first stage: the machine is set already
+  /// The last spring that exists: a zoomed row has none outside its radius (the springs there
+  /// have let go, unpressed, by the time its front reaches them: program_zoom.hpp).
+  std::int64_t row_end_ = std::numeric_limits<std::int64_t>::max();
   ZeroScale zero_;  ///< below it a force is rounding: no peak, no critical point
   RunResult result_;
   std::optional<ProgramFront> front_;  ///< refining rows only
@@ -247,6 +255,12 @@ void ProgramRunner::observe(const ContactSnapshot& s) {
     peak_ = s;
   }
   if (s.springs_in_contact > 0) ever_in_contact_ = true;
+  // The zoom's conditions through the last stage: nothing pressed, nothing glued anew.
+  if (last_stage_ && last_stage_->zoomable && stage_ == &scene_.program->stages.back() &&
+      ((row_.in_contact() > 0 && row_.in_contact() != row_.glued()) ||
+       row_.glued() > last_stage_->springs)) {
+    last_stage_->zoomable = false;
+  }
   if (largest_ && s.springs_in_contact > 0) {
     largest_->most_springs = std::max(largest_->most_springs, s.springs_in_contact);
     if (largest_->springs == 0 || s.indentation > largest_->indentation) {
@@ -320,7 +334,7 @@ std::optional<Change> ProgramRunner::due() {
     const LetGo go = boundary_let_go(row_.tangential_displacement());
     if (go.kind == LetGo::Kind::now || row_.image(k) - d >= go.elongation) return Change::let_go;
   }
-  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1);
+  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1) && k < row_end_;
   if (front_glues) {
     const double gap = row_.image(k + 1) - d;
     const double limit = k == 0 ? 0.0 : row_.front_limit(k + 1);
@@ -333,7 +347,7 @@ std::optional<Change> ProgramRunner::due() {
       return Change::glue;
     }
   }
-  if (!(m == k && front_glues)) {
+  if (!(m == k && front_glues) && m < row_end_) {
     const double gap = row_.image(m + 1) - d;
     // An unglued spring carries no force where it touches or lifts, so nothing at this t
     // can press it back: only rounding could.
@@ -378,12 +392,12 @@ std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end
   if (m == 0 && !row_.normal_has_stiffness() && normal_.rate > 0.0) {
     consider(-normal_.start / normal_.rate, Change::fall_in);
   }
-  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1);
+  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1) && k < row_end_;
   if (front_glues && vd > 0.0) {
     consider(when_indentation(row_.image(k + 1) - (k == 0 ? 0.0 : row_.front_limit(k + 1))),
              Change::glue);
   }
-  if (!(m == k && front_glues) && vd > 0.0) {
+  if (!(m == k && front_glues) && vd > 0.0 && m < row_end_) {
     consider(when_indentation(row_.image(m + 1)), Change::touch);
   }
   if (m > k && vd < 0.0) consider(when_indentation(row_.image(m)), Change::lift);
@@ -548,7 +562,7 @@ void ProgramRunner::start_stage(const Stage& stage) {
   record_.start_stage();
   const auto start_axis = [&](const std::optional<StageAxis>& axis, bool normal,
                               AxisMotion& motion) {
-    if (axis) {
+    if (axis && !keep_machine_) {
       // A new controller takes its held value from the present state: nothing jumps.
       const AffineConstraint c = axis->controller->constraint();
       const double rest = normal ? row_.indentation() : row_.tangential_displacement();
@@ -560,6 +574,17 @@ void ProgramRunner::start_stage(const Stage& stage) {
   };
   start_axis(stage.normal, true, normal_);
   start_axis(stage.tangential, false, tangential_);
+  keep_machine_ = false;
+  if (last_stage_ && &stage == &scene_.program->stages.back()) {
+    *last_stage_ = {.zoomable = stage.until_separation && !scene_.program->rebinding &&
+                                row_.glued() > 0 && row_.glued() == row_.in_contact() &&
+                                row_.one_offset(),
+                    .stage = scene_.program->stages.size() - 1,
+                    .normal = row_.normal(),
+                    .tangential = row_.tangential(),
+                    .offset = row_.glued() > 0 ? row_.boundary_offset() : 0.0,
+                    .springs = row_.glued()};
+  }
   t_ = 0.0;
   guards_ = {};
   if (front_) front_->stage_started();
@@ -873,8 +898,21 @@ void ProgramRunner::warn_skipped_stages() {
 }
 
 RunResult ProgramRunner::run() {
-  for (const Stage& stage : scene_.program->stages) {
-    run_stage(stage);
+  std::size_t first = 0;
+  if (zoomed_) {
+    // Every spring glued with the one offset (at zero stretch: the tangential machine holds
+    // u_x there while they glue), then the machine as the stage started on the full row.
+    row_.edit_tangential() = {{1.0, 0.0}, zoomed_->offset, zoomed_->offset};
+    row_.glue_first(row_.reference_springs());
+    row_.edit_normal() = zoomed_->normal;
+    row_.edit_tangential() = zoomed_->tangential;
+    first = zoomed_->stage;
+    keep_machine_ = true;
+    row_end_ = row_.reference_springs();
+  }
+  const auto& stages = scene_.program->stages;
+  for (std::size_t i = first; i < stages.size(); ++i) {
+    run_stage(stages[i]);
     if (stop_ != Stop::none || flight_ != JumpEnd::state) break;
   }
   if (flight_ != JumpEnd::state && stage_ != &scene_.program->stages.back()) {
@@ -902,8 +940,9 @@ RunResult ProgramRunner::run() {
 }  // namespace
 
 RunResult run_program_row(const Scene& scene, const ProgramRowSpec& row,
-                          const ObserverList& observers, LargestContact* largest) {
-  ProgramRunner runner(scene, row, observers, largest);
+                          const ObserverList& observers, LargestContact* largest,
+                          LastStageStart* last_stage) {
+  ProgramRunner runner(scene, row, observers, largest, last_stage);
   RunResult result = runner.run();
   result.springs = row.reference_springs;
   result.accuracy.rows = {row.reference_springs};

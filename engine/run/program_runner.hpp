@@ -1,7 +1,9 @@
 // One row of a loading program: stages driven in their parameter, events located exactly.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "engine/base/zero_scale.hpp"
 #include "engine/events/observer.hpp"
@@ -22,6 +24,30 @@ struct LargestContact {
   double normal_held = 0.0;                      ///< its held value there [m or N]
 };
 
+/// The last stage's start on a row, and whether a row glued afresh across a smaller radius
+/// reaches that stage's critical point exactly (the zoom of program_zoom.hpp): the stage runs
+/// until separation, nothing rebinds or glues in it, every spring in contact is glued (no
+/// pressed springs, whose normal force the smaller row would miss) and all carry one
+/// tangential offset. Then the state of a contact of radius a depends only on the held values
+/// and the springs inside a, as on the shorthand's pull-off.
+struct LastStageStart {
+  bool zoomable = false;
+  std::size_t stage = 0;  ///< its index in scene.program->stages
+  MachineAxis normal;     ///< the machine at the stage's start, after its controller switch
+  MachineAxis tangential;
+  double offset = 0.0;       ///< the glued springs' one tangential offset s [m]
+  std::int64_t springs = 0;  ///< springs glued (and in contact) at the start
+};
+
+/// A row that starts at a program's last stage, glued on all its springs with one offset and
+/// the machine as the stage started on a full row (LastStageStart).
+struct ZoomedStart {
+  std::size_t stage = 0;
+  MachineAxis normal;
+  MachineAxis tangential;
+  double offset = 0.0;
+};
+
 struct ProgramRowSpec {
   double reference_radius = 0.0;       ///< a_ref: spring N sits there [m]
   std::int64_t reference_springs = 0;  ///< N
@@ -33,10 +59,13 @@ struct ProgramRowSpec {
   bool refine = false;
   /// What is zero on this row: the same for every row of a resolution sequence.
   ZeroScale zero;
+  /// A zoomed row: it starts at this stage, glued across its reference radius.
+  std::optional<ZoomedStart> zoomed;
 };
 
 /// Runs every stage of scene.program on one row. Emits every event but `finished`.
 RunResult run_program_row(const Scene& scene, const ProgramRowSpec& row,
-                          const ObserverList& observers, LargestContact* largest = nullptr);
+                          const ObserverList& observers, LargestContact* largest = nullptr,
+                          LastStageStart* last_stage = nullptr);
 
 }  // namespace mdrsim

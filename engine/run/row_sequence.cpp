@@ -56,4 +56,22 @@ std::optional<double> RowSequence::estimate(Accuracy::Route route) const {
   return std::max(change_estimate(values), rounding_floor(values.back()));
 }
 
+bool meets(const RowSequence& seq, Accuracy::Route route, double rtol) {
+  const auto value = seq.value(route);
+  const auto estimate = seq.estimate(route);
+  return value && estimate && *estimate <= rtol * std::abs(value->normal_force);
+}
+
+Accuracy::Route cheaper_route(const RowSequence& seq, double rtol) {
+  using Route = Accuracy::Route;
+  if (meets(seq, Route::richardson, rtol)) return Route::richardson;
+  if (meets(seq, Route::row, rtol)) return Route::row;
+  const auto value = seq.value(Route::row);
+  const auto plain = seq.estimate(Route::row);
+  const auto extrapolated = seq.estimate(Route::richardson);
+  if (!value || !plain || !extrapolated) return Route::richardson;
+  const double wanted = rtol * std::abs(value->normal_force);
+  return std::sqrt(*extrapolated / wanted) <= *plain / wanted ? Route::richardson : Route::row;
+}
+
 }  // namespace mdrsim

@@ -50,6 +50,13 @@ class RowSequence {
   std::vector<RunResult> rows_;
 };
 
+/// Whether the sequence's value by `route` is within rtol of its estimate, relative.
+bool meets(const RowSequence& seq, Accuracy::Route route, double rtol);
+
+/// The route predicted to meet rtol with the fewest springs: the plain row's error falls
+/// like 1/N, the extrapolated one's like 1/N^2.
+Accuracy::Route cheaper_route(const RowSequence& seq, double rtol);
+
 /// 2 fine - coarse, field by field; springs in contact from `fine`.
 ContactSnapshot extrapolate(const ContactSnapshot& coarse, const ContactSnapshot& fine);
 

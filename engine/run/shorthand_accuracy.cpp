@@ -15,11 +15,6 @@ namespace mdrsim {
 namespace {
 
 constexpr std::int64_t kFirstPathRow = 512;
-/// The path's rows stop here (or at 4x the critical point's finest row, if larger): a held
-/// tangential force's stage work converges as a sawtooth, and refining it to rtol 1e-6 took
-/// rows of 2^24 springs (0.84 s against 0.01 s for the critical point); past the cap the
-/// path's values carry their estimates and a warning instead.
-constexpr std::int64_t kPathRowCap = std::int64_t{1} << 17;
 
 /// The critical point's and the peak's estimates, which RowSequence made, as `covers`
 /// entries; the path's with them where `path` (its works unless they diverge).
@@ -48,15 +43,10 @@ void locate_at_critical(RunResult& row) {
 }
 
 /// The path's states at the critical point take the critical point's value and estimate, which
-/// RowSequence resolved on its zoomed rows (one number for one state, and a tighter one than
-/// the path's unzoomed rows give). The tangential estimate stays the path's.
+/// RowSequence resolved on its zoomed rows (a tighter one than the path's unzoomed rows give).
 void take_critical(const RunResult& result, std::vector<StateChoice>& choices) {
   if (!result.critical || !result.accuracy.critical_error_estimate) return;
-  for (StateChoice& c : choices) {
-    if (!c.at_critical) continue;
-    c.value = *result.critical;
-    c.normal_error = *result.accuracy.critical_error_estimate;
-  }
+  take_critical(*result.critical, *result.accuracy.critical_error_estimate, choices);
 }
 
 }  // namespace

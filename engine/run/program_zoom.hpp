@@ -1,0 +1,35 @@
+// rtol on programs: the critical point of a last stage that only peels a uniformly glued
+// contact, refined on rows glued afresh across a radius just outside it (the shorthand's zoom).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/run/program_runner.hpp"
+#include "engine/run/run_program.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace mdrsim {
+
+/// The critical point as the zoomed rows give it, with its estimate.
+struct ZoomedCritical {
+  ContactSnapshot value;
+  double estimate;  ///< [N]
+  Accuracy::Route route;
+  bool met;
+  double outer_radius;             ///< the zoom's radius [m]
+  std::vector<std::int64_t> rows;  ///< the springs of the rows combined
+  RunCounts counts;                ///< every zoomed row's
+};
+
+/// Zooms from `coarse` (a full row with its LastStageStart) onto its critical point and
+/// refines there until rtol. nullopt where the zoom does not apply (docs/programs.md
+/// "Accuracy on programs"): the last stage not zoomable, no critical point, a zoom gaining
+/// less than 1.5x in spacing, a zoomed row that ends otherwise than the full row; the caller
+/// then resolves the critical point on full rows as before.
+std::optional<ZoomedCritical> zoom_program_critical(const Scene& scene, const RunResult& coarse,
+                                                    const LastStageStart& start, double rtol);
+
+}  // namespace mdrsim
