@@ -136,6 +136,19 @@ bool is_critical_state(const RunResult& row, const ContactSnapshot& state) {
          state.normal_force == row.critical->normal_force;
 }
 
+bool is_peak_state(const RunResult& row, const ContactSnapshot& state) {
+  return row.peak && state.springs_in_contact == row.peak->springs_in_contact &&
+         state.normal_force == row.peak->normal_force;
+}
+
+void take_peak(const ContactSnapshot& value, double estimate, std::vector<StateChoice>& choices) {
+  for (StateChoice& c : choices) {
+    if (!c.at_peak) continue;
+    c.value = value;
+    c.normal_error = estimate;
+  }
+}
+
 bool end_alike(const RunResult& a, const RunResult& b) {
   return ending_items(a) == ending_items(b);
 }
@@ -190,6 +203,8 @@ std::vector<StateChoice> choose_states(std::vector<RunResult>& rows, Extrapolati
     // the state has; under a held normal force the peak is any state at that force).
     if (!f[i].tangential_estimate) chosen.tangential_error = 0.0;
     chosen.at_critical = which != PathStates::all && is_critical_state(rows.back(), q2);
+    chosen.at_peak =
+        which == PathStates::critical_and_peak_elsewhere && is_peak_state(rows.back(), q2);
     out.push_back(chosen);
   }
   return out;
@@ -303,11 +318,12 @@ bool within(const std::vector<StateChoice>& choices, const std::vector<WorkChoic
   const auto work_ok = [&](const WorkChoice& c) {
     return c.error <= rtol * std::max({std::abs(c.value), kForceFloor * largest_work, zero.work});
   };
-  return std::all_of(choices.begin(), choices.end(),
-                     [&](const StateChoice& c) {
-                       return (c.at_critical || ok(c.value.normal_force, c.normal_error)) &&
-                              ok(c.value.tangential_force, c.tangential_error);
-                     }) &&
+  return std::all_of(
+             choices.begin(), choices.end(),
+             [&](const StateChoice& c) {
+               return (c.at_critical || c.at_peak || ok(c.value.normal_force, c.normal_error)) &&
+                      ok(c.value.tangential_force, c.tangential_error);
+             }) &&
          std::all_of(work_choices.begin(), work_choices.end(),
                      [&](const WorkChoice& c) { return c.diverges || work_ok(c); });
 }

@@ -17,8 +17,8 @@ namespace mdrsim {
 /// point, the peak); the shorthand's path only (stage ends, jumps), as its critical point and
 /// peak are combined by RowSequence (row_sequence.hpp).
 /// `critical_elsewhere`: a program's all, with the critical point's force resolved on zoomed
-/// rows of its own (program_zoom.hpp).
-enum class PathStates { all, path, critical_elsewhere };
+/// rows of its own (program_zoom.hpp); `critical_and_peak_elsewhere`: the peak's too.
+enum class PathStates { all, path, critical_elsewhere, critical_and_peak_elsewhere };
 
 /// Whether rows end alike, so that they can be compared state by state: the status, the
 /// stages, every jump, the critical point and the peak.
@@ -49,6 +49,8 @@ struct StateChoice {
   /// shorthand writes that value and estimate in its place, and rtol does not wait for the
   /// path's rows to reach it (they are not refined near the fold).
   bool at_critical = false;
+  /// PathStates::critical_and_peak_elsewhere: the state is the rows' peak, likewise.
+  bool at_peak = false;
 };
 
 /// Every state's choice from the last three or four rows (which end alike): Richardson where
@@ -60,6 +62,12 @@ struct StateChoice {
 std::vector<StateChoice> choose_states(std::vector<RunResult>& rows,
                                        DiscretizationOptions::Extrapolation extrapolation,
                                        PathStates which);
+
+/// Whether `state` of `row` is the row's peak adhesive force.
+bool is_peak_state(const RunResult& row, const ContactSnapshot& state);
+
+/// The states at the peak take `value` and its estimate [N], as take_critical.
+void take_peak(const ContactSnapshot& value, double estimate, std::vector<StateChoice>& choices);
 
 /// The states at the critical point take `value` and its normal force's `estimate` [N], which
 /// rows of their own resolved (one number for one state); the tangential estimate stays.

@@ -78,8 +78,13 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
       run_program_row(scene, resolving_row(scene, frame, kFirstRow), {}, nullptr, &start);
   const RunStatus first_status = first->status;
   RunCounts counts = first->counts;
-  const std::optional<ZoomedCritical> zoomed = zoom_program_critical(scene, *first, start, rtol);
+  const std::optional<ZoomedCritical> zoomed =
+      zoom_program_state(scene, *first, start, rtol, Target::critical);
   if (zoomed) counts += zoomed->counts;
+  // The peak likewise where it lies in the last stage's peel (the fixed-grips pull-off's -F0).
+  const std::optional<ZoomedCritical> zoomed_peak =
+      zoomed ? zoom_program_state(scene, *first, start, rtol, Target::peak) : std::nullopt;
+  if (zoomed_peak) counts += zoomed_peak->counts;
   // With the critical point zoomed, the path's rows stop where the shorthand's do
   // (path_estimates.hpp): past the cap its states and works carry their estimates only.
   const std::int64_t cap = zoomed ? std::min(scene.discretization.max_row_springs,
@@ -96,12 +101,16 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
         }
         return run_program_row(scene, resolving_row(scene, frame, n), {});
       },
-      scene.discretization.extrapolation, zoomed ? PathStates::critical_elsewhere : PathStates::all,
+      scene.discretization.extrapolation,
+      zoomed_peak ? PathStates::critical_and_peak_elsewhere
+      : zoomed    ? PathStates::critical_elsewhere
+                  : PathStates::all,
       frame.zero, rtol);
   counts += p.counts;
   const bool zoom_applies = zoomed && p.rows.back().status == first_status;
   if (zoom_applies && !p.choices.empty()) {
     take_critical(zoomed->value, zoomed->estimate, p.choices);
+    if (zoomed_peak) take_peak(zoomed_peak->value, zoomed_peak->estimate, p.choices);
   }
   // The finest row again, for its events (the rows above ran without observers).
   RunResult result =
@@ -132,6 +141,18 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
     if (result.critical) {
       result.critical = zoomed->value;
       result.accuracy.critical_error_estimate = zoomed->estimate;
+    }
+    if (zoomed_peak && result.peak) {
+      result.peak = zoomed_peak->value;
+      result.accuracy.peak_error_estimate = zoomed_peak->estimate;
+      if (!zoomed_peak->met) {
+        result.accuracy.rtol_met = false;
+        result.warnings.push_back(fmt::format(
+            "rtol = {} not met for the peak adhesive force on zoomed rows of up to {} springs: "
+            "error estimate {:.3g} relative",
+            rtol, zoomed_peak->rows.back(),
+            zoomed_peak->estimate / std::abs(zoomed_peak->value.normal_force)));
+      }
     }
     if (!zoomed->met) {
       result.accuracy.rtol_met = false;

@@ -576,14 +576,15 @@ void ProgramRunner::start_stage(const Stage& stage) {
   start_axis(stage.tangential, false, tangential_);
   keep_machine_ = false;
   if (last_stage_ && &stage == &scene_.program->stages.back()) {
-    *last_stage_ = {.zoomable = stage.until_separation && !scene_.program->rebinding &&
-                                row_.glued() > 0 && row_.glued() == row_.in_contact() &&
-                                row_.one_offset(),
-                    .stage = scene_.program->stages.size() - 1,
-                    .normal = row_.normal(),
-                    .tangential = row_.tangential(),
-                    .offset = row_.glued() > 0 ? row_.boundary_offset() : 0.0,
-                    .springs = row_.glued()};
+    *last_stage_ = {
+        .zoomable = stage.until_separation && !scene_.program->rebinding && row_.glued() > 0 &&
+                    row_.glued() == row_.in_contact() && row_.one_offset(),
+        .stage = scene_.program->stages.size() - 1,
+        .normal = row_.normal(),
+        .tangential = row_.tangential(),
+        .offset = row_.glued() > 0 ? row_.boundary_offset() : 0.0,
+        .springs = row_.glued(),
+        .peak_before = peak_ ? peak_->normal_force : std::numeric_limits<double>::infinity()};
   }
   t_ = 0.0;
   guards_ = {};

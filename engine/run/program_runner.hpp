@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "engine/base/zero_scale.hpp"
@@ -37,6 +38,9 @@ struct LastStageStart {
   MachineAxis tangential;
   double offset = 0.0;       ///< the glued springs' one tangential offset s [m]
   std::int64_t springs = 0;  ///< springs glued (and in contact) at the start
+  /// The most tensile normal force before the stage [N] (+inf: none): a peak below it lies
+  /// in the stage.
+  double peak_before = std::numeric_limits<double>::infinity();
 };
 
 /// A row that starts at a program's last stage, glued on all its springs with one offset and

@@ -7,8 +7,6 @@
 
 #include <algorithm>
 
-#include "engine/run/row_sequence.hpp"
-
 namespace mdrsim {
 namespace {
 
@@ -54,9 +52,23 @@ ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroSc
 
 }  // namespace
 
-std::optional<ZoomedCritical> zoom_program_critical(const Scene& scene, const RunResult& coarse,
-                                                    const LastStageStart& start, double rtol) {
+/// The springs in contact at the row's state of `target`; 0 where it has none (or, for the
+/// peak, where it sits at the row's outermost spring: the path goes on outside a zoomed row).
+std::int64_t target_springs(const RunResult& row, Target target, bool zoomed) {
+  if (target == Target::critical) return row.critical ? row.critical->springs_in_contact : 0;
+  if (!row.peak || row.peak->springs_in_contact <= 1) return 0;
+  if (zoomed && row.peak->springs_in_contact >= row.springs) return 0;
+  return row.peak->springs_in_contact;
+}
+
+std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunResult& coarse,
+                                                 const LastStageStart& start, double rtol,
+                                                 Target target) {
   if (!start.zoomable || !coarse.critical || scene.solver.method != SolverMethod::event) {
+    return std::nullopt;
+  }
+  // The peak only where the last stage holds it: more tensile than anything before it.
+  if (target == Target::peak && !(coarse.peak && coarse.peak->normal_force < start.peak_before)) {
     return std::nullopt;
   }
   if (coarse.status != RunStatus::instability && coarse.status != RunStatus::shear_off) {
@@ -67,7 +79,7 @@ std::optional<ZoomedCritical> zoom_program_critical(const Scene& scene, const Ru
                                             scene.profile->mdr_image(coarse.accuracy.outer_radius));
   // One zoom from the full row (a second gains little on a program's folds, which sit at a
   // fair share of the largest radius).
-  const std::int64_t k = coarse.critical->springs_in_contact;
+  const std::int64_t k = target_springs(coarse, target, false);
   const std::int64_t top = stable_top(coarse, start, scene);
   if (k <= 0 || k > top) return std::nullopt;
   std::int64_t index = std::min(top, k + std::max<std::int64_t>(4, k / 8));
@@ -79,20 +91,22 @@ std::optional<ZoomedCritical> zoom_program_critical(const Scene& scene, const Ru
              static_cast<double>(coarse.springs);
     ZoomRow z = zoomed_row(scene, start, zero, radius, kZoomSprings);
     out.counts += z.row.counts;
-    const std::int64_t found = z.row.critical ? z.row.critical->springs_in_contact : 0;
+    const std::int64_t found = target_springs(z.row, target, true);
     spdlog::debug("program zoom: {} springs across {:.6g} m ({} -> {}): {} at spring {}",
                   kZoomSprings, radius, k, index, to_string(z.row.status), found);
-    if (!z.exact || z.row.status != coarse.status || found <= 0) return std::nullopt;
-    if (found < kZoomSprings) {
+    if (!z.exact || z.row.status != coarse.status) return std::nullopt;
+    if (target == Target::critical && found <= 0) return std::nullopt;
+    if (found > 0 && found < kZoomSprings) {
       first = std::move(z.row);
       break;
     }
-    // Its first let-go is its critical point: it was glued inside the jump.
+    // Its first let-go is its critical point (glued inside the jump), or its peak is at its
+    // outermost spring (the path's lies outside it).
     if (index == top) return std::nullopt;
     index = std::min(top, 2 * index);
   }
   if (!first) return std::nullopt;
-  RowSequence seq(Target::critical, {std::move(*first)});
+  RowSequence seq(target, {std::move(*first)});
   Accuracy::Route route = Accuracy::Route::richardson;
   for (;;) {
     if (!seq.usable()) return std::nullopt;
@@ -110,7 +124,9 @@ std::optional<ZoomedCritical> zoom_program_critical(const Scene& scene, const Ru
     if (seq.next_springs() > scene.discretization.max_row_springs) break;
     ZoomRow z = zoomed_row(scene, start, zero, radius, seq.next_springs());
     out.counts += z.row.counts;
-    if (!z.exact) return std::nullopt;
+    if (!z.exact || (target == Target::peak && target_springs(z.row, target, true) == 0)) {
+      return std::nullopt;
+    }
     seq.add(std::move(z.row));
   }
   const auto value = seq.value(route);

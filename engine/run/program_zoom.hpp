@@ -8,12 +8,13 @@
 #include <vector>
 
 #include "engine/run/program_runner.hpp"
+#include "engine/run/row_sequence.hpp"
 #include "engine/run/run_program.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {
 
-/// The critical point as the zoomed rows give it, with its estimate.
+/// The critical point (or the peak) as the zoomed rows give it, with its estimate.
 struct ZoomedCritical {
   ContactSnapshot value;
   double estimate;  ///< [N]
@@ -24,12 +25,14 @@ struct ZoomedCritical {
   RunCounts counts;                ///< every zoomed row's
 };
 
-/// Zooms from `coarse` (a full row with its LastStageStart) onto its critical point and
+/// Zooms from `coarse` (a full row with its LastStageStart) onto its critical point (or its
+/// peak adhesive force, where that lies in the last stage's final run of single let-gos) and
 /// refines there until rtol. nullopt where the zoom does not apply (docs/programs.md
-/// "Accuracy on programs"): the last stage not zoomable, no critical point, a zoom gaining
-/// less than 1.5x in spacing, a zoomed row that ends otherwise than the full row; the caller
-/// then resolves the critical point on full rows as before.
-std::optional<ZoomedCritical> zoom_program_critical(const Scene& scene, const RunResult& coarse,
-                                                    const LastStageStart& start, double rtol);
+/// "Accuracy on programs"): the last stage not zoomable, no such state, a zoom gaining less
+/// than 1.5x in spacing, a zoomed row that ends otherwise than the full row (or, for the peak,
+/// puts it at its own outermost spring); the caller then resolves the state on full rows.
+std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunResult& coarse,
+                                                 const LastStageStart& start, double rtol,
+                                                 Target target);
 
 }  // namespace mdrsim

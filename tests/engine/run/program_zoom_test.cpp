@@ -7,7 +7,8 @@
 // apart from the engine), and the shorthand's own zoom, whose rows a program of the same path
 // repeats spring for spring: the two critical forces agree to the two engines' own arithmetic of
 // the fold between springs (8e-12 and 1.2e-11 relative measured, held to 1e-10; before the zoom
-// they differed by 1.7e-8 at rtol 1e-6, each within its own estimate).
+// they differed by 1.7e-8 at rtol 1e-6, each within its own estimate). The peak adhesive force
+// likewise (the fixed-grips -F0 of eqs. 18-19, reached before the fold in the last stage).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,6 +59,12 @@ TEST(ProgramZoom, ThePaperPathAsAProgramGivesTheShorthandsCriticalPoint) {
           << c.control << " " << rtol;
       EXPECT_NEAR(p.critical->normal_force / (c.closed_form * f0), 1.0, std::stod(rtol))
           << c.control << " " << rtol;
+      // The peak adhesive force (fixed grips: -F0 on the JKR branch before the fold; fixed load:
+      // the critical point) from the same zoomed rows as the shorthand's.
+      ASSERT_TRUE(s.peak && p.peak) << c.control << " " << rtol;
+      EXPECT_NEAR(p.peak->normal_force / s.peak->normal_force, 1.0, 1e-10)
+          << c.control << " " << rtol;
+      EXPECT_NEAR(p.peak->normal_force / -f0, 1.0, std::stod(rtol)) << c.control << " " << rtol;
       ASSERT_TRUE(p.accuracy.critical_error_estimate.has_value());
       EXPECT_LE(*p.accuracy.critical_error_estimate,
                 std::stod(rtol) * std::abs(p.critical->normal_force));
