@@ -22,6 +22,7 @@
 #include "engine/run/program_front.hpp"
 #include "engine/run/program_losses.hpp"
 #include "engine/run/program_record.hpp"
+#include "engine/run/program_step.hpp"
 #include "engine/run/progress_log.hpp"
 #include "engine/run/stage_motion.hpp"
 
@@ -35,12 +36,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr std::int64_t kSweepsPerStage = 64;
 /// Stepping: the default increment of the stage parameter.
 constexpr double kDefaultStageStep = 1e-3;
-
-/// The next double above a stage parameter t >= 0: std::nextafter without the library call,
-/// which every step asks for.
-double next_parameter(double t) {
-  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(t) + 1);
-}
 
 /// Whether a state's numbers are all within a double (extreme scenes can leave it).
 bool finite(const ContactSnapshot& s) {
@@ -81,9 +76,18 @@ class ProgramRunner {
   void advance_to(double t);
   /// Adds the work from the given points (an axis not given did not move) to the present state.
   void add_work(const AxisPoint* normal_from, const AxisPoint* tangential_from);
-  std::optional<Change> due();
-  std::optional<std::pair<double, Change>> next_change(double t_end);
-  LetGo boundary_let_go(double u);
+  StepLine step_line() const { return {t_, normal_, tangential_, guards_, max_springs_, row_end_}; }
+  /// The locator's, with outgrowing the row as a stop.
+  std::optional<Change> due() {
+    bool outgrew = false;
+    const auto change = locator_.due(row_, step_line(), outgrew);
+    if (outgrew) stop_ = Stop::outgrew;
+    return change;
+  }
+  std::optional<std::pair<double, Change>> next_change(double t_end) {
+    return locator_.next_change(row_, step_line(), t_end);
+  }
+  LetGo boundary_let_go(double u) { return locator_.boundary_let_go(row_, u); }
   void apply(Change change, Cascade& cascade);
   /// The state a cascade starts from, observed as an equilibrium.
   Cascade begin_cascade();
@@ -145,31 +149,14 @@ class ProgramRunner {
   AxisMotion tangential_;
   ProgramRecord record_{result_};  ///< stages, jumps and work; its stage_work is the stage's
 
-  // Guards at the present t, so that nothing flips back at the same parameter value when a
-  // located change leaves its condition met only to rounding (or with equality, as the
-  // reversible front does).
-  struct SameParameterGuards {
-    std::int64_t glued_from = std::numeric_limits<std::int64_t>::max();    ///< do not let go
-    std::int64_t touched_from = std::numeric_limits<std::int64_t>::max();  ///< do not lift
-    std::int64_t released_to = 0;  ///< glue again only if let go with a tangential stretch
-    bool released_with_stretch = false;
-    std::int64_t lifted_to = 0;  ///< do not touch again
-  };
-  SameParameterGuards guards_;
+  SameParameterGuards guards_;  ///< program_step.hpp
   bool in_cascade_ = false;
 
-  struct LetGoCache {
-    std::int64_t spring;
-    double stretch_x;
-    LetGo go;
-  };
-  std::optional<LetGoCache> let_go_cache_;
+  ChangeLocator locator_{criterion_, result_.counts.root_iterations};
 
   // Path record.
   double largest_force_ = 0.0;
   std::optional<ContactSnapshot> peak_;
-  double inverse_of_ = 0.0;  ///< next_change: the d(d)/dt whose inverse is `inverse_`
-  double inverse_ = 0.0;
   ProgramLosses losses_;  ///< what finish decides the status by
   bool ever_in_contact_ = false;
   enum class Stop {
@@ -287,22 +274,6 @@ void ProgramRunner::emit(EventKind kind, const ContactSnapshot& state, std::int6
   }
 }
 
-LetGo ProgramRunner::boundary_let_go(double u) {
-  const double a = row_.position(row_.glued());
-  const double stretch_x = u - row_.boundary_offset();
-  // The same spring at the same tangential stretch lets go at the same elongation: a step
-  // asks twice (what is due, what comes next), and a retract at fixed u_x asks once per spring.
-  if (let_go_cache_ && let_go_cache_->spring == row_.glued() &&
-      let_go_cache_->stretch_x == stretch_x) {
-    return let_go_cache_->go;
-  }
-  const LetGo go = locate_let_go(criterion_, a, stretch_x, std::abs(stretch_x) + row_.spacing());
-  result_.counts.root_iterations += go.root_iterations;
-  require_let_go(go, a);
-  let_go_cache_ = {row_.glued(), stretch_x, go};
-  return go;
-}
-
 bool ProgramRunner::normal_cannot_hold() const {
   return !row_.normal_has_stiffness() && row_.in_contact() == 0 &&
          (row_.normal().held < 0.0 || (row_.normal().held == 0.0 && normal_.rate < 0.0));
@@ -319,131 +290,6 @@ JumpEnd ProgramRunner::flight_of(const Cascade& cascade) const {
   }
   if (cascade.glued > 0 && row_.glued() == 0 && tangential_cannot_hold()) return JumpEnd::sliding;
   return JumpEnd::state;
-}
-
-std::optional<Change> ProgramRunner::due() {
-  const std::int64_t k = row_.glued();
-  const std::int64_t m = row_.in_contact();
-  if (m == 0 && !row_.normal_has_stiffness() &&
-      (row_.normal().held > 0.0 || (row_.normal().held == 0.0 && normal_.rate > 0.0)) &&
-      row_.normal().rest < row_.image(1)) {
-    return Change::fall_in;  // a compressive load with nothing to hold it: the indenter falls in
-  }
-  const double d = row_.indentation();
-  if (k > 0 && k < guards_.glued_from) {
-    const LetGo go = boundary_let_go(row_.tangential_displacement());
-    if (go.kind == LetGo::Kind::now || row_.image(k) - d >= go.elongation) return Change::let_go;
-  }
-  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1) && k < row_end_;
-  if (front_glues) {
-    const double gap = row_.image(k + 1) - d;
-    const double limit = k == 0 ? 0.0 : row_.front_limit(k + 1);
-    const bool released_now = k + 1 <= guards_.released_to;
-    if (released_now ? guards_.released_with_stretch && gap < limit : gap <= limit) {
-      if (k + 1 > max_springs_) {
-        stop_ = Stop::outgrew;
-        return std::nullopt;
-      }
-      return Change::glue;
-    }
-  }
-  if (!(m == k && front_glues) && m < row_end_) {
-    const double gap = row_.image(m + 1) - d;
-    // An unglued spring carries no force where it touches or lifts, so nothing at this t
-    // can press it back: only rounding could.
-    if (m + 1 > guards_.lifted_to && gap <= 0.0) {
-      if (m + 1 > max_springs_) {
-        stop_ = Stop::outgrew;
-        return std::nullopt;
-      }
-      return Change::touch;
-    }
-  }
-  if (m > k && m < guards_.touched_from && row_.image(m) - d > 0.0) return Change::lift;
-  return std::nullopt;
-}
-
-std::optional<std::pair<double, Change>> ProgramRunner::next_change(double t_end) {
-  const std::int64_t k = row_.glued();
-  const std::int64_t m = row_.in_contact();
-  const double d = row_.indentation();
-  const double u = row_.tangential_displacement();
-  const double vd = normal_.rate != 0.0 ? row_.indentation_per_held() * normal_.rate : 0.0;
-  const double vu = tangential_.rate != 0.0 ? row_.tangential_per_held() * tangential_.rate : 0.0;
-  const double soonest = next_parameter(t_);
-  double best = t_end;
-  std::optional<Change> change;
-  const auto consider = [&](double t, Change c) {
-    t = std::max(t, soonest);
-    if (t < best || (t == best && !change)) {
-      best = t;
-      change = c;
-    }
-  };
-  // 1/vd changes only with the springs' response (never under fixed grips): a division per
-  // event is a good share of its time.
-  if (vd != inverse_of_) {
-    inverse_of_ = vd;
-    inverse_ = vd != 0.0 ? 1.0 / vd : 0.0;
-  }
-  const double per_indentation = inverse_;
-  const auto when_indentation = [&](double target) { return t_ + (target - d) * per_indentation; };
-
-  if (m == 0 && !row_.normal_has_stiffness() && normal_.rate > 0.0) {
-    consider(-normal_.start / normal_.rate, Change::fall_in);
-  }
-  const bool front_glues = row_.adhesive() && row_.can_glue(k + 1) && k < row_end_;
-  if (front_glues && vd > 0.0) {
-    consider(when_indentation(row_.image(k + 1) - (k == 0 ? 0.0 : row_.front_limit(k + 1))),
-             Change::glue);
-  }
-  if (!(m == k && front_glues) && vd > 0.0 && m < row_end_) {
-    consider(when_indentation(row_.image(m + 1)), Change::touch);
-  }
-  if (m > k && vd < 0.0) consider(when_indentation(row_.image(m)), Change::lift);
-  if (k > 0) {
-    if (vu == 0.0) {
-      // u_x stays: the spring lets go only as d falls to g - e*(u_x). (Broken at rest, it
-      // would be due already.)
-      if (vd < 0.0) {
-        const LetGo go = boundary_let_go(u);
-        if (go.kind == LetGo::Kind::now) {
-          consider(soonest, Change::let_go);
-        } else {
-          consider(when_indentation(row_.image(k) - go.elongation), Change::let_go);
-        }
-      }
-    } else {
-      // Both displacements move: root-find the margin along the line. The criterion's
-      // holding states are convex in (stretch, u_x) (its contract, criterion.hpp, sampled
-      // before the run), so the margin along a line is positive on one interval and one
-      // sign change brackets the first let-go.
-      const double a = row_.position(k);
-      const double g = row_.image(k);
-      const double s = row_.boundary_offset();
-      const auto margin = [&](double t) {
-        const double stretch = std::max(0.0, g - (d + vd * (t - t_)));
-        return criterion_.margin({stretch, u + vu * (t - t_) - s, a});
-      };
-      const double now = margin(t_);
-      if (now <= 0.0) {
-        consider(soonest, Change::let_go);
-      } else {
-        double hi = best;
-        if (!std::isfinite(hi)) {
-          hi = t_ + 1.0;
-          for (int i = 0; i < 1100 && margin(hi) > 0.0; ++i) hi = t_ + 2.0 * (hi - t_);
-        }
-        if (margin(hi) <= 0.0) {
-          const RootBracket b = bracket_root([&](double t) { return margin(t) / now; }, t_, hi);
-          result_.counts.root_iterations += b.iterations;
-          consider(b.hi, Change::let_go);
-        }
-      }
-    }
-  }
-  if (!change) return std::nullopt;
-  return std::make_pair(best, *change);
 }
 
 void ProgramRunner::apply(Change change, Cascade& cascade) {
@@ -660,7 +506,7 @@ void ProgramRunner::take_step(double t_end) {
       t_ = saved.t;
       guards_ = saved.guards;
       result_.counts = saved.counts;
-      let_go_cache_.reset();
+      locator_.forget();
       step *= 0.5;
       ++result_.counts.halvings;
       if (observers_.wants(EventKind::step_halved)) {

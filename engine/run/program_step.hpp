@@ -1,0 +1,227 @@
+// The step of a program row: what change is due at the present stage parameter, and where
+// along the stage's line the next one lies. The loop (program_runner.cpp) applies them.
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include "detachment/criterion.hpp"
+#include "engine/base/bracketed_root.hpp"
+#include "engine/methods/boundary_let_go.hpp"
+#include "engine/model/program_row.hpp"
+#include "engine/run/program_cascade.hpp"
+#include "engine/run/stage_motion.hpp"
+
+namespace mdrsim {
+
+/// The next double above a stage parameter t >= 0: std::nextafter without the library call,
+/// which every step asks for.
+inline double next_parameter(double t) {
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(t) + 1);
+}
+
+/// Guards at the present t, so that nothing flips back at the same parameter value when a
+/// located change leaves its condition met only to rounding (or with equality, as the
+/// reversible front does).
+struct SameParameterGuards {
+  std::int64_t glued_from = std::numeric_limits<std::int64_t>::max();    ///< do not let go
+  std::int64_t touched_from = std::numeric_limits<std::int64_t>::max();  ///< do not lift
+  std::int64_t released_to = 0;  ///< glue again only if let go with a tangential stretch
+  bool released_with_stretch = false;
+  std::int64_t lifted_to = 0;  ///< do not touch again
+};
+
+/// The stage's line at the present parameter t: each axis's held value start + rate t.
+struct StepLine {
+  double t;
+  const AxisMotion& normal;
+  const AxisMotion& tangential;
+  const SameParameterGuards& guards;
+  std::int64_t max_springs;  ///< the row ends here: a change beyond it outgrows the row
+  std::int64_t row_end;      ///< the last spring that exists (a zoomed row's N)
+};
+
+/// Locates the row's changes. Defined inline: the event loop calls it once per event, and a
+/// call across files cost the loop a tenth of its time.
+class ChangeLocator {
+ public:
+  /// `root_iterations` counts the criterion's root searches (RunCounts).
+  ChangeLocator(const DetachmentCriterion& criterion, std::int64_t& root_iterations)
+      : criterion_(criterion), root_iterations_(&root_iterations) {}
+
+  /// The change due at the present parameter; `outgrew` set (and nothing returned) where it
+  /// needs a spring beyond line.max_springs.
+  std::optional<Change> due(const ProgramRow& row, const StepLine& line, bool& outgrew);
+  /// The first change along the line before t_end, and its parameter.
+  std::optional<std::pair<double, Change>> next_change(const ProgramRow& row, const StepLine& line,
+                                                       double t_end);
+  /// Where the boundary spring lets go at tangential displacement u [m].
+  LetGo boundary_let_go(const ProgramRow& row, double u);
+  /// Stepping takes a trial step back: what was cached of it goes too.
+  void forget() { let_go_cache_.reset(); }
+
+ private:
+  const DetachmentCriterion& criterion_;
+  std::int64_t* root_iterations_;
+  struct LetGoCache {
+    std::int64_t spring;
+    double stretch_x;
+    LetGo go;
+  };
+  std::optional<LetGoCache> let_go_cache_;
+  double inverse_of_ = 0.0;  ///< next_change: the d(d)/dt whose inverse is `inverse_`
+  double inverse_ = 0.0;
+};
+
+inline LetGo ChangeLocator::boundary_let_go(const ProgramRow& row, double u) {
+  const double a = row.position(row.glued());
+  const double stretch_x = u - row.boundary_offset();
+  // The same spring at the same tangential stretch lets go at the same elongation: a step
+  // asks twice (what is due, what comes next), and a retract at fixed u_x asks once per spring.
+  if (let_go_cache_ && let_go_cache_->spring == row.glued() &&
+      let_go_cache_->stretch_x == stretch_x) {
+    return let_go_cache_->go;
+  }
+  const LetGo go = locate_let_go(criterion_, a, stretch_x, std::abs(stretch_x) + row.spacing());
+  *root_iterations_ += go.root_iterations;
+  require_let_go(go, a);
+  let_go_cache_ = {row.glued(), stretch_x, go};
+  return go;
+}
+
+inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const StepLine& line,
+                                                bool& outgrew) {
+  const std::int64_t k = row.glued();
+  const std::int64_t m = row.in_contact();
+  if (m == 0 && !row.normal_has_stiffness() &&
+      (row.normal().held > 0.0 || (row.normal().held == 0.0 && line.normal.rate > 0.0)) &&
+      row.normal().rest < row.image(1)) {
+    return Change::fall_in;  // a compressive load with nothing to hold it: the indenter falls in
+  }
+  const double d = row.indentation();
+  if (k > 0 && k < line.guards.glued_from) {
+    const LetGo go = boundary_let_go(row, row.tangential_displacement());
+    if (go.kind == LetGo::Kind::now || row.image(k) - d >= go.elongation) return Change::let_go;
+  }
+  const bool front_glues = row.adhesive() && row.can_glue(k + 1) && k < line.row_end;
+  if (front_glues) {
+    const double gap = row.image(k + 1) - d;
+    const double limit = k == 0 ? 0.0 : row.front_limit(k + 1);
+    const bool released_now = k + 1 <= line.guards.released_to;
+    if (released_now ? line.guards.released_with_stretch && gap < limit : gap <= limit) {
+      if (k + 1 > line.max_springs) {
+        outgrew = true;
+        return std::nullopt;
+      }
+      return Change::glue;
+    }
+  }
+  if (!(m == k && front_glues) && m < line.row_end) {
+    const double gap = row.image(m + 1) - d;
+    // An unglued spring carries no force where it touches or lifts, so nothing at this t
+    // can press it back: only rounding could.
+    if (m + 1 > line.guards.lifted_to && gap <= 0.0) {
+      if (m + 1 > line.max_springs) {
+        outgrew = true;
+        return std::nullopt;
+      }
+      return Change::touch;
+    }
+  }
+  if (m > k && m < line.guards.touched_from && row.image(m) - d > 0.0) return Change::lift;
+  return std::nullopt;
+}
+
+inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const ProgramRow& row,
+                                                                           const StepLine& line,
+                                                                           double t_end) {
+  const std::int64_t k = row.glued();
+  const std::int64_t m = row.in_contact();
+  const double d = row.indentation();
+  const double u = row.tangential_displacement();
+  const double vd = line.normal.rate != 0.0 ? row.indentation_per_held() * line.normal.rate : 0.0;
+  const double vu =
+      line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0;
+  const double soonest = next_parameter(line.t);
+  double best = t_end;
+  std::optional<Change> change;
+  const auto consider = [&](double t, Change c) {
+    t = std::max(t, soonest);
+    if (t < best || (t == best && !change)) {
+      best = t;
+      change = c;
+    }
+  };
+  // 1/vd changes only with the springs' response (never under fixed grips): a division per
+  // event is a good share of its time.
+  if (vd != inverse_of_) {
+    inverse_of_ = vd;
+    inverse_ = vd != 0.0 ? 1.0 / vd : 0.0;
+  }
+  const double per_indentation = inverse_;
+  const auto when_indentation = [&](double target) {
+    return line.t + (target - d) * per_indentation;
+  };
+
+  if (m == 0 && !row.normal_has_stiffness() && line.normal.rate > 0.0) {
+    consider(-line.normal.start / line.normal.rate, Change::fall_in);
+  }
+  const bool front_glues = row.adhesive() && row.can_glue(k + 1) && k < line.row_end;
+  if (front_glues && vd > 0.0) {
+    consider(when_indentation(row.image(k + 1) - (k == 0 ? 0.0 : row.front_limit(k + 1))),
+             Change::glue);
+  }
+  if (!(m == k && front_glues) && vd > 0.0 && m < line.row_end) {
+    consider(when_indentation(row.image(m + 1)), Change::touch);
+  }
+  if (m > k && vd < 0.0) consider(when_indentation(row.image(m)), Change::lift);
+  if (k > 0) {
+    if (vu == 0.0) {
+      // u_x stays: the spring lets go only as d falls to g - e*(u_x). (Broken at rest, it
+      // would be due already.)
+      if (vd < 0.0) {
+        const LetGo go = boundary_let_go(row, u);
+        if (go.kind == LetGo::Kind::now) {
+          consider(soonest, Change::let_go);
+        } else {
+          consider(when_indentation(row.image(k) - go.elongation), Change::let_go);
+        }
+      }
+    } else {
+      // Both displacements move: root-find the margin along the line. The criterion's
+      // holding states are convex in (stretch, u_x) (its contract, criterion.hpp, sampled
+      // before the run), so the margin along a line is positive on one interval and one
+      // sign change brackets the first let-go.
+      const double a = row.position(k);
+      const double g = row.image(k);
+      const double s = row.boundary_offset();
+      const auto margin = [&](double t) {
+        const double stretch = std::max(0.0, g - (d + vd * (t - line.t)));
+        return criterion_.margin({stretch, u + vu * (t - line.t) - s, a});
+      };
+      const double now = margin(line.t);
+      if (now <= 0.0) {
+        consider(soonest, Change::let_go);
+      } else {
+        double hi = best;
+        if (!std::isfinite(hi)) {
+          hi = line.t + 1.0;
+          for (int i = 0; i < 1100 && margin(hi) > 0.0; ++i) hi = line.t + 2.0 * (hi - line.t);
+        }
+        if (margin(hi) <= 0.0) {
+          const RootBracket b = bracket_root([&](double t) { return margin(t) / now; }, line.t, hi);
+          *root_iterations_ += b.iterations;
+          consider(b.hi, Change::let_go);
+        }
+      }
+    }
+  }
+  if (!change) return std::nullopt;
+  return std::make_pair(best, *change);
+}
+
+}  // namespace mdrsim
