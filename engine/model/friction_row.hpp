@@ -1,0 +1,92 @@
+// The springs in contact under Coulomb friction: their tangential force, slip events and frictional
+// work.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "engine/base/material.hpp"
+#include "engine/model/coulomb_spring.hpp"
+
+namespace mdrsim {
+
+/// What a glued spring does under tangential load (docs/friction.md).
+enum class GluedLaw {
+  unlimited,  ///< holds any stretch until the detachment criterion lets it go (the paper's model)
+  coulomb,    ///< slides, staying glued, where |f_x| > mu max(f_z, 0) + tau_0 dx
+};
+
+/// The scene's [friction] table.
+struct FrictionSettings {
+  double coefficient = 0.0;  ///< mu >= 0 [1]
+  GluedLaw glued = GluedLaw::unlimited;
+  double shear_strength = 0.0;  ///< tau_0 [Pa], with GluedLaw::coulomb
+};
+
+/// A friction event of one spring of the row.
+struct RowFrictionEvent {
+  std::int64_t spring;  ///< i, 1-based
+  FrictionEvent event;
+};
+
+/// Springs i = 1..m in contact at x_i = i dx (one half of the symmetric MDR foundation, as in
+/// ProgramRow: every force is twice the half-row's sum); springs 1..k are glued. Each spring
+/// carries its offset (f_x = G* dx (u_x - offset)) and whether it slides. A glued spring's
+/// offset is the u_x at which it glued; it keeps it when it lets go and when it glues again.
+/// Every query is a pass over the springs in contact, O(m).
+class FrictionRow {
+ public:
+  FrictionRow(const Material& material, const FrictionSettings& settings, double spacing);
+
+  std::int64_t in_contact() const { return static_cast<std::int64_t>(springs_.size()); }  ///< m
+  std::int64_t glued() const { return glued_; }                                           ///< k
+  double position(std::int64_t i) const { return spacing_ * static_cast<double>(i); }  ///< x_i [m]
+  const CoulombSpring& spring(std::int64_t i) const { return springs_[index(i)].state; }
+  SpringGeometry geometry(std::int64_t i) const;
+  /// The law of spring i; nullopt for a glued spring under GluedLaw::unlimited (it never slips).
+  std::optional<CoulombLaw> law(std::int64_t i) const;
+
+  /// Spring m+1, of image g [m], is pressed with no tangential stretch at u_x [m].
+  void touch(double image, double tangential);
+  /// Spring m (not glued) leaves the indenter and forgets its slip.
+  void lift_outer();
+  /// Spring k+1 (in contact, sticking) glues, keeping its present stretch.
+  void glue_next();
+  /// The boundary spring k lets go and stays pressed at (d, u_x): it keeps its stretch and
+  /// slips to its limit at once where the stretch exceeds it. Returns the dissipated work [J].
+  double let_go_boundary(double indentation, double tangential);
+
+  /// F_x = 2 sum over the springs in contact of f_x, glued ones included [N].
+  double tangential_force(double indentation, double tangential) const;
+  /// Springs i <= m sliding now (one half of the row, like ProgramRow's counts).
+  std::int64_t springs_sliding() const;
+  /// The radius inside which every spring in contact sticks: x_{j-1}, j the innermost
+  /// sliding spring; the contact radius x_m when none slides [m].
+  double stick_radius() const;
+
+  /// The first friction event of any spring along `motion` in [motion.start, end] (ties: the
+  /// innermost spring; apply it and ask again at the same t for the next of a cascade).
+  std::optional<RowFrictionEvent> next_event(const LinearMotion& motion, double end) const;
+  /// Moves every spring from motion.start to t with no event in between; returns the work
+  /// the slips dissipated on both halves (the step's dissipated_by_friction increment) [J].
+  double advance(const LinearMotion& motion, double t);
+  /// Applies an event found by next_event, after advance to its time.
+  void apply(const RowFrictionEvent& event);
+
+ private:
+  struct Spring {
+    CoulombSpring state;
+    double image;  ///< g(x_i) [m]
+  };
+  std::size_t index(std::int64_t i) const { return static_cast<std::size_t>(i - 1); }
+
+  FrictionSettings settings_;
+  double normal_stiffness_;      ///< E* dx [N/m]
+  double tangential_stiffness_;  ///< G* dx [N/m]
+  double spacing_;               ///< dx [m]
+  std::int64_t glued_ = 0;
+  std::vector<Spring> springs_;
+};
+
+}  // namespace mdrsim
