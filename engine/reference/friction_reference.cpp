@@ -15,7 +15,7 @@ namespace {
 template <class F>
 double integrate(F f, double from, double to) {
   if (to <= from) return 0.0;
-  return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, from, to, 15, 1e-14);
+  return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, from, to, 8, 1e-13);
 }
 
 /// 1 - u/u*, clamped to [0, 1].
@@ -126,9 +126,19 @@ double CattaneoMindlin::loop_energy(double amplitude) const {
 }
 
 double CattaneoMindlin::loop_energy_from_branches(double amplitude) const {
-  const double smooth_end = std::min(amplitude, full_slip_);
-  const double area = integrate([&](double u) { return loading_force(u); }, 0.0, smooth_end) +
-                      (amplitude - smooth_end) * coefficient_ * normal_force_;
+  // int_0^u_m L(v) dv with L(v) = 2 int_0^a min(G* v, l(x)) dx, integrated over v first: a
+  // spring of limit l contributes G* u_m^2/2 while it sticks (l >= G* u_m), else
+  // l^2/(2 G*) + l (u_m - l/G*).
+  const double c = stick_radius(amplitude);
+  const double g = effective_shear_modulus_;
+  const double mu_e = coefficient_ * effective_modulus_;
+  const double sliding = integrate(
+      [&](double x) {
+        const double limit = mu_e * (indentation_ - profile_->mdr_image(x));
+        return limit * limit / (2.0 * g) + limit * (amplitude - limit / g);
+      },
+      c, contact_radius_);
+  const double area = 2.0 * (c * g * amplitude * amplitude / 2.0 + sliding);
   return 8.0 * area - 4.0 * amplitude * loading_force(amplitude);
 }
 

@@ -81,7 +81,7 @@ class CattaneoMindlin {
   double reloading_force(double amplitude, double displacement) const;
   /// W spring by spring, 8 mu E* int_0^a (d - g) (u_m - mu E* (d - g)/G*)^+ dx [J].
   double loop_energy(double amplitude) const;
-  /// W from the branches, 8 int_0^u_m L - 4 u_m L(u_m) [J].
+  /// W from the branches, 8 int_0^u_m L - 4 u_m L(u_m), the first integral taken over u first [J].
   double loop_energy_from_branches(double amplitude) const;
 
  private:
