@@ -46,10 +46,10 @@ struct CoulombSpring {
   std::int8_t sliding = 0;  ///< 0: sticks; +1 / -1: slides along +x / -x, f_x = +limit / -limit
 };
 
-/// SPEC's event kinds: `slip` (a sticking spring reaches its limit and starts to slide) and
-/// `stick` (a sliding spring's slip would reverse: it sticks again, keeping its offset). A
-/// `limit_kink` is no event of the trajectory: a sliding glued `coulomb` spring whose f_z
-/// changes sign, where its limit, and so the row's tangential response, changes slope.
+/// The trajectory's event kinds (docs/friction.md): `slip` (a sticking spring reaches its limit and
+/// starts to slide) and `stick` (a sliding spring's slip would reverse: it sticks again, keeping
+/// its offset). A `limit_kink` is no event of the trajectory: a sliding glued `coulomb` spring
+/// whose f_z changes sign, where its limit, and so the row's tangential response, changes slope.
 enum class FrictionEventKind { slip, stick, limit_kink };
 
 struct FrictionEvent {
