@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "engine/reference/friction_reference.hpp"
@@ -252,6 +253,145 @@ TEST(FrictionRow, ASpringWhoseGlueLetsGoSlipsToItsLimit) {
   EXPECT_EQ(row.springs_sliding(), 1);
   EXPECT_EQ(row.stick_radius(), 0.0);
   EXPECT_DOUBLE_EQ(row.tangential_force(kD, u), 2.0 * limit);
+}
+
+/// The row spring by spring: every query a pass over the springs with the one-spring law, the
+/// events the earliest of each spring's own (the law's tests fix those by hand).
+struct SpringBySpringRow {
+  mdrsim::FrictionSettings settings;
+  double dx;
+  std::vector<mdrsim::CoulombSpring> states;
+  std::vector<double> images;
+  std::int64_t glued = 0;
+
+  mdrsim::SpringGeometry geometry(std::size_t i) const {
+    return {kModulus * dx, kShearModulus * dx, images[i]};
+  }
+  std::optional<mdrsim::CoulombLaw> law(std::size_t i) const {
+    if (static_cast<std::int64_t>(i) >= glued) return mdrsim::CoulombLaw{settings.coefficient};
+    if (settings.glued == mdrsim::GluedLaw::unlimited) return std::nullopt;
+    return mdrsim::CoulombLaw{settings.coefficient, settings.shear_strength * dx};
+  }
+  double tangential_force(double d, double u) const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      const auto l = law(i);
+      sum += l ? mdrsim::spring_tangential_force(states[i], *l, geometry(i), d, u)
+               : kShearModulus * dx * (u - states[i].offset);
+    }
+    return 2.0 * sum;
+  }
+  double drive(LinearMotion motion, double end, std::int64_t& events) {
+    double dissipated = 0.0;
+    while (true) {
+      std::optional<mdrsim::FrictionEvent> first;
+      std::size_t which = 0;
+      for (std::size_t i = 0; i < states.size(); ++i) {
+        const auto l = law(i);
+        if (!l) continue;
+        const auto e = mdrsim::next_friction_event(states[i], *l, geometry(i), motion, end);
+        if (e && (!first || e->at < first->at)) {
+          first = e;
+          which = i;
+        }
+      }
+      const double t = first ? first->at : end;
+      for (std::size_t i = 0; i < states.size(); ++i)
+        if (const auto l = law(i))
+          dissipated += 2.0 * mdrsim::advance_spring(states[i], *l, geometry(i), motion, t);
+      motion = motion.from(t);
+      if (!first) return dissipated;
+      mdrsim::apply_friction_event(states[which], *first);
+      ++events;
+    }
+  }
+};
+
+TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
+  // One path through every change of the row: springs touch, glue, let go (slipping to their
+  // limit), lift; the indenter shears back and forth while it presses and unloads. The row's
+  // keys and sums must give what each spring's own law gives, event for event, to rounding.
+  for (const auto glued_law : {mdrsim::GluedLaw::unlimited, mdrsim::GluedLaw::coulomb}) {
+    const mdrsim::FrictionSettings settings{kMu, glued_law, 0.1 * kMu * kModulus * kD};
+    const std::int64_t n = 50;
+    const double dx = kA / static_cast<double>(n);
+    const mdrsim::ParabolicProfile profile(kRadius);
+    FrictionRow row(kMaterial, settings, dx);
+    SpringBySpringRow oracle{settings, dx, {}, {}, 0};
+    const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
+    double d = 0.8 * kD;
+    double u = 0.0;
+    const auto touch_pressed = [&] {
+      while (row.in_contact() < n && profile.mdr_image(row.position(row.in_contact() + 1)) < d) {
+        const double g = profile.mdr_image(row.position(row.in_contact() + 1));
+        row.touch(g, u);
+        oracle.states.push_back({u, 0});
+        oracle.images.push_back(g);
+      }
+    };
+    const auto lift_unpressed = [&](double d_next) {
+      while (row.in_contact() > row.glued() && oracle.images.back() >= d_next) {
+        row.lift_outer();
+        oracle.states.pop_back();
+        oracle.images.pop_back();
+      }
+    };
+    touch_pressed();
+    for (int k = 0; k < 12; ++k) {
+      row.glue_next();
+      ++oracle.glued;
+    }
+    struct Leg {
+      double d;
+      double u;
+      int let_go;  ///< boundary springs that let go before the leg
+    };
+    const std::vector<Leg> legs{{0.8 * kD, 0.6 * us, 0},   {0.9 * kD, -0.4 * us, 3},
+                                {0.7 * kD, 0.3 * us, 2},   {1.0 * kD, 0.9 * us, 0},
+                                {0.75 * kD, -0.8 * us, 4}, {0.75 * kD, 0.1 * us, 0}};
+    double dissipated_row = 0.0;
+    double dissipated_oracle = 0.0;
+    std::int64_t events_row = 0;
+    std::int64_t events_oracle = 0;
+    double work = 0.0;
+    for (const Leg& leg : legs) {
+      for (int k = 0; k < leg.let_go; ++k) {
+        const std::size_t b = static_cast<std::size_t>(oracle.glued - 1);
+        --oracle.glued;
+        // The spring slides at its glued limit or sticks: as an unglued spring it starts stuck.
+        oracle.states[b].sliding = 0;
+        dissipated_oracle +=
+            2.0 * mdrsim::slip_to_limit(oracle.states[b], *oracle.law(b), oracle.geometry(b), d, u);
+        dissipated_row += row.let_go_boundary(d, u);
+      }
+      lift_unpressed(leg.d);
+      const LinearMotion motion{0.0, d, u, leg.d - d, leg.u - u};
+      dissipated_row += drive(row, motion, 1.0, work, &events_row);
+      dissipated_oracle += oracle.drive(motion, 1.0, events_oracle);
+      d = leg.d;
+      u = leg.u;
+      touch_pressed();
+      const double scale = 2.0 * kMu * kModulus * kD * kA;  // of F_x
+      EXPECT_NEAR(row.tangential_force(d, u), oracle.tangential_force(d, u), 1e-12 * scale);
+      EXPECT_NEAR(dissipated_row, dissipated_oracle, 1e-12 * scale * us);
+      std::int64_t sliding = 0;
+      std::int64_t first_sliding = 0;
+      for (std::int64_t i = 1; i <= row.in_contact(); ++i) {
+        const auto& expected = oracle.states[static_cast<std::size_t>(i - 1)];
+        EXPECT_EQ(row.spring(i).sliding, expected.sliding) << i;
+        EXPECT_NEAR(row.spring(i).offset, expected.offset, 1e-12 * us) << i;
+        if (expected.sliding != 0) {
+          ++sliding;
+          if (first_sliding == 0) first_sliding = i;
+        }
+      }
+      EXPECT_EQ(row.springs_sliding(), sliding);
+      EXPECT_EQ(row.stick_radius(),
+                row.position(first_sliding == 0 ? row.in_contact() : first_sliding - 1));
+    }
+    EXPECT_EQ(events_row, events_oracle);
+    EXPECT_GT(events_row, 2 * n);
+  }
 }
 
 }  // namespace
