@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 namespace mdrsim {
@@ -38,13 +39,28 @@ double FrictionRow::limit_sum(std::size_t s, double indentation) const {
          (count * indentation - slider_images_[s].value());
 }
 
+namespace {
+
+/// Springs touch and stick in runs whose keys rise or fall with i: inserted next to the
+/// previous key, such a run costs O(1) per spring instead of O(log m).
+using KeySet = std::set<std::pair<double, std::int64_t>>;
+KeySet::iterator insert_near(KeySet& set, const std::optional<KeySet::iterator>& previous,
+                             const KeySet::value_type& value) {
+  if (!previous) return set.insert(value).first;
+  return set.insert(value < **previous ? *previous : std::next(*previous), value);
+}
+
+}  // namespace
+
 void FrictionRow::add_sticking(std::int64_t i, bool keyed) {
   const Spring& s = springs_[index(i)];
   ++sticking_;
   sticking_offsets_.add(s.state.offset);
   if (!keyed) return;
-  forward_keys_.insert({s.state.offset - ratio_ * s.image, i});
-  backward_keys_.insert({s.state.offset + ratio_ * s.image, i});
+  forward_hint_.at =
+      insert_near(forward_keys_, forward_hint_.at, {s.state.offset - ratio_ * s.image, i});
+  backward_hint_.at =
+      insert_near(backward_keys_, backward_hint_.at, {s.state.offset + ratio_ * s.image, i});
 }
 
 void FrictionRow::remove_sticking(std::int64_t i, bool keyed) {
@@ -53,8 +69,12 @@ void FrictionRow::remove_sticking(std::int64_t i, bool keyed) {
   sticking_offsets_.add(-s.state.offset);
   if (!keyed) return;
   // The keys are computed as add_sticking computed them: the same bits.
-  forward_keys_.erase({s.state.offset - ratio_ * s.image, i});
-  backward_keys_.erase({s.state.offset + ratio_ * s.image, i});
+  const Key forward{s.state.offset - ratio_ * s.image, i};
+  const Key backward{s.state.offset + ratio_ * s.image, i};
+  if (forward_hint_.at && **forward_hint_.at == forward) forward_hint_.at.reset();
+  if (backward_hint_.at && **backward_hint_.at == backward) backward_hint_.at.reset();
+  forward_keys_.erase(forward);
+  backward_keys_.erase(backward);
 }
 
 void FrictionRow::add_sliding(std::int64_t i) {

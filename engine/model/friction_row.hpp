@@ -117,6 +117,19 @@ class FrictionRow {
   CompensatedSum sticking_offsets_;  ///< their offsets [m]
   std::set<Key> forward_keys_;       ///< o_i - r g_i of the sticking springs not glued
   std::set<Key> backward_keys_;      ///< o_i + r g_i of the same
+  /// The key inserted last (none once erased): where the next of a run goes. A copied or moved
+  /// row starts without, its iterator pointing into the other row's set.
+  struct KeyHint {
+    std::optional<std::set<Key>::iterator> at;
+    KeyHint() = default;
+    KeyHint(const KeyHint&) {}
+    KeyHint& operator=(const KeyHint&) {
+      at.reset();
+      return *this;
+    }
+  };
+  KeyHint forward_hint_;
+  KeyHint backward_hint_;
   std::array<std::set<std::int64_t>, 2> sliders_;  ///< not glued, sliding along +x, -x
   std::array<CompensatedSum, 2> slider_images_;    ///< their sums of g_i [m]
   std::int64_t glued_sliding_ = 0;                 ///< glued `coulomb` springs sliding

@@ -255,6 +255,24 @@ TEST(FrictionRow, ASpringWhoseGlueLetsGoSlipsToItsLimit) {
   EXPECT_DOUBLE_EQ(row.tangential_force(kD, u), 2.0 * limit);
 }
 
+TEST(FrictionRow, ACopyGoesOnLikeTheOriginal) {
+  // The row keeps iterators into its own ordered keys as insertion hints: a copy must not use
+  // the original's. Both go on along the same path and must agree exactly.
+  const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
+  FrictionRow original = pressed_row(100);
+  double work = 0.0;
+  drive(original, shear(0.0, 0.5 * us), 1.0, work);
+  FrictionRow copy = original;
+  for (FrictionRow* row : {&original, &copy}) {
+    drive(*row, shear(0.5 * us, -0.3 * us), 1.0, work);
+    row->touch(kD, -0.3 * us);
+    drive(*row, shear(-0.3 * us, 0.2 * us), 1.0, work);
+  }
+  EXPECT_EQ(copy.tangential_force(kD, 0.2 * us), original.tangential_force(kD, 0.2 * us));
+  EXPECT_EQ(copy.springs_sliding(), original.springs_sliding());
+  EXPECT_GT(original.springs_sliding(), 0);
+}
+
 /// The row spring by spring: every query a pass over the springs with the one-spring law, the
 /// events the earliest of each spring's own (the law's tests fix those by hand).
 struct SpringBySpringRow {
