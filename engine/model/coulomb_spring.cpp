@@ -1,5 +1,4 @@
-// One spring's tangential state under Coulomb friction: stick, slip and their events along a linear
-// motion.
+// One spring under Coulomb friction: stick, slip and their events along a linear motion.
 #include "engine/model/coulomb_spring.hpp"
 
 #include <algorithm>

@@ -1,5 +1,4 @@
-// One spring's tangential state under Coulomb friction: stick, slip and their events along a linear
-// motion.
+// One spring under Coulomb friction: stick, slip and their events along a linear motion.
 #pragma once
 
 #include <cstdint>

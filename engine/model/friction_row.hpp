@@ -1,5 +1,4 @@
-// The springs in contact under Coulomb friction: their tangential force, slip events and frictional
-// work.
+// The springs in contact under Coulomb friction: tangential force, slip events, frictional work.
 #pragma once
 
 #include <array>

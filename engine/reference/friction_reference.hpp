@@ -1,5 +1,4 @@
-// Coulomb friction in the MDR, derived apart from the engine: Cattaneo-Mindlin,
-// Mindlin-Deresiewicz, a brute-force row.
+// Coulomb friction in the MDR apart from the engine: Cattaneo-Mindlin, Mindlin-Deresiewicz.
 #pragma once
 
 #include <cstdint>

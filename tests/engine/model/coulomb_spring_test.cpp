@@ -1,5 +1,4 @@
-// One spring under Coulomb friction: event times, the slide that follows the limit, the glued
-// variant.
+// One spring under Coulomb friction: event times, the slide following the limit, glued coulomb.
 #include "engine/model/coulomb_spring.hpp"
 
 #include <gtest/gtest.h>

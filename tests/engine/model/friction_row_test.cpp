@@ -1,5 +1,4 @@
-// The friction row against Cattaneo-Mindlin, Mindlin-Deresiewicz and a brute-force row, at stated
-// spring counts.
+// The friction row against Cattaneo-Mindlin, Mindlin-Deresiewicz, a brute-force row, its law.
 #include "engine/model/friction_row.hpp"
 
 #include <gtest/gtest.h>

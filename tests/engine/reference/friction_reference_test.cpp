@@ -1,5 +1,4 @@
-// The friction references agree with each other: closed forms, quadrature through g, the loop
-// energy three ways.
+// The friction references agree: closed forms, quadrature through g, the loop energy 3 ways.
 #include "engine/reference/friction_reference.hpp"
 
 #include <gtest/gtest.h>
