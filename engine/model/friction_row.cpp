@@ -160,6 +160,23 @@ double FrictionRow::tangential_force(double indentation, double tangential) cons
   return 2.0 * sum;
 }
 
+double FrictionRow::tangential_stiffness() const {
+  return 2.0 * tangential_stiffness_ * static_cast<double>(sticking_);
+}
+
+double FrictionRow::tangential_force_per_indentation(double indentation) const {
+  const double per_spring = settings_.coefficient * normal_stiffness_;
+  double slope = per_spring * static_cast<double>(static_cast<std::int64_t>(sliders_[0].size()) -
+                                                  static_cast<std::int64_t>(sliders_[1].size()));
+  if (glued_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= glued_; ++i) {
+      const Spring& s = springs_[index(i)];
+      if (s.state.sliding != 0 && indentation > s.image) slope += s.state.sliding * per_spring;
+    }
+  }
+  return 2.0 * slope;
+}
+
 std::int64_t FrictionRow::springs_sliding() const {
   return static_cast<std::int64_t>(sliders_[0].size() + sliders_[1].size()) + glued_sliding_;
 }

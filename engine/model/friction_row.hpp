@@ -72,6 +72,11 @@ class FrictionRow {
 
   /// F_x = 2 sum over the springs in contact of f_x, glued ones included [N].
   double tangential_force(double indentation, double tangential) const;
+  /// dF_x/du_x and dF_x/dd while no spring changes (F_x is affine in both): 2 G* dx per
+  /// sticking spring, and 2 mu E* dx per pressed spring sliding along +x, minus along -x: the
+  /// tangential equilibrium's coefficients under any control [N/m].
+  double tangential_stiffness() const;
+  double tangential_force_per_indentation(double indentation) const;
   /// Springs i <= m sliding now (one half of the row, like ProgramRow's counts).
   std::int64_t springs_sliding() const;
   /// The radius inside which every spring in contact sticks: x_{j-1}, j the innermost

@@ -272,6 +272,30 @@ TEST(FrictionRow, ACopyGoesOnLikeTheOriginal) {
   EXPECT_GT(original.springs_sliding(), 0);
 }
 
+TEST(FrictionRow, ItsSlopesAreThoseOfItsForce) {
+  // Halfway up the Cattaneo-Mindlin curve: F_x is affine in u and d while no spring changes, so
+  // a difference quotient over a step too small for any event equals the slopes to rounding.
+  // The springs sliding along +x carry mu E* dx (d - g_i) each: 2 mu E* dx per spring per d.
+  const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
+  FrictionRow row = pressed_row(200);
+  double work = 0.0;
+  drive(row, shear(0.0, 0.5 * us), 1.0, work);
+  const double dx = kA / 200.0;
+  const double sliding = static_cast<double>(row.springs_sliding());
+  const double sticking = 200.0 - sliding;
+  EXPECT_DOUBLE_EQ(row.tangential_stiffness(), 2.0 * sticking * kShearModulus * dx);
+  EXPECT_DOUBLE_EQ(row.tangential_force_per_indentation(kD), 2.0 * sliding * kMu * kModulus * dx);
+  const double h = 1e-6 * us;
+  const double du =
+      (row.tangential_force(kD, 0.5 * us + h) - row.tangential_force(kD, 0.5 * us)) / h;
+  const double dd =
+      (row.tangential_force(kD + h, 0.5 * us) - row.tangential_force(kD, 0.5 * us)) / h;
+  // Rounding of F_x ~ 1e-16 F_x over h: 1e-16 x 2 mu E* d a / (1e-6 u*), some 1e-8 relative.
+  EXPECT_NEAR(du, row.tangential_stiffness(), 1e-6 * row.tangential_stiffness());
+  EXPECT_NEAR(dd, row.tangential_force_per_indentation(kD),
+              1e-6 * row.tangential_force_per_indentation(kD));
+}
+
 /// The row spring by spring: every query a pass over the springs with the one-spring law, the
 /// events the earliest of each spring's own (the law's tests fix those by hand).
 struct SpringBySpringRow {
