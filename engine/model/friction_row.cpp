@@ -1,0 +1,287 @@
+// The springs in contact under Coulomb friction: tangential force, slip events, frictional work.
+#include "engine/model/friction_row.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <stdexcept>
+
+namespace mdrsim {
+
+FrictionRow::FrictionRow(const Material& material, const FrictionSettings& settings, double spacing)
+    : settings_(settings),
+      normal_stiffness_(material.effective_modulus * spacing),
+      tangential_stiffness_(material.effective_shear_modulus * spacing),
+      ratio_(settings.coefficient * material.effective_modulus / material.effective_shear_modulus),
+      spacing_(spacing) {}
+
+SpringGeometry FrictionRow::geometry(std::int64_t i) const {
+  return {normal_stiffness_, tangential_stiffness_, springs_[index(i)].image};
+}
+
+std::optional<CoulombLaw> FrictionRow::law(std::int64_t i) const {
+  if (i > glued_) return CoulombLaw{settings_.coefficient, 0.0};
+  if (settings_.glued == GluedLaw::unlimited) return std::nullopt;
+  return CoulombLaw{settings_.coefficient, settings_.shear_strength * spacing_};
+}
+
+CoulombSpring FrictionRow::spring(std::int64_t i) const {
+  CoulombSpring state = springs_[index(i)].state;
+  if (i > glued_ && state.sliding != 0)
+    state.offset = tangential_ - state.sliding * ratio_ * (indentation_ - springs_[index(i)].image);
+  return state;
+}
+
+double FrictionRow::limit_sum(std::size_t s, double indentation) const {
+  const auto count = static_cast<double>(sliders_[s].size());
+  return settings_.coefficient * normal_stiffness_ *
+         (count * indentation - slider_images_[s].value());
+}
+
+namespace {
+
+/// Springs touch and stick in runs whose keys rise or fall with i: inserted next to the
+/// previous key, such a run costs O(1) per spring instead of O(log m).
+using KeySet = std::set<std::pair<double, std::int64_t>>;
+KeySet::iterator insert_near(KeySet& set, const std::optional<KeySet::iterator>& previous,
+                             const KeySet::value_type& value) {
+  if (!previous) return set.insert(value).first;
+  return set.insert(value < **previous ? *previous : std::next(*previous), value);
+}
+
+}  // namespace
+
+void FrictionRow::add_sticking(std::int64_t i, bool keyed) {
+  const Spring& s = springs_[index(i)];
+  ++sticking_;
+  sticking_offsets_.add(s.state.offset);
+  if (!keyed) return;
+  forward_hint_.at =
+      insert_near(forward_keys_, forward_hint_.at, {s.state.offset - ratio_ * s.image, i});
+  backward_hint_.at =
+      insert_near(backward_keys_, backward_hint_.at, {s.state.offset + ratio_ * s.image, i});
+}
+
+void FrictionRow::remove_sticking(std::int64_t i, bool keyed) {
+  const Spring& s = springs_[index(i)];
+  --sticking_;
+  sticking_offsets_.add(-s.state.offset);
+  if (!keyed) return;
+  // The keys are computed as add_sticking computed them: the same bits.
+  const Key forward{s.state.offset - ratio_ * s.image, i};
+  const Key backward{s.state.offset + ratio_ * s.image, i};
+  if (forward_hint_.at && **forward_hint_.at == forward) forward_hint_.at.reset();
+  if (backward_hint_.at && **backward_hint_.at == backward) backward_hint_.at.reset();
+  forward_keys_.erase(forward);
+  backward_keys_.erase(backward);
+}
+
+void FrictionRow::add_sliding(std::int64_t i) {
+  const Spring& s = springs_[index(i)];
+  sliders_[side(s.state.sliding)].insert(i);
+  slider_images_[side(s.state.sliding)].add(s.image);
+}
+
+void FrictionRow::remove_sliding(std::int64_t i) {
+  const Spring& s = springs_[index(i)];
+  sliders_[side(s.state.sliding)].erase(i);
+  slider_images_[side(s.state.sliding)].add(-s.image);
+}
+
+std::int64_t FrictionRow::first_glued_sliding() const {
+  if (glued_sliding_ == 0) return 0;
+  for (std::int64_t i = 1; i <= glued_; ++i)
+    if (springs_[index(i)].state.sliding != 0) return i;
+  return 0;
+}
+
+void FrictionRow::touch(double image, double tangential) {
+  springs_.push_back({CoulombSpring{tangential, 0}, image});
+  add_sticking(in_contact(), true);
+}
+
+void FrictionRow::lift_outer() {
+  const std::int64_t i = in_contact();
+  if (i <= glued_) throw std::logic_error("FrictionRow::lift_outer: spring m is glued");
+  if (springs_[index(i)].state.sliding != 0) {
+    remove_sliding(i);
+  } else {
+    remove_sticking(i, true);
+  }
+  springs_.pop_back();
+}
+
+void FrictionRow::glue_next() {
+  if (glued_ >= in_contact()) throw std::logic_error("FrictionRow::glue_next: no spring k+1");
+  // A sliding spring glues only once it sticks (docs/friction.md).
+  const std::int64_t i = glued_ + 1;
+  if (springs_[index(i)].state.sliding != 0)
+    throw std::logic_error("FrictionRow::glue_next: spring k+1 slides");
+  remove_sticking(i, true);
+  ++glued_;
+  add_sticking(i, false);
+}
+
+double FrictionRow::let_go_boundary(double indentation, double tangential) {
+  if (glued_ == 0) throw std::logic_error("FrictionRow::let_go_boundary: nothing glued");
+  indentation_ = indentation;
+  tangential_ = tangential;
+  const std::int64_t i = glued_;
+  Spring& s = springs_[index(i)];
+  // A glued coulomb spring sliding at its glued limit sticks for the moment: its offset is
+  // up to date (the glued springs are advanced spring by spring).
+  if (s.state.sliding != 0) {
+    --glued_sliding_;
+    s.state.sliding = 0;
+  } else {
+    remove_sticking(i, false);
+  }
+  --glued_;
+  const double dissipated = slip_to_limit(s.state, *law(i), geometry(i), indentation, tangential);
+  if (s.state.sliding != 0) {
+    add_sliding(i);
+  } else {
+    add_sticking(i, true);
+  }
+  return 2.0 * dissipated;
+}
+
+double FrictionRow::tangential_force(double indentation, double tangential) const {
+  double sum = tangential_stiffness_ *
+               (static_cast<double>(sticking_) * tangential - sticking_offsets_.value());
+  sum += limit_sum(0, indentation) - limit_sum(1, indentation);
+  if (glued_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= glued_; ++i) {
+      const CoulombSpring& state = springs_[index(i)].state;
+      if (state.sliding != 0)
+        sum += spring_tangential_force(state, *law(i), geometry(i), indentation, tangential);
+    }
+  }
+  return 2.0 * sum;
+}
+
+double FrictionRow::tangential_stiffness() const {
+  return 2.0 * tangential_stiffness_ * static_cast<double>(sticking_);
+}
+
+double FrictionRow::tangential_force_per_indentation(double indentation) const {
+  const double per_spring = settings_.coefficient * normal_stiffness_;
+  double slope = per_spring * static_cast<double>(static_cast<std::int64_t>(sliders_[0].size()) -
+                                                  static_cast<std::int64_t>(sliders_[1].size()));
+  if (glued_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= glued_; ++i) {
+      const Spring& s = springs_[index(i)];
+      if (s.state.sliding != 0 && indentation > s.image) slope += s.state.sliding * per_spring;
+    }
+  }
+  return 2.0 * slope;
+}
+
+std::int64_t FrictionRow::springs_sliding() const {
+  return static_cast<std::int64_t>(sliders_[0].size() + sliders_[1].size()) + glued_sliding_;
+}
+
+double FrictionRow::stick_radius() const {
+  std::int64_t first = first_glued_sliding();
+  for (const auto& side : sliders_)
+    if (!side.empty() && (first == 0 || *side.begin() < first)) first = *side.begin();
+  return first == 0 ? position(in_contact()) : position(first - 1);
+}
+
+std::optional<RowFrictionEvent> FrictionRow::next_event(const LinearMotion& motion,
+                                                        double end) const {
+  std::optional<RowFrictionEvent> first;
+  const auto consider = [&](std::int64_t i, const FrictionEvent& event) {
+    if (event.at > end) return;
+    if (!first || event.at < first->event.at || (event.at == first->event.at && i < first->spring))
+      first = RowFrictionEvent{i, event};
+  };
+  if (settings_.glued == GluedLaw::coulomb) {
+    for (std::int64_t i = 1; i <= glued_; ++i) {
+      const auto event =
+          next_friction_event(springs_[index(i)].state, *law(i), geometry(i), motion, end);
+      if (event) consider(i, *event);
+    }
+  }
+  const double t0 = motion.start;
+  const double forward_rate = motion.tangential_rate - ratio_ * motion.indentation_rate;
+  const double backward_rate = motion.tangential_rate + ratio_ * motion.indentation_rate;
+  // Sliders stick at once where their common slip velocity reverses.
+  if (!sliders_[0].empty() && forward_rate < 0.0)
+    consider(*sliders_[0].begin(), {FrictionEventKind::stick, t0, 1});
+  if (!sliders_[1].empty() && backward_rate > 0.0)
+    consider(*sliders_[1].begin(), {FrictionEventKind::stick, t0, -1});
+  // A sticking spring slips where p+ rises to its key (p- falls to it); on its limit already
+  // (rounding, or a spring just stuck) it slips at once if the motion goes that way.
+  if (!forward_keys_.empty() && forward_rate > 0.0) {
+    const Key& key = *forward_keys_.begin();
+    const double p = motion.tangential - ratio_ * motion.indentation;
+    consider(key.second,
+             {FrictionEventKind::slip, t0 + std::max(key.first - p, 0.0) / forward_rate, 1});
+  }
+  if (!backward_keys_.empty() && backward_rate < 0.0) {
+    const Key& key = *backward_keys_.rbegin();
+    const double p = motion.tangential + ratio_ * motion.indentation;
+    consider(key.second,
+             {FrictionEventKind::slip, t0 + std::max(p - key.first, 0.0) / (-backward_rate), -1});
+  }
+  return first;
+}
+
+double FrictionRow::advance(const LinearMotion& motion, double t) {
+  double dissipated = 0.0;
+  if (glued_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= glued_; ++i) {
+      Spring& s = springs_[index(i)];
+      if (s.state.sliding != 0)
+        dissipated += advance_spring(s.state, *law(i), geometry(i), motion, t);
+    }
+  }
+  if (t > motion.start) {
+    const double d1 = motion.indentation_at(t);
+    const double span = t - motion.start;
+    // Each slider of a side slips by the same |p(t) - p(t0)|; its limit is linear in t.
+    for (std::size_t s = 0; s < 2; ++s) {
+      if (sliders_[s].empty()) continue;
+      const double direction = s == 0 ? 1.0 : -1.0;
+      const double slip =
+          std::abs((motion.tangential_rate - direction * ratio_ * motion.indentation_rate) * span);
+      dissipated += slip * 0.5 * (limit_sum(s, motion.indentation) + limit_sum(s, d1));
+    }
+  }
+  indentation_ = motion.indentation_at(t);
+  tangential_ = motion.tangential_at(t);
+  return 2.0 * dissipated;
+}
+
+void FrictionRow::apply(const RowFrictionEvent& event) {
+  const std::int64_t i = event.spring;
+  Spring& s = springs_[index(i)];
+  const FrictionEventKind kind = event.event.kind;
+  if (kind == FrictionEventKind::limit_kink) return;
+  if (i <= glued_) {
+    if (kind == FrictionEventKind::slip && s.state.sliding == 0) {
+      remove_sticking(i, false);
+      ++glued_sliding_;
+    } else if (kind == FrictionEventKind::stick && s.state.sliding != 0) {
+      --glued_sliding_;
+      apply_friction_event(s.state, event.event);
+      add_sticking(i, false);
+      return;
+    }
+    apply_friction_event(s.state, event.event);
+    return;
+  }
+  if (kind == FrictionEventKind::slip && s.state.sliding == 0) {
+    remove_sticking(i, true);
+    s.state.sliding = event.event.direction;
+    add_sliding(i);
+  } else if (kind == FrictionEventKind::stick && s.state.sliding != 0) {
+    remove_sliding(i);
+    s.state.offset = spring(i).offset;
+    s.state.sliding = 0;
+    add_sticking(i, true);
+  }
+}
+
+}  // namespace mdrsim

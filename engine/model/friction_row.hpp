@@ -1,0 +1,142 @@
+// The springs in contact under Coulomb friction: tangential force, slip events, frictional work.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "engine/base/material.hpp"
+#include "engine/model/compensated_sum.hpp"
+#include "engine/model/coulomb_spring.hpp"
+
+namespace mdrsim {
+
+/// What a glued spring does under tangential load (docs/friction.md).
+enum class GluedLaw {
+  unlimited,  ///< holds any stretch until the detachment criterion lets it go (the paper's model)
+  coulomb,    ///< slides, staying glued, where |f_x| > mu max(f_z, 0) + tau_0 dx
+};
+
+/// The scene's [friction] table.
+struct FrictionSettings {
+  double coefficient = 0.0;  ///< mu >= 0 [1]
+  GluedLaw glued = GluedLaw::unlimited;
+  double shear_strength = 0.0;  ///< tau_0 [Pa], with GluedLaw::coulomb
+};
+
+/// A friction event of one spring of the row.
+struct RowFrictionEvent {
+  std::int64_t spring;  ///< i, 1-based
+  FrictionEvent event;
+};
+
+/// Springs i = 1..m in contact at x_i = i dx (one half of the symmetric MDR foundation, as in
+/// ProgramRow: every force is twice the half-row's sum); springs 1..k are glued. Each spring
+/// carries its offset (f_x = G* dx (u_x - offset)) and whether it slides. A glued spring's
+/// offset is the u_x at which it glued; it keeps it when it lets go and when it glues again.
+///
+/// The springs that are not glued (k < i <= m, pressed: d >= g_i, which the program's lift
+/// events keep true) need no pass over the row. With r = mu E*/G*, a sticking spring slips
+/// forward when p+ = u_x - r d rises to its key o_i - r g_i and backward when p- = u_x + r d
+/// falls to o_i + r g_i: keys that do not change while it sticks, kept in order, so the next
+/// slip is the smallest (largest) key, O(log m) per event. Every spring sliding along +x has
+/// the same slip velocity p+' (along -x, p-'), so they stick together when it reverses, and
+/// their force and dissipated work are sums of their count and images. Glued `coulomb`
+/// springs go spring by spring (O(k) per query); glued `unlimited` ones only stick.
+class FrictionRow {
+ public:
+  FrictionRow(const Material& material, const FrictionSettings& settings, double spacing);
+
+  std::int64_t in_contact() const { return static_cast<std::int64_t>(springs_.size()); }  ///< m
+  std::int64_t glued() const { return glued_; }                                           ///< k
+  double position(std::int64_t i) const { return spacing_ * static_cast<double>(i); }  ///< x_i [m]
+  /// Spring i's state; a sliding spring's offset is that of the present position (the last
+  /// advance, touch or let_go_boundary).
+  CoulombSpring spring(std::int64_t i) const;
+  SpringGeometry geometry(std::int64_t i) const;
+  /// The law of spring i; nullopt for a glued spring under GluedLaw::unlimited (it never slips).
+  std::optional<CoulombLaw> law(std::int64_t i) const;
+
+  /// Spring m+1, of image g [m], is pressed with no tangential stretch at u_x [m].
+  void touch(double image, double tangential);
+  /// Spring m (not glued) leaves the indenter and forgets its slip.
+  void lift_outer();
+  /// Spring k+1 (in contact, sticking) glues, keeping its present stretch.
+  void glue_next();
+  /// The boundary spring k lets go and stays pressed at (d, u_x): it keeps its stretch and
+  /// slips to its limit at once where the stretch exceeds it. Returns the dissipated work [J].
+  double let_go_boundary(double indentation, double tangential);
+
+  /// F_x = 2 sum over the springs in contact of f_x, glued ones included [N].
+  double tangential_force(double indentation, double tangential) const;
+  /// dF_x/du_x and dF_x/dd while no spring changes (F_x is affine in both): 2 G* dx per
+  /// sticking spring, and 2 mu E* dx per pressed spring sliding along +x, minus along -x: the
+  /// tangential equilibrium's coefficients under any control [N/m].
+  double tangential_stiffness() const;
+  double tangential_force_per_indentation(double indentation) const;
+  /// Springs i <= m sliding now (one half of the row, like ProgramRow's counts).
+  std::int64_t springs_sliding() const;
+  /// The radius inside which every spring in contact sticks: x_{j-1}, j the innermost
+  /// sliding spring; the contact radius x_m when none slides [m].
+  double stick_radius() const;
+
+  /// The first friction event of any spring along `motion` in [motion.start, end] (apply it
+  /// and ask again at the same t for the next of a cascade).
+  std::optional<RowFrictionEvent> next_event(const LinearMotion& motion, double end) const;
+  /// Moves every spring from motion.start to t with no event in between; returns the work
+  /// the slips dissipated on both halves (the step's dissipated_by_friction increment) [J].
+  double advance(const LinearMotion& motion, double t);
+  /// Applies an event found by next_event, after advance to its time.
+  void apply(const RowFrictionEvent& event);
+
+ private:
+  struct Spring {
+    CoulombSpring state;  ///< a sliding spring's offset is not kept up to date when it is not glued
+    double image;         ///< g(x_i) [m]
+  };
+  using Key = std::pair<double, std::int64_t>;  ///< (key [m], spring)
+  std::size_t index(std::int64_t i) const { return static_cast<std::size_t>(i - 1); }
+  static std::size_t side(int direction) { return direction > 0 ? 0 : 1; }
+  double limit_sum(std::size_t s, double indentation) const;  ///< sum of mu f_z of a side [N]
+  void add_sticking(std::int64_t i, bool keyed);
+  void remove_sticking(std::int64_t i, bool keyed);
+  void add_sliding(std::int64_t i);
+  void remove_sliding(std::int64_t i);
+  std::int64_t first_glued_sliding() const;  ///< 0 when none
+
+  FrictionSettings settings_;
+  double normal_stiffness_;      ///< E* dx [N/m]
+  double tangential_stiffness_;  ///< G* dx [N/m]
+  double ratio_;                 ///< r = mu E*/G* [1]
+  double spacing_;               ///< dx [m]
+  std::int64_t glued_ = 0;
+  std::vector<Spring> springs_;
+  double indentation_ = 0.0;  ///< d at the present position [m]
+  double tangential_ = 0.0;   ///< u_x at the present position [m]
+
+  std::int64_t sticking_ = 0;        ///< springs that stick, glued ones included
+  CompensatedSum sticking_offsets_;  ///< their offsets [m]
+  std::set<Key> forward_keys_;       ///< o_i - r g_i of the sticking springs not glued
+  std::set<Key> backward_keys_;      ///< o_i + r g_i of the same
+  /// The key inserted last (none once erased): where the next of a run goes. A copied or moved
+  /// row starts without, its iterator pointing into the other row's set.
+  struct KeyHint {
+    std::optional<std::set<Key>::iterator> at;
+    KeyHint() = default;
+    KeyHint(const KeyHint&) {}
+    KeyHint& operator=(const KeyHint&) {
+      at.reset();
+      return *this;
+    }
+  };
+  KeyHint forward_hint_;
+  KeyHint backward_hint_;
+  std::array<std::set<std::int64_t>, 2> sliders_;  ///< not glued, sliding along +x, -x
+  std::array<CompensatedSum, 2> slider_images_;    ///< their sums of g_i [m]
+  std::int64_t glued_sliding_ = 0;                 ///< glued `coulomb` springs sliding
+};
+
+}  // namespace mdrsim
