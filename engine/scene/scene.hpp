@@ -16,7 +16,9 @@
 
 namespace mdrsim {
 
-enum class SolverMethod { event, stepping };
+/// event and stepping run spring rows; continuum answers from the continuum branch, with no
+/// springs (docs/continuum.md).
+enum class SolverMethod { event, stepping, continuum };
 
 struct SolverOptions {
   SolverMethod method = SolverMethod::event;
@@ -31,6 +33,9 @@ struct SolverOptions {
 /// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends
 /// are too coarse for their errors to follow C/N.
 inline constexpr std::int64_t kMinRichardsonSprings = 64;
+
+/// discretization.rtol of the continuum route when the scene gives none.
+inline constexpr double kContinuumRtol = 1e-10;
 
 /// How the spring row is chosen and its results combined across resolutions.
 struct DiscretizationOptions {
