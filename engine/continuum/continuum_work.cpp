@@ -10,15 +10,20 @@ namespace {
 constexpr double kQuadratureTolerance = 1e-12;
 constexpr unsigned kMaxDepth = 15;
 
+/// Over [lo, hi] mapped onto [0, 1]: Boost's adaptive rule compares the error of the unit
+/// interval's sum with the tolerance times the scaled integral, so that on an interval of
+/// 1e-4 m it never stops refining (1.5 million calls for a quartic); on [0, 1] the two agree.
 template <class Fn>
 Estimated integrate(Fn fn, double lo, double hi) {
   if (!(hi > lo)) return {};
+  const double width = hi - lo;
   double error = 0.0;
   double l1 = 0.0;
   const double value = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
-      fn, lo, hi, kMaxDepth, kQuadratureTolerance, &error, &l1);
+      [&](double t) { return fn(lo + width * t); }, 0.0, 1.0, kMaxDepth, kQuadratureTolerance,
+      &error, &l1);
   // Rounding of the sum of positive terms adds about 1e-15 of its size.
-  return {value, error + 1e-15 * l1};
+  return {width * value, width * (error + 1e-15 * l1)};
 }
 
 }  // namespace
@@ -27,12 +32,14 @@ Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s) {
   const Material& m = branch.material();
   const Profile& profile = branch.profile();
   const double d = s.indentation;
+  // x = a t^2: images like sqrt(x) (power laws with n < 1, the cone's tip) become smooth in t.
+  const double a = s.contact_radius;
   Estimated e = integrate(
-      [&](double x) {
-        const double gap = d - profile.mdr_image(x);
-        return gap * gap;
+      [&](double t) {
+        const double gap = d - profile.mdr_image(a * t * t);
+        return 2.0 * a * t * gap * gap;
       },
-      0.0, s.contact_radius);
+      0.0, 1.0);
   e.value *= m.effective_modulus;
   e.error *= m.effective_modulus;
   const double ux = s.tangential_displacement;
