@@ -201,6 +201,45 @@ TEST_F(Cli, PoissonRatioOutOfRange) {
   EXPECT_TRUE(nothing_at(json));
 }
 
+// The continuum route has no springs: a scene that names them is refused, as are the programs
+// the route does not answer yet (docs/continuum.md).
+TEST_F(Cli, ContinuumRefusesSprings) {
+  const std::string scene =
+      bad_scene("springs = 100\n", "springs = 100\n[solver]\nmethod = \"continuum\"\n");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, scene + ":12:11: discretization.springs: the continuum route has no "
+                                   "springs; give rtol (default 1e-10) or use solver.method = "
+                                   "\"event\""));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, ContinuumRefusesPrograms) {
+  const std::string scene = bad_scene(
+      "[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = \"fixed-load\" }\n"
+      "[discretization]\nsprings = 100\n",
+      "[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 1e-6 }\n"
+      "[solver]\nmethod = \"continuum\"\n");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, scene + ":11:10: solver.method: loading programs ([[loading.stage]]) "
+                                   "are not on the continuum route yet; use method = \"event\" "
+                                   "(docs/continuum.md)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, ContinuumRunsWithoutSprings) {
+  const std::string scene =
+      bad_scene("springs = 100\n", "rtol = 1e-10\n[solver]\nmethod = \"continuum\"\n");
+  const auto r = run_mdrsim(fmt::format("run {} --json -", scene));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["resolution"]["route"], "continuum");
+  EXPECT_FALSE(j.contains("springs"));
+  // The parabola's fixed-load pull-off, -F0 (paper eq. 19's minimum), to rtol.
+  EXPECT_NEAR(j["dimensionless"]["normal_force"].get<double>(), -1.0, 1e-10);
+}
+
 TEST_F(Cli, NegativeModulus) {
   const std::string scene = bad_scene("youngs_modulus = 1.0e6", "youngs_modulus = -1.0e6");
   const std::string json = path("out.json");
