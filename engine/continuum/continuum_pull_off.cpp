@@ -100,10 +100,21 @@ struct Walk {
     }
     BranchState best = *points[k];
     double error = 0.0;
-    if (k > 0 && k + 1 < points.size()) {
+    // The bracket of the minimum: around an inner sample, or next to an end where F still
+    // falls into the stretch (a minimum between the end and its neighbouring sample).
+    const std::size_t last = points.size() - 1;
+    std::optional<std::pair<double, double>> bracket;
+    if (k > 0 && k < last) {
+      bracket.emplace(points[k + 1]->contact_radius, points[k - 1]->contact_radius);
+    } else if (k == 0 && last > 0 && branch.force_slope(top.contact_radius) > 0.0) {
+      bracket.emplace(points[1]->contact_radius, top.contact_radius);
+    } else if (k == last && last > 0 && branch.force_slope(bottom.contact_radius) < 0.0) {
+      bracket.emplace(bottom.contact_radius, points[last - 1]->contact_radius);
+    }
+    if (bracket) {
       const auto force = [&](double a) { return branch.at(a).normal_force; };
-      const auto r = boost::math::tools::brent_find_minima(
-          force, points[k + 1]->contact_radius, points[k - 1]->contact_radius, kMinimumBits);
+      const auto r = boost::math::tools::brent_find_minima(force, bracket->first, bracket->second,
+                                                           kMinimumBits);
       if (r.second < best.normal_force) best = branch.at(r.first);
       // The minimum's value is off by F'' delta^2 / 2 for a place off by delta.
       const double step = std::ldexp(best.contact_radius, -kMinimumBits);

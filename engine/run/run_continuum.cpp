@@ -35,6 +35,27 @@ ContactSnapshot lost_snapshot(const ContinuumBranch& branch, double held) {
   return s;
 }
 
+/// The followed branch at `samples` radii evenly from a_g down to where the path ends, as
+/// `sample` events; radii that a jump passes over carry no equilibrium and are left out.
+void emit_samples(const ContinuumBranch& branch, const ContinuumPullOff& p, std::int64_t samples,
+                  const ObserverList& observers) {
+  if (samples < 2 || p.segments.empty()) return;
+  const double top = p.segments.front().first;
+  const double bottom = p.segments.back().second;
+  for (std::int64_t k = 0; k < samples; ++k) {
+    const double a = k + 1 == samples ? bottom
+                                      : top - (top - bottom) * static_cast<double>(k) /
+                                                  static_cast<double>(samples - 1);
+    for (const auto& [from, to] : p.segments) {
+      if (a <= from && a >= to) {
+        const BranchState s = a > branch.shear_off_radius() ? branch.at(a) : branch.state(a, 0.0);
+        observers.emit({.kind = EventKind::sample, .state = s.snapshot()});
+        break;
+      }
+    }
+  }
+}
+
 bool within(double error, double value, double rtol, double floor) {
   return error <= rtol * std::max(std::abs(value), floor);
 }
@@ -109,6 +130,7 @@ RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& obs
                                 .after = jump.to.snapshot()});
       }
     }
+    emit_samples(branch, p, scene.solver.samples, observers);
     const JumpEnd flight = flight_after(branch, p.critical.control);
     result.sliding = flight == JumpEnd::sliding;
     if (p.end == End::smooth_peel) {

@@ -27,6 +27,9 @@ struct SolverOptions {
   /// the increment of the stage parameter (which runs from 0 to 1), default 1e-3.
   std::optional<double> step;
   int max_halvings = 30;
+  /// Continuum route: points of the branch emitted as `sample` events, evenly in the contact
+  /// radius (the command's --samples with --trajectory); 0: none. Not a scene key.
+  std::int64_t samples = 0;
   std::int64_t max_steps = 100'000'000;
 };
 

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -238,6 +239,37 @@ TEST_F(Cli, ContinuumRunsWithoutSprings) {
   EXPECT_FALSE(j.contains("springs"));
   // The parabola's fixed-load pull-off, -F0 (paper eq. 19's minimum), to rtol.
   EXPECT_NEAR(j["dimensionless"]["normal_force"].get<double>(), -1.0, 1e-10);
+}
+
+// --trajectory on the continuum route: --samples rows of kind `sample`, evenly in the contact
+// radius from the glued radius (5e-4 m) to the critical point (a0 = 1.6e-4 m, paper eq. 17:
+// the fixed-load pull-off), with no springs to count.
+TEST_F(Cli, ContinuumTrajectorySamplesTheBranch) {
+  const std::string scene =
+      bad_scene("springs = 100\n", "rtol = 1e-10\n[solver]\nmethod = \"continuum\"\n");
+  const std::string csv = path("t.csv");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --json - --trajectory {} --samples 11", scene, csv));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double critical = nlohmann::json::parse(r.out)["critical"]["contact_radius"].get<double>();
+  std::ifstream in(csv);
+  std::string line;
+  std::vector<double> radii;
+  while (std::getline(in, line)) {
+    if (line.find(",sample,") == std::string::npos) continue;
+    EXPECT_EQ(line.back(), ',') << line;  // springs_in_contact empty
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    radii.push_back(std::stod(cells.at(5)));
+  }
+  ASSERT_EQ(radii.size(), 11u);
+  EXPECT_DOUBLE_EQ(radii.front(), 5e-4);
+  EXPECT_DOUBLE_EQ(radii.back(), critical);
+  for (std::size_t k = 1; k < radii.size(); ++k) {
+    // Even steps of (a_g - a_c) / 10, to rounding.
+    EXPECT_NEAR(radii[k - 1] - radii[k], (5e-4 - critical) / 10.0, 1e-15);
+  }
 }
 
 TEST_F(Cli, NegativeModulus) {
@@ -503,7 +535,8 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
        "--set: discretization.x: unknown key (known: extrapolation, rtol, springs)"},
       {"solver.method=1", "--set: solver.method: expected a string, got 1"},
       {"solver.method=events",
-       "--set: solver.method: unknown 'events'; did you mean 'event'? (known: event, stepping)"},
+       "--set: solver.method: unknown 'events'; did you mean 'event'? (known: event, stepping, "
+       "continuum)"},
       {"solver={ method = \"stepping\", step = \"s\" }",
        R"(--set: solver.step: expected a number, got string "s")"},
       {"solver={ method = \"stepping\", step = 0 }", "--set: solver.step = 0 is outside (0, inf)"},

@@ -175,6 +175,34 @@ TEST(RunContinuum, WorkAgreesWithTheRow) {
   }
 }
 
+// A compliant tangential machine of stiffness k holds its end w: on the contact of radius a
+// (tangential stiffness 2 G* a) u_x = w / (1 + 2 G* a / k). Stiff (k = 1e14 N/m, 2 G* a / k =
+// 1e-12) it is fixed grips to 1e-11; soft, the critical state's F_x follows the formula.
+TEST(RunContinuum, CompliantTangentialMachine) {
+  test::JkrScenario grips = parabola("fixed-grips");
+  grips.tangential_displacement = 0.5;
+  const Scene reference_scene = grips.build();
+  const RunResult want = run(reference_scene);
+  const double w = 0.5 * grips.scales().depth;
+  for (const double k : {1e14, 30.0}) {
+    std::string text = grips.toml();
+    const auto at = text.find("tangential = {");
+    const auto end = text.find('\n', at);
+    text.replace(at, end - at,
+                 fmt::format("tangential = {{ control = \"compliant\", stiffness = {:.17g}, "
+                             "displacement = {:.17g} }}",
+                             k, w));
+    const RunResult r = run(test::build_scene_text(text));
+    ASSERT_TRUE(r.critical) << text;
+    const double a = r.critical->contact_radius;
+    const double gs = reference_scene.material.effective_shear_modulus;
+    EXPECT_NEAR(r.critical->tangential_displacement / (w / (1.0 + 2.0 * gs * a / k)), 1.0, 1e-14);
+    if (k > 1e13) {
+      EXPECT_NEAR(r.critical->normal_force / want.critical->normal_force, 1.0, 1e-11);
+    }
+  }
+}
+
 // ---- statuses ----
 
 // u_x = 5 d0 on the parabola glued at a0 (nu = 0.3): a_s = 1.29 a0 > a_g, the glue breaks as
