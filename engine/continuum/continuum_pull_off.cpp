@@ -87,6 +87,14 @@ struct Walk {
   /// equilibria of it), among the samples strictly between them.
   void visit_segment(const BranchState& top, const BranchState& bottom) {
     out.segments.emplace_back(top.contact_radius, bottom.contact_radius);
+    if (holds_force(branch.normal())) {
+      // The control is the force, and it falls along a stable stretch: its end is the minimum.
+      if (!out.peak || bottom.normal_force < out.peak->normal_force) {
+        out.peak = bottom;
+        out.peak_error = 0.0;
+      }
+      return;
+    }
     std::vector<const BranchState*> points{&top};
     for (const BranchState& s : samples) {
       if (s.contact_radius < top.contact_radius && s.contact_radius > bottom.contact_radius) {

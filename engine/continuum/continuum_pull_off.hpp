@@ -42,6 +42,6 @@ struct ContinuumPullOff {
 /// samples a decade), refines each fold as a root of the control slope, each landing as a
 /// root of the control value and the peak by Brent's minimization of the force.
 ContinuumPullOff continuum_pull_off(ContinuumBranch& branch, double glued_radius,
-                                    int per_decade = 6);
+                                    int per_decade = 4);
 
 }  // namespace mdrsim

@@ -160,7 +160,10 @@ RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& obs
     }
     if (p.peak) {
       result.peak = p.peak->snapshot();
-      result.accuracy.peak_error_estimate = p.peak_error;
+      // A peak at the critical point carries the fold's error too.
+      result.accuracy.peak_error_estimate = p.peak->contact_radius == p.critical.contact_radius
+                                                ? std::max(p.peak_error, p.critical_error)
+                                                : p.peak_error;
     }
   }
   AxisWork total;
