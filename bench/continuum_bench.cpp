@@ -27,13 +27,15 @@ std::string tabulated_profile() {
                      fmt::join(f, ", "));
 }
 
-/// The scene of one profile: E = 1 MPa, dgamma = 0.05 J/m^2, glued at 0.5 mm, fixed load.
-std::string scene(const std::string& profile, const std::string& discretization) {
+/// The scene of one profile: E = 1 MPa, dgamma = 0.05 J/m^2, glued at 0.5 mm, under the
+/// normal control `normal` (fixed load unless named).
+std::string scene(const std::string& profile, const std::string& discretization,
+                  const std::string& normal = "fixed-load") {
   return fmt::format(
       "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
       "[profile]\n{}[loading]\npreload = {{ contact_radius = 5e-4 }}\n"
-      "normal = {{ control = \"fixed-load\" }}\n{}",
-      profile, discretization);
+      "normal = {{ control = \"{}\" }}\n{}",
+      profile, normal, discretization);
 }
 
 std::string profile_of(const std::string& name) {
@@ -48,8 +50,9 @@ const std::string kContinuum = "[solver]\nmethod = \"continuum\"\n";
 const std::string kRow = "[discretization]\nrtol = 1e-6\n";
 
 /// The critical point alone: the branch and the walk (what a sweep point needs).
-void critical(benchmark::State& state, const std::string& name) {
-  const mdrsim::Scene s = mdrsim::test::build_scene_text(scene(profile_of(name), kContinuum));
+void critical(benchmark::State& state, const std::string& name, const std::string& normal) {
+  const mdrsim::Scene s =
+      mdrsim::test::build_scene_text(scene(profile_of(name), kContinuum, normal));
   double force = 0.0;
   for (auto _ : state) {
     mdrsim::ContinuumBranch branch(*s.profile, *s.criterion, s.material,
@@ -79,8 +82,11 @@ void run(benchmark::State& state, const std::string& name, const std::string& ro
 int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::err);
   for (const std::string name : {"sphere", "parabolic", "cone", "power_law", "tabulated"}) {
-    benchmark::RegisterBenchmark(("continuum_critical/" + name).c_str(), critical, name)
-        ->Unit(benchmark::kMicrosecond);
+    for (const std::string normal : {"fixed-load", "fixed-grips"}) {
+      benchmark::RegisterBenchmark(("continuum_critical/" + normal + "/" + name).c_str(), critical,
+                                   name, normal)
+          ->Unit(benchmark::kMicrosecond);
+    }
     benchmark::RegisterBenchmark(("continuum_run/" + name).c_str(), run, name, kContinuum)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("row_rtol_1e-6/" + name).c_str(), run, name, kRow)

@@ -44,6 +44,14 @@ struct Walk {
       const RootBracket r = bracket_root(slope, lo, hi, kSlopeDigits);
       branch.iterations() += r.iterations;
       a = 0.5 * (r.lo + r.hi);
+      if (holds_force(branch.normal())) {
+        // The fold of the force itself: F is off by F'' delta^2 / 2 only. Its place is off by
+        // the bracket and the quotient's error (about 1e-12 of a); F there bounds it.
+        const double place = (r.hi - r.lo) + 1e-12 * a;
+        const BranchState s = branch.at(a);
+        error = std::abs(branch.at(a + place).normal_force - s.normal_force);
+        return s;
+      }
       // The place is off by the bracket and by the quotient's own error over the curvature.
       double slope_error = 0.0;
       branch.control_slope(a, &slope_error);
