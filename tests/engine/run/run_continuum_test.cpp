@@ -14,6 +14,7 @@
 #include "engine/reference/continuum_reference.hpp"
 #include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
+#include "engine/reference/random_scenes.hpp"
 #include "engine/run/run_scene.hpp"
 #include "profiles/parabolic_profile.hpp"
 #include "profiles/power_law_profile.hpp"
@@ -367,6 +368,26 @@ TEST(RunContinuum, AgreesWithTheContinuumReference) {
     }
   }
   EXPECT_GE(checked, 60);
+}
+
+// The fixed-seed random set (engine/reference/random_scenes: every profile but the table,
+// every criterion, control and tangential load, drawn numbers): the route against the
+// reference's pull-off of exactly those numbers, status and critical force. 1e-9 relative:
+// the reference refines its folds to a few ulps, this route to about 1e-12 of a.
+TEST(RunContinuum, RandomSetAgreesWithTheReference) {
+  const std::vector<test::RandomScene> scenes = test::random_scenes(20240611, 200);
+  ASSERT_GE(scenes.size(), 150u);
+  for (const test::RandomScene& scene : scenes) {
+    SCOPED_TRACE(scene.name);
+    const RunResult r =
+        run(test::build_scene_text(scene.toml_without_discretization + "[solver]\nmethod = "
+                                                                       "\"continuum\"\n"));
+    const ContinuumCritical& c = scene.reference;
+    EXPECT_EQ(r.status, c.kind == ContinuumCritical::Kind::shear_off ? RunStatus::shear_off
+                                                                     : RunStatus::instability);
+    ASSERT_TRUE(r.critical);
+    EXPECT_NEAR(r.critical->normal_force / c.point.normal_force, 1.0, 1e-9);
+  }
 }
 
 // ---- the JSON of the route ----
