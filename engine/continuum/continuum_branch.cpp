@@ -66,7 +66,10 @@ BranchState ContinuumBranch::at(double a) const { return state(a, stretch(a)); }
 
 double ContinuumBranch::slope_of(double a, bool force, double* error) const {
   const double reach = shear_off_radius_ > 0.0 ? a - shear_off_radius_ : a;
-  const double h = 1e-3 * std::min(reach, a);
+  double h = 1e-3 * std::min(reach, a);
+  // Within the profile's domain (a sphere ends at its radius): the quotient reaches a + 4h.
+  const double room = profile_->outer_radius() - a;
+  if (room > 0.0) h = std::min(h, 0.2 * room);
   // Only what the slope needs: F without g, d without nf under fixed grips (each a pow for
   // power laws, the most of a sample's cost).
   const double es = material_.effective_modulus;

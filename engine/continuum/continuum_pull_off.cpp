@@ -155,6 +155,15 @@ ContinuumPullOff continuum_pull_off(ContinuumBranch& branch, double glued_radius
         2.0 * branch.material().effective_shear_modulus * ag * branch.zero_stretch_limit(ag);
     return out;
   }
+  if (branch.profile().fixed_contact_radius()) {
+    // A flat punch: every glued spring sits at the same gap, so the boundary's let-go at a_g
+    // takes every spring inside with it (their thresholds are lower): the jump starts there.
+    out.end = ContinuumPullOff::End::first_detachment;
+    out.critical = branch.at(ag);
+    out.peak = out.critical;
+    out.segments.emplace_back(ag, ag);
+    return out;
+  }
   const double as = branch.shear_off_radius();
   const int count = kDecades * std::max(per_decade, 2);
   const double ratio = std::pow(10.0, -1.0 / std::max(per_decade, 2));

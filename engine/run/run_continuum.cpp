@@ -27,11 +27,13 @@ JumpEnd flight_after(const ContinuumBranch& branch, double normal_held) {
 }
 
 /// The empty contact the machine holds where the last spring left: at zero force the
-/// indentation is the held value over a_u.
-ContactSnapshot lost_snapshot(const ContinuumBranch& branch, double held) {
+/// indentation is the held value over a_u; under a fixed load (a_u = 0) where the last
+/// equilibrium `last` left it, as the row reports it.
+ContactSnapshot lost_snapshot(const ContinuumBranch& branch, double held, const BranchState& last) {
   ContactSnapshot s;
   s.normal_control = held;
-  s.indentation = held / branch.normal().displacement_coefficient;
+  const double au = branch.normal().displacement_coefficient;
+  s.indentation = au > 0.0 ? held / au : last.indentation;
   return s;
 }
 
@@ -135,7 +137,8 @@ RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& obs
     result.sliding = flight == JumpEnd::sliding;
     if (p.end == End::smooth_peel) {
       result.status = RunStatus::no_instability;
-      result.stages.push_back({"pull-off", lost_snapshot(branch, p.critical.control), work});
+      result.stages.push_back(
+          {"pull-off", lost_snapshot(branch, p.critical.control, p.critical), work});
     } else {
       result.status = p.end == End::shear_off ? RunStatus::shear_off : RunStatus::instability;
       result.critical = p.critical.snapshot();
@@ -145,11 +148,13 @@ RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& obs
                       .critical = p.critical.snapshot(),
                       .end = flight,
                       .by_shear = p.end == End::shear_off};
-      if (flight == JumpEnd::state) last.after = lost_snapshot(branch, p.critical.control);
+      if (flight == JumpEnd::state)
+        last.after = lost_snapshot(branch, p.critical.control, p.critical);
       result.jumps.push_back(last);
       result.stages.push_back({"pull-off",
-                               flight == JumpEnd::state ? lost_snapshot(branch, p.critical.control)
-                                                        : p.critical.snapshot(),
+                               flight == JumpEnd::state
+                                   ? lost_snapshot(branch, p.critical.control, p.critical)
+                                   : p.critical.snapshot(),
                                work});
       if (flight == JumpEnd::pressed) {
         result.warnings.push_back(fmt::format(
@@ -175,8 +180,10 @@ RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& obs
 
   // rtol on each reported force, relative to the preload's scale where a value is near 0.
   const double floor = 1e-300 + std::abs(preload.normal_force) * 1e-6;
+  // The work relative to the path's scale, the preload's energy: a cycle's net work may
+  // cancel to nothing (no adhesion) while its parts are of that size.
   bool met = within(work_error, std::abs(total.normal) + std::abs(total.tangential), rtol,
-                    preload_energy.value * 1e-6);
+                    preload_energy.value);
   if (result.critical) met = met && within(p.critical_error, p.critical.normal_force, rtol, floor);
   if (result.peak) met = met && within(p.peak_error, p.peak->normal_force, rtol, floor);
   result.accuracy.rtol_met = met;
