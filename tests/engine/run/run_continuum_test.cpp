@@ -274,6 +274,22 @@ TEST(RunContinuum, GluedInsideTheFoldJumpsAtOnce) {
   EXPECT_NEAR(r.critical->contact_radius / s.build().glued_radius, 1.0, 1e-15);
 }
 
+// A flat punch of radius A: every glued spring at the same gap, so the first let-go at A empties
+// the contact, at F = -2 E* A sqrt(2 pi A dgamma / E*) = -sqrt(8 pi E* A^3 dgamma) (Kendall).
+// Before, the slope's difference quotient stepped onto the punch's wall and gave an infinite
+// error estimate.
+TEST(RunContinuum, FlatPunchIsKendall) {
+  const Scene scene = test::build_scene_text(
+      "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"flat_punch\"\nradius = 5e-4\n[loading]\npreload = { contact_radius = "
+      "5e-4 }\nnormal = { control = \"fixed-grips\" }\n[solver]\nmethod = \"continuum\"\n");
+  const RunResult r = run(scene);
+  ASSERT_TRUE(r.critical);
+  const double es = scene.material.effective_modulus, a = 5e-4;
+  EXPECT_NEAR(r.critical->normal_force / -std::sqrt(8.0 * kPi * es * a * a * a * 0.05), 1.0, 1e-14);
+  EXPECT_TRUE(r.accuracy.rtol_met);
+}
+
 // ---- every criterion x normal control x tangential load, against the reference ----
 
 struct Case {
