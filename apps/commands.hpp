@@ -13,6 +13,7 @@ struct RunOptions {
   std::string json;                    ///< path, "-" or empty (print a summary)
   std::string trajectory;              ///< CSV path or empty
   std::int64_t trajectory_stride = 1;  ///< every K-th ordinary row (trajectory_stride.hpp)
+  std::int64_t samples = 1000;         ///< continuum route: branch points of --trajectory
 };
 
 struct SweepOptions {

@@ -138,6 +138,11 @@ int main(int argc, char** argv) {
                    "write every K-th ordinary event row of --trajectory (stage ends, jumps, the "
                    "critical state and a cascade's first and last rows always; default 1)")
       ->check(CLI::Range(std::int64_t{1}, std::numeric_limits<std::int64_t>::max()));
+  run_app
+      ->add_option("--samples", run.samples,
+                   "continuum route: points of the branch in --trajectory, evenly in the contact "
+                   "radius (default 1000)")
+      ->check(CLI::Range(std::int64_t{2}, std::int64_t{100'000'000}));
   run_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 

@@ -34,7 +34,8 @@ int run_command(const RunOptions& options) {
   const SceneDocument document = load_scene_document(options.scene, options.sets);
   // From here on a signal removes the outputs' temporaries (docs/cli.md "Exit codes").
   install_interrupt_cleanup();
-  const Scene scene = document.build(Registries::builtin());
+  Scene scene = document.build(Registries::builtin());
+  if (!options.trajectory.empty()) scene.solver.samples = options.samples;
 
   std::optional<OutputFile> json_file;
   if (!options.json.empty()) json_file.emplace("--json", options.json);

@@ -45,6 +45,8 @@ const char* to_string(EventKind kind) {
       return "stage-end";
     case EventKind::jump:
       return "jump";
+    case EventKind::sample:
+      return "sample";
   }
   return "?";
 }

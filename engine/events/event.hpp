@@ -31,6 +31,7 @@ enum class EventKind {
   spring_lifted,   ///< a spring without glue leaves the indenter
   stage_end,       ///< a stage reaches its end (or separation)
   jump,            ///< a cascade at one value of the stage parameter; state after it
+  sample,          ///< the continuum route's branch at one contact radius (--trajectory)
 };
 
 struct Event {

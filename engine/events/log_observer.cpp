@@ -29,6 +29,7 @@ void LogObserver::on_event(const Event& event) {
       break;
     case EventKind::step_accepted:
     case EventKind::step_halved:
+    case EventKind::sample:
       spdlog::trace("{}", event);
       break;
   }
@@ -43,6 +44,7 @@ bool LogObserver::wants(EventKind kind) const {
       return spdlog::should_log(spdlog::level::debug);
     case EventKind::step_accepted:
     case EventKind::step_halved:
+    case EventKind::sample:
       return spdlog::should_log(spdlog::level::trace);
     default:
       return true;

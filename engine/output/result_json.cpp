@@ -59,7 +59,45 @@ std::pair<std::string, std::string> final_controls(const Scene& scene, std::size
 namespace {
 
 const char* route_name(Accuracy::Route route) {
-  return route == Accuracy::Route::richardson ? "richardson" : "row";
+  switch (route) {
+    case Accuracy::Route::richardson:
+      return "richardson";
+    case Accuracy::Route::continuum:
+      return "continuum";
+    case Accuracy::Route::row:
+      break;
+  }
+  return "row";
+}
+
+const char* method_name(SolverMethod method) {
+  switch (method) {
+    case SolverMethod::stepping:
+      return "stepping";
+    case SolverMethod::continuum:
+      return "continuum";
+    case SolverMethod::event:
+      break;
+  }
+  return "event";
+}
+
+/// The continuum route has no springs to count: its states and jumps leave the counts out.
+void drop_spring_counts(nlohmann::ordered_json& j) {
+  for (const char* key : {"critical", "peak_adhesion"}) {
+    if (j.contains(key)) j[key].erase("springs_in_contact");
+  }
+  if (j.contains("stages")) {
+    for (auto& stage : j["stages"]) stage["end"].erase("springs_in_contact");
+  }
+  if (j.contains("jumps")) {
+    for (auto& jump : j["jumps"]) {
+      jump["critical"].erase("springs_in_contact");
+      jump["after"].erase("springs_in_contact");
+      jump.erase("springs");
+      jump.erase("glued_springs");
+    }
+  }
 }
 
 /// What produced the result: the effective material, the preload, the scales, the rows run,
@@ -83,10 +121,14 @@ void add_provenance(nlohmann::ordered_json& j, const Scene& scene, const RunResu
                    {"basis", scales->basis}};
   }
   const Accuracy& a = result.accuracy;
-  j["resolution"] = {
-      {"route", route_name(a.route)},
-      {"rows", a.rows.empty() ? std::vector<std::int64_t>{result.springs}
-                              : std::vector<std::int64_t>(a.rows.begin(), a.rows.end())}};
+  if (a.route == Accuracy::Route::continuum) {
+    j["resolution"] = {{"route", route_name(a.route)}};
+  } else {
+    j["resolution"] = {
+        {"route", route_name(a.route)},
+        {"rows", a.rows.empty() ? std::vector<std::int64_t>{result.springs}
+                                : std::vector<std::int64_t>(a.rows.begin(), a.rows.end())}};
+  }
   j["mdrsim_version"] = program_version();
   if (scene.resolved) j["scene"] = nlohmann::ordered_json::parse(scene.resolved->dump());
 }
@@ -107,8 +149,9 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const auto [normal_control, tangential_control] = final_controls(scene, result.stages.size());
   j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
   j["criterion"] = scene.criterion_name;
-  j["method"] = scene.solver.method == SolverMethod::event ? "event" : "stepping";
-  j["springs"] = result.springs;
+  const bool continuum = accuracy.route == Accuracy::Route::continuum;
+  j["method"] = continuum ? "continuum" : method_name(scene.solver.method);
+  if (!continuum) j["springs"] = result.springs;
   if (scene.discretization.rtol) j["rtol"] = *scene.discretization.rtol;
   if (accuracy.route == Accuracy::Route::richardson) {
     j["extrapolation"] = {{"method", "richardson"}, {"springs", accuracy.rows}};
@@ -117,8 +160,10 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       accuracy.peak_error_estimate) {
     ordered_json a;
     a["route"] = route_name(accuracy.route);
-    a["rows"] = accuracy.rows;
-    a["outer_radius"] = accuracy.outer_radius;
+    if (!continuum) {
+      a["rows"] = accuracy.rows;
+      a["outer_radius"] = accuracy.outer_radius;
+    }
     if (accuracy.critical_error_estimate) {
       a["critical_error_estimate"] = *accuracy.critical_error_estimate;
     }
@@ -186,6 +231,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     j["jumps"] = jumps;
     j["work"] = work_json(*result.work);
   }
+  if (continuum) drop_spring_counts(j);
   j["warnings"] = result.warnings;
   j["counts"] = {{"events", result.counts.events},
                  {"steps", result.counts.steps},

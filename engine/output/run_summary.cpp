@@ -38,6 +38,15 @@ const char* missing_critical(const RunResult& r) {
 void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
   const Accuracy& a = r.accuracy;
   if (!scene.discretization.rtol && !a.critical_error_estimate) return;
+  if (a.route == Accuracy::Route::continuum) {
+    std::string line = "continuum route, no springs";
+    if (a.critical_error_estimate && r.critical) {
+      line += fmt::format("; critical force error estimate {:.3g} N", *a.critical_error_estimate);
+    }
+    fmt::print(out, "accuracy: {}; rtol {} {}\n", line, scene.discretization.rtol.value_or(0.0),
+               a.rtol_met ? "met" : "NOT met");
+    return;
+  }
   if (r.status == RunStatus::no_instability) {
     // rtol followed the peel down to the zoom's floor and found no fold on the way.
     fmt::print(out,

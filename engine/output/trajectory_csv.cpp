@@ -13,6 +13,11 @@ TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out) : out_(&out) {
 void TrajectoryCsvWriter::on_event(const Event& e) {
   if (e.kind == EventKind::finished) return;
   const ContactSnapshot& s = e.state;
+  if (e.kind == EventKind::sample) {  // the continuum route counts no springs
+    fmt::print(*out_, "{},{},0,{},{},{},{},{},\n", stage_name(e), to_string(e.kind), s.indentation,
+               s.normal_force, s.contact_radius, s.tangential_displacement, s.tangential_force);
+    return;
+  }
   fmt::print(*out_, "{},{},{},{},{},{},{},{},{}\n", stage_name(e), to_string(e.kind),
              e.in_cascade ? 1 : 0, s.indentation, s.normal_force, s.contact_radius,
              s.tangential_displacement, s.tangential_force, s.springs_in_contact);

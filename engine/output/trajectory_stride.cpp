@@ -11,6 +11,7 @@ bool is_ordinary(EventKind kind) {
     case EventKind::spring_glued:
     case EventKind::spring_touched:
     case EventKind::spring_lifted:
+    case EventKind::sample:
       return true;
     case EventKind::preload_reached:
     case EventKind::tangential_applied:

@@ -15,7 +15,9 @@ namespace mdrsim {
 
 /// How a run reached its reported numbers: the rows it ran and how it combined them.
 struct Accuracy {
-  enum class Route { row, richardson };
+  /// row: one spring row; richardson: extrapolated across rows; continuum: no springs, the
+  /// continuum branch's root searches (docs/continuum.md).
+  enum class Route { row, richardson, continuum };
   Route route = Route::row;
   /// The springs of every row whose results entered the reported numbers, finest last.
   std::vector<std::int64_t> rows;

@@ -14,6 +14,7 @@
 #include "engine/run/pull_off.hpp"
 #include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
+#include "engine/run/run_continuum.hpp"
 #include "engine/run/run_program.hpp"
 #include "engine/run/shorthand_accuracy.hpp"
 #include "engine/run/status_margin.hpp"
@@ -114,7 +115,10 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
     check_criterion_contract(*scene.criterion, scene.criterion_name, scene.material,
                              scene.glued_radius);
   }
-  if (scene.program) {
+  const bool continuum = scene.solver.method == SolverMethod::continuum;
+  if (continuum) {
+    result = run_continuum(scene, scene.discretization.rtol.value_or(kContinuumRtol), observers);
+  } else if (scene.program) {
     if (scene.discretization.rtol) {
       result = run_program_rtol(scene, *scene.discretization.rtol, observers);
     } else if (scene.discretization.richardson()) {
@@ -135,7 +139,9 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
         scene, {.springs = scene.springs, .outer_radius = scene.glued_radius, .record_path = true},
         observers);
   }
-  if (scene.program) {
+  if (continuum) {
+    drop_peak_that_never_pulls(scene, result);
+  } else if (scene.program) {
     warn_program_resolution(scene, result);
   } else {
     drop_peak_that_never_pulls(scene, result);

@@ -16,7 +16,9 @@
 
 namespace mdrsim {
 
-enum class SolverMethod { event, stepping };
+/// event and stepping run spring rows; continuum answers from the continuum branch, with no
+/// springs (docs/continuum.md).
+enum class SolverMethod { event, stepping, continuum };
 
 struct SolverOptions {
   SolverMethod method = SolverMethod::event;
@@ -25,12 +27,18 @@ struct SolverOptions {
   /// the increment of the stage parameter (which runs from 0 to 1), default 1e-3.
   std::optional<double> step;
   int max_halvings = 30;
+  /// Continuum route: points of the branch emitted as `sample` events, evenly in the contact
+  /// radius (the command's --samples with --trajectory); 0: none. Not a scene key.
+  std::int64_t samples = 0;
   std::int64_t max_steps = 100'000'000;
 };
 
 /// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends
 /// are too coarse for their errors to follow C/N.
 inline constexpr std::int64_t kMinRichardsonSprings = 64;
+
+/// discretization.rtol of the continuum route when the scene gives none.
+inline constexpr double kContinuumRtol = 1e-10;
 
 /// How the spring row is chosen and its results combined across resolutions.
 struct DiscretizationOptions {

@@ -260,9 +260,11 @@ void read_shorthand(TomlReader& loading, const ControllerRegistry& controllers, 
 
 void read_solver(TomlReader& t, SolverOptions& solver) {
   t.check_keys({"method", "step", "max_halvings", "max_steps"});
-  const std::string method = t.name("method", {"event", "stepping"}, "event");
-  solver.method = method == "event" ? SolverMethod::event : SolverMethod::stepping;
-  if (solver.method == SolverMethod::event) {
+  const std::string method = t.name("method", {"event", "stepping", "continuum"}, "event");
+  solver.method = method == "event"       ? SolverMethod::event
+                  : method == "continuum" ? SolverMethod::continuum
+                                          : SolverMethod::stepping;
+  if (solver.method != SolverMethod::stepping) {
     for (const char* k : {"step", "max_halvings", "max_steps"}) {
       if (t.has(k)) t.fail_at(k, "applies to method = \"stepping\" only");
     }
@@ -342,8 +344,29 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     root.record("detachment", {{"criterion", scene.criterion_name}});
   }
 
+  if (auto solver = root.optional_table("solver")) {
+    read_solver(*solver, scene.solver);
+    if (scene.solver.method == SolverMethod::continuum && scene.program) {
+      solver->fail_at("method",
+                      "loading programs ([[loading.stage]]) are not on the continuum route yet; "
+                      "use method = \"event\" (docs/continuum.md)");
+    }
+  } else {
+    root.record("solver", {{"method", "event"}});
+  }
+  const bool continuum = scene.solver.method == SolverMethod::continuum;
+
   scene.springs = kDefaultSprings;
   if (auto discretization = root.optional_table("discretization")) {
+    if (continuum) {
+      for (const char* key : {"springs", "extrapolation"}) {
+        if (discretization->has(key)) {
+          discretization->fail_at(key,
+                                  "the continuum route has no springs; give rtol (default "
+                                  "1e-10) or use solver.method = \"event\"");
+        }
+      }
+    }
     discretization->check_keys({"springs", "rtol", "extrapolation"});
     if (discretization->has("rtol") && discretization->has("springs")) {
       discretization->fail_at("rtol", "give springs or rtol, not both");
@@ -372,18 +395,18 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                                    "least {})",
                                    scene.springs, kMinRichardsonSprings));
       }
+    } else if (continuum && !scene.discretization.rtol) {
+      scene.discretization.rtol = kContinuumRtol;
+      discretization->record("rtol", kContinuumRtol);
     } else if (!scene.discretization.rtol) {
       discretization->record("springs", scene.springs);
     }
     discretization->finish();
+  } else if (continuum) {
+    scene.discretization.rtol = kContinuumRtol;
+    root.record("discretization", {{"rtol", kContinuumRtol}});
   } else {
     root.record("discretization", {{"springs", scene.springs}});
-  }
-
-  if (auto solver = root.optional_table("solver")) {
-    read_solver(*solver, scene.solver);
-  } else {
-    root.record("solver", {{"method", "event"}});
   }
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -199,6 +200,76 @@ TEST_F(Cli, PoissonRatioOutOfRange) {
   const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
   EXPECT_TRUE(bad_input(r, scene + ":3:17: material.poisson_ratio = 0.7 is outside (-1, 0.5]"));
   EXPECT_TRUE(nothing_at(json));
+}
+
+// The continuum route has no springs: a scene that names them is refused, as are the programs
+// the route does not answer yet (docs/continuum.md).
+TEST_F(Cli, ContinuumRefusesSprings) {
+  const std::string scene =
+      bad_scene("springs = 100\n", "springs = 100\n[solver]\nmethod = \"continuum\"\n");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, scene + ":12:11: discretization.springs: the continuum route has no "
+                                   "springs; give rtol (default 1e-10) or use solver.method = "
+                                   "\"event\""));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, ContinuumRefusesPrograms) {
+  const std::string scene = bad_scene(
+      "[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = \"fixed-load\" }\n"
+      "[discretization]\nsprings = 100\n",
+      "[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 1e-6 }\n"
+      "[solver]\nmethod = \"continuum\"\n");
+  const std::string json = path("out.json");
+  const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
+  EXPECT_TRUE(bad_input(r, scene + ":11:10: solver.method: loading programs ([[loading.stage]]) "
+                                   "are not on the continuum route yet; use method = \"event\" "
+                                   "(docs/continuum.md)"));
+  EXPECT_TRUE(nothing_at(json));
+}
+
+TEST_F(Cli, ContinuumRunsWithoutSprings) {
+  const std::string scene =
+      bad_scene("springs = 100\n", "rtol = 1e-10\n[solver]\nmethod = \"continuum\"\n");
+  const auto r = run_mdrsim(fmt::format("run {} --json -", scene));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["resolution"]["route"], "continuum");
+  EXPECT_FALSE(j.contains("springs"));
+  // The parabola's fixed-load pull-off, -F0 (paper eq. 19's minimum), to rtol.
+  EXPECT_NEAR(j["dimensionless"]["normal_force"].get<double>(), -1.0, 1e-10);
+}
+
+// --trajectory on the continuum route: --samples rows of kind `sample`, evenly in the contact
+// radius from the glued radius (5e-4 m) to the critical point (a0 = 1.6e-4 m, paper eq. 17:
+// the fixed-load pull-off), with no springs to count.
+TEST_F(Cli, ContinuumTrajectorySamplesTheBranch) {
+  const std::string scene =
+      bad_scene("springs = 100\n", "rtol = 1e-10\n[solver]\nmethod = \"continuum\"\n");
+  const std::string csv = path("t.csv");
+  const auto r =
+      run_mdrsim(fmt::format("run {} --json - --trajectory {} --samples 11", scene, csv));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double critical = nlohmann::json::parse(r.out)["critical"]["contact_radius"].get<double>();
+  std::ifstream in(csv);
+  std::string line;
+  std::vector<double> radii;
+  while (std::getline(in, line)) {
+    if (line.find(",sample,") == std::string::npos) continue;
+    EXPECT_EQ(line.back(), ',') << line;  // springs_in_contact empty
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    radii.push_back(std::stod(cells.at(5)));
+  }
+  ASSERT_EQ(radii.size(), 11u);
+  EXPECT_DOUBLE_EQ(radii.front(), 5e-4);
+  EXPECT_DOUBLE_EQ(radii.back(), critical);
+  for (std::size_t k = 1; k < radii.size(); ++k) {
+    // Even steps of (a_g - a_c) / 10, to rounding.
+    EXPECT_NEAR(radii[k - 1] - radii[k], (5e-4 - critical) / 10.0, 1e-15);
+  }
 }
 
 TEST_F(Cli, NegativeModulus) {
@@ -464,7 +535,8 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
        "--set: discretization.x: unknown key (known: extrapolation, rtol, springs)"},
       {"solver.method=1", "--set: solver.method: expected a string, got 1"},
       {"solver.method=events",
-       "--set: solver.method: unknown 'events'; did you mean 'event'? (known: event, stepping)"},
+       "--set: solver.method: unknown 'events'; did you mean 'event'? (known: event, stepping, "
+       "continuum)"},
       {"solver={ method = \"stepping\", step = \"s\" }",
        R"(--set: solver.step: expected a number, got string "s")"},
       {"solver={ method = \"stepping\", step = 0 }", "--set: solver.step = 0 is outside (0, inf)"},

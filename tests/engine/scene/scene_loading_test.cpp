@@ -494,7 +494,7 @@ std::vector<BadScene> solver_cases() {
   return {
       {"MethodUnknown", "method = \"event\"", "method = \"events\"",
        "test.toml:18:10: solver.method: unknown 'events'; did you mean 'event'? (known: event, "
-       "stepping)"},
+       "stepping, continuum)"},
       {"MethodNumber", "method = \"event\"", "method = 1",
        "test.toml:18:10: solver.method: expected a string, got 1"},
       {"MethodTypo", "method = \"event\"", "mehtod = \"event\"",

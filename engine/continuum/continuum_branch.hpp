@@ -1,0 +1,79 @@
+// The continuum MDR branch of the shorthand's pull-off: the state at each contact radius a.
+#pragma once
+
+#include "controllers/controller.hpp"
+#include "detachment/criterion.hpp"
+#include "engine/base/material.hpp"
+#include "engine/model/contact_snapshot.hpp"
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+/// One equilibrium of the continuum contact (one spring per dx -> 0), with the value the
+/// normal machine holds there.
+struct BranchState {
+  double contact_radius = 0.0;           ///< a [m]
+  double stretch = 0.0;                  ///< boundary elongation e = g(a) - d [m]
+  double indentation = 0.0;              ///< d [m]
+  double normal_force = 0.0;             ///< F = E* (nf(a) - 2 a e) [N]
+  double tangential_displacement = 0.0;  ///< u_x [m]
+  double tangential_force = 0.0;         ///< F_x = 2 G* a u_x [N]
+  double control = 0.0;                  ///< a_u d + a_F F [m]
+
+  ContactSnapshot snapshot() const;
+};
+
+/// The glued contact of the shorthand after the tangential load is applied: every glued
+/// spring carries the same u_x, which the tangential machine sets from the contact's
+/// tangential stiffness 2 G* a (a_u u_x + a_F 2 G* a u_x = held value). On the receding
+/// branch the boundary spring sits at its let-go elongation e(a) (the criterion's
+/// critical_elongation, else a root of its margin), so that d(a) = g(a) - e(a).
+class ContinuumBranch {
+ public:
+  ContinuumBranch(const Profile& profile, const DetachmentCriterion& criterion,
+                  const Material& material, const AffineConstraint& normal,
+                  const AffineConstraint& tangential, double tangential_held);
+
+  double tangential_displacement(double a) const;  ///< u_x(a) [m]
+  /// The state at radius a [m] with boundary stretch e [m] (any e: pinned states too).
+  BranchState state(double a, double stretch) const;
+  /// The state on the receding branch at a > shear_off_radius() [m].
+  BranchState at(double a) const;
+  /// The let-go elongation e(a) [m]; 0 where the glue breaks unstretched (a <= a_s).
+  double stretch(double a) const;
+  /// d(control)/da [1] on the branch, by a fourth-order central difference of e(a) with a
+  /// step of 1e-3 of the distance to a_s (e goes like sqrt(a - a_s) there); `error` [1] gets
+  /// the difference from the step twice as large, over 15 (its Richardson estimate).
+  double control_slope(double a, double* error = nullptr) const;
+  /// The same for F: dF/da [N/m].
+  double force_slope(double a) const;
+  /// a_s [m]: below it the tangential load alone breaks the unstretched boundary (0: never).
+  double shear_off_radius() const { return shear_off_radius_; }
+  /// Finds a_s below `glued_radius` [m]; returns false if the glue breaks at the glued radius.
+  bool locate_shear_off(double glued_radius);
+  /// The largest |u_x| [m] the unstretched boundary holds at radius a (infinite: any).
+  double zero_stretch_limit(double a) const;
+  /// Root iterations spent so far (let-go searches and the branch's own root searches).
+  long long& iterations() const { return iterations_; }
+
+  const Material& material() const { return material_; }
+  const Profile& profile() const { return *profile_; }
+  const AffineConstraint& normal() const { return normal_; }
+  const AffineConstraint& tangential() const { return tangential_; }
+  double tangential_held() const { return tangential_held_; }
+
+ private:
+  double slope_of(double a, bool force, double* error) const;
+
+  const Profile* profile_;
+  const DetachmentCriterion* criterion_;
+  Material material_;
+  AffineConstraint normal_;
+  AffineConstraint tangential_;
+  double tangential_held_;
+  double hess_per_radius_;  ///< 2 pi dgamma / E* [m]: dl(a)^2 = that times a
+  double shear_off_radius_ = 0.0;
+  mutable long long iterations_ = 0;
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,237 @@
+// The walk down the branch: stable while the control falls as a falls, a jump at each fold.
+#include "engine/continuum/continuum_pull_off.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/minima.hpp>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "engine/base/bracketed_root.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr int kDecades = 14;
+/// Bits of Brent's minimization: half a double's, the most a minimum's place can have; the
+/// value there is then exact to rounding (the error is quadratic in the place's).
+constexpr int kMinimumBits = std::numeric_limits<double>::digits / 2;
+/// The control slope is a difference quotient (about 1e-13 relative): its root is
+/// searched to that, not to the last bit.
+constexpr int kSlopeDigits = std::numeric_limits<double>::digits - 8;
+
+struct Walk {
+  ContinuumBranch& branch;
+  std::vector<BranchState> samples;
+  ContinuumPullOff out;
+
+  /// The fold among three radii lower < mid <= upper where the sampled control turned (the
+  /// control at `lower` is not below the one at `mid`; its slope at `upper` is > 0).
+  BranchState fold_between(double lower, double mid, double upper, double& error) {
+    const double slope_mid = branch.control_slope(mid);
+    double lo = lower, hi = mid, slope_lo = 0.0, slope_hi = slope_mid;
+    if (slope_mid > 0.0) {
+      slope_lo = branch.control_slope(lower);
+    } else {
+      lo = mid;
+      slope_lo = slope_mid;
+      hi = upper;
+      slope_hi = branch.control_slope(upper);
+    }
+    const auto slope = [&](double a) { return branch.control_slope(a); };
+    double a = upper;
+    if (slope_hi > 0.0 && slope_lo < 0.0) {
+      const RootBracket r = bracket_root(slope, lo, hi, kSlopeDigits);
+      branch.iterations() += r.iterations;
+      a = 0.5 * (r.lo + r.hi);
+      if (holds_force(branch.normal())) {
+        // The fold of the force itself: F is off by F'' delta^2 / 2 only. Its place is off by
+        // the bracket and the quotient's error (about 1e-12 of a); F there bounds it.
+        const double place = (r.hi - r.lo) + 1e-12 * a;
+        const BranchState s = branch.at(a);
+        error = std::abs(branch.at(a + place).normal_force - s.normal_force);
+        return s;
+      }
+      // The place is off by the bracket and by the quotient's own error over the curvature.
+      double slope_error = 0.0;
+      branch.control_slope(a, &slope_error);
+      const double curvature = std::abs(slope_hi - slope_lo) / (hi - lo);
+      const double place_error = (r.hi - r.lo) + slope_error / std::max(curvature, 1e-300);
+      error = std::abs(branch.force_slope(a)) * place_error;
+    } else {
+      // No clean sign change (a turn the difference quotient cannot see): the minimum of the
+      // control value itself, whose place is then known to half the digits.
+      const auto r = boost::math::tools::brent_find_minima(
+          [&](double x) { return branch.at(x).control; }, lower, upper, kMinimumBits);
+      a = r.first;
+      const double step = std::ldexp(a, -kMinimumBits);
+      error = std::abs(branch.at(a + step).normal_force - branch.at(a).normal_force);
+    }
+    return branch.at(a);
+  }
+
+  /// The radius below `fold` where the control comes back down to `level`, searched
+  /// from sample `from` on; nothing if it never does.
+  std::optional<std::pair<double, std::size_t>> landing(const BranchState& fold, std::size_t from) {
+    const double level = fold.control;
+    std::size_t m = from;
+    while (m < samples.size() && !(samples[m].control < level)) ++m;
+    if (m == samples.size()) return std::nullopt;
+    const auto excess = [&](double a) { return branch.at(a).control - level; };
+    double upper = m > from ? samples[m - 1].contact_radius : fold.contact_radius;
+    double upper_excess = m > from ? samples[m - 1].control - level : 0.0;
+    for (int k = 1; k <= 60 && !(upper_excess > 0.0); ++k) {
+      upper = fold.contact_radius -
+              (fold.contact_radius - samples[m].contact_radius) * std::ldexp(1.0, -k);
+      upper_excess = excess(upper);
+    }
+    if (!(upper_excess > 0.0)) return std::pair{samples[m].contact_radius, m};
+    const RootBracket r = bracket_root(excess, samples[m].contact_radius, upper);
+    branch.iterations() += r.iterations;
+    return std::pair{r.lo, m};
+  }
+
+  /// The most tensile state of the stable stretch from `top` down to `bottom` (both
+  /// equilibria of it), among the samples strictly between them.
+  void visit_segment(const BranchState& top, const BranchState& bottom) {
+    out.segments.emplace_back(top.contact_radius, bottom.contact_radius);
+    if (holds_force(branch.normal())) {
+      // The control is the force, and it falls along a stable stretch: its end is the minimum.
+      if (!out.peak || bottom.normal_force < out.peak->normal_force) {
+        out.peak = bottom;
+        out.peak_error = 0.0;
+      }
+      return;
+    }
+    std::vector<const BranchState*> points{&top};
+    for (const BranchState& s : samples) {
+      if (s.contact_radius < top.contact_radius && s.contact_radius > bottom.contact_radius) {
+        points.push_back(&s);
+      }
+    }
+    points.push_back(&bottom);
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < points.size(); ++j) {
+      if (points[j]->normal_force < points[k]->normal_force) k = j;
+    }
+    BranchState best = *points[k];
+    double error = 0.0;
+    // The bracket of the minimum: around an inner sample, or next to an end where F still
+    // falls into the stretch (a minimum between the end and its neighbouring sample).
+    const std::size_t last = points.size() - 1;
+    std::optional<std::pair<double, double>> bracket;
+    if (k > 0 && k < last) {
+      bracket.emplace(points[k + 1]->contact_radius, points[k - 1]->contact_radius);
+    } else if (k == 0 && last > 0 && branch.force_slope(top.contact_radius) > 0.0) {
+      bracket.emplace(points[1]->contact_radius, top.contact_radius);
+    } else if (k == last && last > 0 && branch.force_slope(bottom.contact_radius) < 0.0) {
+      bracket.emplace(bottom.contact_radius, points[last - 1]->contact_radius);
+    }
+    if (bracket) {
+      const auto force = [&](double a) { return branch.at(a).normal_force; };
+      const auto r = boost::math::tools::brent_find_minima(force, bracket->first, bracket->second,
+                                                           kMinimumBits);
+      if (r.second < best.normal_force) best = branch.at(r.first);
+      // The minimum's value is off by F'' delta^2 / 2 for a place off by delta.
+      const double step = std::ldexp(best.contact_radius, -kMinimumBits);
+      error = std::abs(force(best.contact_radius + step) - best.normal_force);
+    }
+    if (!out.peak || best.normal_force < out.peak->normal_force) {
+      out.peak = best;
+      out.peak_error = error;
+    }
+  }
+};
+
+}  // namespace
+
+ContinuumPullOff continuum_pull_off(ContinuumBranch& branch, double glued_radius, int per_decade) {
+  Walk w{branch, {}, {}};
+  ContinuumPullOff& out = w.out;
+  const double ag = glued_radius;
+  if (!branch.locate_shear_off(ag)) {
+    out.end = ContinuumPullOff::End::shear_off_at_application;
+    out.tangential_strength =
+        2.0 * branch.material().effective_shear_modulus * ag * branch.zero_stretch_limit(ag);
+    return out;
+  }
+  if (branch.profile().fixed_contact_radius()) {
+    // A flat punch: every glued spring sits at the same gap, so the boundary's let-go at a_g
+    // takes every spring inside with it (their thresholds are lower): the jump starts there.
+    out.end = ContinuumPullOff::End::first_detachment;
+    out.critical = branch.at(ag);
+    out.peak = out.critical;
+    out.segments.emplace_back(ag, ag);
+    return out;
+  }
+  const double as = branch.shear_off_radius();
+  const int count = kDecades * std::max(per_decade, 2);
+  const double ratio = std::pow(10.0, -1.0 / std::max(per_decade, 2));
+  w.samples.reserve(static_cast<std::size_t>(count) + 1);
+  double t = ag - as;
+  for (int j = 0; j <= count; ++j, t *= ratio) {
+    const double a = j == 0 ? ag : as + t;
+    if (!(a > as)) break;
+    w.samples.push_back(branch.at(a));
+  }
+
+  BranchState top = w.samples.front();
+  std::size_t next = 1;  // the first sample below `top`
+  bool first = true;
+  while (true) {
+    // The fold of this stable stretch: the first turn of the control among the samples.
+    std::optional<BranchState> fold;
+    double fold_error = 0.0;
+    if (branch.control_slope(top.contact_radius) <= 0.0) {
+      fold = top;
+    } else {
+      const BranchState* above = &top;
+      const BranchState* above2 = &top;
+      for (std::size_t j = next; j < w.samples.size(); ++j) {
+        const BranchState& s = w.samples[j];
+        if (!(s.control < above->control)) {
+          fold = w.fold_between(s.contact_radius, above->contact_radius, above2->contact_radius,
+                                fold_error);
+          next = j;
+          break;
+        }
+        above2 = above;
+        above = &s;
+      }
+    }
+    if (!fold) {
+      if (as > 0.0) {
+        out.end = ContinuumPullOff::End::shear_off;
+        out.critical = branch.state(as, 0.0);
+      } else {
+        out.end = ContinuumPullOff::End::smooth_peel;
+        out.critical = w.samples.back();
+      }
+      w.visit_segment(top, out.critical);
+      if (out.end == ContinuumPullOff::End::smooth_peel && out.peak &&
+          out.peak->contact_radius == out.critical.contact_radius) {
+        out.peak.reset();  // F -> 0 at a -> 0: the last sample's tension is no peak
+      }
+      return out;
+    }
+    w.visit_segment(top, *fold);
+    while (next < w.samples.size() && w.samples[next].contact_radius >= fold->contact_radius) {
+      ++next;
+    }
+    const auto land = w.landing(*fold, next);
+    if (!land) {
+      out.end = first && fold->contact_radius == ag ? ContinuumPullOff::End::first_detachment
+                                                    : ContinuumPullOff::End::fold;
+      out.critical = *fold;
+      out.critical_error = fold_error;
+      return out;
+    }
+    const BranchState landed = branch.at(land->first);
+    out.partial_jumps.push_back({*fold, landed});
+    top = landed;
+    next = land->second;
+    first = false;
+  }
+}
+
+}  // namespace mdrsim
