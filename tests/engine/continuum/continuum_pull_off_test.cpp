@@ -9,36 +9,14 @@
 #include "controllers/builtin_controllers.hpp"
 #include "detachment/mode_mixed_criterion.hpp"
 #include "engine/reference/continuum_reference.hpp"
+#include "tests/support/stepped_profile.hpp"
 
 namespace mdrsim {
 namespace {
 
 constexpr double kRadius = 0.01;  // R [m]
 
-/// g = A tanh(x/s) + x^2/R: a cone-like tip of slope A/s that levels off, then a parabola.
-/// Under fixed grips d(a) has two minima, at the tip and on the parabola.
-class SteppedProfile final : public Profile {
- public:
-  SteppedProfile(double step, double width) : step_(step), width_(width) {}
-  double shape(double r) const override { return mdr_image(r); }  // not used on this route
-  double mdr_image(double x) const override {
-    return step_ * std::tanh(x / width_) + x * x / kRadius;
-  }
-  double mdr_image_slope(double x) const override {
-    const double c = 1.0 / std::cosh(x / width_);
-    return step_ / width_ * c * c + 2.0 * x / kRadius;
-  }
-  // 2 integral_0^a x g'(x) dx = 2 A s (t tanh t - ln cosh t) + 4 a^3/(3R), t = a/s.
-  double nonadhesive_force_per_modulus(double a) const override {
-    const double t = a / width_;
-    const double log_cosh = t + std::log1p(std::exp(-2.0 * t)) - std::log(2.0);
-    return 2.0 * step_ * width_ * (t * std::tanh(t) - log_cosh) + 4.0 * a * a * a / (3.0 * kRadius);
-  }
-
- private:
-  double step_;   ///< A [m]
-  double width_;  ///< s [m]
-};
+using test::SteppedProfile;
 
 // With A = 6 um the parabola's fold sits above d = 0: its jump lands on the tip's branch where
 // d falls back to the fold's value, and the pull-off ends at the tip's fold (the reference's
@@ -46,7 +24,7 @@ class SteppedProfile final : public Profile {
 // scale A (the reference refines to a few ulps, this walk's difference quotient to ~1e-12).
 TEST(ContinuumPullOff, PartialJumpLandsOnTheTipsBranch) {
   const Material m = Material::from_youngs_modulus(1e6, 0.0, 0.05);
-  const SteppedProfile profile(6e-6, 1e-5);
+  const SteppedProfile profile(6e-6, 1e-5, kRadius);
   const ModeMixedCriterion criterion(m);
   ContinuumBranch branch(profile, criterion, m, FixedGripsController().constraint(),
                          FixedGripsController().constraint(), 0.0);

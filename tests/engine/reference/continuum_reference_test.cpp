@@ -13,6 +13,7 @@
 #include "profiles/cone_profile.hpp"
 #include "profiles/parabolic_profile.hpp"
 #include "profiles/power_law_profile.hpp"
+#include "tests/support/stepped_profile.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::test::ContinuumCritical;
@@ -50,30 +51,7 @@ double gamma_of(const ContinuumMaterial& m) {
 TangentialLoad held_u(double u) { return {TangentialLoad::Kind::displacement, u}; }
 TangentialLoad held_force(double f) { return {TangentialLoad::Kind::force, f}; }
 
-/// g = A tanh(x/s) + x^2/R: a cone-like tip of slope A/s that levels off, then a parabola.
-/// Under fixed grips d(a) has two minima, at the tip and on the parabola.
-class SteppedProfile final : public mdrsim::Profile {
- public:
-  SteppedProfile(double step, double width) : step_(step), width_(width) {}
-  double shape(double r) const override { return mdr_image(r); }  // not used by the reference
-  double mdr_image(double x) const override {
-    return step_ * std::tanh(x / width_) + x * x / kRadius;
-  }
-  double mdr_image_slope(double x) const override {
-    const double c = 1.0 / std::cosh(x / width_);
-    return step_ / width_ * c * c + 2.0 * x / kRadius;
-  }
-  // 2 integral_0^a x g'(x) dx = 2 A s (t tanh t - ln cosh t) + 4 a^3/(3R), t = a/s.
-  double nonadhesive_force_per_modulus(double a) const override {
-    const double t = a / width_;
-    const double log_cosh = t + std::log1p(std::exp(-2.0 * t)) - std::log(2.0);
-    return 2.0 * step_ * width_ * (t * std::tanh(t) - log_cosh) + 4.0 * a * a * a / (3.0 * kRadius);
-  }
-
- private:
-  double step_;   ///< A [m]
-  double width_;  ///< s [m]
-};
+using mdrsim::test::SteppedProfile;
 
 }  // namespace
 
@@ -424,7 +402,7 @@ TEST(ContinuumReference, PartialJumpLandsOnTheTipsBranch) {
     return best;
   };
   {
-    const SteppedProfile profile(3e-6, 1e-5);
+    const SteppedProfile profile(3e-6, 1e-5, kRadius);
     const ContinuumReference branch(profile, m, {}, {}, NormalControl::fixed_grips());
     const ContinuumCritical c = branch.pull_off(glued);
     EXPECT_EQ(c.kind, Kind::fold);
@@ -434,7 +412,7 @@ TEST(ContinuumReference, PartialJumpLandsOnTheTipsBranch) {
     EXPECT_NEAR(c.point.contact_radius / a, 1.0, 1e-4);
   }
   {
-    const SteppedProfile profile(6e-6, 1e-5);
+    const SteppedProfile profile(6e-6, 1e-5, kRadius);
     const ContinuumReference branch(profile, m, {}, {}, NormalControl::fixed_grips());
     const ContinuumCritical c = branch.pull_off(glued);
     EXPECT_EQ(c.kind, Kind::fold);
