@@ -73,15 +73,24 @@ void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
   fmt::print(out, "accuracy: {}\n", line);
 }
 
+/// The springs in contact after a state: ", N springs in contact" (a stage's end) or
+/// " (N springs)" (a jump's states); nothing on the continuum route, which has none.
+std::string springs_of(const ContactSnapshot& s, bool row, bool jump) {
+  if (!row) return {};
+  return jump ? fmt::format(" ({} springs)", s.springs_in_contact)
+              : fmt::format(", {} springs in contact", s.springs_in_contact);
+}
+
 /// A program's stages and jumps, one line each.
-void print_program(std::FILE* out, const RunResult& r) {
+void print_program(std::FILE* out, const RunResult& r, bool row) {
   for (const StageRecord& stage : r.stages) {
     const ContactSnapshot& e = stage.end;
     fmt::print(out,
-               "stage {}: ends at d = {:.6g} m, F = {:.6g} N, ux = {:.6g} m, Fx = {:.6g} N, "
-               "{} springs in contact; work {:.6g} J normal, {:.6g} J tangential\n",
+               "stage {}: ends at d = {:.6g} m, F = {:.6g} N, ux = {:.6g} m, Fx = {:.6g} N{}; "
+               "work {:.6g} J normal, {:.6g} J tangential\n",
                stage.name, e.indentation, e.normal_force, e.tangential_displacement,
-               e.tangential_force, e.springs_in_contact, stage.work.normal, stage.work.tangential);
+               e.tangential_force, springs_of(e, row, false), stage.work.normal,
+               stage.work.tangential);
   }
   for (const JumpRecord& jump : r.jumps) {
     const std::string to =
@@ -90,12 +99,12 @@ void print_program(std::FILE* out, const RunResult& r) {
             ? "the indenter slides away (nothing holds the tangential fixed load)"
         : jump.end == JumpEnd::pressed
             ? "the indenter pressed in on springs without glue (not followed by the shorthand)"
-            : fmt::format("d = {:.6g} m, F = {:.6g} N ({} springs)", jump.after.indentation,
-                          jump.after.normal_force, jump.after.springs_in_contact);
-    fmt::print(out, "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N ({} springs) to {}\n",
+            : fmt::format("d = {:.6g} m, F = {:.6g} N{}", jump.after.indentation,
+                          jump.after.normal_force, springs_of(jump.after, row, true));
+    fmt::print(out, "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N{} to {}\n",
                jump.inward ? "in" : "out", jump.stage, jump.by_shear ? " (by shear)" : "",
                jump.critical.indentation, jump.critical.normal_force,
-               jump.critical.springs_in_contact, to);
+               springs_of(jump.critical, row, true), to);
   }
   if (r.work) {
     fmt::print(out, "work: {:.6g} J normal, {:.6g} J tangential\n", r.work->normal,
@@ -107,10 +116,11 @@ void print_program(std::FILE* out, const RunResult& r) {
 
 void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
   const auto [normal_control, tangential_control] = final_controls(scene, r.stages.size());
-  fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {} springs)\n",
-             to_string(r.status), normal_control, tangential_control, scene.criterion_name,
-             r.springs);
-  print_program(out, r);
+  const bool row = scene.solver.method != SolverMethod::continuum;
+  fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {})\n", to_string(r.status),
+             normal_control, tangential_control, scene.criterion_name,
+             row ? fmt::format("{} springs", r.springs) : std::string("continuum route"));
+  print_program(out, r, row);
   print_accuracy(out, scene, r);
   const auto s = dimensionless_scales(scene);
   if (r.critical) {
@@ -119,7 +129,8 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
     for (const SnapshotField& f : kSnapshotFields) {
       line += fmt::format("{} = {:.8g} {}, ", f.symbol, c.*f.member, f.unit);
     }
-    fmt::print(out, "critical: {}{} springs in contact\n", line, c.springs_in_contact);
+    if (row) line += fmt::format("{} springs in contact", c.springs_in_contact);
+    fmt::print(out, "critical: {}\n", row ? line : line.substr(0, line.size() - 2));
     if (s) {
       line.clear();
       for (const SnapshotField& f : kSnapshotFields) {

@@ -241,6 +241,16 @@ TEST_F(Cli, ContinuumRunsWithoutSprings) {
   EXPECT_NEAR(j["dimensionless"]["normal_force"].get<double>(), -1.0, 1e-10);
 }
 
+// The summary of a continuum run counts no springs: it has none (a row's says how many).
+TEST_F(Cli, ContinuumSummaryNamesTheRouteNotSprings) {
+  const std::string scene =
+      bad_scene("springs = 100\n", "rtol = 1e-10\n[solver]\nmethod = \"continuum\"\n");
+  const auto r = run_mdrsim(fmt::format("run {} --log-level off", scene));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("continuum route)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("springs"), r.out.find("no springs") + 3) << r.out;  // only there
+}
+
 // --trajectory on the continuum route: --samples rows of kind `sample`, evenly in the contact
 // radius from the glued radius (5e-4 m) to the critical point (a0 = 1.6e-4 m, paper eq. 17:
 // the fixed-load pull-off), with no springs to count.
