@@ -167,7 +167,8 @@ class ProgramRunner {
     no_end,
     endless,
     step_limit,
-    overflow
+    overflow,
+    unending_cascade
   };
   /// Stepping: what a trial step changes, to take it back.
   struct Saved {
@@ -180,6 +181,7 @@ class ProgramRunner {
   std::vector<Event> pending_;  ///< stepping: the events of the trial step
   bool buffering_ = false;
   Stop stop_ = Stop::none;
+  double unending_at_ = 0.0;  ///< the parameter of an unending cascade (Stop::unending_cascade)
   /// A flight ended the program: the state and the located state the last stage ends at.
   JumpEnd flight_ = JumpEnd::state;
   ContactSnapshot flight_end_;
@@ -370,6 +372,7 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
 }
 
 void ProgramRunner::finish_cascade(const Cascade& cascade) {
+  if (stop_ == Stop::unending_cascade) return;  // not an equilibrium: nothing is recorded
   if (const JumpEnd end = flight_of(cascade); end != JumpEnd::state) {
     end_in_flight(cascade, end);
     return;
@@ -475,8 +478,11 @@ bool ProgramRunner::run_changes(std::optional<Change> first, Cascade& cascade, s
       cascade.refined_before = front_->fold(row_, line(), t_, cascade.before);
     }
     if (cascade.changes > cap) {
-      throw std::runtime_error(
-          fmt::format("a cascade did not end: the spring row keeps changing at t = {}", t_));
+      // Rounding at values far from the scene's scales (a push until separation that goes on
+      // for ever) can keep one parameter value's changes from settling: stop there.
+      stop_ = Stop::unending_cascade;
+      unending_at_ = t_;
+      return false;
     }
     apply(*change, cascade);
     in_cascade_ = true;
@@ -500,6 +506,7 @@ void ProgramRunner::take_step(double t_end) {
     const bool more =
         run_changes(std::nullopt, cascade, last_try ? std::numeric_limits<std::int64_t>::max() : 1);
     buffering_ = false;
+    if (stop_ == Stop::unending_cascade) return;
     if (more && !last_try) {
       row_ = saved.row;
       record_.stage_work = saved.stage_work;
@@ -621,7 +628,8 @@ void ProgramRunner::run_stage(const Stage& stage) {
       track_front(cascade);
     }
   }
-  if (stop_ == Stop::overflow) return;  // the stage's numbers left the range of a double
+  // The stage's numbers left the range of a double, or its changes did not settle.
+  if (stop_ == Stop::overflow || stop_ == Stop::unending_cascade) return;
   if (flight_ != JumpEnd::state) {
     // The stop the loop's next turn would have found (finish() reads the status from it).
     if (stop_ == Stop::none && !(stage.until_separation && row_.in_contact() == 0)) {
@@ -682,6 +690,15 @@ void ProgramRunner::finish(RunResult& r) {
           "(the scene's values are too extreme together): it stops there, and only the stages "
           "before it are reported",
           stage_->name));
+      return;
+    case Stop::unending_cascade:
+      r.status = RunStatus::step_limit;
+      r.critical.reset();
+      r.warnings.push_back(fmt::format(
+          "stage '{}': at parameter {:.6g} the spring row kept changing without settling "
+          "(rounding of values far beyond the scene's scales, {} springs in contact): it stops "
+          "there, and only the stages before it are reported",
+          stage_->name, unending_at_, row_.in_contact()));
       return;
     case Stop::endless:
       r.status = RunStatus::step_limit;

@@ -68,5 +68,34 @@ TEST(ProgramStatus, AGlueJumpDoesNotDecideALaterContact) {
   EXPECT_FALSE(r.critical.has_value());
 }
 
+// A rebinding program that pushes on "until separation" while shearing never separates. Its
+// 256-spring pilot row (which frames the run's rows) reaches t of about 8.5e8, where rounding
+// kept one parameter value's changes from settling and the run threw an internal error. Now
+// that row stops (step-limit, "without settling"), and the run reports the stick-slip stop of
+// its own row with the stages before it, never an internal error.
+TEST(ProgramStatus, AnUnsettlingCascadeStopsTheProgramWithAWarning) {
+  const Scene scene = test::build_scene_text(
+      "[material]\neffective_modulus = 2.0e6\nwork_of_adhesion = 0.05\n"
+      "approach_work_of_adhesion = 0.02\n[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[loading]\nrebinding = true\n"
+      "[[loading.stage]]\nname = \"approach\"\nnormal = { control = \"fixed-load\", to = 0.01 "
+      "}\n"
+      "[[loading.stage]]\nname = \"shear\"\ntangential = { control = \"fixed-load\", by = 1e-3 "
+      "}\n"
+      "[[loading.stage]]\nname = \"unload\"\nnormal = { to = -0.001 }\n"
+      "[[loading.stage]]\nname = \"reload\"\n"
+      "normal = { control = \"compliant\", stiffness = 100.0, by = 1e-5 }\n"
+      "[[loading.stage]]\nname = \"pull\"\nnormal = { control = \"fixed-grips\", by = 30e-5 }\n"
+      "tangential = { control = \"fixed-grips\", by = 1e-6 }\nuntil = \"separation\"\n"
+      "[discretization]\nsprings = 500\n");
+  const RunResult r = run_scene(scene, {});
+  EXPECT_EQ(r.status, RunStatus::step_limit);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.back().find("stage 'pull'"), std::string::npos) << r.warnings.back();
+  // The stages before the one that did not settle are reported.
+  ASSERT_GE(r.stages.size(), 4U);
+  EXPECT_EQ(r.stages[3].name, "reload");
+}
+
 }  // namespace
 }  // namespace mdrsim
