@@ -26,6 +26,9 @@ struct Cascade {
   std::optional<ContactSnapshot> refined_before;
   AxisWork work_before;          ///< the stage's work up to `before`
   const Stage* stage = nullptr;  ///< the stage it happened in
+  /// A shear-off cascade's fold of the let-go branch above a_s, in spacings, where one lies
+  /// there (status_margin.hpp): the row cannot tell that shear-off from an instability.
+  std::optional<double> fold_above_shear_off;
 };
 
 }  // namespace mdrsim

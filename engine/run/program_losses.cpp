@@ -39,6 +39,7 @@ void ProgramLosses::decide(const Cascade& c, const ZeroScale& zero, double large
                          .first_by_shear = c.first_by_shear,
                          .second_by_shear = c.second_by_shear};
   r.status = loss_status(loss);
+  if (r.status == RunStatus::shear_off) r.fold_above_shear_off = c.fold_above_shear_off;
   if (c.changes >= 2) {
     r.critical = c.before;
     r.refined_critical = c.refined_before;

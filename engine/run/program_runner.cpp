@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -25,6 +26,7 @@
 #include "engine/run/program_step.hpp"
 #include "engine/run/progress_log.hpp"
 #include "engine/run/stage_motion.hpp"
+#include "engine/run/status_margin.hpp"
 
 namespace mdrsim {
 namespace {
@@ -180,6 +182,15 @@ class ProgramRunner {
   };
   std::vector<Event> pending_;  ///< stepping: the events of the trial step
   bool buffering_ = false;
+  /// The last let-gos that began a cascade in this stage, by their stretch (not at rest):
+  /// the branch next to a shear-off, for its status margin (status_margin.hpp).
+  struct LetGoPoint {
+    std::int64_t spring;
+    double control;  ///< the held normal value
+  };
+  std::array<LetGoPoint, 3> let_go_trail_{};
+  int let_go_trail_size_ = 0;
+  void note_let_go(Cascade& cascade, std::int64_t k, double stretch_x, bool by_shear);
   Stop stop_ = Stop::none;
   double unending_at_ = 0.0;  ///< the parameter of an unending cascade (Stop::unending_cascade)
   /// A flight ended the program: the state and the located state the last stage ends at.
@@ -319,6 +330,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       const double stretch_x = u - row_.boundary_offset();
       // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
       by_shear = boundary_let_go(u).kind == LetGo::Kind::now;
+      note_let_go(cascade, k, stretch_x, by_shear);
       if (observe_springs_) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
       row_.let_go_boundary(row_.image(k) <= d);
       guards_.released_to = std::max(guards_.released_to, k);
@@ -346,6 +358,33 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
     }
     if (cascade.changes == 2) cascade.second_by_shear = by_shear;
   }
+}
+
+void ProgramRunner::note_let_go(Cascade& cascade, std::int64_t k, double stretch_x, bool by_shear) {
+  // Only a stage that lowers the normal held value at a still tangential one peels along one
+  // branch of that value; the glue carries one stretch.
+  if (!(normal_.rate < 0.0) || tangential_.rate != 0.0 || !row_.one_offset()) return;
+  if (cascade.changes == 0 && !by_shear) {
+    if (let_go_trail_size_ == 3) {
+      let_go_trail_[0] = let_go_trail_[1];
+      let_go_trail_[1] = let_go_trail_[2];
+      --let_go_trail_size_;
+    }
+    let_go_trail_[let_go_trail_size_++] = {k, row_.normal().held};
+    return;
+  }
+  // Spring K = k + 1 let go by its stretch and spring k breaks at rest right after it: the
+  // row's shear-off, whose branch may fold above a_s within a spacing of spring K.
+  if (cascade.changes != 1 || !by_shear || cascade.first != Change::let_go ||
+      cascade.first_by_shear || let_go_trail_size_ < 3) {
+    return;
+  }
+  const auto& [outer2, outer, boundary] = let_go_trail_;  // springs K + 2, K + 1, K
+  if (boundary.spring != k + 1 || outer.spring != k + 2 || outer2.spring != k + 3) return;
+  cascade.fold_above_shear_off = program_fold_above_shear_off(
+      criterion_, stretch_x, row_.position(k),
+      {row_.position(k + 1), row_.position(k + 2), row_.position(k + 3)},
+      {boundary.control, outer.control, outer2.control}, row_.spacing());
 }
 
 void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
@@ -408,6 +447,7 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
 
 void ProgramRunner::start_stage(const Stage& stage) {
   stage_ = &stage;
+  let_go_trail_size_ = 0;
   record_.start_stage();
   const auto start_axis = [&](const std::optional<StageAxis>& axis, bool normal,
                               AxisMotion& motion) {

@@ -61,6 +61,15 @@ RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
   return result;
 }
 
+/// A row whose branch folds close above a_s (status_margin.hpp) says it cannot tell.
+std::string cannot_tell_status(const RunResult& result) {
+  return fmt::format(
+      "the branch folds {:.3g} spacings above the radius where the glue shears off "
+      "unstretched ({} springs): the row cannot tell instability from shear-off; "
+      "discretization.rtol resolves it",
+      result.fold_above_shear_off.value_or(0.0), result.springs);
+}
+
 void warn_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // the zoom resolves the critical point
   const std::int64_t springs = result.springs;
@@ -69,11 +78,7 @@ void warn_resolution(const Scene& scene, RunResult& result) {
   if (auto w = unresolved_smooth_peel(result, row, scene.material.work_of_adhesion > 0.0)) {
     result.warnings.push_back(std::move(*w));
   } else if (!status_resolved(result)) {
-    result.warnings.push_back(
-        fmt::format("the branch folds {:.3g} spacings above the radius where the glue shears off "
-                    "unstretched ({} springs): the row cannot tell instability from shear-off; "
-                    "discretization.rtol resolves it",
-                    result.fold_above_shear_off.value_or(0.0), springs));
+    result.warnings.push_back(cannot_tell_status(result));
   } else if (auto w = unresolved_critical(result, row)) {
     result.warnings.push_back(std::move(*w));
   }
@@ -102,6 +107,7 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
                  unresolved_smooth_peel(result, row, adhesive)}) {
     if (w) result.warnings.push_back(std::move(*w));
   }
+  if (!status_resolved(result)) result.warnings.push_back(cannot_tell_status(result));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "engine/run/status_margin.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -19,6 +20,41 @@ constexpr double kFarSpacings = 8.0;
 constexpr double kRoundingFold = 1e-12;
 
 }  // namespace
+
+std::optional<double> fold_of_let_go_branch(const std::array<double, 3>& positions,
+                                            const std::array<double, 3>& controls, double a_s,
+                                            double dx) {
+  // Near a_s the let-go elongation goes like sqrt(a - a_s) (the margin at rest crosses zero
+  // linearly in a), so the control along the branch is l(t) = A + B t - C sqrt(t), t = a - a_s,
+  // with a fold where B = C / (2 sqrt(t)). A parabola in a misses it by many spacings where
+  // the fold lies within one (the sqrt is not smooth there); this fit is exact for it.
+  const double t[3] = {positions[0] - a_s, positions[1] - a_s, positions[2] - a_s};
+  if (t[0] < 0.0) return std::nullopt;
+  const std::array<double, 3>& l = controls;
+  const double p = t[1] - t[0], q = std::sqrt(t[1]) - std::sqrt(t[0]);
+  const double r = t[2] - t[0], w = std::sqrt(t[2]) - std::sqrt(t[0]);
+  const double y1 = l[1] - l[0], y2 = l[2] - l[0];
+  const double det = -p * w + q * r;  // of [[p, -q], [r, -w]]
+  if (!(det != 0.0)) return std::nullopt;
+  const double b = (-y1 * w + q * y2) / det;
+  const double c = (p * y2 - r * y1) / det;
+  if (!(b > 0.0) || !(c > 0.0)) return std::nullopt;  // no fold above a_s
+  const double fold = 0.25 * (c / b) * (c / b);
+  // A law whose elongation is not a sqrt there (mode-dependent) leaves c at rounding: a fold
+  // some 1e-20 a_s above it, which no row of doubles resolves and no force feels.
+  if (fold <= kRoundingFold * a_s) return std::nullopt;
+  return fold / dx;
+}
+
+std::optional<double> program_fold_above_shear_off(
+    const DetachmentCriterion& criterion, double tangential_stretch, double broken_position,
+    const std::array<double, 3>& positions, const std::array<double, 3>& controls, double dx) {
+  const auto margin = [&](double a) { return margin_at_rest(criterion, tangential_stretch, a); };
+  const double lo = broken_position;
+  const double hi = positions[0];
+  if (!(lo > 0.0) || !(margin(lo) < 0.0) || !(margin(hi) >= 0.0)) return std::nullopt;
+  return fold_of_let_go_branch(positions, controls, bracketed_root(margin, lo, hi), dx);
+}
 
 std::optional<double> fold_above_shear_off(const Contact& contact,
                                            const DetachmentCriterion& criterion,
@@ -61,26 +97,9 @@ std::optional<double> fold_above_shear_off(const Contact& contact,
     return std::nullopt;  // no shear-off radius near the critical point
   }
   const double a_s = bracketed_root(margin_at_rest, lo, hi);
-  // Near a_s the let-go elongation goes like sqrt(a - a_s) (the margin at rest crosses zero
-  // linearly in a), so the control along the branch is l(t) = A + B t - C sqrt(t), t = a - a_s,
-  // with a fold where B = C / (2 sqrt(t)). A parabola in a misses it by many spacings where
-  // the fold lies within one (the sqrt is not smooth there); this fit is exact for it.
-  const double t[3] = {row.position(middle - 1) - a_s, row.position(middle) - a_s,
-                       row.position(middle + 1) - a_s};
-  const double l[3] = {inner, at, out};
-  const double p = t[1] - t[0], q = std::sqrt(t[1]) - std::sqrt(t[0]);
-  const double r = t[2] - t[0], w = std::sqrt(t[2]) - std::sqrt(t[0]);
-  const double y1 = l[1] - l[0], y2 = l[2] - l[0];
-  const double det = -p * w + q * r;  // of [[p, -q], [r, -w]]
-  if (!(det != 0.0)) return std::nullopt;
-  const double b = (-y1 * w + q * y2) / det;
-  const double c = (p * y2 - r * y1) / det;
-  if (!(b > 0.0) || !(c > 0.0)) return std::nullopt;  // no fold above a_s
-  const double fold = 0.25 * (c / b) * (c / b);
-  // A law whose elongation is not a sqrt there (mode-dependent) leaves c at rounding: a fold
-  // some 1e-20 a_s above it, which no row of doubles resolves and no force feels.
-  if (fold <= kRoundingFold * a_s) return std::nullopt;
-  return fold / dx;
+  return fold_of_let_go_branch(
+      {row.position(middle - 1), row.position(middle), row.position(middle + 1)}, {inner, at, out},
+      a_s, dx);
 }
 
 bool status_resolved(const RunResult& row) {

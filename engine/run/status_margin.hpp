@@ -1,6 +1,7 @@
 // How far a row's critical point lies from the line between instability and shear-off.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "detachment/criterion.hpp"
@@ -26,6 +27,21 @@ std::optional<double> fold_above_shear_off(const Contact& contact,
                                            const std::optional<Contact::State>& outer2,
                                            const Contact::State& outer,
                                            const Contact::State& critical);
+
+/// The fit itself: the let-go controls `controls` of three neighbouring springs at `positions`
+/// (innermost first, all above a_s) with the branch's form next to a_s; the fold's height
+/// above a_s in spacings `dx`, or nothing where the branch has no fold above a_s.
+std::optional<double> fold_of_let_go_branch(const std::array<double, 3>& positions,
+                                            const std::array<double, 3>& controls, double a_s,
+                                            double dx);
+
+/// A program row's shear-off: springs K, K + 1 and K + 2 (at `positions`, innermost first)
+/// let go by their stretch at the held normal values `controls` of a stage that lowers it,
+/// and spring K - 1 (at `broken_position`) broke at rest right after spring K, under the glue's
+/// tangential stretch [m]. The fold of that branch above a_s in spacings, as above.
+std::optional<double> program_fold_above_shear_off(
+    const DetachmentCriterion& criterion, double tangential_stretch, double broken_position,
+    const std::array<double, 3>& positions, const std::array<double, 3>& controls, double dx);
 
 /// Whether a row's status is told apart from the other one (RunResult::fold_above_shear_off).
 bool status_resolved(const RunResult& row);

@@ -114,5 +114,44 @@ TEST(StatusMargin, APlainRowSaysWhenItCannotTell) {
   EXPECT_TRUE(fine.warnings.empty()) << fine.warnings.front();
 }
 
+/// The shorthand as its three-stage program (preload to the depth that glues a_g, u_x, pull).
+std::string program_text(const std::string& discretization) {
+  const PowerLawProfile profile(kCoefficient, kExponent);
+  return fmt::format(
+      "[material]\nyoungs_modulus = {:.17g}\npoisson_ratio = {:.17g}\nwork_of_adhesion = "
+      "{:.17g}\n"
+      "[profile]\ntype = \"power_law\"\ncoefficient = {:.17g}\nexponent = {:.17g}\n"
+      "[loading]\n"
+      "[[loading.stage]]\nname = \"preload\"\nnormal = {{ control = \"fixed-grips\", to = "
+      "{:.17g} }}\n"
+      "[[loading.stage]]\nname = \"shear\"\ntangential = {{ control = \"fixed-grips\", to = "
+      "{:.17g} }}\n"
+      "[[loading.stage]]\nname = \"pull\"\nnormal = {{ by = -0.05 }}\nuntil = \"separation\"\n"
+      "[detachment]\ncriterion = \"mode-mixed\"\n"
+      "[discretization]\n{}",
+      kYoungs, kPoisson, kWork, kCoefficient, kExponent, profile.mdr_image(kGluedRadius),
+      kTangential, discretization);
+}
+
+// The program of the same path on a plain row of 4096 springs across a_g shears off where the
+// continuum folds 0.055 spacings above a_s: it says it cannot tell, with the fold its own
+// branch fit finds (the continuum's distance within the row's O(dx): 7 % measured at this
+// spacing, 15 % allowed); a row of 2^20 springs sees the fold and does not warn.
+TEST(StatusMargin, AProgramRowSaysWhenItCannotTell) {
+  const ContinuumCritical ref = reference();
+  const RunResult coarse = run_scene(test::build_scene_text(program_text("springs = 4096\n")), {});
+  EXPECT_EQ(coarse.status, RunStatus::shear_off);
+  ASSERT_TRUE(coarse.fold_above_shear_off.has_value());
+  const double dx = kGluedRadius / 4096.0;
+  const double above = (ref.point.contact_radius - ref.shear_off_radius) / dx;
+  EXPECT_NEAR(*coarse.fold_above_shear_off, above, 0.15 * above);
+  ASSERT_EQ(coarse.warnings.size(), 1u);
+  EXPECT_NE(coarse.warnings[0].find("cannot tell instability from shear-off"), std::string::npos)
+      << coarse.warnings[0];
+  const RunResult fine = run_scene(test::build_scene_text(program_text("springs = 1048576\n")), {});
+  EXPECT_EQ(fine.status, RunStatus::instability);
+  EXPECT_TRUE(fine.warnings.empty()) << fine.warnings.front();
+}
+
 }  // namespace
 }  // namespace mdrsim
