@@ -12,6 +12,7 @@
 #include "profiles/profile_registry.hpp"
 #include "profiles/sphere_profile.hpp"
 #include "profiles/tabulated_profile.hpp"
+#include "profiles/wavy_profile.hpp"
 
 namespace mdrsim {
 namespace {
@@ -121,6 +122,32 @@ void register_builtin_profiles(ProfileRegistry& registry) {
            throw ParameterError("coefficient", e.what());
          }
        }});
+  registry.add({.name = "wavy",
+                .summary = "f = r^2/(2R) + A (1 - cos(2 pi r / lambda)), Guduru's wavy sphere",
+                .parameters = {{.key = "radius",
+                                .help = "radius of curvature R of the underlying parabola [m]",
+                                .lower = kPositive,
+                                .example = 0.01},
+                               {.key = "amplitude",
+                                .help = "ripple amplitude A [m] (0: the parabola)",
+                                .lower = Bound{0.0, true},
+                                .example = 1e-7},
+                               {.key = "wavelength",
+                                .help = "ripple wavelength lambda [m]",
+                                .lower = kPositive,
+                                .example = 1e-4}},
+                .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
+                  // A = 0 is the parabola itself, so that the uniform case is today's bit for bit.
+                  if (p.number("amplitude") == 0.0) {
+                    return std::make_unique<ParabolicProfile>(p.number("radius"));
+                  }
+                  try {
+                    return std::make_unique<WavyProfile>(p.number("radius"), p.number("amplitude"),
+                                                         p.number("wavelength"));
+                  } catch (const std::invalid_argument& e) {
+                    throw ParameterError("wavelength", e.what());
+                  }
+                }});
   registry.add({.name = "tabulated",
                 .summary = "f given at points r_i, a monotone cubic between them",
                 .parameters = {{.key = "r",

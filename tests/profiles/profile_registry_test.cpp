@@ -27,6 +27,10 @@ std::map<std::string, mdrsim::ParameterValues> samples() {
   s["flat_punch"].set("radius", 1e-3);
   s["power_law"].set("coefficient", 0.5);
   s["power_law"].set("exponent", 1.5);
+  // A ripple gentle enough (A k^2 R = 0.39) that f and g still rise: the invariants below.
+  s["wavy"].set("radius", 0.01);
+  s["wavy"].set("amplitude", 1e-8);
+  s["wavy"].set("wavelength", 1e-4);
   s["tabulated"].set("r", std::vector<double>{0, 2e-4, 4e-4, 6e-4, 8e-4, 1e-3, 1.5e-3});
   s["tabulated"].set("f", std::vector<double>{0, 1e-6, 4.5e-6, 1.1e-5, 2e-5, 3.2e-5, 7.5e-5});
   return s;

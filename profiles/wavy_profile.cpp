@@ -1,0 +1,36 @@
+// The wavy profile: its shape and its MDR image through the ripple integrals.
+#include "profiles/wavy_profile.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "profiles/wavy_image.hpp"
+
+namespace mdrsim {
+
+WavyProfile::WavyProfile(double radius, double amplitude, double wavelength)
+    : radius_(radius), amplitude_(amplitude), wavenumber_(2.0 * std::numbers::pi / wavelength) {
+  if (!(radius > 0.0) || !(amplitude > 0.0) || !(wavelength > 0.0) || !std::isfinite(wavenumber_)) {
+    throw std::invalid_argument("wavy: radius, amplitude and wavelength must be positive");
+  }
+}
+
+double WavyProfile::shape(double radius) const {
+  return radius * radius / (2.0 * radius_) + amplitude_ * (1.0 - std::cos(wavenumber_ * radius));
+}
+
+double WavyProfile::mdr_image(double x) const {
+  // Term by term: the parabola's x^2/R and the ripple's A k x I(k x).
+  const double z = wavenumber_ * x;
+  return x * x / radius_ + amplitude_ * z * ripple_integrals(z).value;
+}
+
+double WavyProfile::mdr_image_slope(double x) const {
+  // d/dx [A z I(z)] = A k (I(z) + z I'(z)).
+  const double z = wavenumber_ * x;
+  const RippleIntegrals ripple = ripple_integrals(z);
+  return 2.0 * x / radius_ + amplitude_ * wavenumber_ * (ripple.value + z * ripple.slope);
+}
+
+}  // namespace mdrsim
