@@ -1,0 +1,123 @@
+// The disk check: the MDR gap outside the contact and pressure inside it, by quadrature.
+#include "engine/model/disk_validity.hpp"
+
+#include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/tools/minima.hpp>
+#include <cmath>
+#include <numbers>
+
+namespace mdrsim {
+namespace {
+
+constexpr double kNegativeShare = 1e-9;  ///< of the depth scale: below is a violation
+constexpr int kGapSamples = 200;
+constexpr int kPressureSamples = 200;
+constexpr double kOuterFactor = 10.0;  ///< the gap is checked out to 10 a
+
+/// int_lo^hi f by 20-point Gauss-Legendre on 2, 4, 8, ... equal panels until two agree to
+/// 1e-13 of `scale` (at most 1024 panels): smooth integrands in a few panels, oscillatory
+/// ones (a wavy image) in as many as their oscillations need.
+template <class F>
+double integral(F f, double lo, double hi, double scale) {
+  const auto panels_sum = [&](int panels) {
+    const double width = (hi - lo) / panels;
+    double sum = 0.0;
+    for (int i = 0; i < panels; ++i) {
+      sum += boost::math::quadrature::gauss<double, 20>::integrate(f, lo + i * width,
+                                                                   lo + (i + 1) * width);
+    }
+    return sum;
+  };
+  double previous = panels_sum(1);
+  for (int panels = 2;; panels *= 2) {
+    const double next = panels_sum(panels);
+    if (std::abs(next - previous) <= 1e-13 * scale || panels >= 1024) return next;
+    previous = next;
+  }
+}
+
+}  // namespace
+
+double mdr_surface_displacement(const Profile& profile, double contact_radius, double indentation,
+                                double radius) {
+  const double top = std::asin(std::min(1.0, contact_radius / radius));
+  const double scale = std::abs(indentation) + std::abs(profile.mdr_image(contact_radius));
+  return (2.0 / std::numbers::pi) *
+         integral([&](double t) { return indentation - profile.mdr_image(radius * std::sin(t)); },
+                  0.0, top, scale);
+}
+
+double mdr_pressure(const Profile& profile, double effective_modulus, double contact_radius,
+                    double indentation, double radius) {
+  const double a = contact_radius;
+  const double span = std::sqrt(std::max(0.0, a * a - radius * radius));
+  const double edge = (indentation - profile.mdr_image(a)) / span;
+  // x = r cosh u: dx / sqrt(x^2 - r^2) = du, smooth for r > 0.
+  // At the centre itself, 1e-9 a next to it (a cone's pressure is log-singular there).
+  const double r = std::max(radius, 1e-9 * a);
+  const double top = std::acosh(a / r);
+  const double inside =
+      integral([&](double u) { return profile.mdr_image_slope(r * std::cosh(u)); }, 0.0, top,
+               std::abs(profile.mdr_image_slope(a)) * top);
+  return effective_modulus / std::numbers::pi * (edge + inside);
+}
+
+DiskValidity check_disk(const Profile& profile, double effective_modulus, double contact_radius,
+                        double indentation, double unglued_from) {
+  DiskValidity out;
+  const double a = contact_radius;
+  if (!(a > 0.0)) return out;
+  const double depth = std::max(std::abs(indentation), std::abs(profile.mdr_image(a)));
+  const double gap_floor = -kNegativeShare * depth;
+  const double r_max = std::min(kOuterFactor * a, profile.outer_radius());
+  const auto gap = [&](double r) {
+    return mdr_surface_displacement(profile, a, indentation, r) + profile.shape(r) - indentation;
+  };
+  if (r_max > a) {
+    // Crowded towards a, where the gap opens from zero.
+    double lowest = 0.0;
+    int at = -1;
+    for (int j = 1; j <= kGapSamples; ++j) {
+      const double s = static_cast<double>(j) / kGapSamples;
+      const double r = a + (r_max - a) * s * s;
+      const double h = gap(r);
+      if (h < lowest) {
+        lowest = h;
+        at = j;
+      }
+    }
+    if (at >= 0) {
+      const auto radius_of = [&](int j) {
+        const double s = static_cast<double>(std::clamp(j, 0, kGapSamples)) / kGapSamples;
+        return a + (r_max - a) * s * s;
+      };
+      const auto best =
+          boost::math::tools::brent_find_minima(gap, radius_of(at - 1), radius_of(at + 1), 40);
+      if (best.second < lowest) lowest = best.second;
+      if (lowest < gap_floor) {
+        out.valid = false;
+        out.violation = DiskValidity::Violation::gap;
+        out.worst = lowest;
+        out.worst_radius = best.second <= gap(radius_of(at)) ? best.first : radius_of(at);
+      }
+    }
+  }
+  const double c = std::max(0.0, unglued_from);
+  if (out.valid && c < a && indentation >= profile.mdr_image(a)) {
+    const double pressure_floor = -kNegativeShare * effective_modulus * depth / a;
+    for (int j = 0; j < kPressureSamples; ++j) {
+      const double r = c + (a - c) * (j + 0.5) / kPressureSamples;
+      const double p = mdr_pressure(profile, effective_modulus, a, indentation, r);
+      if (p < std::min(out.worst, pressure_floor)) {
+        out.valid = false;
+        out.violation = DiskValidity::Violation::pressure;
+        out.worst = p;
+        out.worst_radius = r;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace mdrsim
