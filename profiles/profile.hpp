@@ -17,7 +17,8 @@ class Profile {
   /// Required: the gap f(r) [m] between indenter and undeformed surface at radius r >= 0 [m].
   virtual double shape(double radius) const = 0;
 
-  /// Required: the MDR image g(x) [m] at x >= 0 [m] (paper eq. 4); non-decreasing in x.
+  /// Required: the MDR image g(x) [m] at x >= 0 [m] (paper eq. 4). It rises for convex
+  /// profiles; a wavy or dimpled one may fall between crests (a front jumps over the dip).
   virtual double mdr_image(double x) const = 0;
 
   /// Optional: the slope dg/dx [1] at x > 0 [m]. Default: a fourth-order central difference

@@ -8,7 +8,8 @@ namespace mdrsim {
 
 using ProfileRegistry = PartRegistry<Profile>;
 
-/// Registers the built-in profiles: parabolic, sphere, cone, flat_punch, power_law, wavy, tabulated.
+/// Registers the built-in profiles: parabolic, sphere, cone, flat_punch, power_law, wavy,
+/// tabulated.
 void register_builtin_profiles(ProfileRegistry& registry);
 
 }  // namespace mdrsim

@@ -88,11 +88,6 @@ std::optional<TableProblem> find_table_problem(const ProfileTable& t) {
       return TableProblem{
           "r", i, fmt::format("is not above the previous r = {}; r must increase", r[i - 1])};
     }
-    if (f[i] < f[i - 1]) {
-      return TableProblem{
-          "f", i,
-          fmt::format("is below the previous f = {}; f must not decrease along r", f[i - 1])};
-    }
   }
   return std::nullopt;
 }
@@ -147,8 +142,8 @@ ProfileTable read_profile_table(const std::string& path) {
 }
 
 TabulatedProfile::TabulatedProfile(const ProfileTable& table)
-    : shape_(MonotoneCubic::spline(table.radii, table.gaps)),
-      image_(MonotoneCubic::hermite({0.0, 1.0}, {0.0, 0.0}, {0.0, 0.0})) {
+    : shape_(ShapePreservingCubic::spline(table.radii, table.gaps)),
+      image_(ShapePreservingCubic::hermite({0.0, 1.0}, {0.0, 0.0}, {0.0, 0.0})) {
   const std::vector<double>& r = shape_.knots();
   const std::size_t intervals = r.size() - 1;
   // Every table interval split evenly into kImageNodes nodes or more; a longer table keeps
@@ -172,22 +167,10 @@ TabulatedProfile::TabulatedProfile(const ProfileTable& table)
   slopes.reserve(nodes.size());
   for (const double x : nodes) {
     const ImageValue g = transform(x);
-    // Rounding may wiggle a flat image by an ulp; a real decrease is refused.
-    if (!values.empty() && g.image < values.back()) {
-      if (g.image < values.back() * (1.0 - 1e-12)) {
-        throw std::invalid_argument(
-            fmt::format("the MDR image g(x) of this table decreases beyond x = {:.6g} m, where the "
-                        "gap flattens "
-                        "too fast (r f'(r) decreases); end the table before that radius",
-                        nodes[values.size() - 1]));
-      }
-      values.push_back(values.back());
-    } else {
-      values.push_back(g.image);
-    }
+    values.push_back(g.image);
     slopes.push_back(g.slope);
   }
-  image_ = MonotoneCubic::hermite(std::move(nodes), std::move(values), std::move(slopes));
+  image_ = ShapePreservingCubic::hermite(std::move(nodes), std::move(values), std::move(slopes));
 }
 
 std::shared_ptr<const TabulatedProfile> TabulatedProfile::shared(const ProfileTable& table) {

@@ -1,4 +1,4 @@
-// An indenter given by points of f(r): a monotone cubic through them, its MDR image by quadrature.
+// An indenter given by points of f(r): a shape-preserving cubic through them, its MDR image.
 #pragma once
 
 #include <cstddef>
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "profiles/monotone_cubic.hpp"
 #include "profiles/profile.hpp"
+#include "profiles/shape_preserving_cubic.hpp"
 
 namespace mdrsim {
 
@@ -21,7 +21,7 @@ struct ProfileTable {
 
 /// What is wrong with a table, if anything: which column ("r", "f" or "count") and point,
 /// and the message. Checks: at least 4 points, as many f as r, r_0 = 0 and r increasing,
-/// f_0 = 0, f >= 0 and non-decreasing, every value finite.
+/// f_0 = 0, f >= 0, every value finite. f may decrease (a wavy or dimpled indenter).
 struct TableProblem {
   std::string column;
   std::optional<std::size_t> point;
@@ -34,8 +34,9 @@ std::optional<TableProblem> find_table_problem(const ProfileTable& table);
 /// "line N: ..." for a malformed line, or naming the file when it cannot be read.
 ProfileTable read_profile_table(const std::string& path);
 
-/// f(r) between the points is the monotone cubic through them (not-a-knot spline slopes,
-/// Hyman-limited: exact for polynomials up to cubics, never decreasing). Its image g(x) is
+/// f(r) between the points is the shape-preserving cubic through them (not-a-knot spline
+/// slopes, Hyman-limited: exact for polynomials up to cubics, monotone on every monotone run
+/// of the points, with no overshoot at an extremum). Its image g(x) is
 /// eq. 4 evaluated once, at construction, on a grid that refines every table interval;
 /// between grid nodes g is the cubic Hermite interpolant of the exact values and slopes.
 class TabulatedProfile final : public Profile {
@@ -44,9 +45,8 @@ class TabulatedProfile final : public Profile {
   /// (exact g and g' at the nodes; between them the error is far below the table's own).
   static constexpr std::size_t kImageNodes = 1024;
 
-  /// A table without problems (find_table_problem). Throws std::invalid_argument when its
-  /// image decreases: the MDR needs g non-decreasing, which holds while r f'(r) does not
-  /// decrease, and fails where the gap flattens too fast (a plateau after a rise).
+  /// A table without problems (find_table_problem). Its image may decrease (where r f'(r)
+  /// does: a plateau after a rise, a dip): a front then jumps over the dip.
   explicit TabulatedProfile(const ProfileTable& table);
 
   /// The profile of a table, built once per process for the last few tables seen: a sweep
@@ -71,11 +71,11 @@ class TabulatedProfile final : public Profile {
   };
   ImageValue transform(double x) const;
 
-  const MonotoneCubic& interpolated_shape() const { return shape_; }
+  const ShapePreservingCubic& interpolated_shape() const { return shape_; }
 
  private:
-  MonotoneCubic shape_;  ///< f(r)
-  MonotoneCubic image_;  ///< g(x) on the grid
+  ShapePreservingCubic shape_;  ///< f(r)
+  ShapePreservingCubic image_;  ///< g(x) on the grid
 };
 
 }  // namespace mdrsim

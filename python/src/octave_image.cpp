@@ -16,7 +16,7 @@ double skipped_error(const std::vector<double>& knots, const std::vector<double>
     even_knots.push_back(knots[i]);
     even_values.push_back(values[i]);
   }
-  const MonotoneCubic coarse = MonotoneCubic::spline(even_knots, even_values);
+  const ShapePreservingCubic coarse = ShapePreservingCubic::spline(even_knots, even_values);
   double error = 0.0;
   for (std::size_t i = 1; i < knots.size(); i += 2) {
     error = std::max(error, std::abs(coarse.value(knots[i]) - values[i]));
@@ -59,7 +59,7 @@ std::unique_ptr<OctaveImage::Octave> OctaveImage::build(int exponent) const {
       tolerance *= std::max(std::abs(values.front()), std::abs(values.back()));
     }
     if (skipped_error(knots, values) / 16.0 <= tolerance) {
-      out->spline = MonotoneCubic::spline(std::move(knots), std::move(values));
+      out->spline = ShapePreservingCubic::spline(std::move(knots), std::move(values));
       out->logarithmic = logarithmic;
       out->intervals = intervals;
       return out;

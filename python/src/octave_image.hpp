@@ -9,13 +9,13 @@
 #include <memory>
 #include <optional>
 
-#include "profiles/monotone_cubic.hpp"
+#include "profiles/shape_preserving_cubic.hpp"
 
 namespace mdrsim::python {
 
 /// g(x) from eq. 4 costs thousands of calls of the Python shape (about 1 ms): this table makes
-/// each octave [2^(e-1), 2^e) of x a not-a-knot cubic spline (profiles/monotone_cubic.hpp) of
-/// log g over log x through exact values at 8 + 1 even knots (64 or 512 where needed, below),
+/// each octave [2^(e-1), 2^e) of x a not-a-knot cubic spline (profiles/shape_preserving_cubic.hpp)
+/// of log g over log x through exact values at 8 + 1 even knots (64 or 512 where needed, below),
 /// built the first time an x in it is asked for and then read without a lock or the GIL. In
 /// log-log a power law c x^n is a line, and a smooth tip is one near x = 0, so that few knots
 /// do; an octave where g is not positive is splined in g itself.
@@ -44,9 +44,9 @@ class OctaveImage {
 
  private:
   struct Octave {
-    std::optional<MonotoneCubic> spline;  ///< none: exact values at each call
-    bool logarithmic = false;             ///< log g over log x, else g over x
-    double lo = 0.0, width = 0.0;         ///< [2^(e-1), 2^e)
+    std::optional<ShapePreservingCubic> spline;  ///< none: exact values at each call
+    bool logarithmic = false;                    ///< log g over log x, else g over x
+    double lo = 0.0, width = 0.0;                ///< [2^(e-1), 2^e)
     int intervals = 0;
   };
   static constexpr int kExponents = 2100;  ///< frexp's exponents of finite doubles, and more

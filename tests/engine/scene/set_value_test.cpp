@@ -146,7 +146,7 @@ TEST(SetPartSwitch, OnlyFromTheCommandLine) {
                                                        11, "\"cone\"\nslope_angle_deg = 30.0");
   EXPECT_THROW_MSG(build(document(text)), SceneError,
                    "set.toml:8:10: profile.radius: applies to type = \"flat_punch\" or "
-                   "\"parabolic\" or \"sphere\" only");
+                   "\"parabolic\" or \"sphere\" or \"wavy\" only");
 }
 
 TEST(SetSplitValue, NamesTheShell) {

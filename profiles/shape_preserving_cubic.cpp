@@ -1,5 +1,5 @@
 // Not-a-knot spline slopes by the tridiagonal solve, Hyman's limiter and Hermite pieces.
-#include "profiles/monotone_cubic.hpp"
+#include "profiles/shape_preserving_cubic.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,6 @@ void check_knots(const std::vector<double>& x, const std::vector<double>& y, std
       throw std::invalid_argument("knots and values must be finite");
     }
     if (i > 0 && !(x[i] > x[i - 1])) throw std::invalid_argument("knots must increase");
-    if (i > 0 && y[i] < y[i - 1]) throw std::invalid_argument("values must not decrease");
   }
 }
 
@@ -60,34 +59,49 @@ std::vector<double> not_a_knot_slopes(const std::vector<double>& x, const std::v
 
 }  // namespace
 
-MonotoneCubic MonotoneCubic::spline(std::vector<double> knots, std::vector<double> values) {
+ShapePreservingCubic ShapePreservingCubic::spline(std::vector<double> knots,
+                                                  std::vector<double> values) {
   check_knots(knots, values, 4);
   std::vector<double> slopes = not_a_knot_slopes(knots, values);
-  return MonotoneCubic(std::move(knots), values, std::move(slopes));
+  return ShapePreservingCubic(std::move(knots), values, std::move(slopes), false);
 }
 
-MonotoneCubic MonotoneCubic::hermite(std::vector<double> knots, std::vector<double> values,
-                                     std::vector<double> slopes) {
+ShapePreservingCubic ShapePreservingCubic::hermite(std::vector<double> knots,
+                                                   std::vector<double> values,
+                                                   std::vector<double> slopes) {
   check_knots(knots, values, 2);
   if (slopes.size() != knots.size()) throw std::invalid_argument("one slope per knot is needed");
-  return MonotoneCubic(std::move(knots), values, std::move(slopes));
+  return ShapePreservingCubic(std::move(knots), values, std::move(slopes), true);
 }
 
-MonotoneCubic::MonotoneCubic(std::vector<double> knots, const std::vector<double>& values,
-                             std::vector<double> slopes)
+ShapePreservingCubic::ShapePreservingCubic(std::vector<double> knots,
+                                           const std::vector<double>& values,
+                                           std::vector<double> slopes, bool given_slopes)
     : knots_(std::move(knots)) {
   const std::size_t n = knots_.size();
   std::vector<double> secant(n - 1);
   for (std::size_t k = 0; k + 1 < n; ++k) {
     secant[k] = (values[k + 1] - values[k]) / (knots_[k + 1] - knots_[k]);
   }
-  // Hyman's filter: 0 <= m_i <= 3 min(s_{i-1}, s_i) keeps each piece in the monotone region
-  // (alpha, beta <= 3) and flattens the curve over a flat secant.
-  for (std::size_t i = 0; i < n; ++i) {
-    double limit = i == 0       ? secant[0]
-                   : i + 1 == n ? secant[n - 2]
-                                : std::min(secant[i - 1], secant[i]);
-    slopes[i] = std::clamp(std::isnan(slopes[i]) ? limit : slopes[i], 0.0, 3.0 * limit);
+  // Hyman's filter (1983): where the data rise (fall) on both sides of a knot, its slope is
+  // held to [0, 3 min |s|] with their sign, in the Fritsch-Carlson region (alpha, beta <= 3),
+  // so that each monotone run of data gives a monotone curve, and a flat secant a flat piece;
+  // at a data extremum (secants of opposite signs, or one flat) the slope is 0: no overshoot.
+  // Given (exact) slopes of data that rise and fall are kept: the function's own extrema lie
+  // between knots, and the plain Hermite cubic follows it to O(h^4).
+  const bool keep =
+      given_slopes && std::any_of(secant.begin(), secant.end(), [](double v) { return v < 0.0; });
+  for (std::size_t i = 0; i < n && !keep; ++i) {
+    const double before = i == 0 ? secant[0] : secant[i - 1];
+    const double after = i + 1 == n ? secant[n - 2] : secant[i];
+    if (!(before * after > 0.0)) {
+      slopes[i] = 0.0;
+      continue;
+    }
+    const double sign = after > 0.0 ? 1.0 : -1.0;
+    const double limit = std::min(std::abs(before), std::abs(after));
+    const double m = std::isnan(slopes[i]) ? limit : sign * slopes[i];
+    slopes[i] = sign * std::clamp(m, 0.0, 3.0 * limit);
   }
   pieces_.reserve(n - 1);
   double integral = 0.0;
@@ -102,31 +116,31 @@ MonotoneCubic::MonotoneCubic(std::vector<double> knots, const std::vector<double
   }
 }
 
-std::size_t MonotoneCubic::piece(double x) const {
+std::size_t ShapePreservingCubic::piece(double x) const {
   const auto it = std::upper_bound(knots_.begin(), knots_.end(), x);
   const std::size_t after = static_cast<std::size_t>(it - knots_.begin());
   return std::clamp<std::size_t>(after, 1, pieces_.size()) - 1;
 }
 
-double MonotoneCubic::value_on(std::size_t k, double x) const {
+double ShapePreservingCubic::value_on(std::size_t k, double x) const {
   const Piece& p = pieces_[k];
   const double s = (x - knots_[k]) / p.h;
   return p.y + s * (p.c1 + s * (p.c2 + s * p.c3));
 }
 
-double MonotoneCubic::slope_on(std::size_t k, double x) const {
+double ShapePreservingCubic::slope_on(std::size_t k, double x) const {
   const Piece& p = pieces_[k];
   const double s = (x - knots_[k]) / p.h;
   return (p.c1 + s * (2.0 * p.c2 + s * 3.0 * p.c3)) / p.h;
 }
 
-double MonotoneCubic::curvature_on(std::size_t k, double x) const {
+double ShapePreservingCubic::curvature_on(std::size_t k, double x) const {
   const Piece& p = pieces_[k];
   const double s = (x - knots_[k]) / p.h;
   return (2.0 * p.c2 + 6.0 * p.c3 * s) / (p.h * p.h);
 }
 
-double MonotoneCubic::integral(double x) const {
+double ShapePreservingCubic::integral(double x) const {
   const std::size_t k = piece(x);
   const Piece& p = pieces_[k];
   const double s = (x - knots_[k]) / p.h;

@@ -1,4 +1,4 @@
-// A piecewise-cubic Hermite interpolant that stays non-decreasing on non-decreasing data.
+// A piecewise-cubic Hermite interpolant that stays monotone wherever its data are.
 #pragma once
 
 #include <cstddef>
@@ -7,17 +7,20 @@
 namespace mdrsim {
 
 /// Cubic pieces between knots x_0 < ... < x_{n-1}, with value and slope given at each knot.
-/// The slopes are limited to [0, 3 min(adjacent secants)] (Hyman's filter), which lies in
-/// the Fritsch-Carlson region: non-decreasing data give a non-decreasing curve. Smooth
-/// data keep their slopes, and with them the interpolant's accuracy.
-class MonotoneCubic {
+/// Where the data rise (fall) on both sides of a knot its slope is limited to [0, 3 min |s|]
+/// of the adjacent secants, with their sign (Hyman's filter), inside the Fritsch-Carlson
+/// region: each monotone run of data gives a monotone curve, and non-decreasing data a
+/// non-decreasing one. Smooth data keep their slopes, and with them the accuracy.
+class ShapePreservingCubic {
  public:
   /// Slopes of the not-a-knot cubic spline (exact for cubics, O(h^4) on smooth data),
-  /// then limited. Needs >= 4 knots, strictly increasing, and non-decreasing values.
-  static MonotoneCubic spline(std::vector<double> knots, std::vector<double> values);
-  /// Given slopes (e.g. exact derivatives), limited. Needs >= 2 knots.
-  static MonotoneCubic hermite(std::vector<double> knots, std::vector<double> values,
-                               std::vector<double> slopes);
+  /// then limited; 0 at a data extremum (no overshoot). Needs >= 4 knots, increasing.
+  static ShapePreservingCubic spline(std::vector<double> knots, std::vector<double> values);
+  /// Given slopes (e.g. exact derivatives): limited as above for non-decreasing data (the
+  /// curve must not decrease), kept as given for data that rise and fall (the function's
+  /// extrema lie between knots; the plain Hermite cubic is O(h^4)). Needs >= 2 knots.
+  static ShapePreservingCubic hermite(std::vector<double> knots, std::vector<double> values,
+                                      std::vector<double> slopes);
 
   std::size_t size() const { return knots_.size(); }
   const std::vector<double>& knots() const { return knots_; }
@@ -44,8 +47,8 @@ class MonotoneCubic {
     double h, y, c1, c2, c3;
     double integral_before;  ///< integral from x_0 to x_k
   };
-  MonotoneCubic(std::vector<double> knots, const std::vector<double>& values,
-                std::vector<double> slopes);
+  ShapePreservingCubic(std::vector<double> knots, const std::vector<double>& values,
+                       std::vector<double> slopes, bool given_slopes);
 
   std::vector<double> knots_;
   std::vector<Piece> pieces_;
