@@ -18,6 +18,7 @@ class PowerLawProfile final : public Profile {
 
   double shape(double radius) const override;
   double mdr_image(double x) const override;
+  bool always_one_disk() const override { return exponent_ >= 1.0; }  ///< convex
   double mdr_image_slope(double x) const override;
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;

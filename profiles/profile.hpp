@@ -39,6 +39,13 @@ class Profile {
   /// Optional: the largest radius the shape is defined on [m] (a sphere ends at its radius).
   virtual double outer_radius() const { return std::numeric_limits<double>::infinity(); }
 
+  /// Optional: whether every MDR state of this shape is one contact disk (no annular
+  /// re-contact outside, no separation inside), so that the disk check may be skipped: true
+  /// for the convex classics (parabola, sphere, cone, power laws n >= 1, flat punch), whose
+  /// non-adhesive solutions (Hertz, Sneddon) have a gap that opens outside the contact, and
+  /// to which adhesion only adds the flat punch's lift dl (1 - (2/pi) asin(a/r)) >= 0.
+  virtual bool always_one_disk() const { return false; }
+
   /// Optional: the radius R of the JKR scales F0, a0, d0 (paper eq. 17), for profiles whose
   /// tip is the parabola r^2/(2R); nullopt where those scales do not apply [m].
   virtual std::optional<double> jkr_scale_radius() const { return std::nullopt; }

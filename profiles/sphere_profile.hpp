@@ -16,6 +16,7 @@ class SphereProfile final : public Profile {
   double shape(double radius) const override;
   /// Eq. 4 with f' = r/sqrt(R^2 - r^2): g = (x/2) ln((R + x)/(R - x)) = x artanh(x/R), x < R.
   double mdr_image(double x) const override;
+  bool always_one_disk() const override { return true; }
   double mdr_image_slope(double x) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;
   double outer_radius() const override { return radius_; }

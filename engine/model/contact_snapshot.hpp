@@ -18,6 +18,9 @@ struct ContactSnapshot {
   /// springs. Set by loading programs' rows; rtol adds it to its estimates.
   double edge_normal_force = 0.0;
   double edge_tangential_force = 0.0;
+  /// Whether the MDR's one contact disk holds at this state (engine/model/disk_validity):
+  /// set on reported states after a run; true where the profile's shape guarantees it.
+  bool disk_valid = true;
 };
 
 }  // namespace mdrsim

@@ -14,6 +14,7 @@ nlohmann::ordered_json snapshot_json(const ContactSnapshot& c) {
   nlohmann::ordered_json j;
   for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member;
   j["springs_in_contact"] = c.springs_in_contact;
+  j["disk_valid"] = c.disk_valid;
   return j;
 }
 
@@ -146,6 +147,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   ordered_json j;
   j["status"] = to_string(result.status);
   if (result.sliding) j["sliding"] = true;
+  j["disk_valid"] = result.disk_valid;
   const auto [normal_control, tangential_control] = final_controls(scene, result.stages.size());
   j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
   j["criterion"] = scene.criterion_name;

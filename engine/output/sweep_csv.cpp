@@ -69,7 +69,7 @@ std::string csv_header(const SweepGrid& grid, bool dimensionless) {
   out += ",peak_normal_force";
   if (dimensionless) out += ",dimensionless_peak_normal_force";
   out += ",tangential_strength,critical_error_estimate";
-  out += ",springs,glued_radius,preload_depth,preload_force,warnings\n";
+  out += ",springs,glued_radius,preload_depth,preload_force,warnings,disk_valid\n";
   return out;
 }
 
@@ -114,6 +114,8 @@ std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& value
   append_field(out, preload(scene.preload_depth));
   append_field(out, preload(scene.preload_force));
   append_field(out, std::optional<std::size_t>(r.warnings.size()));
+  const std::string_view disk = r.disk_valid ? ",true" : ",false";
+  out.append(disk.data(), disk.data() + disk.size());
   out.push_back('\n');
   return fmt::to_string(out);
 }

@@ -68,6 +68,8 @@ struct RunResult {
   /// in spacings, where the two lie close (status_margin.hpp): the status of a row with a
   /// fold closer than kStatusSpacings may change with its resolution.
   std::optional<double> fold_above_shear_off;
+  /// Every reported state is one contact disk (ContactSnapshot::disk_valid).
+  bool disk_valid = true;
 
   /// Loading programs: every stage's end and work, every jump, and the total work.
   std::vector<StageRecord> stages;

@@ -10,6 +10,7 @@
 #include "engine/base/zero_scale.hpp"
 #include "engine/run/adaptive_resolution.hpp"
 #include "engine/run/criterion_contract.hpp"
+#include "engine/run/disk_states.hpp"
 #include "engine/run/program_resolution.hpp"
 #include "engine/run/pull_off.hpp"
 #include "engine/run/resolution_warning.hpp"
@@ -153,6 +154,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
     drop_peak_that_never_pulls(scene, result);
     warn_resolution(scene, result);
   }
+  check_disk_states(scene, result);
   result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());
   for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
   result.wall_time_s =

@@ -29,6 +29,8 @@ _PROGRESS_SECONDS = 10.0
 _log = logging.getLogger("mdrsim")
 # The columns of the command's CSV that count things, read as int.
 _COUNT_COLUMNS = frozenset({"springs_in_contact", "springs", "warnings"})
+# The columns that are yes or no (true/false), read as bool.
+_FLAG_COLUMNS = frozenset({"disk_valid"})
 
 
 def _item_text(key, item):
@@ -137,7 +139,7 @@ class SweepResult:
     def rows(self):
         """One dict per row, keyed by `columns`: the status and a varied name as str, a
         varied number and the fields as float (the counts springs_in_contact, springs and
-        warnings as int), None where the CSV field is empty."""
+        warnings as int, disk_valid as bool), None where the CSV field is empty."""
         keys = [dict(values) for values in self._values]
         names = self.columns[1 + len(keys):]
         rows = []
@@ -151,6 +153,8 @@ class SweepResult:
                     row[name] = None
                 elif name in _COUNT_COLUMNS:
                     row[name] = int(text)
+                elif name in _FLAG_COLUMNS:
+                    row[name] = text == "true"
                 else:
                     row[name] = float(text)
             rows.append(row)

@@ -49,7 +49,7 @@ constexpr std::string_view kColumns =
     "dimensionless_contact_radius,dimensionless_indentation,"
     "dimensionless_tangential_displacement,peak_normal_force,dimensionless_peak_normal_force,"
     "tangential_strength,critical_error_estimate,springs,glued_radius,preload_depth,preload_force,"
-    "warnings";
+    "warnings,disk_valid";
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
