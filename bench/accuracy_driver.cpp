@@ -105,8 +105,8 @@ std::string cone_text(double theta, const char* normal) {
   return fmt::format(
       "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
       "[profile]\ntype = \"cone\"\nslope_angle_deg = {}\n[loading]\npreload = {{ "
-      "contact_radius = 1e-4 }}\nnormal = {{ control = \"{}\" }}\n[discretization]\nrtol = "
-      "1e-4\n",
+      "contact_radius = 1e-4 }}\nnormal = {{ control = \"{}\" }}\n[solver]\nmethod = \"event\"\n"
+      "[discretization]\nrtol = 1e-4\n",
       theta, normal);
 }
 
@@ -459,7 +459,8 @@ int main(int argc, char** argv) {
     for (const auto& scene : set) {
       double seconds = 0.0;
       const mdrsim::RunResult r = timed_run(
-          scene.toml_without_discretization + fmt::format("[discretization]\nrtol = {}\n", rtol),
+          scene.toml_without_discretization +
+              fmt::format("[solver]\nmethod = \"event\"\n[discretization]\nrtol = {}\n", rtol),
           seconds);
       times.push_back(seconds);
       events.push_back(static_cast<double>(r.counts.events));

@@ -64,8 +64,6 @@ bool within(double error, double value, double rtol, double floor) {
 
 }  // namespace
 
-bool continuum_applies(const Scene& scene) { return !scene.program; }
-
 RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& observers) {
   const AffineConstraint normal = scene.normal.controller->constraint();
   const AffineConstraint tangential = scene.tangential ? scene.tangential->controller->constraint()

@@ -7,10 +7,6 @@
 
 namespace mdrsim {
 
-/// Whether the scene can take the continuum route (docs/continuum.md): the shorthand, with
-/// adhesion; programs are not on it yet.
-bool continuum_applies(const Scene& scene);
-
 /// The shorthand's pull-off on the continuum branch (docs/continuum.md): status, critical
 /// point, peak, stages, jumps and work, each to `rtol` with its estimate in `accuracy`.
 /// Emits preload_reached and tangential_applied; the caller emits the closing events.
