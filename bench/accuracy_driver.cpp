@@ -28,6 +28,9 @@ namespace {
 using mdrsim::bench::BenchCase;
 using mdrsim::bench::seconds_per_run;
 
+/// The continuum route's rtol values on the chart, coarsest first.
+const std::vector<double> kContinuumRtols{1e-4, 1e-6, 1e-8, 1e-10};
+
 struct Row {
   std::string case_name, control, method;
   std::int64_t springs;
@@ -35,6 +38,7 @@ struct Row {
   double error;      ///< relative error of the critical normal force
   double seconds;
   mdrsim::RunCounts counts;
+  double rtol = 0.0;  ///< the continuum route's discretization.rtol; 0 on the row
 };
 
 std::string scene_text(const BenchCase& c, const std::string& method, std::int64_t springs,
@@ -70,6 +74,20 @@ Row measure(const BenchCase& c, const std::string& method, std::int64_t springs,
   return {c.name,  c.scenario.normal, richardson ? "event+richardson" : method,
           springs, increment,         relative_error(c, result),
           seconds, result.counts};
+}
+
+/// The continuum route (no springs) at `rtol`: a point of the chart and target 12.
+Row measure_continuum(const BenchCase& c, double rtol) {
+  mdrsim::test::JkrScenario s = c.scenario;
+  s.method = "continuum";
+  s.rtol = rtol;
+  const mdrsim::Scene scene = s.build();
+  mdrsim::RunResult result;
+  const double seconds = seconds_per_run([&] { result = mdrsim::run_scene(scene, {}); });
+  Row row{c.name, c.scenario.normal,         "continuum", 0,
+          0.0,    relative_error(c, result), seconds,     result.counts};
+  row.rtol = rtol;
+  return row;
 }
 
 /// Target 5: rtol lands within the accuracy, and its own estimate bounds the error.
@@ -221,15 +239,18 @@ int main(int argc, char** argv) {
         rows.push_back(measure(c, "stepping", n, h, false));
       }
     }
+    for (const double rtol : kContinuumRtols) rows.push_back(measure_continuum(c, rtol));
     fmt::print(stderr, "bench: {} {} done\n", c.name, c.scenario.normal);
   }
 
   auto csv = fmt::output_file(out_path);
-  csv.print("case,control,method,springs,increment,relative_error,time_s,events,steps,halvings\n");
+  csv.print(
+      "case,control,method,springs,increment,relative_error,time_s,events,steps,halvings,rtol\n");
   for (const Row& r : rows) {
-    csv.print("{},{},{},{},{},{},{},{},{},{}\n", r.case_name, r.control, r.method, r.springs,
+    csv.print("{},{},{},{},{},{},{},{},{},{},{}\n", r.case_name, r.control, r.method, r.springs,
               r.method == "stepping" ? fmt::format("{}", r.increment) : std::string(), r.error,
-              r.seconds, r.counts.events, r.counts.steps, r.counts.halvings);
+              r.seconds, r.counts.events, r.counts.steps, r.counts.halvings,
+              r.rtol > 0.0 ? fmt::format("{}", r.rtol) : std::string());
   }
   csv.close();
 
@@ -533,6 +554,27 @@ int main(int argc, char** argv) {
                 fmt::format("9. one approach-retract curve to 1e-4 in F/F0 (richardson, rows of "
                             "64/128/256 springs): largest error {:.1e} F0, {:.0f} us (< 150 us)",
                             error, 1e6 * seconds));
+  }
+  // Issue 22: the continuum route within rtol of the closed form on every paper case, and
+  // its critical point at 1e-10 against the row's cheapest 1e-6 (event+richardson) in time.
+  for (const Row& r : rows) {
+    if (r.method != "continuum") continue;
+    accuracy(r.error <= r.rtol,
+             fmt::format("12. continuum {} {} rtol {:.0e}: error {:.1e} (<= rtol), {:.1f} us",
+                         r.case_name, r.control, r.rtol, r.error, 1e6 * r.seconds));
+  }
+  for (const char* control : {"fixed-load", "fixed-grips"}) {
+    const Row* row = fastest(rows, "jkr", control, "event+richardson", 1e-6);
+    const auto continuum = std::find_if(rows.begin(), rows.end(), [&](const Row& r) {
+      return r.case_name == "jkr" && r.control == control && r.method == "continuum" &&
+             r.rtol == kContinuumRtols.back();
+    });
+    if (!row || continuum == rows.end()) continue;
+    fmt::print(
+        "{} 12. jkr {}: continuum at 1e-10 {:.1f} us, the row's fastest to 1e-6 "
+        "(event+richardson) {:.1f} us: {:.0f}x (>= 50x)\n",
+        row->seconds >= 50.0 * continuum->seconds ? "MET " : "OPEN", control,
+        1e6 * continuum->seconds, 1e6 * row->seconds, row->seconds / continuum->seconds);
   }
   if (speed_missed > 0) {
     fmt::print(
