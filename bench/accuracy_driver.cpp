@@ -28,6 +28,9 @@ namespace {
 using mdrsim::bench::BenchCase;
 using mdrsim::bench::seconds_per_run;
 
+/// The continuum route's rtol values on the chart, coarsest first.
+const std::vector<double> kContinuumRtols{1e-4, 1e-6, 1e-8, 1e-10};
+
 struct Row {
   std::string case_name, control, method;
   std::int64_t springs;
@@ -35,6 +38,7 @@ struct Row {
   double error;      ///< relative error of the critical normal force
   double seconds;
   mdrsim::RunCounts counts;
+  double rtol = 0.0;  ///< the continuum route's discretization.rtol; 0 on the row
 };
 
 std::string scene_text(const BenchCase& c, const std::string& method, std::int64_t springs,
@@ -72,6 +76,20 @@ Row measure(const BenchCase& c, const std::string& method, std::int64_t springs,
           seconds, result.counts};
 }
 
+/// The continuum route (no springs) at `rtol`: a point of the chart and target 12.
+Row measure_continuum(const BenchCase& c, double rtol) {
+  mdrsim::test::JkrScenario s = c.scenario;
+  s.method = "continuum";
+  s.rtol = rtol;
+  const mdrsim::Scene scene = s.build();
+  mdrsim::RunResult result;
+  const double seconds = seconds_per_run([&] { result = mdrsim::run_scene(scene, {}); });
+  Row row{c.name, c.scenario.normal,         "continuum", 0,
+          0.0,    relative_error(c, result), seconds,     result.counts};
+  row.rtol = rtol;
+  return row;
+}
+
 /// Target 5: rtol lands within the accuracy, and its own estimate bounds the error.
 struct RtolCheck {
   std::int64_t springs, events;
@@ -105,8 +123,8 @@ std::string cone_text(double theta, const char* normal) {
   return fmt::format(
       "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
       "[profile]\ntype = \"cone\"\nslope_angle_deg = {}\n[loading]\npreload = {{ "
-      "contact_radius = 1e-4 }}\nnormal = {{ control = \"{}\" }}\n[discretization]\nrtol = "
-      "1e-4\n",
+      "contact_radius = 1e-4 }}\nnormal = {{ control = \"{}\" }}\n[solver]\nmethod = \"event\"\n"
+      "[discretization]\nrtol = 1e-4\n",
       theta, normal);
 }
 
@@ -221,15 +239,18 @@ int main(int argc, char** argv) {
         rows.push_back(measure(c, "stepping", n, h, false));
       }
     }
+    for (const double rtol : kContinuumRtols) rows.push_back(measure_continuum(c, rtol));
     fmt::print(stderr, "bench: {} {} done\n", c.name, c.scenario.normal);
   }
 
   auto csv = fmt::output_file(out_path);
-  csv.print("case,control,method,springs,increment,relative_error,time_s,events,steps,halvings\n");
+  csv.print(
+      "case,control,method,springs,increment,relative_error,time_s,events,steps,halvings,rtol\n");
   for (const Row& r : rows) {
-    csv.print("{},{},{},{},{},{},{},{},{},{}\n", r.case_name, r.control, r.method, r.springs,
+    csv.print("{},{},{},{},{},{},{},{},{},{},{}\n", r.case_name, r.control, r.method, r.springs,
               r.method == "stepping" ? fmt::format("{}", r.increment) : std::string(), r.error,
-              r.seconds, r.counts.events, r.counts.steps, r.counts.halvings);
+              r.seconds, r.counts.events, r.counts.steps, r.counts.halvings,
+              r.rtol > 0.0 ? fmt::format("{}", r.rtol) : std::string());
   }
   csv.close();
 
@@ -459,7 +480,8 @@ int main(int argc, char** argv) {
     for (const auto& scene : set) {
       double seconds = 0.0;
       const mdrsim::RunResult r = timed_run(
-          scene.toml_without_discretization + fmt::format("[discretization]\nrtol = {}\n", rtol),
+          scene.toml_without_discretization +
+              fmt::format("[solver]\nmethod = \"event\"\n[discretization]\nrtol = {}\n", rtol),
           seconds);
       times.push_back(seconds);
       events.push_back(static_cast<double>(r.counts.events));
@@ -532,6 +554,30 @@ int main(int argc, char** argv) {
                 fmt::format("9. one approach-retract curve to 1e-4 in F/F0 (richardson, rows of "
                             "64/128/256 springs): largest error {:.1e} F0, {:.0f} us (< 150 us)",
                             error, 1e6 * seconds));
+  }
+  // Issue 22: the continuum route within rtol of the closed form on every paper case, and
+  // the whole run at 1e-10 against the row route at rtol 1e-6 (the same scene with method =
+  // "event"), each by its engine time (wall_time_s, best of three), as target 6 times it.
+  for (const Row& r : rows) {
+    if (r.method != "continuum") continue;
+    accuracy(r.error <= r.rtol,
+             fmt::format("12. continuum {} {} rtol {:.0e}: error {:.1e} (<= rtol), {:.1f} us",
+                         r.case_name, r.control, r.rtol, r.error, 1e6 * r.seconds));
+  }
+  for (const BenchCase& c : mdrsim::bench::paper_cases()) {
+    if (c.name != "jkr") continue;
+    mdrsim::test::JkrScenario row = c.scenario, continuum = c.scenario;
+    row.rtol = 1e-6;
+    continuum.method = "continuum";
+    continuum.rtol = 1e-10;
+    double row_seconds = 0.0, continuum_seconds = 0.0;
+    timed_run(row.toml(), row_seconds);
+    timed_run(continuum.toml(), continuum_seconds);
+    fmt::print(
+        "{} 12. jkr {}: continuum at rtol 1e-10 {:.1f} us, the row at rtol 1e-6 {:.1f} us: "
+        "{:.0f}x (>= 50x; engine time)\n",
+        row_seconds >= 50.0 * continuum_seconds ? "MET " : "OPEN", c.scenario.normal,
+        1e6 * continuum_seconds, 1e6 * row_seconds, row_seconds / continuum_seconds);
   }
   if (speed_missed > 0) {
     fmt::print(

@@ -47,7 +47,7 @@ std::string profile_of(const std::string& name) {
 }
 
 const std::string kContinuum = "[solver]\nmethod = \"continuum\"\n";
-const std::string kRow = "[discretization]\nrtol = 1e-6\n";
+const std::string kRow = "[solver]\nmethod = \"event\"\n[discretization]\nrtol = 1e-6\n";
 
 /// The critical point alone: the branch and the walk (what a sweep point needs).
 void critical(benchmark::State& state, const std::string& name, const std::string& normal) {

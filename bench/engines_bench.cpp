@@ -78,8 +78,10 @@ Scene build(const std::string& text) {
 }
 
 std::string head(const Case& c, const std::string& discretization) {
-  return fmt::format("{}{}[detachment]\ncriterion = \"{}\"\n[discretization]\n{}\n", kMaterial,
-                     c.profile, c.criterion, discretization);
+  // method = "event": the row at rtol too (rtol alone takes the continuum route).
+  return fmt::format(
+      "{}{}[detachment]\ncriterion = \"{}\"\n[solver]\nmethod = \"event\"\n[discretization]\n{}\n",
+      kMaterial, c.profile, c.criterion, discretization);
 }
 
 std::string shorthand_text(const Case& c, const std::string& discretization) {

@@ -4,7 +4,9 @@
 Reads the CSV written by bench/'s mdrsim_accuracy driver and draws one panel per case and
 normal control: a line per method (and per stepping increment), the Pareto front of all
 points dashed, and each method's observed order (slope of log error against log springs)
-in the legend. Writes speed_accuracy.png and .svg. Run with Debian's /usr/bin/python3.
+in the legend. The continuum route (no springs) is one line over its rtol values (its
+error does not follow rtol: each root search converges to rounding); the Pareto front is
+the spring rows'. Writes speed_accuracy.png and .svg. Run with Debian's /usr/bin/python3.
 """
 import argparse
 import csv
@@ -22,6 +24,7 @@ STYLE = {
     "event": ("tab:blue", "o"),
     "event+richardson": ("tab:green", "s"),
     "stepping": ("tab:red", "^"),
+    "continuum": ("tab:purple", "D"),
 }
 
 
@@ -32,6 +35,7 @@ def read_rows(path):
         r["springs"] = int(r["springs"])
         r["relative_error"] = max(float(r["relative_error"]), 1e-16)
         r["time_s"] = float(r["time_s"])
+        r["rtol"] = float(r["rtol"]) if r.get("rtol") else None
     return rows
 
 
@@ -74,19 +78,26 @@ def main():
             label = r["method"] if r["method"] != "stepping" else f"stepping, increment {r['increment']}"
             lines[(r["method"], label)].append(r)
         for (method, label), points in sorted(lines.items()):
-            points.sort(key=lambda p: p["springs"])
             colour, marker = STYLE.get(method, ("black", "x"))
+            if method == "continuum":  # no springs, no order: a point per rtol
+                points.sort(key=lambda p: -p["rtol"])
+                rtols = f"{points[0]['rtol']:.0e}..{points[-1]['rtol']:.0e}"
+                ax.loglog([p["time_s"] for p in points], [p["relative_error"] for p in points],
+                          marker=marker, color=colour, linestyle="none",
+                          label=f"continuum route, no springs (rtol {rtols})")
+                continue
+            points.sort(key=lambda p: p["springs"])
             alpha = 1.0 if method != "stepping" else 0.35 + 0.65 * (1 - math.log10(float(points[0]["increment"])) / -4)
             order = observed_order(points)
             ax.loglog([p["time_s"] for p in points], [p["relative_error"] for p in points],
                       marker=marker, color=colour, alpha=min(1.0, max(0.3, alpha)),
                       label=f"{label} (order {order:.1f})")
-        front = pareto_front(here)
+        front = pareto_front([r for r in here if r["method"] != "continuum"])
         ax.loglog([p["time_s"] for p in front], [p["relative_error"] for p in front], "k--",
-                  linewidth=1, label="Pareto front")
+                  linewidth=1, label="Pareto front of the spring rows")
         ax.set_title(f"{case}, {control} normal control")
         ax.set_xlabel("wall time per run [s]")
-        ax.set_ylabel("relative error of the critical force")
+        ax.set_ylabel("relative error of the critical force (floor 1e-16)")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     for ax in list(axes.flat)[len(panels):]:

@@ -45,6 +45,19 @@ done
 "$mdrsim" sweep scenes/fig3a_fixed_grips.toml --vary "$vary" --set material.poisson_ratio=0.3 \
   --csv "$results/fig3a_fixed_grips_nu03.csv" --threads "$threads"
 
+# The same runs on the continuum route (docs/continuum.md): no springs, rtol 1e-10; the
+# comparison table's `continuum` column.
+echo "== the continuum route: Fig. 2 and the Fig. 3a sweeps, rtol 1e-10" >&2
+continuum=(--set 'solver={method="continuum"}' --set 'discretization={rtol=1e-10}')
+for control in fixed_grips fixed_load; do
+  "$mdrsim" run "scenes/fig2_$control.toml" "${continuum[@]}" \
+    --json "$results/fig2_${control}_continuum.json"
+  "$mdrsim" sweep "scenes/fig3a_$control.toml" --vary "$vary" "${continuum[@]}" \
+    --csv "$results/fig3a_${control}_continuum.csv" --threads "$threads"
+done
+"$mdrsim" sweep scenes/fig3a_fixed_grips.toml --vary "$vary" --set material.poisson_ratio=0.3 \
+  "${continuum[@]}" --csv "$results/fig3a_fixed_grips_nu03_continuum.csv" --threads "$threads"
+
 echo "== figures" >&2
 "$py" scripts/plot_paper_figures.py --results "$results" --scenes scenes
 

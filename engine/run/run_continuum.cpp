@@ -64,9 +64,8 @@ bool within(double error, double value, double rtol, double floor) {
 
 }  // namespace
 
-bool continuum_applies(const Scene& scene) { return !scene.program; }
-
-RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& observers) {
+RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
+                        const ObserverList& observers) {
   const AffineConstraint normal = scene.normal.controller->constraint();
   const AffineConstraint tangential = scene.tangential ? scene.tangential->controller->constraint()
                                                        : FixedGripsController().constraint();
@@ -132,7 +131,7 @@ RunResult run_continuum(const Scene& scene, double rtol, const ObserverList& obs
                                 .after = jump.to.snapshot()});
       }
     }
-    emit_samples(branch, p, scene.solver.samples, observers);
+    emit_samples(branch, p, samples, observers);
     const JumpEnd flight = flight_after(branch, p.critical.control);
     result.sliding = flight == JumpEnd::sliding;
     if (p.end == End::smooth_peel) {

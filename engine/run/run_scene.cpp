@@ -114,6 +114,10 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
 }  // namespace
 
 RunResult run_scene(const Scene& scene, const ObserverList& observers) {
+  return run_scene(scene, observers, scene.solver.samples);
+}
+
+RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int64_t samples) {
   const auto started = std::chrono::steady_clock::now();
   using Extrapolation = DiscretizationOptions::Extrapolation;
   RunResult result;
@@ -124,7 +128,8 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
   }
   const bool continuum = scene.solver.method == SolverMethod::continuum;
   if (continuum) {
-    result = run_continuum(scene, scene.discretization.rtol.value_or(kContinuumRtol), observers);
+    result = run_continuum(scene, scene.discretization.rtol.value_or(kContinuumRtol), samples,
+                           observers);
   } else if (scene.program) {
     if (scene.discretization.rtol) {
       result = run_program_rtol(scene, *scene.discretization.rtol, observers);

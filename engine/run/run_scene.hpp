@@ -1,6 +1,8 @@
 // A scene run as its [discretization] asks: a row, Richardson across rows, or rtol.
 #pragma once
 
+#include <cstdint>
+
 #include "engine/events/observer.hpp"
 #include "engine/result/run_result.hpp"
 #include "engine/scene/scene.hpp"
@@ -16,5 +18,9 @@ namespace mdrsim {
 /// - `rtol`: adaptive_resolution.hpp.
 /// Warnings go to the result and to the log.
 RunResult run_scene(const Scene& scene, const ObserverList& observers);
+
+/// As above, with `samples` points of the continuum route's branch as `sample` events in
+/// place of scene.solver.samples: for a caller that shares the scene, built once (Python).
+RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int64_t samples);
 
 }  // namespace mdrsim

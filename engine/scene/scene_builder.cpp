@@ -12,6 +12,7 @@
 
 #include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/preload.hpp"
+#include "engine/scene/continuum_scope.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
@@ -289,6 +290,22 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
   t.finish();
 }
 
+/// `discretization.rtol` with no `method`: the continuum route wherever it answers the scene
+/// (docs/continuum.md "Which route rtol takes"), else the row. The resolved scene then leaves
+/// `method` out, as the input did, so that rerunning it takes the same route.
+void choose_continuum_route(Scene& scene, nlohmann::json& resolved) {
+  if (!scene.discretization.rtol ||
+      scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::automatic ||
+      !continuum_answers(scene)) {
+    return;
+  }
+  scene.solver.method = SolverMethod::continuum;
+  if (auto solver = resolved.find("solver"); solver != resolved.end()) {
+    solver->erase("method");
+    if (solver->empty()) resolved.erase(solver);
+  }
+}
+
 }  // namespace
 
 Scene build_scene(const toml::table& root_table, const std::string& source_name,
@@ -344,7 +361,9 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     root.record("detachment", {{"criterion", scene.criterion_name}});
   }
 
+  bool method_given = false;
   if (auto solver = root.optional_table("solver")) {
+    method_given = solver->has("method");
     read_solver(*solver, scene.solver);
     if (scene.solver.method == SolverMethod::continuum && scene.program) {
       solver->fail_at("method",
@@ -408,6 +427,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   } else {
     root.record("discretization", {{"springs", scene.springs}});
   }
+  if (!method_given) choose_continuum_route(scene, *resolved);
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");

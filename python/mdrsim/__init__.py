@@ -24,7 +24,7 @@ from ._sweep import SweepResult, sweep
 __version__ = "0.1.0"
 __all__ = ["Jump", "Material", "Parameter", "Result", "RunWarning", "Scene", "SceneError",
            "StageEnd", "State", "SweepResult", "Work", "parts", "register_criterion",
-           "register_profile", "run", "TRAJECTORY_ROWS", "set_log_level", "sweep"]
+           "register_profile", "run", "SAMPLES", "TRAJECTORY_ROWS", "set_log_level", "sweep"]
 
 
 class RunWarning(UserWarning):
@@ -46,8 +46,27 @@ def _row_budget(trajectory):
     raise ValueError(f"trajectory={trajectory!r}: expected True, False or a number of rows >= 1")
 
 
-def run(scene, trajectory=True):
+#: The points of the continuum route's branch a trajectory holds by default (--samples).
+SAMPLES = 1000
+
+
+def _sample_count(samples, budget):
+    if samples is None:
+        return SAMPLES if budget is not None else 0
+    if isinstance(samples, numbers.Integral) and not isinstance(samples, bool) and samples >= 0:
+        return int(samples)
+    raise ValueError(f"samples={samples!r}: expected a number of points >= 0")
+
+
+def run(scene, trajectory=True, method=None, samples=None):
     """Runs a Scene (or a scene file path, or a dict) and returns its Result.
+
+    method: None runs the scene as it is; "event", "stepping" or "continuum" runs
+    scene.with_method(method) (the continuum route: no springs, to rtol, default 1e-10; see
+    docs/continuum.md). A Scene made once with with_method saves the build on every run.
+    samples: on the continuum route, the points of the followed branch in the trajectory,
+    evenly in the contact radius (`sample` rows; default SAMPLES = 1000 with a trajectory,
+    as `mdrsim run --samples`); ignored on the spring rows.
 
     trajectory: the rows of Result.trajectory to keep at most (True: TRAJECTORY_ROWS,
     100,000; an int: that many; False: none, Result.trajectory is then None). A longer run
@@ -62,7 +81,10 @@ def run(scene, trajectory=True):
     (KeyboardInterrupt) within milliseconds.
     """
     scene = as_scene(scene, "run")
-    raw = _core.run(scene._doc, _row_budget(trajectory))
+    if method is not None:
+        scene = scene.with_method(method)
+    budget = _row_budget(trajectory)
+    raw = _core.run(scene._doc, budget, _sample_count(samples, budget))
     if raw.has_warnings:
         for line in raw.warnings:
             warnings.warn(line, RunWarning, stacklevel=2)

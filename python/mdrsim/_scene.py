@@ -17,6 +17,7 @@ from ._core import SceneError
 
 # The tables of a scene in the order docs/scene.md and the scene files have them.
 _ORDER = ("title", "material", "profile", "loading", "detachment", "discretization", "solver")
+_METHODS = ("event", "stepping", "continuum")
 _BARE_KEY = re.compile(r"[A-Za-z0-9_-]+\Z")
 _ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
 
@@ -171,6 +172,28 @@ class Scene:
         return Scene._wrap(self._doc.with_values(pairs), self._overrides + tuple(pairs),
                            self._text, self._base_dir)
 
+    def with_method(self, method, rtol=None):
+        """A new Scene that runs by `method`: "event" or "stepping" (spring rows) or
+        "continuum" (no springs: the continuum branch's root searches, docs/continuum.md).
+        "continuum" drops the row's `springs` and `extrapolation` and keeps `rtol` (default
+        1e-10 on that route); "event" drops the stepping keys of [solver]. `rtol` replaces
+        [discretization] by {"rtol": rtol}. Refused as --set refuses: a loading program is
+        not on the continuum route yet."""
+        if method not in _METHODS:
+            raise SceneError(f"--set: solver.method: unknown name '{method}' (known: "
+                             f"{', '.join(_METHODS)})")
+        values = {}
+        if rtol is not None:
+            values["discretization"] = {"rtol": rtol}
+        elif method == "continuum":
+            kept = self.to_dict().get("discretization", {})
+            values["discretization"] = {k: v for k, v in kept.items() if k == "rtol"}
+        if method == "stepping":
+            values["solver.method"] = method
+        else:
+            values["solver"] = {"method": method}
+        return self.with_values(values)
+
     def set(self, key, value):
         """A new Scene with one value set: scene.set("material.poisson_ratio", 0.3) is
         scene.with_values({"material.poisson_ratio": 0.3}), checked like --set."""
@@ -235,7 +258,15 @@ class Scene:
 
     @property
     def springs(self):
+        """Springs across the glued radius of a fixed row (meaningless with rtol or on the
+        continuum route, which has none)."""
         return self._doc.springs
+
+    @property
+    def method(self):
+        """"event", "stepping" or "continuum": the route the scene runs by, as built (rtol
+        with no method named takes "continuum" where it answers the scene)."""
+        return self._doc.method
 
     @property
     def material(self):
@@ -257,8 +288,9 @@ class Scene:
     def __repr__(self):
         title = f" {self.title!r}" if self.title else ""
         sets = "".join(f", {k}={v}" for k, v in self._overrides)
+        route = "continuum route" if self.method == "continuum" else f"{self.springs} springs"
         return (f"<mdrsim.Scene {self.source!r}{title}: {self.profile} profile, {self.criterion}, "
-                f"{self.springs} springs{sets}>")
+                f"{route}{sets}>")
 
 
 def _scene_from_state(text, source, base_dir, overrides):

@@ -186,7 +186,7 @@ class SweepResult:
         return f"<mdrsim.SweepResult {len(self)} rows x {len(self.columns)} columns>"
 
 
-def sweep(scene, grid, executor=None, batch_seconds=0.1):
+def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None):
     """Runs one scene per row of a grid, as `mdrsim sweep` does, and returns a SweepResult.
 
     scene: a Scene, a scene file path or a dict (as mdrsim.run takes).
@@ -210,8 +210,12 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1):
     logging.basicConfig(level=logging.INFO)).
     Tasks carry the scene as text and return the CSV lines as strings, so they pickle; a
     part registered from Python must be registered in every process that runs rows.
+    method: None sweeps the scene as it is; "event", "stepping" or "continuum" sweeps
+    scene.with_method(method) (the continuum route: a row in microseconds, no springs).
     """
     scene = as_scene(scene, "sweep")
+    if method is not None:
+        scene = scene.with_method(method)
     if not isinstance(grid, Mapping):
         raise TypeError(f"sweep() needs a grid {{key: values}}, not {type(grid).__name__}")
     if not grid:

@@ -66,8 +66,10 @@ std::string one_line(std::string text) {
 }
 
 /// `trajectory_rows`: the row budget of the trajectory (TrajectoryRecorder), none without one.
+/// `samples`: points of the continuum route's branch in the trajectory (`sample` rows).
 std::unique_ptr<ResultHandle> run(const SceneHandle& handle,
-                                  std::optional<std::uint64_t> trajectory_rows) {
+                                  std::optional<std::uint64_t> trajectory_rows,
+                                  std::int64_t samples) {
   auto out = std::make_unique<ResultHandle>();
   out->scene = handle.scene;
   std::optional<std::string> not_finite;
@@ -77,7 +79,7 @@ std::unique_ptr<ResultHandle> run(const SceneHandle& handle,
     TrajectoryRecorder recorder(trajectory_rows.value_or(1));
     ObserverList observers;
     if (trajectory_rows) observers.add(recorder);
-    out->result = run_scene(*out->scene, observers);
+    out->result = run_scene(*out->scene, observers, samples);
     not_finite = first_not_finite(*out->scene, out->result);
     if (trajectory_rows) {
       out->rows = std::make_unique<TrajectoryRows>(recorder.take());
@@ -114,7 +116,8 @@ py::dict take_trajectory(TrajectoryColumns& c) {
   for (std::size_t i = 0; i < c.stage.size(); ++i) {
     stage[i] = stage_names[static_cast<std::size_t>(c.stage[i])];
   }
-  std::vector<py::object> kind_names(static_cast<std::size_t>(EventKind::jump) + 1);
+  // One name per kind, up to the last one (sample: the continuum route's branch).
+  std::vector<py::object> kind_names(static_cast<std::size_t>(EventKind::sample) + 1);
   py::list event(c.event.size());
   for (std::size_t i = 0; i < c.event.size(); ++i) {
     py::object& name = kind_names[static_cast<std::size_t>(c.event[i])];
@@ -184,6 +187,18 @@ void bind_scenes(py::module_& m) {
       .def("to_toml", [](const SceneHandle& h) { return h.document.to_toml(); })
       .def_property_readonly("title", [](const SceneHandle& h) { return h.scene->title; })
       .def_property_readonly("springs", [](const SceneHandle& h) { return h.scene->springs; })
+      .def_property_readonly("method",
+                             [](const SceneHandle& h) {
+                               switch (h.scene->solver.method) {
+                                 case SolverMethod::stepping:
+                                   return "stepping";
+                                 case SolverMethod::continuum:
+                                   return "continuum";
+                                 case SolverMethod::event:
+                                   break;
+                               }
+                               return "event";
+                             })
       .def_property_readonly("material", [](const SceneHandle& h) { return h.scene->material; })
       .def_property_readonly("profile", [](const SceneHandle& h) { return h.scene->profile_name; })
       .def_property_readonly("criterion",
@@ -279,7 +294,7 @@ void bind_results(py::module_& m) {
         }
         return r.trajectory ? r.trajectory : py::object(py::none());
       });
-  m.def("run", &run, py::arg("scene"), py::arg("trajectory"),
+  m.def("run", &run, py::arg("scene"), py::arg("trajectory"), py::arg("samples") = 0,
         "Runs the scene with the GIL released; Python parts take it back for each call.");
 }
 

@@ -118,9 +118,11 @@ TEST_F(ResultOutputs, StepLimitWarnsAndHasNoCriticalPoint) {
   EXPECT_EQ(j["warnings"], nlohmann::json::array({warning}));
 }
 
-// rtol's JSON says how it got there.
+// rtol's JSON says how it got there (on the row: method = "event" named; rtol alone takes
+// the continuum route).
 TEST_F(ResultOutputs, RtolReportsItsRouteRowsAndEstimate) {
-  const nlohmann::json j = run_json("--set 'discretization={rtol=1e-6}'");
+  const nlohmann::json j =
+      run_json("--set 'discretization={rtol=1e-6}' --set 'solver={method=\"event\"}'");
   const auto& a = j["accuracy"];
   EXPECT_EQ(a["route"], "richardson");
   EXPECT_EQ(a["rtol_met"], true);

@@ -28,9 +28,11 @@ const std::string kMaterial =
 // Glued on touch to radius 2 a0: the depth (2 a0)^2 / R.
 const std::string kPreloadDepth = "2.713781792333937e-5";
 
+/// The shorthand on the row (method = "event": rtol alone would take the continuum route).
 std::string shorthand(const std::string& control, const std::string& rtol) {
   return kMaterial + "[loading]\npreload = { contact_radius = 5.209397078678047e-4 }\n" +
-         "normal = { control = \"" + control + "\" }\n[discretization]\nrtol = " + rtol + "\n";
+         "normal = { control = \"" + control + "\" }\n[solver]\nmethod = \"event\"\n" +
+         "[discretization]\nrtol = " + rtol + "\n";
 }
 
 std::string program(const std::string& control, const std::string& by, const std::string& rtol) {

@@ -147,7 +147,7 @@ TEST(Rtol, FoldsFarBelowTheGluedRadius) {
           "[profile]\ntype = \"cone\"\nslope_angle_deg = " +
           std::to_string(theta) +
           "\n[loading]\npreload = { contact_radius = 1e-4 }\nnormal = { control = \"" + normal +
-          "\" }\n[discretization]\nrtol = 1e-4\n";
+          "\" }\n[solver]\nmethod = \"event\"\n[discretization]\nrtol = 1e-4\n";
       const auto r = mdrsim::run_scene(mdrsim::test::build_scene_text(text), {});
       const double exact = std::string(normal) == "fixed-load" ? fixed_load : fixed_grips;
       ASSERT_TRUE(r.critical.has_value()) << theta << " " << normal;

@@ -1,0 +1,103 @@
+"""method="continuum" from Python: mdrsim.run, Scene.with_method, sweeps, and the sampled branch,
+against the paper's closed forms (scripts/paper_reference.py, which shares no code with the
+engine)."""
+
+import math
+import sys
+
+import numpy as np
+import pytest
+
+import mdrsim
+
+from conftest import ROOT
+
+sys.path.insert(0, str(ROOT / "scripts"))
+import paper_reference as ref  # noqa: E402
+
+FIG2 = "scenes/fig2_fixed_load.toml"
+FIG3A = "scenes/fig3a_fixed_grips.toml"
+F0 = 1.5 * math.pi * 0.01 * 0.05  # paper eq. 17: R = 1 cm, dgamma = 0.05 J/m^2
+D0 = 2.2614848269449475e-6        # paper eq. 17 for the same scenes [m]
+
+
+def test_run_with_method_continuum_gives_the_closed_form_to_1e10():
+    result = mdrsim.run(FIG2, method="continuum", trajectory=False)
+    assert result.status == "instability"
+    # -F0 (eq. 19's minimum); the route's rtol is 1e-10 and its estimate below it.
+    assert result.critical.normal_force / F0 == pytest.approx(-1.0, rel=1e-10)
+    out = result.to_dict()
+    assert out["method"] == "continuum" and out["resolution"] == {"route": "continuum"}
+    assert "springs" not in out and out["accuracy"]["rtol_met"] is True
+    grips = mdrsim.run("scenes/fig2_fixed_grips.toml", method="continuum", trajectory=False)
+    assert grips.critical.normal_force / F0 == pytest.approx(-5.0 / 9.0, rel=1e-10)  # eq. 33
+    assert grips.peak.normal_force / F0 == pytest.approx(-1.0, rel=1e-10)
+
+
+def test_with_method_drops_the_rows_keys_and_keeps_rtol():
+    scene = mdrsim.Scene.from_file(FIG2)  # springs = 10000, method = "event"
+    assert scene.method == "event"
+    continuum = scene.with_method("continuum")
+    assert continuum.method == "continuum"
+    assert continuum.to_dict()["discretization"] == {}
+    assert "continuum route" in repr(continuum) and "springs" not in repr(continuum)
+    tight = scene.with_method("continuum", rtol=1e-8)
+    assert tight.to_dict()["discretization"] == {"rtol": 1e-8}
+    back = tight.with_method("event")
+    assert back.method == "event" and back.to_dict()["solver"] == {"method": "event"}
+    with pytest.raises(mdrsim.SceneError, match="unknown name 'springs'"):
+        scene.with_method("springs")
+
+
+def test_rtol_without_a_method_takes_the_continuum_route():
+    scene = mdrsim.Scene.from_file(FIG3A).set("discretization", {"rtol": 1e-10})
+    assert scene.method == "continuum"  # fig3a names no [solver] method
+    result = mdrsim.run(scene, trajectory=False)
+    assert result.to_dict()["accuracy"]["route"] == "continuum"
+    u = 2.2614848269449475e-6 / D0  # the scene's u = d0
+    assert result.critical.normal_force / F0 == pytest.approx(
+        ref.critical("fixed-grips", u)["Fz"], abs=1e-9)  # the reference's own root: 1e-12
+    # With method = "event" named, rtol stays on the row.
+    row = scene.set("solver", {"method": "event"}).set("discretization", {"rtol": 1e-3})
+    assert row.method == "event"
+    assert mdrsim.run(row, trajectory=False).to_dict()["resolution"]["route"] != "continuum"
+
+
+def test_a_program_is_refused_on_the_continuum_route():
+    with pytest.raises(mdrsim.SceneError, match="not on the continuum route yet"):
+        mdrsim.Scene.from_file("scenes/programs/jkr_cycle_reversible.toml").with_method(
+            "continuum")
+
+
+def test_samples_are_the_branch_evenly_in_the_contact_radius():
+    scene = mdrsim.Scene.from_file(FIG2).with_method("continuum")
+    result = mdrsim.run(scene, samples=1000)
+    t = result.trajectory
+    rows = [i for i, e in enumerate(t["event"]) if e == "sample"]
+    assert len(rows) == 1000
+    a = t["contact_radius"][rows]
+    steps = np.diff(a)
+    assert np.all(steps < 0) and np.allclose(steps, steps[0], rtol=1e-9)
+    # From the glued radius 2 a0 down to the critical point a0 (fixed load), on JKR's branch
+    # (eq. 18, in units of F0 and a0, by the reference).
+    a0 = result.critical.contact_radius
+    assert a[0] / a0 == pytest.approx(2.0, rel=1e-9) and a[-1] == a0
+    for i in (0, 333, 999):
+        f = t["normal_force"][rows[i]] / F0
+        assert f == pytest.approx(ref.jkr_force(a[i] / a0), abs=1e-9)
+    default = mdrsim.run(scene).trajectory
+    assert sum(e == "sample" for e in default["event"]) == mdrsim.SAMPLES
+    assert mdrsim.run(scene, trajectory=False).trajectory is None
+    with pytest.raises(ValueError, match="samples=-1"):
+        mdrsim.run(scene, samples=-1)
+
+
+def test_sweep_with_method_continuum_matches_the_closed_forms():
+    grid = {"loading.tangential.displacement": [0.0, 2.0 * D0, 4.0 * D0]}
+    swept = mdrsim.sweep(FIG3A, grid, method="continuum")
+    assert len(swept) == 3
+    for values, u in zip(swept.rows, (0.0, 2.0, 4.0)):
+        exact = ref.critical("fixed-grips", u)
+        assert values["status"] == "instability"
+        assert values["normal_force"] / F0 == pytest.approx(exact["Fz"], abs=1e-9)
+        assert values["tangential_force"] / F0 == pytest.approx(exact["Fx"], abs=1e-9)
