@@ -1,8 +1,12 @@
-// The continuum route's reach: the shorthand; programs stay on the spring row for now.
+// The continuum route's reach: shorthand scenes on convex classic profiles; the rest stays on the row.
 #include "engine/scene/continuum_scope.hpp"
 
 namespace mdrsim {
 
-bool continuum_answers(const Scene& scene) { return !scene.program; }
+bool continuum_answers(const Scene& scene) {
+  // One fold on the branch: the shapes that are always one disk (convex classics). A table
+  // or a ripple may fold several times; the row follows every jump.
+  return !scene.program && scene.profile->always_one_disk();
+}
 
 }  // namespace mdrsim

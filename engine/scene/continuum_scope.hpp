@@ -5,9 +5,10 @@
 
 namespace mdrsim {
 
-/// Whether the continuum route answers the scene exactly (docs/continuum.md): the shorthand
-/// (any profile, criterion and controller). Loading programs are not on it yet; a scene it
-/// cannot answer stays on the spring row.
+/// Whether rtol alone takes the continuum route (docs/continuum.md): the shorthand (any
+/// criterion and controller) on a profile whose branch folds once, the convex classics
+/// (Profile::always_one_disk). Loading programs are not on it yet, and tabulated and wavy
+/// profiles may fold several times: those stay on the spring row.
 bool continuum_answers(const Scene& scene);
 
 }  // namespace mdrsim

@@ -370,6 +370,12 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                       "loading programs ([[loading.stage]]) are not on the continuum route yet; "
                       "use method = \"event\" (docs/continuum.md)");
     }
+    if (scene.solver.method == SolverMethod::continuum && scene.profile_name == "wavy" &&
+        !scene.profile->always_one_disk()) {
+      solver->fail_at("method",
+                      "a wavy profile's branch folds again at every crest, and the continuum "
+                      "route follows one fold only; use method = \"event\" (docs/continuum.md)");
+    }
   } else {
     root.record("solver", {{"method", "event"}});
   }

@@ -13,6 +13,7 @@
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
+#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
 namespace {
@@ -106,6 +107,30 @@ TEST(ContinuumScope, ProgramsStayOnTheRow) {
   const Scene scene = test::build_scene_text(text);
   EXPECT_FALSE(continuum_answers(scene));
   EXPECT_EQ(scene.solver.method, SolverMethod::event);
+}
+
+// A branch that may fold more than once stays on the row with rtol alone: a wavy sphere (at
+// A = 1e-7 m its branch folds at several crests; the route's first fold gave -1.80e-3 N where
+// the row's last jump is at -0.99e-3 N) and a tabulated table. A wavy profile named on the
+// route is refused at solver.method; with amplitude 0 it is the parabola and is answered.
+TEST(ContinuumScope, BranchesThatMayFoldAgainStayOnTheRow) {
+  const std::string wavy =
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"wavy\"\nradius = 0.01\namplitude = 1e-7\nwavelength = 1e-4\n"
+      "[loading]\npreload = { contact_radius = 5.2e-4 }\nnormal = { control = \"fixed-grips\" }\n"
+      "[discretization]\nrtol = 1e-6\n";
+  EXPECT_EQ(test::build_scene_text(wavy).solver.method, SolverMethod::event);
+  EXPECT_THROW(test::build_scene_text(wavy + "[solver]\nmethod = \"continuum\"\n"), SceneError);
+  std::string flat = wavy;
+  flat.replace(flat.find("amplitude = 1e-7"), 16, "amplitude = 0.0");
+  EXPECT_EQ(test::build_scene_text(flat).solver.method, SolverMethod::continuum);
+  const std::string table =
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"tabulated\"\nr = [0, 1e-4, 2e-4, 3e-4, 4e-4, 6e-4, 8e-4]\n"
+      "f = [0, 5e-7, 2e-6, 4.5e-6, 8e-6, 1.8e-5, 3.2e-5]\n"
+      "[loading]\npreload = { contact_radius = 4e-4 }\nnormal = { control = \"fixed-grips\" }\n"
+      "[discretization]\nrtol = 1e-6\n";
+  EXPECT_EQ(test::build_scene_text(table).solver.method, SolverMethod::event);
 }
 
 }  // namespace
