@@ -71,6 +71,13 @@ echo "== a loading program: the reversible JKR cycle" >&2
 "$py" scripts/plot_program.py "$results/program_jkr_cycle.csv" \
   --title "reversible JKR approach-retract cycle (scenes/programs/jkr_cycle_reversible.toml)"
 
+# Beyond the paper: a wavy sphere's pull-off against its ripple amplitude, the amplitudes
+# whose contact is not one disk shaded (docs/model.md "One contact disk"; about 3 s).
+echo "== a wavy sphere: pull-off against the ripple amplitude" >&2
+"$mdrsim" sweep scenes/wavy_sphere.toml --vary "profile.amplitude=0:1e-6:21" \
+  --csv "$results/wavy_amplitude.csv" --threads "$threads" --log-level error
+"$py" scripts/plot_wavy.py --csv "$results/wavy_amplitude.csv" --out "$results"
+
 echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
 
