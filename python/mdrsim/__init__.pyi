@@ -70,6 +70,7 @@ class State:
     springs_in_contact: int
     normal_control: float
     dimensionless: dict[str, float] | None
+    disk_valid: bool
 
 class Work:
     normal: float
@@ -124,6 +125,8 @@ class Result:
     def work(self) -> Work | None: ...
     @property
     def warnings(self) -> list[str]: ...
+    @property
+    def disk_valid(self) -> bool: ...
     @property
     def counts(self) -> dict[str, int]: ...
     @property

@@ -24,6 +24,7 @@ class State:
     springs_in_contact: int
     normal_control: float  # the value the normal controller holds [m or N]
     dimensionless: dict = None
+    disk_valid: bool = True  # the state is one contact disk (docs/model.md "One contact disk")
 
     @classmethod
     def _of(cls, snapshot, scales):
@@ -67,7 +68,7 @@ class Jump:
 
 # What a pickled Result keeps of the engine's result (the attributes of _core.RunResult).
 _RAW_FIELDS = ("status", "title", "critical", "peak", "tangential_strength", "stages", "jumps",
-               "work", "warnings", "has_warnings", "counts", "springs", "wall_time_s", "scales",
+               "work", "warnings", "has_warnings", "disk_valid", "counts", "springs", "wall_time_s", "scales",
                "trajectory_rows_seen", "trajectory_stride")
 
 
@@ -162,6 +163,12 @@ class Result:
     @cached_property
     def warnings(self):
         return self._raw.warnings
+
+    @property
+    def disk_valid(self):
+        """Whether every reported state is one contact disk, as the MDR needs (the JSON's
+        `disk_valid`; each State has its own)."""
+        return self._raw.disk_valid
 
     @cached_property
     def counts(self):

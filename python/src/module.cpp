@@ -148,6 +148,7 @@ py::dict snapshot(const ContactSnapshot& s) {
   d["tangential_displacement"] = s.tangential_displacement;
   d["tangential_force"] = s.tangential_force;
   d["springs_in_contact"] = s.springs_in_contact;
+  d["disk_valid"] = s.disk_valid;
   return d;
 }
 
@@ -257,6 +258,7 @@ void bind_results(py::module_& m) {
                                                     : py::object(py::none());
                              })
       .def_property_readonly("warnings", [](const ResultHandle& r) { return r.result.warnings; })
+      .def_property_readonly("disk_valid", [](const ResultHandle& r) { return r.result.disk_valid; })
       .def_property_readonly("has_warnings",
                              [](const ResultHandle& r) { return !r.result.warnings.empty(); })
       .def_property_readonly("counts",

@@ -86,7 +86,10 @@ def test_thread_pool_gives_the_command_csv(command_csv):
         fields = line.split(",")
         assert row["status"] == fields[0]
         for name, text in zip(result.columns[3:], fields[3:]):
-            assert row[name] == (None if text == "" else float(text))
+            if name == "disk_valid":
+                assert row[name] is (text == "true")
+            else:
+                assert row[name] == (None if text == "" else float(text))
 
 
 def test_to_dataframe(command_csv):
