@@ -18,6 +18,7 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
       rebinding_(rebinding) {}
 
 void ProgramRow::springs_changed(bool normal, bool tangential) {
+  if (friction_) tangential = true;  // every spring in contact may carry a tangential force
   // Under fixed grips (a_F = 0) d(displacement)/d(held) = 1/a_u does not depend on the springs.
   if (normal) {
     normal_cached_ = false;
@@ -60,6 +61,7 @@ double ProgramRow::normal_force_at(double d) const {
 }
 
 double ProgramRow::tangential_force_at(double u) const {
+  if (friction_) return friction_->tangential_force(indentation(), u);
   const double per_spring = 2.0 * material_.effective_shear_modulus * spacing_;
   return per_spring * (static_cast<double>(glued_) * u - glued_offsets_.value());
 }
@@ -151,14 +153,22 @@ void ProgramRow::glue_at(double u) {
   if (glued_ > in_contact_) {
     in_contact_ = glued_;
     contact_images_.add(image(glued_));
+    if (friction_) friction_->touch(image(glued_), u);
   }
+  if (friction_) friction_->glue_next();
   if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_, u});
   glued_offsets_.add(u);
 }
 
-void ProgramRow::let_go_boundary(bool pressed) {
+double ProgramRow::let_go_boundary(bool pressed) {
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
+  double dissipated = 0.0;
+  if (friction_) {
+    // Unpressed, its limit is 0: it lets go of its stretch with no slip work, and leaves.
+    dissipated = friction_->let_go_boundary(normal_.rest, tangential_.rest);
+    if (!pressed && in_contact_ == glued_) friction_->lift_outer();
+  }
   springs_changed(true, !tangential_unchanged_by(runs_.back().offset));
   glued_offsets_.add(-runs_.back().offset);
   if (runs_.back().first == glued_) runs_.pop_back();
@@ -167,10 +177,12 @@ void ProgramRow::let_go_boundary(bool pressed) {
     --in_contact_;
   }
   --glued_;
+  return dissipated;
 }
 
 void ProgramRow::touch_next() {
   normal_.rest = indentation();
+  if (friction_) friction_->touch(image(in_contact_ + 1), tangential_displacement());
   springs_changed(true, false);
   ++in_contact_;
   contact_images_.add(image(in_contact_));
@@ -178,6 +190,7 @@ void ProgramRow::touch_next() {
 
 void ProgramRow::lift_outer() {
   normal_.rest = indentation();
+  if (friction_) friction_->lift_outer();
   springs_changed(true, false);
   contact_images_.add(-image(in_contact_));
   --in_contact_;
@@ -232,6 +245,10 @@ ContactSnapshot ProgramRow::snapshot() const {
   s.tangential_displacement = tangential_displacement();
   s.tangential_force = tangential_force();
   s.springs_in_contact = in_contact_;
+  if (friction_) {
+    s.springs_sliding = friction_->springs_sliding();
+    s.stick_radius = in_contact_ > 0 ? friction_->stick_radius() : 0.0;
+  }
   if (!edge_forces_) return s;
   if (in_contact_ > 0) {
     s.edge_normal_force =

@@ -11,7 +11,9 @@
 
 namespace mdrsim {
 
-enum class Change { fall_in, let_go, glue, touch, lift };
+/// `friction`: a spring in contact starts or stops sliding (docs/friction.md); no change of the
+/// springs in contact, so no part of a jump.
+enum class Change { fall_in, let_go, glue, touch, lift, friction };
 
 /// A cascade: the changes at one value of the stage parameter after the one that was found.
 struct Cascade {

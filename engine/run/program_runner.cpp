@@ -57,12 +57,15 @@ class ProgramRunner {
         max_springs_(spec.max_springs),
         observers_(observers),
         observe_springs_(observers.wants(EventKind::spring_detached)),
+        observe_slips_(observers.wants(EventKind::spring_slipped)),
         largest_(largest),
         last_stage_(last_stage),
         zoomed_(spec.zoomed),
         zero_(spec.zero) {
     row_.record_edge_forces(spec.edge_forces);
-    if (spec.refine && !stepping_) front_.emplace(criterion_);
+    if (scene.friction) row_.enable_friction(*scene.friction);
+    // The front located between springs knows no friction: friction rows report their own.
+    if (spec.refine && !stepping_ && !scene.friction) front_.emplace(criterion_);
   }
 
   RunResult run();
@@ -129,6 +132,7 @@ class ProgramRunner {
   const ObserverList& observers_;
   /// Asked once: whether anyone observes single springs (a log observer asks spdlog).
   bool observe_springs_;
+  bool observe_slips_;  ///< the same for slip and stick
   LargestContact* largest_;
   LastStageStart* last_stage_;  ///< null where nobody asks
   std::optional<ZoomedStart> zoomed_;
@@ -223,7 +227,11 @@ void ProgramRunner::advance_to(double t) {
   const bool tangential_moves = tangential_.rate != 0.0;
   const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
+  // The friction row follows d and u_x along the line; no friction event lies before t.
+  std::optional<LinearMotion> along;
+  if (row_.friction() && t > t_) along = ChangeLocator::motion(row_, step_line());
   set_parameter(t);
+  if (along) record_.stage_work.friction += row_.advance_friction(*along, t);
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
   // A force or displacement beyond a double makes the work of its moving axis so (an axis
   // that does not move keeps its state until a change, which finish_cascade checks).
@@ -318,7 +326,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
       by_shear = boundary_let_go(u).kind == LetGo::Kind::now;
       if (observe_springs_) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
-      row_.let_go_boundary(row_.image(k) <= d);
+      record_.stage_work.friction += row_.let_go_boundary(row_.image(k) <= d);
       guards_.released_to = std::max(guards_.released_to, k);
       guards_.released_with_stretch = stretch_x != 0.0;
       break;
@@ -333,9 +341,20 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       row_.lift_outer();
       guards_.lifted_to = std::max(guards_.lifted_to, m);
       break;
+    case Change::friction: {
+      const RowFrictionEvent& event = locator_.friction_event();
+      row_.apply_friction(event);
+      ++result_.counts.events;
+      if (observe_slips_ && event.event.kind != FrictionEventKind::limit_kink) {
+        emit(event.event.kind == FrictionEventKind::slip ? EventKind::spring_slipped
+                                                         : EventKind::spring_stuck,
+             row_.snapshot(), event.spring, in_cascade_);
+      }
+      break;
+    }
   }
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
-  if (change != Change::fall_in) {
+  if (change != Change::fall_in && change != Change::friction) {
     ++cascade.changes;
     ++result_.counts.events;
     if (cascade.changes == 1) {
@@ -423,8 +442,8 @@ void ProgramRunner::start_stage(const Stage& stage) {
   keep_machine_ = false;
   if (last_stage_ && &stage == &scene_.program->stages.back()) {
     *last_stage_ = {
-        .zoomable = stage.until_separation && !scene_.program->rebinding && row_.glued() > 0 &&
-                    row_.glued() == row_.in_contact() && row_.one_offset(),
+        .zoomable = stage.until_separation && !scene_.program->rebinding && !scene_.friction &&
+                    row_.glued() > 0 && row_.glued() == row_.in_contact() && row_.one_offset(),
         .stage = scene_.program->stages.size() - 1,
         .normal = row_.normal(),
         .tangential = row_.tangential(),

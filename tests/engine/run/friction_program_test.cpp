@@ -1,0 +1,231 @@
+// Programs with Coulomb friction: Cattaneo-Mindlin loading, Mindlin-Deresiewicz unloading and
+// reloading and the loop energy against the closed forms, the slip events, the glue that lets
+// go into sliding, and mu = 0 as the frictionless run.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "engine/reference/friction_reference.hpp"
+#include "engine/run/run_scene.hpp"
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "profiles/parabolic_profile.hpp"
+
+namespace mdrsim {
+namespace {
+
+using friction_reference::CattaneoMindlin;
+
+// E* = G* = 1 MPa (nu = 0), R = 1 cm, mu = 0.5, pressed to d = 4 um: a = 2e-4 m.
+constexpr double kModulus = 1e6;
+constexpr double kRadius = 0.01;
+constexpr double kMu = 0.5;
+constexpr double kDepth = 4e-6;
+constexpr int kPoints = 4;  // stage ends per branch
+
+Scene build(const std::string& text) {
+  static const Registries registries = Registries::builtin();
+  return SceneDocument::from_text(text, "scene.toml").build(registries);
+}
+
+std::string header(double work_of_adhesion) {
+  return fmt::format(R"(
+[material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = {}
+[profile]
+type = "parabolic"
+radius = 0.01
+)",
+                     work_of_adhesion);
+}
+
+std::string stage(const std::string& name, const std::string& axes) {
+  return fmt::format("[[loading.stage]]\nname = \"{}\"\n{}\n", name, axes);
+}
+
+/// Pressed to kDepth (fixed grips), then u_x to u_m in kPoints stages, down to -u_m and back up
+/// to u_m in 2 kPoints stages each: a fretting cycle with its branches sampled at stage ends.
+std::string fretting(double amplitude, std::int64_t springs, double mu) {
+  std::string text = header(0.0);
+  text += stage("press", fmt::format("normal = {{ control = \"fixed-grips\", to = {} }}", kDepth));
+  for (int i = 1; i <= kPoints; ++i) {
+    text += stage(fmt::format("load-{}", i),
+                  fmt::format("tangential = {{ by = {} }}", amplitude / kPoints));
+  }
+  for (const char* branch : {"unload", "reload"}) {
+    const double sign = std::string(branch) == "unload" ? -1.0 : 1.0;
+    for (int i = 1; i <= 2 * kPoints; ++i) {
+      text += stage(fmt::format("{}-{}", branch, i),
+                    fmt::format("tangential = {{ by = {} }}", sign * amplitude / kPoints));
+    }
+  }
+  text +=
+      fmt::format("[friction]\ncoefficient = {}\n[discretization]\nsprings = {}\n", mu, springs);
+  return text;
+}
+
+struct Counter final : Observer {
+  std::vector<Event> events;
+  void on_event(const Event& e) override {
+    if (e.kind == EventKind::spring_slipped || e.kind == EventKind::spring_stuck) {
+      events.push_back(e);
+    }
+  }
+};
+
+struct Fretting {
+  RunResult result;
+  Counter slips;
+};
+
+Fretting run_fretting(double amplitude, std::int64_t springs) {
+  Fretting f;
+  ObserverList observers;
+  observers.add(f.slips);
+  f.result = run_scene(build(fretting(amplitude, springs, kMu)), observers);
+  return f;
+}
+
+const CattaneoMindlin& closed_form() {
+  static const ParabolicProfile profile(kRadius);
+  static const CattaneoMindlin cm(profile, kModulus, kModulus, kMu, kDepth);
+  return cm;
+}
+
+/// The largest error of the stage ends against the branches, over mu E* d dx: a sum over springs
+/// at x_i = i dx of a monotone line load differs from its integral by at most dx times the
+/// load's variation, mu E* d per half (friction_row_test.cpp), and the row's outermost spring
+/// sits within dx of a: 2 dx mu E* d for the two halves, 4 for both causes together.
+double branch_error(const RunResult& r, double amplitude, std::int64_t springs) {
+  const CattaneoMindlin& cm = closed_form();
+  const double dx = cm.contact_radius() / static_cast<double>(springs);
+  double worst = 0.0;
+  for (const StageRecord& s : r.stages) {
+    const double u = s.end.tangential_displacement;
+    double expected = 0.0;
+    if (s.name.starts_with("load")) expected = cm.loading_force(u);
+    if (s.name.starts_with("unload")) expected = cm.unloading_force(amplitude, u);
+    if (s.name.starts_with("reload")) expected = cm.reloading_force(amplitude, u);
+    worst = std::max(worst,
+                     std::abs(s.end.tangential_force - expected) / (kMu * kModulus * kDepth * dx));
+  }
+  return worst;
+}
+
+TEST(FrictionProgram, FrettingCycleFollowsCattaneoMindlinAndMindlinDeresiewicz) {
+  const double amplitude = 0.6 * closed_form().full_slip();
+  const Fretting f = run_fretting(amplitude, 400);
+  ASSERT_EQ(f.result.status, RunStatus::completed);
+  ASSERT_EQ(f.result.stages.size(), 1u + 5u * kPoints);
+  EXPECT_LT(branch_error(f.result, amplitude, 400), 4.0);
+  EXPECT_LT(branch_error(run_fretting(amplitude, 800).result, amplitude, 800), 4.0);
+
+  // The stick radius at the end of loading: within one spacing of c = a sqrt(1 - u/u*) (the
+  // innermost sliding spring's inner neighbour; plus dx for the row's own a).
+  const CattaneoMindlin& cm = closed_form();
+  const double dx = cm.contact_radius() / 400.0;
+  const StageRecord& loaded = f.result.stages[kPoints];
+  EXPECT_NEAR(loaded.end.stick_radius, cm.stick_radius(amplitude), 2.0 * dx);
+  EXPECT_GT(loaded.end.springs_sliding, 0);
+  EXPECT_LT(loaded.end.springs_sliding, loaded.end.springs_in_contact);
+}
+
+TEST(FrictionProgram, SlipEventsOncePerSlidingSpringOnLoading) {
+  const double amplitude = 0.6 * closed_form().full_slip();
+  const Fretting f = run_fretting(amplitude, 400);
+  std::int64_t loading_slips = 0;
+  std::int64_t unloading_sticks = 0;
+  for (const Event& e : f.slips.events) {
+    if (e.stage.starts_with("load") && e.kind == EventKind::spring_slipped) ++loading_slips;
+    if (e.stage == "unload-1" && e.kind == EventKind::spring_stuck) ++unloading_sticks;
+  }
+  // On loading each spring outside c slips once and slides on; on reversal they all stick.
+  const std::int64_t sliding = f.result.stages[kPoints].end.springs_sliding;
+  EXPECT_EQ(loading_slips, sliding);
+  EXPECT_EQ(unloading_sticks, sliding);
+}
+
+TEST(FrictionProgram, LoopEnergyIsTheClosedFormAndTheMachineWork) {
+  const double amplitude = 0.6 * closed_form().full_slip();
+  const double closed = closed_form().loop_energy(amplitude);
+  double previous_error = 0.0;
+  for (const std::int64_t springs : {400, 800}) {
+    const RunResult r = run_fretting(amplitude, springs).result;
+    double work = 0.0;
+    double dissipated = 0.0;
+    for (const StageRecord& s : r.stages) {
+      if (s.name.starts_with("load") || s.name == "press") continue;
+      work += s.work.tangential;
+      dissipated += s.work.friction;
+    }
+    // Over the closed cycle every spring returns to its state: the machine's work is what
+    // friction dissipated, to rounding (some 10^3 trapezoids of 1e-16 each).
+    EXPECT_NEAR(work, dissipated, 1e-12 * closed);
+    // Against W within 4 dx G* u_m^2 (friction_row_test.cpp: each spring's 4 l (u_m - l/G*) is a
+    // line load of variation G* u_m^2, summed at x_i = i dx on both halves over two branches).
+    const double dx = closed_form().contact_radius() / static_cast<double>(springs);
+    const double error = std::abs(dissipated - closed);
+    EXPECT_LT(error, 4.0 * dx * kModulus * amplitude * amplitude) << springs;
+    // It falls with dx (here faster than first order: the row's end and the sums' errors
+    // partly cancel).
+    if (previous_error > 0.0) {
+      EXPECT_LT(error, 0.6 * previous_error) << springs;
+    }
+    std::printf("loop energy, %lld springs: relative error %.3g, bound %.3g\n",
+                static_cast<long long>(springs), error / closed,
+                4.0 * dx * kModulus * amplitude * amplitude / closed);
+    previous_error = error;
+    EXPECT_NEAR(r.work->friction,
+                dissipated + r.stages[1].work.friction + r.stages[2].work.friction +
+                    r.stages[3].work.friction + r.stages[4].work.friction,
+                1e-12 * closed);
+  }
+}
+
+TEST(FrictionProgram, ZeroCoefficientIsTheFrictionlessRunBitForBit) {
+  const double amplitude = 0.6 * closed_form().full_slip();
+  const RunResult with = run_scene(build(fretting(amplitude, 200, 0.0)), {});
+  std::string text = fretting(amplitude, 200, 0.0);
+  text.replace(text.find("[friction]\ncoefficient = 0\n"),
+               std::string("[friction]\ncoefficient = 0\n").size(), "");
+  const RunResult without = run_scene(build(text), {});
+  ASSERT_EQ(with.stages.size(), without.stages.size());
+  for (std::size_t i = 0; i < with.stages.size(); ++i) {
+    EXPECT_EQ(with.stages[i].end.tangential_force, without.stages[i].end.tangential_force);
+    EXPECT_EQ(with.stages[i].end.normal_force, without.stages[i].end.normal_force);
+    EXPECT_EQ(with.stages[i].work.tangential, without.stages[i].work.tangential);
+    EXPECT_EQ(with.stages[i].work.friction, 0.0);
+  }
+}
+
+TEST(FrictionProgram, GlueThatLetsGoUnderShearSlidesAtMuFz) {
+  // An adhesive contact glued on touch to 3 um, pressed, then sheared far beyond the glue's
+  // strength under fixed grips: the boundary lets go spring by spring, each keeping its
+  // stretch and slipping to its limit; at the end every spring in contact slides and
+  // F_x = mu F_z, a sum of mu k_z (d - g_i) over the same springs as F_z: to rounding.
+  std::string text = header(0.05);
+  text += stage("press", "normal = { control = \"fixed-grips\", to = 3.0e-6 }");
+  text += stage("shear", "tangential = { control = \"fixed-grips\", by = 2.0e-4 }");
+  text += "[friction]\ncoefficient = 0.3\n[discretization]\nsprings = 500\n";
+  const RunResult r = run_scene(build(text), {});
+  ASSERT_EQ(r.stages.size(), 2u);
+  const ContactSnapshot& end = r.stages[1].end;
+  ASSERT_GT(end.springs_in_contact, 0);
+  EXPECT_EQ(end.springs_sliding, end.springs_in_contact);
+  EXPECT_NEAR(end.tangential_force, 0.3 * end.normal_force, 1e-12 * end.normal_force);
+  EXPECT_EQ(end.stick_radius, 0.0);
+  // Friction dissipated energy, and no more than the machine put in.
+  EXPECT_GT(r.stages[1].work.friction, 0.0);
+  EXPECT_LE(r.stages[1].work.friction, r.stages[1].work.tangential);
+}
+
+}  // namespace
+}  // namespace mdrsim
