@@ -227,5 +227,24 @@ TEST(FrictionProgram, GlueThatLetsGoUnderShearSlidesAtMuFz) {
   EXPECT_LE(r.stages[1].work.friction, r.stages[1].work.tangential);
 }
 
+TEST(FrictionProgram, RtolSaysWhichStatesAreTheFinestRows) {
+  const double amplitude = 0.6 * closed_form().full_slip();
+  std::string text = fretting(amplitude, 200, kMu);
+  text.replace(text.find("springs = 200"), std::string("springs = 200").size(), "rtol = 1e-3");
+  const RunResult r = run_scene(build(text), {});
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_EQ(r.warnings.back(),
+            fmt::format("friction: springs_sliding, stick_radius and dissipated_by_friction are "
+                        "the finest row's ({} springs), not covered by rtol's estimates",
+                        r.springs));
+  // rtol's estimate covers F_x at the stage ends: the loaded end is on Cattaneo-Mindlin within it
+  // (and the row's O(dx) bound of branch_error).
+  const StageRecord& loaded = r.stages[kPoints];
+  ASSERT_TRUE(loaded.tangential_force_error_estimate);
+  const double dx = closed_form().contact_radius() / static_cast<double>(r.springs);
+  EXPECT_NEAR(loaded.end.tangential_force, closed_form().loading_force(amplitude),
+              *loaded.tangential_force_error_estimate + 4.0 * kMu * kModulus * kDepth * dx);
+}
+
 }  // namespace
 }  // namespace mdrsim
