@@ -34,7 +34,7 @@ enum class EventKind {
   sample,          ///< the continuum route's branch at one contact radius (--trajectory)
   // Friction (docs/friction.md):
   spring_slipped,  ///< a sticking spring in contact reaches its slip limit and slides
-  spring_stuck,    ///< a sliding spring's slip would reverse: it sticks again
+  spring_stuck,    ///< a sliding spring's slip would reverse: it sticks again (the last kind)
 };
 
 struct Event {

@@ -8,9 +8,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "engine/output/trajectory_csv.hpp"
 #include "engine/reference/friction_reference.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
@@ -225,6 +227,34 @@ TEST(FrictionProgram, GlueThatLetsGoUnderShearSlidesAtMuFz) {
   // Friction dissipated energy, and no more than the machine put in.
   EXPECT_GT(r.stages[1].work.friction, 0.0);
   EXPECT_LE(r.stages[1].work.friction, r.stages[1].work.tangential);
+}
+
+TEST(FrictionProgram, TrajectoryHasTheSlidingColumnAndTheSlipAndStickRows) {
+  const double amplitude = 0.6 * closed_form().full_slip();
+  std::ostringstream csv;
+  TrajectoryCsvWriter writer(csv, true);
+  ObserverList observers;
+  observers.add(writer);
+  const RunResult r = run_scene(build(fretting(amplitude, 100, kMu)), observers);
+  std::istringstream in(csv.str());
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "stage,event,in_cascade,indentation,normal_force,contact_radius,"
+            "tangential_displacement,tangential_force,springs_in_contact,sliding");
+  std::int64_t slips = 0;
+  std::int64_t sticks = 0;
+  std::string loaded_end;
+  while (std::getline(in, line)) {
+    if (line.find(",slip,") != std::string::npos) ++slips;
+    if (line.find(",stick,") != std::string::npos) ++sticks;
+    if (line.starts_with(fmt::format("load-{},stage-end,", kPoints))) loaded_end = line;
+  }
+  EXPECT_GT(slips, 0);
+  EXPECT_GT(sticks, 0);
+  // The last column of the loaded stage's end is its springs_sliding.
+  const std::int64_t sliding = r.stages[kPoints].end.springs_sliding;
+  EXPECT_TRUE(loaded_end.ends_with(fmt::format(",{}", sliding))) << loaded_end;
 }
 
 TEST(FrictionProgram, RtolSaysWhichStatesAreTheFinestRows) {
