@@ -52,6 +52,8 @@ bool ProgramRow::normal_has_stiffness() const {
 }
 
 bool ProgramRow::tangential_has_stiffness() const {
+  // With friction every sticking spring holds (K = 2 G* dx per sticking spring).
+  if (friction_) return has_stiffness(tangential_.constraint, friction_->tangential_stiffness());
   return has_stiffness(tangential_.constraint, static_cast<double>(glued_));
 }
 
@@ -88,6 +90,11 @@ double ProgramRow::solve_indentation() const {
 double ProgramRow::solve_tangential_displacement() const {
   const double per_held = tangential_per_held();
   if (per_held == 0.0) return tangential_.rest;
+  if (friction_) {
+    // F_x = K u + F_x(d, 0), affine in u while no spring changes.
+    const double at_zero = friction_->tangential_force(indentation(), 0.0);
+    return (tangential_.held - tangential_.constraint.force_coefficient * at_zero) * per_held;
+  }
   const double offset = 2.0 * material_.effective_shear_modulus * spacing_ * glued_offsets_.value();
   return (tangential_.held + tangential_.constraint.force_coefficient * offset) * per_held;
 }
@@ -107,14 +114,21 @@ double ProgramRow::indentation_per_held() const {
 double ProgramRow::tangential_per_held() const {
   if (!tangential_response_cached_) {
     const AffineConstraint& c = tangential_.constraint;
-    const double k =
-        2.0 * material_.effective_shear_modulus * spacing_ * static_cast<double>(glued_);
+    const double k = friction_ ? friction_->tangential_stiffness()
+                               : 2.0 * material_.effective_shear_modulus * spacing_ *
+                                     static_cast<double>(glued_);
     tangential_per_held_ = tangential_has_stiffness()
                                ? 1.0 / (c.displacement_coefficient + c.force_coefficient * k)
                                : 0.0;
     tangential_response_cached_ = true;
   }
   return tangential_per_held_;
+}
+
+double ProgramRow::tangential_per_indentation() const {
+  if (!friction_ || is_fixed_grips(tangential_.constraint)) return 0.0;
+  return -tangential_.constraint.force_coefficient *
+         friction_->tangential_force_per_indentation(indentation()) * tangential_per_held();
 }
 
 double ProgramRow::held_value_of_normal(const AffineConstraint& c) const {

@@ -84,7 +84,8 @@ class ProgramRow {
     return friction_->advance(motion, t);
   }
   void apply_friction(const RowFrictionEvent& event) {
-    tangential_cached_ = false;
+    tangential_.rest = tangential_displacement();  // where u_x rests if nothing sticks now
+    tangential_cached_ = tangential_response_cached_ = false;  // K changes
     friction_->apply(event);
   }
   const Material& material() const { return material_; }
@@ -125,6 +126,9 @@ class ProgramRow {
   /// d(d)/d(held) and d(u_x)/d(held) while the springs stay as they are.
   double indentation_per_held() const;
   double tangential_per_held() const;
+  /// d(u_x)/d(d) at a fixed held value: with friction under a held force, the sliding springs'
+  /// mu f_z moves u_x with d (0 without friction or under fixed grips).
+  double tangential_per_indentation() const;
   /// The held value that the present state satisfies under `constraint`.
   double held_value_of_normal(const AffineConstraint& constraint) const;
   double held_value_of_tangential(const AffineConstraint& constraint) const;

@@ -184,6 +184,7 @@ class ProgramRunner {
   std::vector<Event> pending_;  ///< stepping: the events of the trial step
   bool buffering_ = false;
   Stop stop_ = Stop::none;
+  bool slid_ = false;  ///< friction could not hold a held F_x: gross sliding
   /// A flight ended the program: the state and the located state the last stage ends at.
   JumpEnd flight_ = JumpEnd::state;
   ContactSnapshot flight_end_;
@@ -224,7 +225,10 @@ void ProgramRunner::add_work(const AxisPoint* normal_from, const AxisPoint* tang
 void ProgramRunner::advance_to(double t) {
   // While the row stays as it is, an axis whose held value does not move stays where it is.
   const bool normal_moves = normal_.rate != 0.0;
-  const bool tangential_moves = tangential_.rate != 0.0;
+  // With friction under a held F_x, u_x follows d too (the sliding springs' mu f_z).
+  const bool tangential_moves =
+      tangential_.rate != 0.0 ||
+      (normal_moves && row_.friction() && !is_fixed_grips(row_.tangential().constraint));
   const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
   // The friction row follows d and u_x along the line; no friction event lies before t.
@@ -711,6 +715,18 @@ void ProgramRunner::finish(RunResult& r) {
           stage_->name, kSweepsPerStage, result_.counts.events, row_.in_contact(), row_.glued()));
       return;
     case Stop::cannot_hold_tangential:
+      if (scene_.friction && row_.in_contact() > 0) {
+        // Every spring in contact slides at its limit and the held F_x asks for more: gross
+        // sliding, at the last equilibrium (docs/friction.md "Statuses").
+        r.status = RunStatus::shear_off;
+        r.critical = row_.snapshot();
+        slid_ = true;
+        r.warnings.push_back(fmt::format(
+            "stage '{}': friction can no longer hold F_x = {:.6g} N ({} springs in contact, all "
+            "sliding): the contact slides away and the program ends here",
+            stage_->name, row_.tangential().held, row_.in_contact()));
+        return;
+      }
       if (glue_loss) {
         decide_loss(*glue_loss);
         if (glue_loss->changes < 2) r.status = RunStatus::shear_off;
@@ -785,7 +801,7 @@ RunResult ProgramRunner::run() {
     warn_skipped_stages();
   }
   finish(result_);
-  result_.sliding = flight_ == JumpEnd::sliding;
+  result_.sliding = flight_ == JumpEnd::sliding || slid_;
   // The stage of the critical point, for the closing events (finish picks it from a loss).
   for (const auto* loss : {&losses_.last_contact_loss(), &losses_.last_glue_loss()}) {
     if (*loss && result_.critical &&

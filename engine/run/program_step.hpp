@@ -68,9 +68,10 @@ class ChangeLocator {
   /// The motion of d and u_x along the line from its present parameter (affine while the
   /// springs stay as they are), as the friction row reads it.
   static LinearMotion motion(const ProgramRow& row, const StepLine& line) {
-    return {line.t, row.indentation(), row.tangential_displacement(),
-            line.normal.rate != 0.0 ? row.indentation_per_held() * line.normal.rate : 0.0,
-            line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0};
+    const double vd = line.normal.rate != 0.0 ? row.indentation_per_held() * line.normal.rate : 0.0;
+    return {line.t, row.indentation(), row.tangential_displacement(), vd,
+            (line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0) +
+                (vd != 0.0 ? row.tangential_per_indentation() * vd : 0.0)};
   }
 
  private:
@@ -162,8 +163,8 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
   const double d = row.indentation();
   const double u = row.tangential_displacement();
   const double vd = line.normal.rate != 0.0 ? row.indentation_per_held() * line.normal.rate : 0.0;
-  const double vu =
-      line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0;
+  double vu = line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0;
+  if (vd != 0.0 && row.friction()) vu += row.tangential_per_indentation() * vd;
   const double soonest = next_parameter(line.t);
   double best = t_end;
   std::optional<Change> change;

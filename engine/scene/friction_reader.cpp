@@ -48,11 +48,14 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene)
               "loading.rebinding = true is not run with friction yet (issue 21): use "
               "rebinding = false");
   }
+  // A held F_x with glue: a let-go would move u_x within the jump, past other springs' limits,
+  // which the program loop does not solve yet.
   for (const Stage& stage : scene.program->stages) {
-    if (stage.tangential && !stage.tangential->controller->is_fixed_grips()) {
+    if (stage.tangential && !stage.tangential->controller->is_fixed_grips() &&
+        scene.material.work_of_adhesion > 0.0) {
       t.fail_at(key, fmt::format("stage '{}' drives the tangential axis with control = \"{}\": "
-                                 "friction runs with a fixed-grips tangential axis only (u_x "
-                                 "driven) so far",
+                                 "with adhesion (work_of_adhesion > 0) friction runs with a "
+                                 "fixed-grips tangential axis only (u_x driven) so far",
                                  stage.name, stage.tangential->control));
     }
   }

@@ -257,6 +257,48 @@ TEST(FrictionProgram, TrajectoryHasTheSlidingColumnAndTheSlipAndStickRows) {
   EXPECT_TRUE(loaded_end.ends_with(fmt::format(",{}", sliding))) << loaded_end;
 }
 
+TEST(FrictionProgram, HeldTangentialForceFollowsCattaneoMindlinThenSlidesAway) {
+  // Pressed to kDepth, then F_x ramped under a fixed tangential load in kPoints stages to 0.9 of
+  // mu F_z and on past mu F_z: u_x at each stage end on the loading curve (its F_x(u) within
+  // branch_error's 4 dx mu E* d of the held force), then gross sliding where every spring slides:
+  // shear-off with "sliding", at F_x = mu F_z of the row (a sum over the same springs as F_z).
+  const CattaneoMindlin& cm = closed_form();
+  const double limit = kMu * cm.normal_force();
+  std::string text = header(0.0);
+  text += stage("press", fmt::format("normal = {{ control = \"fixed-grips\", to = {} }}", kDepth));
+  for (int i = 1; i <= kPoints; ++i) {
+    text += stage(
+        fmt::format("load-{}", i),
+        fmt::format("tangential = {{ control = \"fixed-load\", by = {} }}", 0.9 * limit / kPoints));
+  }
+  // Unpressed a little at the held F_x: the sliding springs' mu f_z falls, so u_x moves on.
+  text += stage("unpress", fmt::format("normal = {{ by = {} }}", -0.05 * kDepth));
+  text += stage("slide", fmt::format("tangential = {{ by = {} }}", 0.5 * limit));
+  text += fmt::format("[friction]\ncoefficient = {}\n[discretization]\nsprings = 400\n", kMu);
+  const RunResult r = run_scene(build(text), {});
+  const double dx = cm.contact_radius() / 400.0;
+  for (int i = 1; i <= kPoints; ++i) {
+    const ContactSnapshot& end = r.stages[static_cast<std::size_t>(i)].end;
+    EXPECT_NEAR(end.tangential_force, 0.9 * limit * i / kPoints, 1e-12 * limit);
+    EXPECT_NEAR(cm.loading_force(end.tangential_displacement), end.tangential_force,
+                4.0 * kMu * kModulus * kDepth * dx)
+        << i;
+  }
+  // At a constant F_x the machine's tangential work is F_x times the way u_x went.
+  const StageRecord& loaded = r.stages[kPoints];
+  const StageRecord& unpressed = r.stages[kPoints + 1];
+  const double moved = unpressed.end.tangential_displacement - loaded.end.tangential_displacement;
+  EXPECT_GT(moved, 0.0);
+  EXPECT_NEAR(unpressed.work.tangential, loaded.end.tangential_force * moved,
+              1e-12 * std::abs(loaded.end.tangential_force * moved));
+  EXPECT_EQ(r.status, RunStatus::shear_off);
+  EXPECT_TRUE(r.sliding);
+  ASSERT_TRUE(r.critical);
+  EXPECT_EQ(r.critical->springs_sliding, r.critical->springs_in_contact);
+  EXPECT_NEAR(r.critical->tangential_force, kMu * r.critical->normal_force,
+              1e-12 * r.critical->normal_force);
+}
+
 TEST(FrictionProgram, RtolSaysWhichStatesAreTheFinestRows) {
   const double amplitude = 0.6 * closed_form().full_slip();
   std::string text = fretting(amplitude, 200, kMu);

@@ -84,6 +84,10 @@ TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
   fixed_load.replace(fixed_load.find("tangential = { control = \"fixed-grips\""),
                      std::string_view("tangential = { control = \"fixed-grips\"").size(),
                      "tangential = { control = \"fixed-load\"");
+  // Without adhesion a held F_x runs; with it, it is refused (a let-go would move u_x).
+  EXPECT_TRUE(build(fixed_load + "coefficient = 0.5\n").friction.has_value());
+  fixed_load.replace(fixed_load.find("work_of_adhesion = 0.0"),
+                     std::string_view("work_of_adhesion = 0.0").size(), "work_of_adhesion = 0.05");
   const std::string message = [&] {
     try {
       build(fixed_load + "coefficient = 0.5\n");
@@ -92,7 +96,8 @@ TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
     }
     return std::string("<no exception>");
   }();
-  EXPECT_NE(message.find("friction runs with a fixed-grips tangential axis only"),
+  EXPECT_NE(message.find("with adhesion (work_of_adhesion > 0) friction runs with a fixed-grips "
+                         "tangential axis only"),
             std::string::npos)
       << message;
 }
