@@ -40,8 +40,8 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene)
   if (!scene.program) {
     t.fail_at(
         key,
-        "the shorthand loading does not run with friction: write it as a loading program "
-        "([[loading.stage]], docs/programs.md; docs/friction.md shows the equivalent stages)");
+        "the shorthand loading does not run with friction: write it as its three-stage loading "
+        "program ([[loading.stage]], docs/programs.md \"The shorthand as a program\")");
   }
   if (scene.program->rebinding) {
     t.fail_at(key,
