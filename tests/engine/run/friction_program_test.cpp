@@ -299,6 +299,44 @@ TEST(FrictionProgram, HeldTangentialForceFollowsCattaneoMindlinThenSlidesAway) {
               1e-12 * r.critical->normal_force);
 }
 
+TEST(FrictionProgram, NoEnergyAppearsOrVanishesUncountedWhenTheGlueLetsGo) {
+  // An adhesive contact glued on touch to d = 5 um (a = sqrt(R d), spring N at a), sheared
+  // until the whole glued contact lets go in one jump at u_c, moved back, then pulled off. Each
+  // spring keeps its stretch as its glue lets go and slips to its limit: the glue releases
+  // (k_x u_c - mu k_z (d - g_i))^2 / (2 k_x) of each spring above its limit, friction
+  // dissipates the rest, and nothing is stored at the end. So the machine's work is the
+  // glue's release (summed here by hand over the springs) plus dissipated_by_friction, to
+  // rounding (some thousand trapezoids and sums: 1e-12 of the total).
+  constexpr double mu = 0.4;
+  constexpr double depth = 5e-6;
+  constexpr std::int64_t springs = 500;
+  std::string text = header(0.05);
+  text += stage("press", fmt::format("normal = {{ control = \"fixed-grips\", to = {} }}", depth));
+  text += stage("shear", "tangential = { control = \"fixed-grips\", by = 1.0e-5 }");
+  text += stage("back", "tangential = { by = -0.5e-5 }");
+  text +=
+      stage("pull", "normal = { control = \"fixed-load\", by = -1.0e-2 }\nuntil = \"separation\"");
+  text +=
+      fmt::format("[friction]\ncoefficient = {}\n[discretization]\nsprings = {}\n", mu, springs);
+  const RunResult r = run_scene(build(text), {});
+  ASSERT_EQ(r.jumps.size(), 1u);  // the shear's let-go of the whole glued contact
+  EXPECT_EQ(r.jumps.front().stage, "shear");
+  EXPECT_EQ(r.stages.back().end.normal_force, 0.0);
+  const double u = r.jumps.front().critical.tangential_displacement;
+  const double a = std::sqrt(kRadius * depth);
+  const double dx = a / static_cast<double>(springs);
+  double released = 0.0;
+  for (std::int64_t i = 1; i <= springs; ++i) {
+    const double x = i == springs ? a : dx * static_cast<double>(i);
+    const double excess = kModulus * dx * u - mu * kModulus * dx * (depth - x * x / kRadius);
+    if (excess > 0.0) released += 2.0 * excess * excess / (2.0 * kModulus * dx);
+  }
+  ASSERT_TRUE(r.work);
+  EXPECT_GT(r.work->friction, 0.0);
+  EXPECT_NEAR(r.work->normal + r.work->tangential, released + r.work->friction,
+              1e-12 * (released + r.work->friction));
+}
+
 TEST(FrictionProgram, RtolSaysWhichStatesAreTheFinestRows) {
   const double amplitude = 0.6 * closed_form().full_slip();
   std::string text = fretting(amplitude, 200, kMu);
