@@ -144,7 +144,9 @@ void ProgramRow::glue_next() {
   // The displacements before the change: an axis without stiffness rests where it was.
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
-  glue_at(tangential_.rest);
+  // With friction a pressed spring glues keeping its stretch: its offset, not u_x.
+  const bool pressed = friction_ && glued_ < in_contact_;
+  glue_at(pressed ? friction_->spring(glued_ + 1).offset : tangential_.rest);
 }
 
 void ProgramRow::glue_next_as_boundary() {

@@ -62,7 +62,11 @@ class ProgramRow {
 
   std::int64_t glued() const { return glued_; }            ///< k
   std::int64_t in_contact() const { return in_contact_; }  ///< m
-  bool can_glue(std::int64_t i) const { return rebinding_ || i > ever_glued_; }
+  /// With friction a pressed spring that slides glues only once it sticks (docs/friction.md).
+  bool can_glue(std::int64_t i) const {
+    return (rebinding_ || i > ever_glued_) &&
+           !(friction_ && i <= in_contact_ && friction_->spring(i).sliding != 0);
+  }
   double boundary_offset() const { return runs_.back().offset; }  ///< s of spring k [m]
   /// Whether every glued spring carries the same offset s (one run).
   bool one_offset() const { return runs_.size() <= 1; }

@@ -43,11 +43,6 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene)
         "the shorthand loading does not run with friction: write it as its three-stage loading "
         "program ([[loading.stage]], docs/programs.md \"The shorthand as a program\")");
   }
-  if (scene.program->rebinding) {
-    t.fail_at(key,
-              "loading.rebinding = true is not run with friction yet (issue 21): use "
-              "rebinding = false");
-  }
   // A held F_x with glue: a let-go would move u_x within the jump, past other springs' limits,
   // which the program loop does not solve yet.
   for (const Stage& stage : scene.program->stages) {

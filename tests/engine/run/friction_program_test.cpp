@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -335,6 +336,71 @@ TEST(FrictionProgram, NoEnergyAppearsOrVanishesUncountedWhenTheGlueLetsGo) {
   EXPECT_GT(r.work->friction, 0.0);
   EXPECT_NEAR(r.work->normal + r.work->tangential, released + r.work->friction,
               1e-12 * (released + r.work->friction));
+}
+
+struct SpringEvents final : Observer {
+  std::vector<Event> events;
+  void on_event(const Event& e) override {
+    if (e.kind == EventKind::spring_slipped || e.kind == EventKind::spring_stuck ||
+        e.kind == EventKind::spring_glued || e.kind == EventKind::spring_detached) {
+      events.push_back(e);
+    }
+  }
+};
+
+TEST(FrictionProgram, WithRebindingASlidingSpringGluesOnceItSticksKeepingItsStretch) {
+  // Glued on touch, sheared until the whole glued contact lets go (every spring then slides
+  // under friction), then moved back: each slide reverses, each spring sticks and, with
+  // rebinding, glues again at once keeping its stretch. So at the reversal no spring glues
+  // before its stick, and F_x does not change as they glue (to rounding: a sum over 300
+  // springs); the stretches then carry the glued contact back with 2 G* a of stiffness. Pulled
+  // off under fixed grips, the boundary spring k lets go where its elongation and its kept
+  // stretch s_k = mu (E*/G*) (d0 - g_k) - 5 um (its limit's stretch at the reversal, moved back)
+  // meet the criterion, E* (g_k - d)^2 + G* s_k^2 = 2 pi x_k dgamma (paper eq. 20): to rounding,
+  // where a glue at zero stretch would miss by up to 1e-2 d0.
+  std::string text = header(0.05);
+  text += "[loading]\nrebinding = true\n";
+  text += stage("press", "normal = { control = \"fixed-grips\", to = 5.0e-6 }");
+  text += stage("shear", "tangential = { control = \"fixed-grips\", by = 1.0e-5 }");
+  text += stage("back", "tangential = { by = -0.5e-5 }");
+  text += stage("pull", "normal = { by = -1.0e-5 }\nuntil = \"separation\"");
+  text += "[friction]\ncoefficient = 0.4\n[discretization]\nsprings = 300\n";
+  SpringEvents seen;
+  ObserverList observers;
+  observers.add(seen);
+  const RunResult r = run_scene(build(text), observers);
+  ASSERT_EQ(r.stages.size(), 4u);
+  const ContactSnapshot& sheared = r.stages[1].end;
+  ASSERT_EQ(sheared.springs_sliding, 300);
+  std::vector<bool> stuck(301, false);
+  int glued = 0;
+  for (const Event& e : seen.events) {
+    if (e.stage != "back") continue;
+    if (e.kind == EventKind::spring_stuck) stuck[static_cast<std::size_t>(e.spring)] = true;
+    if (e.kind != EventKind::spring_glued) continue;
+    ++glued;
+    EXPECT_TRUE(stuck[static_cast<std::size_t>(e.spring)]) << "spring " << e.spring;
+    EXPECT_NEAR(e.state.tangential_force, sheared.tangential_force,
+                1e-12 * std::abs(sheared.tangential_force));
+  }
+  EXPECT_EQ(glued, 300);
+  const double a = std::sqrt(kRadius * 5e-6);
+  int checked = 0;
+  for (const Event& e : seen.events) {
+    if (e.stage != "pull" || e.kind != EventKind::spring_detached || e.in_cascade) continue;
+    const double x = e.spring == 300 ? a : a * static_cast<double>(e.spring) / 300.0;
+    const double g = x * x / kRadius;
+    const double stretch = 0.4 * (5e-6 - g) - 0.5e-5;
+    const double expected =
+        g -
+        std::sqrt((2.0 * std::numbers::pi * x * 0.05 - kModulus * stretch * stretch) / kModulus);
+    EXPECT_NEAR(e.state.indentation, expected, 1e-9 * 5e-6) << "spring " << e.spring;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_NEAR(r.stages[2].end.tangential_force,
+              sheared.tangential_force - 2.0 * kModulus * a * 0.5e-5,
+              1e-9 * std::abs(sheared.tangential_force));
 }
 
 TEST(FrictionProgram, RtolSaysWhichStatesAreTheFinestRows) {
