@@ -34,14 +34,14 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene)
               "glued = \"coulomb\" is not run yet (issue 21): use glued = \"unlimited\" "
               "(docs/friction.md)");
   }
-  if (scene.solver.method != SolverMethod::event) {
-    t.fail_at(key, "friction runs with solver.method = \"event\" only");
-  }
   if (!scene.program) {
     t.fail_at(
         key,
         "the shorthand loading does not run with friction: write it as its three-stage loading "
         "program ([[loading.stage]], docs/programs.md \"The shorthand as a program\")");
+  }
+  if (scene.solver.method != SolverMethod::event) {
+    t.fail_at(key, "friction runs with solver.method = \"event\" only");
   }
   // A held F_x with glue: a let-go would move u_x within the jump, past other springs' limits,
   // which the program loop does not solve yet.

@@ -80,6 +80,19 @@ TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
                    SceneError,
                    "scene.toml:17:9: friction.glued: glued = \"coulomb\" is not run yet (issue "
                    "21): use glued = \"unlimited\" (docs/friction.md)");
+  EXPECT_THROW_MSG(build(p + "coefficient = 0.5\n[solver]\nmethod = \"stepping\"\n"), SceneError,
+                   "scene.toml:16:15: friction.coefficient: friction runs with solver.method = "
+                   "\"event\" only");
+  // The shorthand: the same path written as its program runs (docs/programs.md).
+  std::string shorthand(p);
+  shorthand.replace(
+      shorthand.find("[[loading.stage]]"), std::string::npos,
+      "[loading]\npreload = { depth = 1.0e-6 }\nnormal = { control = \"fixed-load\" }\n"
+      "[friction]\ncoefficient = 0.5\n");
+  EXPECT_THROW_MSG(build(shorthand), SceneError,
+                   "scene.toml:13:15: friction.coefficient: the shorthand loading does not run "
+                   "with friction: write it as its three-stage loading program "
+                   "([[loading.stage]], docs/programs.md \"The shorthand as a program\")");
   std::string fixed_load(p);
   fixed_load.replace(fixed_load.find("tangential = { control = \"fixed-grips\""),
                      std::string_view("tangential = { control = \"fixed-grips\"").size(),
