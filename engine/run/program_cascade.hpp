@@ -21,6 +21,7 @@ struct Cascade {
   std::int64_t in_contact = 0;  ///< m before
   std::int64_t glued = 0;       ///< k before
   std::int64_t changes = 0;
+  std::int64_t friction_events = 0;  ///< slips and sticks at the same parameter (no changes)
   bool second_by_shear = false;
   bool first_by_shear = false;
   std::optional<Change> first;

@@ -346,6 +346,11 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       guards_.lifted_to = std::max(guards_.lifted_to, m);
       break;
     case Change::friction: {
+      // Each spring slips or sticks a few times at one parameter at most: more is a loop.
+      if (++cascade.friction_events > 4 * (max_springs_ + 2)) {
+        throw std::runtime_error(fmt::format(
+            "a cascade did not end: the springs keep slipping and sticking at t = {}", t_));
+      }
       const RowFrictionEvent& event = locator_.friction_event();
       row_.apply_friction(event);
       ++result_.counts.events;
