@@ -47,6 +47,10 @@ const char* to_string(EventKind kind) {
       return "jump";
     case EventKind::sample:
       return "sample";
+    case EventKind::spring_slipped:
+      return "slip";
+    case EventKind::spring_stuck:
+      return "stick";
   }
   return "?";
 }

@@ -32,6 +32,9 @@ enum class EventKind {
   stage_end,       ///< a stage reaches its end (or separation)
   jump,            ///< a cascade at one value of the stage parameter; state after it
   sample,          ///< the continuum route's branch at one contact radius (--trajectory)
+  // Friction (docs/friction.md):
+  spring_slipped,  ///< a sticking spring in contact reaches its slip limit and slides
+  spring_stuck,    ///< a sliding spring's slip would reverse: it sticks again (the last kind)
 };
 
 struct Event {

@@ -25,6 +25,8 @@ void LogObserver::on_event(const Event& event) {
     case EventKind::spring_glued:
     case EventKind::spring_touched:
     case EventKind::spring_lifted:
+    case EventKind::spring_slipped:
+    case EventKind::spring_stuck:
       spdlog::debug("{}", event);
       break;
     case EventKind::step_accepted:
@@ -41,6 +43,8 @@ bool LogObserver::wants(EventKind kind) const {
     case EventKind::spring_glued:
     case EventKind::spring_touched:
     case EventKind::spring_lifted:
+    case EventKind::spring_slipped:
+    case EventKind::spring_stuck:
       return spdlog::should_log(spdlog::level::debug);
     case EventKind::step_accepted:
     case EventKind::step_halved:

@@ -24,6 +24,7 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/scene/scene_document.hpp
     engine/scene/scene.hpp
     engine/scene/program.hpp
+    engine/model/friction_settings.hpp
     engine/scene/scene_error.hpp
     # the run and its result
     engine/run/run_scene.hpp

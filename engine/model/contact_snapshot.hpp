@@ -13,6 +13,10 @@ struct ContactSnapshot {
   double tangential_displacement = 0.0;  ///< u_x [m]
   double tangential_force = 0.0;         ///< F_x [N]
   std::int64_t springs_in_contact = 0;   ///< attached springs of one half
+  /// With friction (docs/friction.md): springs of one half sliding, and the radius inside
+  /// which every spring in contact sticks (the contact radius when none slides) [m].
+  std::int64_t springs_sliding = 0;
+  double stick_radius = 0.0;
   /// The normal and tangential force of the outermost spring in contact (both halves) [N]:
   /// how far the row's force can sit from the continuum's for the front's place between two
   /// springs. Set by loading programs' rows; rtol adds it to its estimates.

@@ -18,6 +18,7 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
       rebinding_(rebinding) {}
 
 void ProgramRow::springs_changed(bool normal, bool tangential) {
+  if (friction_) tangential = true;  // every spring in contact may carry a tangential force
   // Under fixed grips (a_F = 0) d(displacement)/d(held) = 1/a_u does not depend on the springs.
   if (normal) {
     normal_cached_ = false;
@@ -51,6 +52,8 @@ bool ProgramRow::normal_has_stiffness() const {
 }
 
 bool ProgramRow::tangential_has_stiffness() const {
+  // With friction every sticking spring holds (K = 2 G* dx per sticking spring).
+  if (friction_) return has_stiffness(tangential_.constraint, friction_->tangential_stiffness());
   return has_stiffness(tangential_.constraint, static_cast<double>(glued_));
 }
 
@@ -60,6 +63,7 @@ double ProgramRow::normal_force_at(double d) const {
 }
 
 double ProgramRow::tangential_force_at(double u) const {
+  if (friction_) return friction_->tangential_force(indentation(), u);
   const double per_spring = 2.0 * material_.effective_shear_modulus * spacing_;
   return per_spring * (static_cast<double>(glued_) * u - glued_offsets_.value());
 }
@@ -86,6 +90,11 @@ double ProgramRow::solve_indentation() const {
 double ProgramRow::solve_tangential_displacement() const {
   const double per_held = tangential_per_held();
   if (per_held == 0.0) return tangential_.rest;
+  if (friction_) {
+    // F_x = K u + F_x(d, 0), affine in u while no spring changes.
+    const double at_zero = friction_->tangential_force(indentation(), 0.0);
+    return (tangential_.held - tangential_.constraint.force_coefficient * at_zero) * per_held;
+  }
   const double offset = 2.0 * material_.effective_shear_modulus * spacing_ * glued_offsets_.value();
   return (tangential_.held + tangential_.constraint.force_coefficient * offset) * per_held;
 }
@@ -105,14 +114,21 @@ double ProgramRow::indentation_per_held() const {
 double ProgramRow::tangential_per_held() const {
   if (!tangential_response_cached_) {
     const AffineConstraint& c = tangential_.constraint;
-    const double k =
-        2.0 * material_.effective_shear_modulus * spacing_ * static_cast<double>(glued_);
+    const double k = friction_ ? friction_->tangential_stiffness()
+                               : 2.0 * material_.effective_shear_modulus * spacing_ *
+                                     static_cast<double>(glued_);
     tangential_per_held_ = tangential_has_stiffness()
                                ? 1.0 / (c.displacement_coefficient + c.force_coefficient * k)
                                : 0.0;
     tangential_response_cached_ = true;
   }
   return tangential_per_held_;
+}
+
+double ProgramRow::tangential_per_indentation() const {
+  if (!friction_ || is_fixed_grips(tangential_.constraint)) return 0.0;
+  return -tangential_.constraint.force_coefficient *
+         friction_->tangential_force_per_indentation(indentation()) * tangential_per_held();
 }
 
 double ProgramRow::held_value_of_normal(const AffineConstraint& c) const {
@@ -128,7 +144,9 @@ void ProgramRow::glue_next() {
   // The displacements before the change: an axis without stiffness rests where it was.
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
-  glue_at(tangential_.rest);
+  // With friction a pressed spring glues keeping its stretch: its offset, not u_x.
+  const bool pressed = friction_ && glued_ < in_contact_;
+  glue_at(pressed ? friction_->spring(glued_ + 1).offset : tangential_.rest);
 }
 
 void ProgramRow::glue_next_as_boundary() {
@@ -151,14 +169,22 @@ void ProgramRow::glue_at(double u) {
   if (glued_ > in_contact_) {
     in_contact_ = glued_;
     contact_images_.add(image(glued_));
+    if (friction_) friction_->touch(image(glued_), u);
   }
+  if (friction_) friction_->glue_next();
   if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_, u});
   glued_offsets_.add(u);
 }
 
-void ProgramRow::let_go_boundary(bool pressed) {
+double ProgramRow::let_go_boundary(bool pressed) {
   normal_.rest = indentation();
   tangential_.rest = tangential_displacement();
+  double dissipated = 0.0;
+  if (friction_) {
+    // Unpressed, its limit is 0: it lets go of its stretch with no slip work, and leaves.
+    dissipated = friction_->let_go_boundary(normal_.rest, tangential_.rest);
+    if (!pressed && in_contact_ == glued_) friction_->lift_outer();
+  }
   springs_changed(true, !tangential_unchanged_by(runs_.back().offset));
   glued_offsets_.add(-runs_.back().offset);
   if (runs_.back().first == glued_) runs_.pop_back();
@@ -167,10 +193,12 @@ void ProgramRow::let_go_boundary(bool pressed) {
     --in_contact_;
   }
   --glued_;
+  return dissipated;
 }
 
 void ProgramRow::touch_next() {
   normal_.rest = indentation();
+  if (friction_) friction_->touch(image(in_contact_ + 1), tangential_displacement());
   springs_changed(true, false);
   ++in_contact_;
   contact_images_.add(image(in_contact_));
@@ -178,6 +206,7 @@ void ProgramRow::touch_next() {
 
 void ProgramRow::lift_outer() {
   normal_.rest = indentation();
+  if (friction_) friction_->lift_outer();
   springs_changed(true, false);
   contact_images_.add(-image(in_contact_));
   --in_contact_;
@@ -232,6 +261,10 @@ ContactSnapshot ProgramRow::snapshot() const {
   s.tangential_displacement = tangential_displacement();
   s.tangential_force = tangential_force();
   s.springs_in_contact = in_contact_;
+  if (friction_) {
+    s.springs_sliding = friction_->springs_sliding();
+    s.stick_radius = in_contact_ > 0 ? friction_->stick_radius() : 0.0;
+  }
   if (!edge_forces_) return s;
   if (in_contact_ > 0) {
     s.edge_normal_force =

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "controllers/controller.hpp"
@@ -13,6 +14,7 @@
 #include "engine/base/material.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/contact_snapshot.hpp"
+#include "engine/model/friction_row.hpp"
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -31,6 +33,9 @@ struct MachineAxis {
 /// carries the tangential stretch u_x - s, s the indenter's u_x when it glued; springs glue
 /// in runs at one s, so a stack of (first spring, s) runs and two sums replace per-spring
 /// state. Normal force 2 E* dx sum_{i<=m} (d - g_i), tangential 2 G* dx sum_{i<=k} (u_x - s_i).
+/// With friction (docs/friction.md) a FrictionRow mirrors the springs in contact and gives the
+/// tangential force, the pressed springs' stick and slip included; the tangential axis is then
+/// driven in u_x (fixed grips), which the scene checks.
 class ProgramRow {
  public:
   /// `reference_image` is g at spring N: the front value the program reaches there, which
@@ -57,7 +62,11 @@ class ProgramRow {
 
   std::int64_t glued() const { return glued_; }            ///< k
   std::int64_t in_contact() const { return in_contact_; }  ///< m
-  bool can_glue(std::int64_t i) const { return rebinding_ || i > ever_glued_; }
+  /// With friction a pressed spring that slides glues only once it sticks (docs/friction.md).
+  bool can_glue(std::int64_t i) const {
+    return (rebinding_ || i > ever_glued_) &&
+           !(friction_ && i <= in_contact_ && friction_->spring(i).sliding != 0);
+  }
   double boundary_offset() const { return runs_.back().offset; }  ///< s of spring k [m]
   /// Whether every glued spring carries the same offset s (one run).
   bool one_offset() const { return runs_.size() <= 1; }
@@ -67,6 +76,22 @@ class ProgramRow {
     for (std::int64_t i = 0; i < n; ++i) glue_next();
   }
   bool adhesive() const { return material_.work_of_adhesion > 0.0; }
+  /// Coulomb friction on every spring in contact from now on (a row with nothing in contact).
+  void enable_friction(const FrictionSettings& settings) {
+    friction_.emplace(material_, settings, spacing_);
+  }
+  const FrictionRow* friction() const { return friction_ ? &*friction_ : nullptr; }
+  /// Moves the friction row along `motion` to t (no friction event in between); returns the
+  /// work its slips dissipated [J].
+  double advance_friction(const LinearMotion& motion, double t) {
+    tangential_cached_ = false;
+    return friction_->advance(motion, t);
+  }
+  void apply_friction(const RowFrictionEvent& event) {
+    tangential_.rest = tangential_displacement();  // where u_x rests if nothing sticks now
+    tangential_cached_ = tangential_response_cached_ = false;  // K changes
+    friction_->apply(event);
+  }
   const Material& material() const { return material_; }
 
   const MachineAxis& normal() const { return normal_; }
@@ -84,6 +109,7 @@ class ProgramRow {
   void set_normal_held(double held) {
     normal_.held = held;
     normal_cached_ = false;
+    if (friction_) tangential_cached_ = false;  // sliding springs follow mu f_z
   }
   void set_tangential_held(double held) {
     tangential_.held = held;
@@ -104,6 +130,9 @@ class ProgramRow {
   /// d(d)/d(held) and d(u_x)/d(held) while the springs stay as they are.
   double indentation_per_held() const;
   double tangential_per_held() const;
+  /// d(u_x)/d(d) at a fixed held value: with friction under a held force, the sliding springs'
+  /// mu f_z moves u_x with d (0 without friction or under fixed grips).
+  double tangential_per_indentation() const;
   /// The held value that the present state satisfies under `constraint`.
   double held_value_of_normal(const AffineConstraint& constraint) const;
   double held_value_of_tangential(const AffineConstraint& constraint) const;
@@ -113,8 +142,9 @@ class ProgramRow {
   /// Spring k+1 glues at the boundary spring's offset s_k: the branch one spring further
   /// out, as a receding front left it (for locating the front between springs).
   void glue_next_as_boundary();
-  /// The boundary spring k lets go; it stays in contact, pressed, when `pressed`.
-  void let_go_boundary(bool pressed);
+  /// The boundary spring k lets go; it stays in contact, pressed, when `pressed`. Returns the
+  /// work friction dissipates as it slips to its limit at once (0 without friction) [J].
+  double let_go_boundary(bool pressed);
   void touch_next();  ///< spring m+1 is pressed
   void lift_outer();  ///< spring m (not glued) leaves
 
@@ -198,6 +228,7 @@ class ProgramRow {
   CompensatedSum contact_images_;  ///< sum of g_i, i <= m [m]
   CompensatedSum glued_offsets_;   ///< sum of s_i, i <= k [m]
   std::vector<Run> runs_;
+  std::optional<FrictionRow> friction_;
   MachineAxis normal_;
   MachineAxis tangential_;
   mutable AxisEquilibrium normal_equilibrium_{};

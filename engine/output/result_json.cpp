@@ -10,11 +10,16 @@
 namespace mdrsim {
 namespace {
 
-nlohmann::ordered_json snapshot_json(const ContactSnapshot& c) {
+/// With friction a state also says how much of it slides (docs/friction.md).
+nlohmann::ordered_json snapshot_json(const ContactSnapshot& c, bool friction) {
   nlohmann::ordered_json j;
   for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member;
   j["springs_in_contact"] = c.springs_in_contact;
   j["disk_valid"] = c.disk_valid;
+  if (friction) {
+    j["springs_sliding"] = c.springs_sliding;
+    j["stick_radius"] = c.stick_radius;
+  }
   return j;
 }
 
@@ -25,20 +30,25 @@ nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const PullOf
 }
 
 /// A snapshot with its dimensionless values nested, where the scales exist.
-nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<PullOffScales>& s) {
-  nlohmann::ordered_json j = snapshot_json(c);
+nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<PullOffScales>& s,
+                                  bool friction) {
+  nlohmann::ordered_json j = snapshot_json(c, friction);
   if (s) j["dimensionless"] = dimensionless_json(c, *s);
   return j;
 }
 
 /// A jump's `after`: its state, or only how the indenter left when nothing held it.
-nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<PullOffScales>& s) {
+nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<PullOffScales>& s,
+                                  bool friction) {
   if (jump.end != JumpEnd::state) return {{to_string(jump.end), true}};
-  return state_json(jump.after, s);
+  return state_json(jump.after, s, friction);
 }
 
-nlohmann::ordered_json work_json(const AxisWork& w) {
-  return {{"normal", w.normal}, {"tangential", w.tangential}};
+/// With friction the work says what of it friction dissipated.
+nlohmann::ordered_json work_json(const AxisWork& w, bool friction = false) {
+  nlohmann::ordered_json j = {{"normal", w.normal}, {"tangential", w.tangential}};
+  if (friction) j["dissipated_by_friction"] = w.friction;
+  return j;
 }
 
 }  // namespace
@@ -144,6 +154,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   using nlohmann::ordered_json;
   const auto scales = dimensionless_scales(scene);
   const Accuracy& accuracy = result.accuracy;
+  const bool friction = scene.friction.has_value();
   ordered_json j;
   j["status"] = to_string(result.status);
   if (result.sliding) j["sliding"] = true;
@@ -184,11 +195,11 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     j["accuracy"] = a;
   }
   if (result.critical) {
-    j["critical"] = snapshot_json(*result.critical);
+    j["critical"] = snapshot_json(*result.critical, friction);
     if (scales) j["dimensionless"] = dimensionless_json(*result.critical, *scales);
   }
   if (result.peak) {
-    ordered_json p = snapshot_json(*result.peak);
+    ordered_json p = snapshot_json(*result.peak, friction);
     if (scales) p["dimensionless"] = dimensionless_json(*result.peak, *scales);
     j["peak_adhesion"] = p;
   }
@@ -201,8 +212,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     ordered_json stages = ordered_json::array();
     for (const StageRecord& stage : result.stages) {
       ordered_json record = {{"name", stage.name},
-                             {"end", state_json(stage.end, scales)},
-                             {"work", work_json(stage.work)}};
+                             {"end", state_json(stage.end, scales, friction)},
+                             {"work", work_json(stage.work, friction)}};
       if (stage.normal_force_error_estimate) {
         record["end_error_estimate"] = {
             {"normal_force", *stage.normal_force_error_estimate},
@@ -218,8 +229,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     for (const JumpRecord& jump : result.jumps) {
       jumps.push_back({{"stage", jump.stage},
                        {"kind", jump.inward ? "in" : "out"},
-                       {"critical", state_json(jump.critical, scales)},
-                       {"after", after_json(jump, scales)},
+                       {"critical", state_json(jump.critical, scales, friction)},
+                       {"after", after_json(jump, scales, friction)},
                        {"springs", jump.springs},
                        {"glued_springs", jump.glued_springs},
                        {"by_shear", jump.by_shear}});
@@ -231,7 +242,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       }
     }
     j["jumps"] = jumps;
-    j["work"] = work_json(*result.work);
+    j["work"] = work_json(*result.work, friction);
   }
   if (continuum) drop_spring_counts(j);
   j["warnings"] = result.warnings;

@@ -5,9 +5,11 @@
 
 namespace mdrsim {
 
-TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out) : out_(&out) {
+TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, bool friction)
+    : out_(&out), friction_(friction) {
   *out_ << "stage,event,in_cascade,indentation,normal_force,contact_radius,tangential_displacement,"
-           "tangential_force,springs_in_contact\n";
+           "tangential_force,springs_in_contact"
+        << (friction_ ? ",sliding\n" : "\n");
 }
 
 void TrajectoryCsvWriter::on_event(const Event& e) {
@@ -18,9 +20,11 @@ void TrajectoryCsvWriter::on_event(const Event& e) {
                s.normal_force, s.contact_radius, s.tangential_displacement, s.tangential_force);
     return;
   }
-  fmt::print(*out_, "{},{},{},{},{},{},{},{},{}\n", stage_name(e), to_string(e.kind),
+  fmt::print(*out_, "{},{},{},{},{},{},{},{},{}", stage_name(e), to_string(e.kind),
              e.in_cascade ? 1 : 0, s.indentation, s.normal_force, s.contact_radius,
              s.tangential_displacement, s.tangential_force, s.springs_in_contact);
+  if (friction_) fmt::print(*out_, ",{}", s.springs_sliding);
+  *out_ << '\n';
 }
 
 }  // namespace mdrsim

@@ -8,14 +8,16 @@
 namespace mdrsim {
 
 /// Columns: event, in_cascade, indentation, normal_force, contact_radius,
-/// tangential_displacement, tangential_force, springs_in_contact (SI units).
+/// tangential_displacement, tangential_force, springs_in_contact (SI units); with friction
+/// also `sliding`, the springs of one half sliding (docs/friction.md).
 class TrajectoryCsvWriter final : public Observer {
  public:
-  explicit TrajectoryCsvWriter(std::ostream& out);
+  explicit TrajectoryCsvWriter(std::ostream& out, bool friction = false);
   void on_event(const Event& event) override;
 
  private:
   std::ostream* out_;
+  bool friction_;
 };
 
 }  // namespace mdrsim

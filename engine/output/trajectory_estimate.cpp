@@ -22,9 +22,9 @@ bool has_tangential(const Scene& scene) {
 /// and an exponent wherever the scene gives a nonzero value.
 double typical_row_bytes(const Scene& scene) {
   std::ostringstream header;
-  TrajectoryCsvWriter header_only(header);
+  TrajectoryCsvWriter header_only(header, scene.friction.has_value());
   std::ostringstream both;
-  TrajectoryCsvWriter writer(both);
+  TrajectoryCsvWriter writer(both, scene.friction.has_value());
   const double full = -1.2345678901234567e-05;
   const double tangential = has_tangential(scene) ? full : 0.0;
   Event event{.kind = EventKind::spring_detached,

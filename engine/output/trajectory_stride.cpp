@@ -11,6 +11,8 @@ bool is_ordinary(EventKind kind) {
     case EventKind::spring_glued:
     case EventKind::spring_touched:
     case EventKind::spring_lifted:
+    case EventKind::spring_slipped:
+    case EventKind::spring_stuck:
     case EventKind::sample:
       return true;
     case EventKind::preload_reached:

@@ -14,9 +14,13 @@ namespace mdrsim {
 struct AxisWork {
   double normal = 0.0;
   double tangential = 0.0;
+  /// The part of the work friction dissipated: the slip limit times each slip distance,
+  /// summed (docs/friction.md `dissipated_by_friction`) [J].
+  double friction = 0.0;
   AxisWork& operator+=(const AxisWork& more) {
     normal += more.normal;
     tangential += more.tangential;
+    friction += more.friction;
     return *this;
   }
 };

@@ -11,7 +11,9 @@
 
 namespace mdrsim {
 
-enum class Change { fall_in, let_go, glue, touch, lift };
+/// `friction`: a spring in contact starts or stops sliding (docs/friction.md); no change of the
+/// springs in contact, so no part of a jump.
+enum class Change { fall_in, let_go, glue, touch, lift, friction };
 
 /// A cascade: the changes at one value of the stage parameter after the one that was found.
 struct Cascade {
@@ -19,6 +21,7 @@ struct Cascade {
   std::int64_t in_contact = 0;  ///< m before
   std::int64_t glued = 0;       ///< k before
   std::int64_t changes = 0;
+  std::int64_t friction_events = 0;  ///< slips and sticks at the same parameter (no changes)
   bool second_by_shear = false;
   bool first_by_shear = false;
   std::optional<Change> first;

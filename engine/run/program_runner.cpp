@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <stdexcept>
 
 #include "detachment/let_go.hpp"
 #include "engine/base/bracketed_root.hpp"
@@ -59,12 +58,15 @@ class ProgramRunner {
         max_springs_(spec.max_springs),
         observers_(observers),
         observe_springs_(observers.wants(EventKind::spring_detached)),
+        observe_slips_(observers.wants(EventKind::spring_slipped)),
         largest_(largest),
         last_stage_(last_stage),
         zoomed_(spec.zoomed),
         zero_(spec.zero) {
     row_.record_edge_forces(spec.edge_forces);
-    if (spec.refine && !stepping_) front_.emplace(criterion_);
+    if (scene.friction) row_.enable_friction(*scene.friction);
+    // The front located between springs knows no friction: friction rows report their own.
+    if (spec.refine && !stepping_ && !scene.friction) front_.emplace(criterion_);
   }
 
   RunResult run();
@@ -131,6 +133,7 @@ class ProgramRunner {
   const ObserverList& observers_;
   /// Asked once: whether anyone observes single springs (a log observer asks spdlog).
   bool observe_springs_;
+  bool observe_slips_;  ///< the same for slip and stick
   LargestContact* largest_;
   LastStageStart* last_stage_;  ///< null where nobody asks
   std::optional<ZoomedStart> zoomed_;
@@ -193,6 +196,7 @@ class ProgramRunner {
   void note_let_go(Cascade& cascade, std::int64_t k, double stretch_x, bool by_shear);
   Stop stop_ = Stop::none;
   double unending_at_ = 0.0;  ///< the parameter of an unending cascade (Stop::unending_cascade)
+  bool slid_ = false;  ///< friction could not hold a held F_x: gross sliding
   /// A flight ended the program: the state and the located state the last stage ends at.
   JumpEnd flight_ = JumpEnd::state;
   ContactSnapshot flight_end_;
@@ -233,10 +237,17 @@ void ProgramRunner::add_work(const AxisPoint* normal_from, const AxisPoint* tang
 void ProgramRunner::advance_to(double t) {
   // While the row stays as it is, an axis whose held value does not move stays where it is.
   const bool normal_moves = normal_.rate != 0.0;
-  const bool tangential_moves = tangential_.rate != 0.0;
+  // With friction under a held F_x, u_x follows d too (the sliding springs' mu f_z).
+  const bool tangential_moves =
+      tangential_.rate != 0.0 ||
+      (normal_moves && row_.friction() && !is_fixed_grips(row_.tangential().constraint));
   const AxisPoint n0 = normal_moves ? normal_point() : AxisPoint{};
   const AxisPoint x0 = tangential_moves ? tangential_point() : AxisPoint{};
+  // The friction row follows d and u_x along the line; no friction event lies before t.
+  std::optional<LinearMotion> along;
+  if (row_.friction() && t > t_) along = ChangeLocator::motion(row_, step_line());
   set_parameter(t);
+  if (along) record_.stage_work.friction += row_.advance_friction(*along, t);
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
   // A force or displacement beyond a double makes the work of its moving axis so (an axis
   // that does not move keeps its state until a change, which finish_cascade checks).
@@ -332,7 +343,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       by_shear = boundary_let_go(u).kind == LetGo::Kind::now;
       note_let_go(cascade, k, stretch_x, by_shear);
       if (observe_springs_) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
-      row_.let_go_boundary(row_.image(k) <= d);
+      record_.stage_work.friction += row_.let_go_boundary(row_.image(k) <= d);
       guards_.released_to = std::max(guards_.released_to, k);
       guards_.released_with_stretch = stretch_x != 0.0;
       break;
@@ -347,9 +358,23 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
       row_.lift_outer();
       guards_.lifted_to = std::max(guards_.lifted_to, m);
       break;
+    case Change::friction: {
+      // Each spring slips or sticks a few times at one parameter at most: more is a loop,
+      // which run_changes stops (Stop::unending_cascade).
+      ++cascade.friction_events;
+      const RowFrictionEvent& event = locator_.friction_event();
+      row_.apply_friction(event);
+      ++result_.counts.events;
+      if (observe_slips_ && event.event.kind != FrictionEventKind::limit_kink) {
+        emit(event.event.kind == FrictionEventKind::slip ? EventKind::spring_slipped
+                                                         : EventKind::spring_stuck,
+             row_.snapshot(), event.spring, in_cascade_);
+      }
+      break;
+    }
   }
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
-  if (change != Change::fall_in) {
+  if (change != Change::fall_in && change != Change::friction) {
     ++cascade.changes;
     ++result_.counts.events;
     if (cascade.changes == 1) {
@@ -466,8 +491,8 @@ void ProgramRunner::start_stage(const Stage& stage) {
   keep_machine_ = false;
   if (last_stage_ && &stage == &scene_.program->stages.back()) {
     *last_stage_ = {
-        .zoomable = stage.until_separation && !scene_.program->rebinding && row_.glued() > 0 &&
-                    row_.glued() == row_.in_contact() && row_.one_offset(),
+        .zoomable = stage.until_separation && !scene_.program->rebinding && !scene_.friction &&
+                    row_.glued() > 0 && row_.glued() == row_.in_contact() && row_.one_offset(),
         .stage = scene_.program->stages.size() - 1,
         .normal = row_.normal(),
         .tangential = row_.tangential(),
@@ -517,9 +542,10 @@ bool ProgramRunner::run_changes(std::optional<Change> first, Cascade& cascade, s
         *change == Change::let_go) {
       cascade.refined_before = front_->fold(row_, line(), t_, cascade.before);
     }
-    if (cascade.changes > cap) {
+    if (cascade.changes > cap || cascade.friction_events > cap) {
       // Rounding at values far from the scene's scales (a push until separation that goes on
-      // for ever) can keep one parameter value's changes from settling: stop there.
+      // for ever) can keep one parameter value's changes (or slips and sticks) from settling:
+      // stop there.
       stop_ = Stop::unending_cascade;
       unending_at_ = t_;
       return false;
@@ -749,6 +775,18 @@ void ProgramRunner::finish(RunResult& r) {
           stage_->name, kSweepsPerStage, result_.counts.events, row_.in_contact(), row_.glued()));
       return;
     case Stop::cannot_hold_tangential:
+      if (scene_.friction && row_.in_contact() > 0) {
+        // Every spring in contact slides at its limit and the held F_x asks for more: gross
+        // sliding, at the last equilibrium (docs/friction.md "Statuses").
+        r.status = RunStatus::shear_off;
+        r.critical = row_.snapshot();
+        slid_ = true;
+        r.warnings.push_back(fmt::format(
+            "stage '{}': friction can no longer hold F_x = {:.6g} N ({} springs in contact, all "
+            "sliding): the contact slides away and the program ends here",
+            stage_->name, row_.tangential().held, row_.in_contact()));
+        return;
+      }
       if (glue_loss) {
         decide_loss(*glue_loss);
         if (glue_loss->changes < 2) r.status = RunStatus::shear_off;
@@ -823,7 +861,7 @@ RunResult ProgramRunner::run() {
     warn_skipped_stages();
   }
   finish(result_);
-  result_.sliding = flight_ == JumpEnd::sliding;
+  result_.sliding = flight_ == JumpEnd::sliding || slid_;
   // The stage of the critical point, for the closing events (finish picks it from a loss).
   for (const auto* loss : {&losses_.last_contact_loss(), &losses_.last_glue_loss()}) {
     if (*loss && result_.critical &&

@@ -63,6 +63,16 @@ class ChangeLocator {
   LetGo boundary_let_go(const ProgramRow& row, double u);
   /// Stepping takes a trial step back: what was cached of it goes too.
   void forget() { let_go_cache_.reset(); }
+  /// The friction event the last Change::friction stands for.
+  const RowFrictionEvent& friction_event() const { return friction_event_; }
+  /// The motion of d and u_x along the line from its present parameter (affine while the
+  /// springs stay as they are), as the friction row reads it.
+  static LinearMotion motion(const ProgramRow& row, const StepLine& line) {
+    const double vd = line.normal.rate != 0.0 ? row.indentation_per_held() * line.normal.rate : 0.0;
+    return {line.t, row.indentation(), row.tangential_displacement(), vd,
+            (line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0) +
+                (vd != 0.0 ? row.tangential_per_indentation() * vd : 0.0)};
+  }
 
  private:
   const DetachmentCriterion& criterion_;
@@ -73,6 +83,7 @@ class ChangeLocator {
     LetGo go;
   };
   std::optional<LetGoCache> let_go_cache_;
+  RowFrictionEvent friction_event_{};
   double inverse_of_ = 0.0;  ///< next_change: the d(d)/dt whose inverse is `inverse_`
   double inverse_ = 0.0;
 };
@@ -133,6 +144,14 @@ inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const Ste
     }
   }
   if (m > k && m < line.guards.touched_from && row.image(m) - d > 0.0) return Change::lift;
+  if (const FrictionRow* friction = row.friction()) {
+    // A spring on its limit moving outwards slips at once, a slide that reverses sticks.
+    if (const auto event = friction->next_event(motion(row, line), line.t);
+        event && event->event.at <= line.t) {
+      friction_event_ = *event;
+      return Change::friction;
+    }
+  }
   return std::nullopt;
 }
 
@@ -144,8 +163,8 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
   const double d = row.indentation();
   const double u = row.tangential_displacement();
   const double vd = line.normal.rate != 0.0 ? row.indentation_per_held() * line.normal.rate : 0.0;
-  const double vu =
-      line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0;
+  double vu = line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0;
+  if (vd != 0.0 && row.friction()) vu += row.tangential_per_indentation() * vd;
   const double soonest = next_parameter(line.t);
   double best = t_end;
   std::optional<Change> change;
@@ -218,6 +237,16 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
           consider(b.hi, Change::let_go);
         }
       }
+    }
+  }
+  if (const FrictionRow* friction = row.friction()) {
+    const LinearMotion along{line.t, d, u, vd, vu};
+    if (const auto event = friction->next_event(along, best);
+        event && (event->event.at < best || !change)) {
+      friction_event_ = *event;
+      consider(event->event.at, Change::friction);
+      // consider() keeps a spring change at the same t: the friction event waits for it.
+      if (change != Change::friction) friction_event_ = {};
     }
   }
   if (!change) return std::nullopt;

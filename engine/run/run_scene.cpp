@@ -138,6 +138,13 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
     } else {
       result = run_program(scene, observers);
     }
+    if (scene.friction && (scene.discretization.rtol || scene.discretization.richardson())) {
+      // The stick/slip front is not located between springs (docs/friction.md).
+      result.warnings.push_back(fmt::format(
+          "friction: springs_sliding, stick_radius and dissipated_by_friction are the finest "
+          "row's ({} springs), not covered by {}'s estimates",
+          result.springs, scene.discretization.rtol ? "rtol" : "richardson"));
+    }
   } else if (scene.discretization.rtol) {
     std::optional<Accuracy::Route> route;
     if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;

@@ -11,6 +11,7 @@
 #include "controllers/controller.hpp"
 #include "detachment/criterion.hpp"
 #include "engine/base/material.hpp"
+#include "engine/model/friction_settings.hpp"
 #include "engine/scene/program.hpp"
 #include "profiles/profile.hpp"
 
@@ -78,6 +79,8 @@ struct Scene {
   std::optional<AxisLoading> tangential;
   std::string criterion_name;
   std::unique_ptr<DetachmentCriterion> criterion;
+  /// [friction] where it acts (docs/friction.md); none: springs not glued push frictionlessly.
+  std::optional<FrictionSettings> friction;
   std::int64_t springs = 0;  ///< springs across the glued radius (one half)
   DiscretizationOptions discretization;
   SolverOptions solver;

@@ -14,6 +14,7 @@
 #include "engine/model/preload.hpp"
 #include "engine/scene/continuum_scope.hpp"
 #include "engine/scene/embedded_table.hpp"
+#include "engine/scene/friction_reader.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -312,8 +313,8 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                   const std::filesystem::path& base_dir, const Registries& registries) {
   auto resolved = std::make_shared<nlohmann::json>(nlohmann::json::object());
   TomlReader root(root_table, "", source_name, base_dir, resolved.get());
-  root.check_keys(
-      {"title", "material", "profile", "loading", "detachment", "discretization", "solver"});
+  root.check_keys({"title", "material", "profile", "loading", "detachment", "discretization",
+                   "solver", "friction"});
   Scene scene;
   scene.title = root.optional_text("title").value_or("");
 
@@ -437,6 +438,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
+  }
+  if (auto friction = root.optional_table("friction")) {
+    scene.friction = read_friction(*friction, scene);
+    friction->finish();
   }
   root.finish();
   scene.resolved = std::move(resolved);

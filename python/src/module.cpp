@@ -116,8 +116,8 @@ py::dict take_trajectory(TrajectoryColumns& c) {
   for (std::size_t i = 0; i < c.stage.size(); ++i) {
     stage[i] = stage_names[static_cast<std::size_t>(c.stage[i])];
   }
-  // One name per kind, up to the last one (sample: the continuum route's branch).
-  std::vector<py::object> kind_names(static_cast<std::size_t>(EventKind::sample) + 1);
+  // One name per kind, up to the last (engine/events/event.hpp).
+  std::vector<py::object> kind_names(static_cast<std::size_t>(EventKind::spring_stuck) + 1);
   py::list event(c.event.size());
   for (std::size_t i = 0; i < c.event.size(); ++i) {
     py::object& name = kind_names[static_cast<std::size_t>(c.event[i])];

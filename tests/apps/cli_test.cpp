@@ -442,7 +442,7 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"title=[1]", "--set: title: expected a string, got an array"},
       {"x=1",
-       "--set: x: unknown key (known: detachment, discretization, loading, material, "
+       "--set: x: unknown key (known: detachment, discretization, friction, loading, material, "
        "profile, solver, title)"},
       {"material.youngs_modulus=true",
        "--set: material.youngs_modulus: expected a number, got true"},

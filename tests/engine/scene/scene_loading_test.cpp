@@ -93,7 +93,7 @@ constexpr const char* kMaterialKeys =
     "work_of_adhesion, "
     "youngs_modulus";
 constexpr const char* kRootKeys =
-    "detachment, discretization, loading, material, profile, solver, title";
+    "detachment, discretization, friction, loading, material, profile, solver, title";
 
 struct BadScene {
   std::string name;     ///< test name

@@ -1,0 +1,119 @@
+// The scene's [friction] table: read into Scene::friction, bad values and combinations not run
+// yet refused with file, line and key.
+#include "engine/scene/friction_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/expect_throw_msg.hpp"
+
+#include <string>
+#include <string_view>
+
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "engine/scene/scene_error.hpp"
+
+namespace mdrsim::test {
+namespace {
+
+// A fretting program; the line numbers in the messages below refer to it (the [friction] table
+// starts on line 15).
+constexpr std::string_view kProgram =
+    R"(title = "fretting"
+[material]
+youngs_modulus = 1.0e6
+poisson_ratio = 0.0
+work_of_adhesion = 0.0
+[profile]
+type = "parabolic"
+radius = 0.01
+[[loading.stage]]
+name = "press"
+normal = { control = "fixed-load", to = 1.0e-3 }
+[[loading.stage]]
+name = "shear"
+tangential = { control = "fixed-grips", by = 1.0e-6 }
+[friction]
+)";
+
+Scene build(const std::string& text) {
+  static const Registries registries = Registries::builtin();
+  return SceneDocument::from_text(text, "scene.toml").build(registries);
+}
+
+TEST(FrictionScene, ReadsTheTable) {
+  const Scene scene = build(std::string(kProgram) + "coefficient = 0.5\n");
+  ASSERT_TRUE(scene.friction.has_value());
+  EXPECT_EQ(scene.friction->coefficient, 0.5);
+  EXPECT_EQ(scene.friction->glued, GluedLaw::unlimited);
+  EXPECT_EQ(scene.friction->shear_strength, 0.0);
+  // The result's scene names every key, the default included.
+  EXPECT_EQ((*scene.resolved)["friction"]["glued"], "unlimited");
+}
+
+TEST(FrictionScene, ZeroCoefficientIsTheFrictionlessScene) {
+  // mu = 0 under the unlimited glue changes nothing: no friction part, so that every run is
+  // today's bit for bit (the shorthand too).
+  EXPECT_FALSE(build(std::string(kProgram) + "coefficient = 0.0\n").friction.has_value());
+}
+
+TEST(FrictionScene, RefusesBadValues) {
+  const std::string p(kProgram);
+  EXPECT_THROW_MSG(build(p + "coefficient = -0.1\n"), SceneError,
+                   "scene.toml:16:15: friction.coefficient = -0.1 is outside [0, inf)");
+  EXPECT_THROW_MSG(build(p + "coeficient = 0.5\n"), SceneError,
+                   "scene.toml:16:1: friction.coeficient: unknown key; did you mean 'coefficient'? "
+                   "(known: coefficient, glued, shear_strength)");
+  EXPECT_THROW_MSG(build(p), SceneError,
+                   "scene.toml:15:1: friction.coefficient: missing, expected a number (Coulomb "
+                   "coefficient mu >= 0)");
+  EXPECT_THROW_MSG(build(p + "coefficient = 0.5\nglued = \"sticky\"\n"), SceneError,
+                   "scene.toml:17:9: friction.glued: unknown 'sticky' (known: unlimited, coulomb)");
+  EXPECT_THROW_MSG(build(p + "coefficient = 0.5\nshear_strength = 10.0\n"), SceneError,
+                   "scene.toml:17:18: friction.shear_strength: applies only with glued = "
+                   "\"coulomb\"");
+}
+
+TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
+  const std::string p(kProgram);
+  EXPECT_THROW_MSG(build(p + "coefficient = 0.5\nglued = \"coulomb\"\nshear_strength = 10.0\n"),
+                   SceneError,
+                   "scene.toml:17:9: friction.glued: glued = \"coulomb\" is not run yet (issue "
+                   "21): use glued = \"unlimited\" (docs/friction.md)");
+  EXPECT_THROW_MSG(build(p + "coefficient = 0.5\n[solver]\nmethod = \"stepping\"\n"), SceneError,
+                   "scene.toml:16:15: friction.coefficient: friction runs with solver.method = "
+                   "\"event\" only");
+  // The shorthand: the same path written as its program runs (docs/programs.md).
+  std::string shorthand(p);
+  shorthand.replace(
+      shorthand.find("[[loading.stage]]"), std::string::npos,
+      "[loading]\npreload = { depth = 1.0e-6 }\nnormal = { control = \"fixed-load\" }\n"
+      "[friction]\ncoefficient = 0.5\n");
+  EXPECT_THROW_MSG(build(shorthand), SceneError,
+                   "scene.toml:13:15: friction.coefficient: the shorthand loading does not run "
+                   "with friction: write it as its three-stage loading program "
+                   "([[loading.stage]], docs/programs.md \"The shorthand as a program\")");
+  std::string fixed_load(p);
+  fixed_load.replace(fixed_load.find("tangential = { control = \"fixed-grips\""),
+                     std::string_view("tangential = { control = \"fixed-grips\"").size(),
+                     "tangential = { control = \"fixed-load\"");
+  // Without adhesion a held F_x runs; with it, it is refused (a let-go would move u_x).
+  EXPECT_TRUE(build(fixed_load + "coefficient = 0.5\n").friction.has_value());
+  fixed_load.replace(fixed_load.find("work_of_adhesion = 0.0"),
+                     std::string_view("work_of_adhesion = 0.0").size(), "work_of_adhesion = 0.05");
+  const std::string message = [&] {
+    try {
+      build(fixed_load + "coefficient = 0.5\n");
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("<no exception>");
+  }();
+  EXPECT_NE(message.find("with adhesion (work_of_adhesion > 0) friction runs with a fixed-grips "
+                         "tangential axis only"),
+            std::string::npos)
+      << message;
+}
+
+}  // namespace
+}  // namespace mdrsim::test
