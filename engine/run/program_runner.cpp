@@ -196,7 +196,7 @@ class ProgramRunner {
   void note_let_go(Cascade& cascade, std::int64_t k, double stretch_x, bool by_shear);
   Stop stop_ = Stop::none;
   double unending_at_ = 0.0;  ///< the parameter of an unending cascade (Stop::unending_cascade)
-  bool slid_ = false;  ///< friction could not hold a held F_x: gross sliding
+  bool slid_ = false;         ///< friction could not hold a held F_x: gross sliding
   /// A flight ended the program: the state and the located state the last stage ends at.
   JumpEnd flight_ = JumpEnd::state;
   ContactSnapshot flight_end_;
