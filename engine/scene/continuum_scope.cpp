@@ -1,4 +1,4 @@
-// The continuum route's reach: shorthand scenes on convex classic profiles; the rest stays on the row.
+// The continuum route's reach: shorthand scenes on the convex classic profiles; else the row.
 #include "engine/scene/continuum_scope.hpp"
 
 namespace mdrsim {

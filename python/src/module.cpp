@@ -258,7 +258,8 @@ void bind_results(py::module_& m) {
                                                     : py::object(py::none());
                              })
       .def_property_readonly("warnings", [](const ResultHandle& r) { return r.result.warnings; })
-      .def_property_readonly("disk_valid", [](const ResultHandle& r) { return r.result.disk_valid; })
+      .def_property_readonly("disk_valid",
+                             [](const ResultHandle& r) { return r.result.disk_valid; })
       .def_property_readonly("has_warnings",
                              [](const ResultHandle& r) { return !r.result.warnings.empty(); })
       .def_property_readonly("counts",
