@@ -81,18 +81,6 @@ const char* route_name(Accuracy::Route route) {
   return "row";
 }
 
-const char* method_name(SolverMethod method) {
-  switch (method) {
-    case SolverMethod::stepping:
-      return "stepping";
-    case SolverMethod::continuum:
-      return "continuum";
-    case SolverMethod::event:
-      break;
-  }
-  return "event";
-}
-
 /// The continuum route has no springs to count: its states and jumps leave the counts out.
 void drop_spring_counts(nlohmann::ordered_json& j) {
   for (const char* key : {"critical", "peak_adhesion"}) {
@@ -163,7 +151,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
   j["criterion"] = scene.criterion_name;
   const bool continuum = accuracy.route == Accuracy::Route::continuum;
-  j["method"] = continuum ? "continuum" : method_name(scene.solver.method);
+  j["method"] = continuum ? "continuum" : to_string(scene.solver.method);
   if (!continuum) j["springs"] = result.springs;
   if (scene.discretization.rtol) j["rtol"] = *scene.discretization.rtol;
   if (accuracy.route == Accuracy::Route::richardson) {

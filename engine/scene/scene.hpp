@@ -21,6 +21,19 @@ namespace mdrsim {
 /// springs (docs/continuum.md).
 enum class SolverMethod { event, stepping, continuum };
 
+/// The method's name in scenes and results: "event", "stepping" or "continuum".
+constexpr const char* to_string(SolverMethod method) {
+  switch (method) {
+    case SolverMethod::stepping:
+      return "stepping";
+    case SolverMethod::continuum:
+      return "continuum";
+    case SolverMethod::event:
+      break;
+  }
+  return "event";
+}
+
 struct SolverOptions {
   SolverMethod method = SolverMethod::event;
   /// Stepping increment of the normal control [m for fixed-grips and compliant, N for

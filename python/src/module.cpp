@@ -189,17 +189,7 @@ void bind_scenes(py::module_& m) {
       .def_property_readonly("title", [](const SceneHandle& h) { return h.scene->title; })
       .def_property_readonly("springs", [](const SceneHandle& h) { return h.scene->springs; })
       .def_property_readonly("method",
-                             [](const SceneHandle& h) {
-                               switch (h.scene->solver.method) {
-                                 case SolverMethod::stepping:
-                                   return "stepping";
-                                 case SolverMethod::continuum:
-                                   return "continuum";
-                                 case SolverMethod::event:
-                                   break;
-                               }
-                               return "event";
-                             })
+                             [](const SceneHandle& h) { return to_string(h.scene->solver.method); })
       .def_property_readonly("material", [](const SceneHandle& h) { return h.scene->material; })
       .def_property_readonly("profile", [](const SceneHandle& h) { return h.scene->profile_name; })
       .def_property_readonly("criterion",
