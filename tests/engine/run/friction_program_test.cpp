@@ -75,11 +75,18 @@ std::string fretting(double amplitude, std::int64_t springs, double mu) {
   return text;
 }
 
+/// An event kept past its run: Event::stage views the scene's stage name, which goes with the
+/// scene, so the name is copied.
+struct KeptEvent {
+  Event event;
+  std::string stage;
+};
+
 struct Counter final : Observer {
-  std::vector<Event> events;
+  std::vector<KeptEvent> events;
   void on_event(const Event& e) override {
     if (e.kind == EventKind::spring_slipped || e.kind == EventKind::spring_stuck) {
-      events.push_back(e);
+      events.push_back({e, std::string(e.stage)});
     }
   }
 };
@@ -146,9 +153,9 @@ TEST(FrictionProgram, SlipEventsOncePerSlidingSpringOnLoading) {
   const Fretting f = run_fretting(amplitude, 400);
   std::int64_t loading_slips = 0;
   std::int64_t unloading_sticks = 0;
-  for (const Event& e : f.slips.events) {
-    if (e.stage.starts_with("load") && e.kind == EventKind::spring_slipped) ++loading_slips;
-    if (e.stage == "unload-1" && e.kind == EventKind::spring_stuck) ++unloading_sticks;
+  for (const auto& [e, stage] : f.slips.events) {
+    if (stage.starts_with("load") && e.kind == EventKind::spring_slipped) ++loading_slips;
+    if (stage == "unload-1" && e.kind == EventKind::spring_stuck) ++unloading_sticks;
   }
   // On loading each spring outside c slips once and slides on; on reversal they all stick.
   const std::int64_t sliding = f.result.stages[kPoints].end.springs_sliding;
@@ -339,11 +346,11 @@ TEST(FrictionProgram, NoEnergyAppearsOrVanishesUncountedWhenTheGlueLetsGo) {
 }
 
 struct SpringEvents final : Observer {
-  std::vector<Event> events;
+  std::vector<KeptEvent> events;
   void on_event(const Event& e) override {
     if (e.kind == EventKind::spring_slipped || e.kind == EventKind::spring_stuck ||
         e.kind == EventKind::spring_glued || e.kind == EventKind::spring_detached) {
-      events.push_back(e);
+      events.push_back({e, std::string(e.stage)});
     }
   }
 };
@@ -374,8 +381,8 @@ TEST(FrictionProgram, WithRebindingASlidingSpringGluesOnceItSticksKeepingItsStre
   ASSERT_EQ(sheared.springs_sliding, 300);
   std::vector<bool> stuck(301, false);
   int glued = 0;
-  for (const Event& e : seen.events) {
-    if (e.stage != "back") continue;
+  for (const auto& [e, stage] : seen.events) {
+    if (stage != "back") continue;
     if (e.kind == EventKind::spring_stuck) stuck[static_cast<std::size_t>(e.spring)] = true;
     if (e.kind != EventKind::spring_glued) continue;
     ++glued;
@@ -386,8 +393,8 @@ TEST(FrictionProgram, WithRebindingASlidingSpringGluesOnceItSticksKeepingItsStre
   EXPECT_EQ(glued, 300);
   const double a = std::sqrt(kRadius * 5e-6);
   int checked = 0;
-  for (const Event& e : seen.events) {
-    if (e.stage != "pull" || e.kind != EventKind::spring_detached || e.in_cascade) continue;
+  for (const auto& [e, stage] : seen.events) {
+    if (stage != "pull" || e.kind != EventKind::spring_detached || e.in_cascade) continue;
     const double x = e.spring == 300 ? a : a * static_cast<double>(e.spring) / 300.0;
     const double g = x * x / kRadius;
     const double stretch = 0.4 * (5e-6 - g) - 0.5e-5;
