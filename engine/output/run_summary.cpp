@@ -37,7 +37,17 @@ const char* missing_critical(const RunResult& r) {
 
 void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
   const Accuracy& a = r.accuracy;
-  if (!scene.discretization.rtol && !a.critical_error_estimate) return;
+  if (!scene.discretization.rtol && !a.critical_error_estimate) {
+    // A plain row is the paper's row at N springs: its numbers carry an O(1/N) discretization
+    // error that nothing here estimates. Say so, and how to have it estimated.
+    if (a.route == Accuracy::Route::row && r.springs > 0) {
+      fmt::print(out,
+                 "accuracy: plain row of {} springs; its discretization error (O(1/N)) is not "
+                 "estimated: extrapolation = \"richardson\" or rtol estimate it\n",
+                 r.springs);
+    }
+    return;
+  }
   if (a.route == Accuracy::Route::continuum) {
     std::string line = "continuum route, no springs";
     if (a.critical_error_estimate && r.critical) {

@@ -19,14 +19,17 @@ def test_critical_point_in_si_and_dimensionless():
     result = mdrsim.run(mdrsim.Scene.from_file(FIG2))
     assert result.status == "instability"
     c = result.critical
-    # Fixed-load JKR pull-off at -F0 (paper eq. 19); 1e4 springs: O(1/N) off, 2e-4 F0 here.
-    assert c.normal_force / F0 == pytest.approx(-1.0, abs=2e-4)
+    # Fixed-load JKR pull-off at -F0 (paper eq. 19). The scene extrapolates rows of 5000, 10000
+    # and 20000 springs (Richardson): 1e-8 F0 off here, within its error estimate.
+    assert c.normal_force / F0 == pytest.approx(-1.0, abs=1e-7)
+    accuracy = result.to_dict()["accuracy"]
+    assert abs(c.normal_force + F0) <= accuracy["critical_error_estimate"]
     assert result.dimensionless == c.dimensionless
     for name, scale in zip(FIELDS, ("force", "force", "radius", "depth", "depth")):
         assert c.dimensionless[name] == getattr(c, name) / result.scales[scale]
     assert result.scales["force"] == pytest.approx(F0, rel=1e-15)
     assert result.peak.normal_force == c.normal_force  # fixed load: the peak is the jump
-    assert result.springs == 10000
+    assert result.springs == 20000  # the finest of the three rows
     assert result.counts["events"] > 0 and result.wall_time_s > 0
     assert result.warnings == [] and result.tangential_strength is None
     assert "instability" in repr(result)
@@ -98,7 +101,8 @@ def test_run_takes_a_path_or_a_dict():
 
 
 def test_warnings_reach_python():
-    scene = mdrsim.Scene.from_file(FIG2).with_values({"discretization.springs": 100})
+    scene = mdrsim.Scene.from_file(FIG2).with_values(
+        {"discretization.springs": 100, "discretization.extrapolation": "none"})
     with pytest.warns(mdrsim.RunWarning, match="springs in contact"):
         result = mdrsim.run(scene)
     assert len(result.warnings) == 1

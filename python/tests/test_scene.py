@@ -14,7 +14,7 @@ FIG2_DICT = {
     "loading": {"preload": {"contact_radius": 5.209397078678047e-4},
                 "normal": {"control": "fixed-load"}},
     "detachment": {"criterion": "mode-mixed"},
-    "discretization": {"springs": 10000},
+    "discretization": {"springs": 10000, "extrapolation": "richardson"},
     "solver": {"method": "event"},
 }
 CYCLE_DICT = {

@@ -46,10 +46,10 @@ def test_to_dict_has_the_values_the_file_gives_and_the_overrides():
     assert values["material"] == {"youngs_modulus": 1.0e6, "poisson_ratio": 0.25,
                                   "work_of_adhesion": 0.05}
     assert values["loading"]["normal"] == {"control": "fixed-load"}
-    assert values["discretization"] == {"springs": 10000}
+    assert values["discretization"] == {"springs": 10000, "extrapolation": "richardson"}
     # An exclusive key replaces the others of its group, as --set does.
     values = mdrsim.Scene.from_file(FIG2).set("discretization.rtol", 1e-3).to_dict()
-    assert values["discretization"] == {"rtol": 1e-3}
+    assert values["discretization"] == {"rtol": 1e-3, "extrapolation": "richardson"}
 
 
 @pytest.mark.parametrize("suffix", [".toml", ".json"])

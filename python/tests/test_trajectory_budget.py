@@ -36,7 +36,7 @@ def held_rows(t, rank, stride):
 def test_default_budget_holds_at_most_trajectory_rows():
     springs = 300_000
     result = mdrsim.run(mdrsim.Scene.from_file(FIG2).with_values(
-        {"discretization.springs": springs}))
+        {"discretization.springs": springs, "discretization.extrapolation": "none"}))
     t = result.trajectory
     n = len(t["event"])
     # The whole run gives the preload, one row per spring let go down to the critical point
@@ -80,7 +80,8 @@ def test_thinned_rows_are_the_full_trajectorys_rows_kept_by_rank():
 
 
 def test_a_budget_above_the_rows_holds_them_all():
-    scene = mdrsim.Scene.from_file(FIG2).with_values({"discretization.springs": 500})
+    scene = mdrsim.Scene.from_file(FIG2).with_values(
+        {"discretization.springs": 500, "discretization.extrapolation": "none"})
     full = mdrsim.run(scene, trajectory=True)
     exact = mdrsim.run(scene, trajectory=253)  # 500 / 2 + 3 rows, as above
     assert exact.trajectory_stride == 1 and exact.trajectory_rows_seen == 253

@@ -107,7 +107,9 @@ TEST(CommandLine, SetReplacesExclusiveSiblings) {
                   kScene));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["scene"]["discretization"], nlohmann::json::parse(R"({"rtol": 0.0001})"));
+  // rtol replaces springs, its exclusive sibling; the scene's extrapolation stays.
+  EXPECT_EQ(j["scene"]["discretization"],
+            nlohmann::json::parse(R"({"extrapolation": "richardson", "rtol": 0.0001})"));
   EXPECT_EQ(j["scene"]["loading"]["preload"], nlohmann::json::parse(R"({"force": 0.001})"));
   EXPECT_EQ(j["preload"]["force"], 1e-3);
 }

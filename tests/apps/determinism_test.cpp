@@ -51,7 +51,7 @@ TEST(Determinism, SameSceneTwiceGivesByteIdenticalJson) {
   std::vector<std::string> runs;
   for (const auto& scene : example_scenes()) {
     runs.push_back(scene);
-    runs.push_back(scene + " --set solver.method=stepping --set discretization.springs=500");
+    runs.push_back(scene + " --set solver.method=stepping --set 'discretization={springs=500}'");
     runs.push_back(scene +
                    " --set detachment.criterion=mode-dependent --set detachment.lambda=0.3");
   }
@@ -77,7 +77,7 @@ TEST(Determinism, SameSceneTwiceGivesByteIdenticalTrajectory) {
       const std::string csv = fmt::format("{}/{}{}.csv", dir, method, i);
       const auto r =
           run_mdrsim(fmt::format("run scenes/fig2_fixed_grips.toml --set solver.method={} --set "
-                                 "discretization.springs=300 "
+                                 "'discretization={{springs=300}}' "
                                  "--trajectory {} --log-level off",
                                  method, csv));
       ASSERT_EQ(r.exit_code, 0) << r.err;

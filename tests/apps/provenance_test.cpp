@@ -79,7 +79,10 @@ TEST_F(Provenance, TheJsonCarriesWhatProducedIt) {
 TEST_F(Provenance, RtolNamesItsRoute) {
   const nlohmann::json j =
       run("scenes/fig2_fixed_load.toml --set discretization.rtol=1e-6", "r.json");
-  EXPECT_EQ(j["scene"]["discretization"], nlohmann::json::parse(R"({"rtol": 1e-06})"));
+  // rtol replaces springs; the scene's extrapolation stays and picks the Richardson route.
+  EXPECT_EQ(j["scene"]["discretization"],
+            nlohmann::json::parse(R"({"extrapolation": "richardson", "rtol": 1e-06})"));
+  EXPECT_EQ(j["accuracy"]["route"], "richardson");
   EXPECT_EQ(j["resolution"]["route"], j["accuracy"]["route"]);
   EXPECT_EQ(j["resolution"]["rows"], j["accuracy"]["rows"]);
 }

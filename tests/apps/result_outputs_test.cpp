@@ -214,3 +214,22 @@ springs = 500
       std::string::npos)
       << r.out;
 }
+
+// A plain row says that its O(1/N) error is not estimated; the shipped Fig. 2 scene
+// extrapolates and prints its estimate instead.
+TEST_F(ResultOutputs, APlainRowSaysItsErrorIsNotEstimated) {
+  const auto plain = run_mdrsim(
+      "run scenes/fig2_fixed_load.toml --set 'discretization={springs=1000}' --log-level off");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("accuracy: plain row of 1000 springs; its discretization error (O(1/N)) "
+                           "is not estimated"),
+            std::string::npos)
+      << plain.out;
+  const auto extrapolated = run_mdrsim(
+      "run scenes/fig2_fixed_load.toml --set discretization.springs=1000 --log-level off");
+  ASSERT_EQ(extrapolated.exit_code, 0) << extrapolated.err;
+  EXPECT_EQ(extrapolated.out.find("plain row"), std::string::npos) << extrapolated.out;
+  EXPECT_NE(extrapolated.out.find("accuracy: richardson over rows of 500, 1000, 2000 springs"),
+            std::string::npos)
+      << extrapolated.out;
+}
