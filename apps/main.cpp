@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "apps/commands.hpp"
+#include "apps/write_error.hpp"
 #include "engine/base/available_cpus.hpp"
 #include "engine/events/program_version.hpp"
 #include "engine/scene/registries.hpp"
@@ -237,6 +238,9 @@ int main(int argc, char** argv) {
   } catch (const mdrsim::cli::UsageError& e) {
     std::cerr << one_line(e.what()) << '\n';
     return 2;
+  } catch (const mdrsim::cli::WriteError& e) {
+    std::cerr << "mdrsim: " << one_line(e.what()) << '\n';
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "mdrsim: internal error: " << one_line(e.what()) << '\n';
     return 1;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "apps/interrupt_cleanup.hpp"
+#include "apps/write_error.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/sweep/usage_error.hpp"
 
@@ -100,14 +101,13 @@ void OutputFile::commit() {
   if (to_stdout_) {
     std::cout.flush();
     if (!std::cout) {
-      throw std::runtime_error(fmt::format("{}: writing standard output failed", flag_));
+      throw WriteError(fmt::format("{}: writing standard output failed", flag_));
     }
     return;
   }
   file_.close();
   if (!file_) {
-    throw std::runtime_error(
-        fmt::format("{}: writing '{}' failed", flag_, printable(path_.string())));
+    throw WriteError(fmt::format("{}: writing '{}' failed", flag_, printable(path_.string())));
   }
   if (!partial_.empty()) std::filesystem::rename(partial_, target_);
   committed_ = true;

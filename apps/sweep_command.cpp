@@ -32,6 +32,7 @@
 #include "apps/commands.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
+#include "apps/write_error.hpp"
 #include "engine/output/sweep_csv.hpp"
 #include "engine/output/sweep_rows.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -136,11 +137,10 @@ class CsvSink {
       const ssize_t n = write(fd_, text.data(), text.size());
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) {
-        throw std::runtime_error(
-            path_ == "-"
-                ? fmt::format("--csv: writing standard output failed ({})", system_reason(errno))
-                : fmt::format("--csv: writing '{}' failed ({})", printable(path_),
-                              system_reason(errno)));
+        throw WriteError(path_ == "-" ? fmt::format("--csv: writing standard output failed ({})",
+                                                    system_reason(errno))
+                                      : fmt::format("--csv: writing '{}' failed ({})",
+                                                    printable(path_), system_reason(errno)));
       }
       text.remove_prefix(static_cast<std::size_t>(n));
     }

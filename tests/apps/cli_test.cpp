@@ -140,6 +140,23 @@ TEST_F(Cli, SceneFileBelowAFile) {
   EXPECT_TRUE(bad_input(r, scene_ + "/x.toml: cannot read the scene file (not a directory)"));
 }
 
+// An output that cannot be written (a full disk; a reader that closed the pipe, as `| head`
+// does) is a failure of the run's output, exit 1 with one line naming the flag: not an
+// "internal error".
+TEST_F(Cli, AnOutputThatCannotBeWrittenNamesItsFlag) {
+  const auto full = run_mdrsim(fmt::format("run {} --json /dev/full --log-level off", scene_));
+  EXPECT_EQ(full.exit_code, 1);
+  EXPECT_EQ(full.err, "mdrsim: --json: writing '/dev/full' failed\n");
+  const std::string err = path("err.txt");
+  run_mdrsim(fmt::format(
+      "sweep {} --vary material.poisson_ratio=0:0.4:200 --log-level off 2> {} | head -c 1", scene_,
+      err));
+  std::ifstream in(err);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "mdrsim: --csv: writing standard output failed (broken pipe)");
+}
+
 TEST_F(Cli, EndlessSceneFile) {
   const auto r = run_mdrsim("run /dev/zero");
   EXPECT_TRUE(bad_input(r, "/dev/zero: cannot read the scene file (it is larger than 16 MiB)"));
