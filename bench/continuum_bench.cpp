@@ -77,6 +77,33 @@ void run(benchmark::State& state, const std::string& name, const std::string& ro
   state.counters["normal_force"] = r.critical ? r.critical->normal_force : 0.0;
 }
 
+/// The reversible JKR approach-retract cycle of scenes/programs/jkr_cycle_reversible.toml as a
+/// 1000-point force curve (`sample` events into a vector), issue 22's target: <= 50 us.
+void cycle_curve(benchmark::State& state) {
+  const mdrsim::Scene s = mdrsim::test::build_scene_text(
+      "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "approach_work_of_adhesion = 0.05\n[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[[loading.stage]]\nname = \"approach\"\n"
+      "normal = { control = \"fixed-grips\", to = 6.7844544808348425e-6 }\n"
+      "[[loading.stage]]\nname = \"retract\"\nnormal = { by = -1.0e-6 }\n"
+      "until = \"separation\"\n" +
+      kContinuum);
+  struct Curve : mdrsim::Observer {
+    std::vector<mdrsim::ContactSnapshot> points;
+    void on_event(const mdrsim::Event& e) override {
+      if (e.kind == mdrsim::EventKind::sample) points.push_back(e.state);
+    }
+  } curve;
+  mdrsim::ObserverList observers;
+  observers.add(curve);
+  for (auto _ : state) {
+    curve.points.clear();
+    const mdrsim::RunResult r = mdrsim::run_scene(s, observers, 1000);
+    benchmark::DoNotOptimize(r.work);
+  }
+  state.counters["points"] = static_cast<double>(curve.points.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -92,6 +119,8 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("row_rtol_1e-6/" + name).c_str(), run, name, kRow)
         ->Unit(benchmark::kMicrosecond);
   }
+  benchmark::RegisterBenchmark("continuum_cycle_curve_1000/parabolic", cycle_curve)
+      ->Unit(benchmark::kMicrosecond);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

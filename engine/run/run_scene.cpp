@@ -16,6 +16,7 @@
 #include "engine/run/resolution_warning.hpp"
 #include "engine/run/row_sequence.hpp"
 #include "engine/run/run_continuum.hpp"
+#include "engine/run/run_continuum_program.hpp"
 #include "engine/run/run_program.hpp"
 #include "engine/run/shorthand_accuracy.hpp"
 #include "engine/run/status_margin.hpp"
@@ -128,8 +129,9 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
   }
   const bool continuum = scene.solver.method == SolverMethod::continuum;
   if (continuum) {
-    result = run_continuum(scene, scene.discretization.rtol.value_or(kContinuumRtol), samples,
-                           observers);
+    const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
+    result = scene.program ? run_continuum_program(scene, rtol, samples, observers)
+                           : run_continuum(scene, rtol, samples, observers);
   } else if (scene.program) {
     if (scene.discretization.rtol) {
       result = run_program_rtol(scene, *scene.discretization.rtol, observers);

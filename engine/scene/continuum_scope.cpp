@@ -1,5 +1,10 @@
-// The continuum route's reach: shorthand scenes on the convex classic profiles; else the row.
+// The continuum route's reach: shorthand scenes on the convex classic profiles, and normal
+// loading programs on them when asked; else the row.
 #include "engine/scene/continuum_scope.hpp"
+
+#include <fmt/format.h>
+
+#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
 
@@ -7,6 +12,82 @@ bool continuum_answers(const Scene& scene) {
   // One fold on the branch: the shapes that are always one disk (convex classics). A table
   // or a ripple may fold several times; the row follows every jump.
   return !scene.program && scene.profile->always_one_disk();
+}
+
+std::optional<std::string> continuum_program_refusal(const Scene& scene) {
+  if (!scene.program) return std::nullopt;
+  if (scene.friction) {
+    return "a loading program with [friction] needs the spring row (stick and slip spring by "
+           "spring)";
+  }
+  if (!scene.profile->always_one_disk() || scene.profile_name == "flat_punch") {
+    return fmt::format(
+        "a loading program on profile \"{}\" is not on the continuum route (its front may "
+        "fold more than once, or, for the flat punch, never moves)",
+        printable(scene.profile_name));
+  }
+  // Each stage's direction, where the held values tell it before the run: a press after a
+  // stage that may have let springs go needs rebinding (the springs glue again at the
+  // advancing limit; without it they push back unglued).
+  bool grips = true;
+  double held = 0.0;  ///< the normal held value [m or N], where `known`
+  bool known = true;
+  bool may_have_let_go = false;
+  for (const Stage& stage : scene.program->stages) {
+    enum class Direction { none, press, pull, unknown } direction = Direction::none;
+    if (stage.normal) {
+      const bool force = stage.normal->controller->holds_force();
+      if (force == grips) known = false;  // a new control takes its held value from the state
+      grips = !force;
+      switch (stage.normal->motion) {
+        case StageAxis::Motion::hold:
+          break;
+        case StageAxis::Motion::by:
+          direction = stage.normal->value > 0.0   ? Direction::press
+                      : stage.normal->value < 0.0 ? Direction::pull
+                                                  : Direction::none;
+          held += stage.normal->value;
+          break;
+        case StageAxis::Motion::to:
+          direction = !known                       ? Direction::unknown
+                      : stage.normal->value > held ? Direction::press
+                      : stage.normal->value < held ? Direction::pull
+                                                   : Direction::none;
+          held = stage.normal->value;
+          known = true;
+          break;
+      }
+    }
+    const bool presses = direction == Direction::press || direction == Direction::unknown;
+    const bool pulls = direction == Direction::pull || direction == Direction::unknown;
+    if (presses && may_have_let_go && !scene.program->rebinding) {
+      return fmt::format(
+          "stage '{}' may press the contact again after springs let go: without "
+          "loading.rebinding = true they push back unglued, which the continuum route does "
+          "not follow",
+          printable(stage.name));
+    }
+    if (pulls) may_have_let_go = true;
+  }
+  for (const Stage& stage : scene.program->stages) {
+    if (stage.tangential) {
+      return fmt::format(
+          "stage '{}' drives the tangential axis: the continuum route runs normal-only "
+          "programs",
+          printable(stage.name));
+    }
+    if (stage.normal && stage.normal->controller->drives_through_spring()) {
+      return fmt::format(
+          "stage '{}' drives through a machine spring (control = \"{}\"): the continuum "
+          "route runs programs under fixed grips and fixed loads",
+          printable(stage.name), printable(stage.normal->control));
+    }
+    if (stage.until_separation && stage.normal && stage.normal->value > 0.0) {
+      return fmt::format("stage '{}' presses until separation, which never comes",
+                         printable(stage.name));
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace mdrsim

@@ -1,14 +1,24 @@
 // Which scenes the continuum route answers exactly, so that rtol with no method takes it.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {
 
 /// Whether rtol alone takes the continuum route (docs/continuum.md): the shorthand (any
 /// criterion and controller) on a profile whose branch folds once, the convex classics
-/// (Profile::always_one_disk). Loading programs are not on it yet, and tabulated and wavy
-/// profiles may fold several times: those stay on the spring row.
+/// (Profile::always_one_disk). Tabulated and wavy profiles may fold several times, and
+/// loading programs take the route only when asked (method = "continuum"): those stay on the
+/// spring row.
 bool continuum_answers(const Scene& scene);
+
+/// Why the continuum route cannot answer a loading program exactly (one line, naming the
+/// stage or the table), or nothing when it can: normal-only stages under fixed grips or a
+/// fixed load, without friction, on a convex classic profile whose contact radius moves
+/// (docs/continuum.md "Programs").
+std::optional<std::string> continuum_program_refusal(const Scene& scene);
 
 }  // namespace mdrsim

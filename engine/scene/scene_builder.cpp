@@ -366,10 +366,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   if (auto solver = root.optional_table("solver")) {
     method_given = solver->has("method");
     read_solver(*solver, scene.solver);
-    if (scene.solver.method == SolverMethod::continuum && scene.program) {
-      solver->fail_at("method",
-                      "loading programs ([[loading.stage]]) are not on the continuum route yet; "
-                      "use method = \"event\" (docs/continuum.md)");
+    if (scene.solver.method == SolverMethod::continuum) {
+      if (const auto why = continuum_program_refusal(scene)) {
+        solver->fail_at("method", *why + "; use method = \"event\" (docs/continuum.md)");
+      }
     }
     if (scene.solver.method == SolverMethod::continuum && scene.profile_name == "wavy" &&
         !scene.profile->always_one_disk()) {

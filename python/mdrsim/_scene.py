@@ -177,8 +177,8 @@ class Scene:
         "continuum" (no springs: the continuum branch's root searches, docs/continuum.md).
         "continuum" drops the row's `springs` and `extrapolation` and keeps `rtol` (default
         1e-10 on that route); "event" drops the stepping keys of [solver]. `rtol` replaces
-        [discretization] by {"rtol": rtol}. Refused as --set refuses: a loading program is
-        not on the continuum route yet."""
+        [discretization] by {"rtol": rtol}. Refused as --set refuses: a loading program
+        that shears, or one the route cannot answer exactly (docs/continuum.md)."""
         if method not in _METHODS:
             raise SceneError(f"--set: solver.method: unknown name '{method}' (known: "
                              f"{', '.join(_METHODS)})")

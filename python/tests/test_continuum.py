@@ -63,9 +63,14 @@ def test_rtol_without_a_method_takes_the_continuum_route():
     assert mdrsim.run(row, trajectory=False).to_dict()["resolution"]["route"] != "continuum"
 
 
-def test_a_program_is_refused_on_the_continuum_route():
-    with pytest.raises(mdrsim.SceneError, match="not on the continuum route yet"):
-        mdrsim.Scene.from_file("scenes/programs/jkr_cycle_reversible.toml").with_method(
+def test_a_normal_program_runs_on_the_continuum_route_and_a_shear_is_refused():
+    cycle = mdrsim.Scene.from_file("scenes/programs/jkr_cycle_reversible.toml")
+    result = mdrsim.run(cycle.with_method("continuum"), trajectory=False)
+    assert result.to_dict()["accuracy"]["route"] == "continuum"
+    # The fixed-grips fold of the JKR branch: F_c = -5/9 F0 (the scene's comment).
+    assert result.critical.normal_force / F0 == pytest.approx(-5.0 / 9.0, rel=1e-9)
+    with pytest.raises(mdrsim.SceneError, match="drives the tangential axis"):
+        mdrsim.Scene.from_file("scenes/programs/shear_ramp_fixed_grips.toml").with_method(
             "continuum")
 
 

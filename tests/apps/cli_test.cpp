@@ -232,17 +232,17 @@ TEST_F(Cli, ContinuumRefusesSprings) {
   EXPECT_TRUE(nothing_at(json));
 }
 
-TEST_F(Cli, ContinuumRefusesPrograms) {
+TEST_F(Cli, ContinuumRefusesAProgramThatShears) {
   const std::string scene = bad_scene(
       "[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = \"fixed-load\" }\n"
       "[discretization]\nsprings = 100\n",
-      "[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 1e-6 }\n"
+      "[[loading.stage]]\ntangential = { control = \"fixed-grips\", to = 1e-6 }\n"
       "[solver]\nmethod = \"continuum\"\n");
   const std::string json = path("out.json");
   const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
-  EXPECT_TRUE(bad_input(r, scene + ":11:10: solver.method: loading programs ([[loading.stage]]) "
-                                   "are not on the continuum route yet; use method = \"event\" "
-                                   "(docs/continuum.md)"));
+  EXPECT_TRUE(bad_input(r, scene + ":11:10: solver.method: stage 'stage 1' drives the "
+                                   "tangential axis: the continuum route runs normal-only "
+                                   "programs; use method = \"event\" (docs/continuum.md)"));
   EXPECT_TRUE(nothing_at(json));
 }
 

@@ -1,0 +1,25 @@
+// The continuum route for normal loading programs: one glued disk whose front advances and
+// recedes on closed relations, with no spring row.
+#pragma once
+
+#include <cstdint>
+
+#include "engine/events/observer.hpp"
+#include "engine/result/run_result.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace mdrsim {
+
+/// A normal-only loading program on the continuum (docs/continuum.md "Programs"): the glued
+/// disk of radius a at indentation d is pinned while the boundary stretch e = g(a) - d lies
+/// between the advancing limit sqrt(2 pi a dgamma_a / E*) and the criterion's let-go stretch;
+/// its front advances on the first and recedes on the second, and jumps where the stage's
+/// control folds (jump-in at touch, jump-out at the fold). Stages, jumps, the critical point,
+/// the peak and the work, each from closed relations, root searches and Gauss-Kronrod
+/// quadrature to `rtol`; `samples` points of the path as `sample` events. Scenes the route
+/// cannot answer are refused before the run (continuum_program_refusal); a press after a
+/// retract without rebinding, known only as the program runs, throws SceneError.
+RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t samples,
+                                const ObserverList& observers);
+
+}  // namespace mdrsim
