@@ -79,15 +79,23 @@ echo "== a wavy sphere: pull-off against the ripple amplitude" >&2
   --csv "$results/wavy_amplitude.csv" --threads "$threads" --log-level error
 "$py" scripts/plot_wavy.py --csv "$results/wavy_amplitude.csv" --out "$results"
 
-# Beyond the paper: a fretting cycle under Coulomb friction (docs/friction.md), the engine's loop
-# at 1000 and 10000 springs against Cattaneo-Mindlin and Mindlin-Deresiewicz; its table is in
-# the report, and a number beyond its O(1/N) bound fails the job (about 2 s).
-echo "== friction: a fretting loop against its closed forms" >&2
+# Beyond the paper: Coulomb friction (docs/friction.md) at 1000 and 10000 springs, a fretting
+# cycle against Cattaneo-Mindlin and Mindlin-Deresiewicz and the transition from adhesion to
+# sliding friction (chi = mu F_z / F_x,peak below and above 1) against its closed forms; their
+# tables are in the report, and a number beyond its O(1/N) bound fails the job (about 4 s).
+echo "== friction: a fretting loop and the adhesion-to-friction transition" >&2
 for n in 1000 10000; do
   "$mdrsim" run scenes/programs/fretting_parabola.toml --set "discretization.springs=$n" \
     --trajectory "$results/fretting_$n.csv" --json "$results/fretting_$n.json" --log-level error
+  for chi in below above; do
+    "$mdrsim" run "scenes/programs/adhesion_to_friction_chi_$chi.toml" \
+      --set "discretization.springs=$n" --trajectory "$results/transition_${chi}_$n.csv" \
+      --json "$results/transition_${chi}_$n.json" --log-level error
+  done
 done
 "$py" scripts/plot_fretting.py --results "$results" --springs 1000 10000
+echo
+"$py" scripts/plot_transition.py --results "$results" --springs 1000 10000
 
 echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
