@@ -4,6 +4,8 @@ from collections.abc import Callable, Mapping, Sequence
 from concurrent.futures import Executor
 from typing import Any, Literal, TypedDict, Union
 
+from typing_extensions import NotRequired
+
 import numpy as np
 import numpy.typing as npt
 
@@ -71,10 +73,13 @@ class State:
     normal_control: float
     dimensionless: dict[str, float] | None
     disk_valid: bool
+    springs_sliding: int | None
+    stick_radius: float | None
 
 class Work:
     normal: float
     tangential: float
+    dissipated_by_friction: float | None
 
 class StageEnd:
     name: str
@@ -101,6 +106,7 @@ class Trajectory(TypedDict):
     tangential_force: npt.NDArray[np.float64]
     springs_in_contact: npt.NDArray[np.int64]
     normal_control: npt.NDArray[np.float64]
+    sliding: NotRequired[npt.NDArray[np.int64]]  # with [friction] only, as the CSV's column
 
 class Result:
     @property
@@ -123,6 +129,10 @@ class Result:
     def jumps(self) -> list[Jump]: ...
     @property
     def work(self) -> Work | None: ...
+    @property
+    def sliding(self) -> bool: ...
+    @property
+    def dissipated_by_friction(self) -> float | None: ...
     @property
     def warnings(self) -> list[str]: ...
     @property

@@ -25,6 +25,10 @@ class State:
     normal_control: float  # the value the normal controller holds [m or N]
     dimensionless: dict = None
     disk_valid: bool = True  # the state is one contact disk (docs/model.md "One contact disk")
+    # With [friction] (docs/friction.md), else None: the springs of one half sliding, and the
+    # radius inside which every spring in contact sticks (the contact radius when none slides).
+    springs_sliding: int = None
+    stick_radius: float = None  # [m]
 
     @classmethod
     def _of(cls, snapshot, scales):
@@ -37,10 +41,12 @@ class State:
 
 @dataclass(frozen=True)
 class Work:
-    """Work done by the machine on each axis [J]."""
+    """Work done by the machine on each axis [J]; with [friction], `dissipated_by_friction`
+    (the slip limit times each slip distance, summed: part of `tangential`), else None."""
 
     normal: float
     tangential: float
+    dissipated_by_friction: float = None
 
 
 @dataclass(frozen=True)
@@ -68,8 +74,8 @@ class Jump:
 
 # What a pickled Result keeps of the engine's result (the attributes of _core.RunResult).
 _RAW_FIELDS = ("status", "title", "critical", "peak", "tangential_strength", "stages", "jumps",
-               "work", "warnings", "has_warnings", "disk_valid", "counts", "springs", "wall_time_s", "scales",
-               "trajectory_rows_seen", "trajectory_stride")
+               "work", "sliding", "warnings", "has_warnings", "disk_valid", "counts", "springs",
+               "wall_time_s", "scales", "trajectory_rows_seen", "trajectory_stride")
 
 
 class _StoredRun:
@@ -159,6 +165,22 @@ class Result:
         """The total work (a Work), or None where the run did not follow the whole path."""
         w = self._raw.work
         return None if w is None else Work(**w)
+
+    @property
+    def sliding(self):
+        """True where the run ended with a held Fx that nothing held any more, so that the
+        indenter slides away: with [friction], every spring in contact sliding (status
+        shear-off, docs/friction.md "Statuses"); without it, the glue gone (the JSON's
+        top-level "sliding")."""
+        return self._raw.sliding
+
+    @property
+    def dissipated_by_friction(self):
+        """The work friction dissipated over the whole run [J] (work.dissipated_by_friction;
+        each stage's is stages[i].work.dissipated_by_friction); None without [friction] or
+        where the run did not follow the whole path."""
+        w = self.work
+        return None if w is None else w.dissipated_by_friction
 
     @cached_property
     def warnings(self):

@@ -16,7 +16,8 @@ from . import _core
 from ._core import SceneError
 
 # The tables of a scene in the order docs/scene.md and the scene files have them.
-_ORDER = ("title", "material", "profile", "loading", "detachment", "discretization", "solver")
+_ORDER = ("title", "material", "profile", "loading", "detachment", "friction", "discretization",
+          "solver")
 _METHODS = ("event", "stepping", "continuum")
 _BARE_KEY = re.compile(r"[A-Za-z0-9_-]+\Z")
 _ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}

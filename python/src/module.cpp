@@ -109,7 +109,8 @@ py::array take_column(std::vector<T>& column, const py::dtype& dtype) {
   return array;
 }
 
-py::dict take_trajectory(TrajectoryColumns& c) {
+/// With friction the arrays gain `sliding`, as the CSV gains its column (docs/friction.md).
+py::dict take_trajectory(TrajectoryColumns& c, bool friction) {
   std::vector<py::str> stage_names;
   for (const std::string& name : c.stage_names) stage_names.emplace_back(name);
   py::list stage(c.stage.size());
@@ -136,10 +137,12 @@ py::dict take_trajectory(TrajectoryColumns& c) {
   t["tangential_force"] = take_column(c.tangential_force, f8);
   t["springs_in_contact"] = take_column(c.springs_in_contact, py::dtype::of<std::int64_t>());
   t["normal_control"] = take_column(c.normal_control, f8);
+  if (friction) t["sliding"] = take_column(c.springs_sliding, py::dtype::of<std::int64_t>());
   return t;
 }
 
-py::dict snapshot(const ContactSnapshot& s) {
+/// With friction a state also says how much of it slides, as the JSON's states do.
+py::dict snapshot(const ContactSnapshot& s, bool friction) {
   py::dict d;
   d["normal_control"] = s.normal_control;
   d["indentation"] = s.indentation;
@@ -149,19 +152,27 @@ py::dict snapshot(const ContactSnapshot& s) {
   d["tangential_force"] = s.tangential_force;
   d["springs_in_contact"] = s.springs_in_contact;
   d["disk_valid"] = s.disk_valid;
+  if (friction) {
+    d["springs_sliding"] = s.springs_sliding;
+    d["stick_radius"] = s.stick_radius;
+  }
   return d;
 }
 
-py::object optional_snapshot(const std::optional<ContactSnapshot>& s) {
-  return s ? py::object(snapshot(*s)) : py::object(py::none());
+py::object optional_snapshot(const std::optional<ContactSnapshot>& s, bool friction) {
+  return s ? py::object(snapshot(*s, friction)) : py::object(py::none());
 }
 
-py::dict work(const AxisWork& w) {
+/// With friction the work says what of it friction dissipated, as the JSON's does.
+py::dict work(const AxisWork& w, bool friction) {
   py::dict d;
   d["normal"] = w.normal;
   d["tangential"] = w.tangential;
+  if (friction) d["dissipated_by_friction"] = w.friction;
   return d;
 }
+
+bool has_friction(const ResultHandle& r) { return r.scene->friction.has_value(); }
 
 void bind_scenes(py::module_& m) {
   py::class_<SceneHandle>(m, "Document", "A parsed scene and the Scene it builds (internal).")
@@ -203,10 +214,14 @@ void bind_results(py::module_& m) {
       .def_property_readonly("status",
                              [](const ResultHandle& r) { return to_string(r.result.status); })
       .def_property_readonly("title", [](const ResultHandle& r) { return r.scene->title; })
+      .def_property_readonly("critical",
+                             [](const ResultHandle& r) {
+                               return optional_snapshot(r.result.critical, has_friction(r));
+                             })
       .def_property_readonly(
-          "critical", [](const ResultHandle& r) { return optional_snapshot(r.result.critical); })
-      .def_property_readonly("peak",
-                             [](const ResultHandle& r) { return optional_snapshot(r.result.peak); })
+          "peak",
+          [](const ResultHandle& r) { return optional_snapshot(r.result.peak, has_friction(r)); })
+      .def_property_readonly("sliding", [](const ResultHandle& r) { return r.result.sliding; })
       .def_property_readonly("tangential_strength",
                              [](const ResultHandle& r) { return r.result.tangential_strength; })
       .def_property_readonly("stages",
@@ -215,8 +230,8 @@ void bind_results(py::module_& m) {
                                for (const StageRecord& s : r.result.stages) {
                                  py::dict d;
                                  d["name"] = s.name;
-                                 d["end"] = snapshot(s.end);
-                                 d["work"] = work(s.work);
+                                 d["end"] = snapshot(s.end, has_friction(r));
+                                 d["work"] = work(s.work, has_friction(r));
                                  out.append(d);
                                }
                                return out;
@@ -228,11 +243,11 @@ void bind_results(py::module_& m) {
                                  py::dict d;
                                  d["stage"] = j.stage;
                                  d["kind"] = j.inward ? "in" : "out";
-                                 d["critical"] = snapshot(j.critical);
+                                 d["critical"] = snapshot(j.critical, has_friction(r));
                                  // A flight (docs/programs.md "A fixed load that loses the
                                  // contact") has no state after it.
                                  d["after"] = j.end == JumpEnd::state
-                                                  ? py::object(snapshot(j.after))
+                                                  ? py::object(snapshot(j.after, has_friction(r)))
                                                   : py::object(py::none());
                                  d["end"] = to_string(j.end);
                                  d["springs"] = j.springs;
@@ -244,8 +259,9 @@ void bind_results(py::module_& m) {
                              })
       .def_property_readonly("work",
                              [](const ResultHandle& r) {
-                               return r.result.work ? py::object(work(*r.result.work))
-                                                    : py::object(py::none());
+                               return r.result.work
+                                          ? py::object(work(*r.result.work, has_friction(r)))
+                                          : py::object(py::none());
                              })
       .def_property_readonly("warnings", [](const ResultHandle& r) { return r.result.warnings; })
       .def_property_readonly("disk_valid",
@@ -283,7 +299,7 @@ void bind_results(py::module_& m) {
         if (!r.trajectory && r.rows) {
           TrajectoryColumns columns = r.rows->columns();
           r.rows.reset();
-          r.trajectory = take_trajectory(columns);
+          r.trajectory = take_trajectory(columns, has_friction(r));
         }
         return r.trajectory ? r.trajectory : py::object(py::none());
       });

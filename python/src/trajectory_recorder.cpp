@@ -106,6 +106,7 @@ TrajectoryColumns TrajectoryRows::columns() const {
   c.tangential_displacement.resize(n);
   c.tangential_force.resize(n);
   c.springs_in_contact.resize(n);
+  c.springs_sliding.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const TrajectoryRow& row = rows[i];
     const ContactSnapshot& s = row.state;
@@ -119,6 +120,7 @@ TrajectoryColumns TrajectoryRows::columns() const {
     c.tangential_displacement[i] = s.tangential_displacement;
     c.tangential_force[i] = s.tangential_force;
     c.springs_in_contact[i] = s.springs_in_contact;
+    c.springs_sliding[i] = s.springs_sliding;
   }
   return c;
 }

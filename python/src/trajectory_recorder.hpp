@@ -26,6 +26,7 @@ struct TrajectoryColumns {
   std::vector<double> tangential_displacement;  ///< [m]
   std::vector<double> tangential_force;         ///< [N]
   std::vector<std::int64_t> springs_in_contact;
+  std::vector<std::int64_t> springs_sliding;  ///< the CSV's `sliding` (docs/friction.md)
 };
 
 struct TrajectoryRow {
