@@ -193,6 +193,13 @@ class Result:
         return self._raw.disk_valid
 
     @cached_property
+    def accuracy(self):
+        """What the run vouches for (the JSON's `accuracy`, docs/accuracy.md): route, rows,
+        the error estimates [N, J] and `covers`; None for a plain row, which estimates
+        nothing."""
+        return json.loads(self._raw.json()).get("accuracy")
+
+    @cached_property
     def counts(self):
         """{"events", "steps", "halvings", "root_iterations"}."""
         return self._raw.counts

@@ -22,7 +22,7 @@ def test_critical_point_in_si_and_dimensionless():
     # Fixed-load JKR pull-off at -F0 (paper eq. 19). The scene extrapolates rows of 5000, 10000
     # and 20000 springs (Richardson): 1e-8 F0 off here, within its error estimate.
     assert c.normal_force / F0 == pytest.approx(-1.0, abs=1e-7)
-    accuracy = result.to_dict()["accuracy"]
+    accuracy = result.accuracy
     assert abs(c.normal_force + F0) <= accuracy["critical_error_estimate"]
     assert result.dimensionless == c.dimensionless
     for name, scale in zip(FIELDS, ("force", "force", "radius", "depth", "depth")):
@@ -32,6 +32,10 @@ def test_critical_point_in_si_and_dimensionless():
     assert result.springs == 20000  # the finest of the three rows
     assert result.counts["events"] > 0 and result.wall_time_s > 0
     assert result.warnings == [] and result.tangential_strength is None
+    # A plain row estimates nothing.
+    plain = mdrsim.run(mdrsim.Scene.from_file(FIG2).with_values(
+        {"discretization.extrapolation": "none", "discretization.springs": 1000}), trajectory=False)
+    assert plain.accuracy is None
     assert "instability" in repr(result)
 
 
