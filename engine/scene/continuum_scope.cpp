@@ -11,7 +11,8 @@ namespace mdrsim {
 bool continuum_answers(const Scene& scene) {
   // One fold on the branch: the shapes that are always one disk (convex classics). A table
   // or a ripple may fold several times; the row follows every jump.
-  return !scene.program && scene.profile->always_one_disk();
+  if (scene.program) return !continuum_program_refusal(scene);
+  return scene.profile->always_one_disk();
 }
 
 std::optional<std::string> continuum_program_refusal(const Scene& scene) {

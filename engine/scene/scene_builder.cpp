@@ -434,14 +434,15 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   } else {
     root.record("discretization", {{"springs", scene.springs}});
   }
+  // [friction] before the route: a scene with friction stays on the row.
+  if (auto friction = root.optional_table("friction")) {
+    scene.friction = read_friction(*friction, scene);
+    friction->finish();
+  }
   if (!method_given) choose_continuum_route(scene, *resolved);
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
-  }
-  if (auto friction = root.optional_table("friction")) {
-    scene.friction = read_friction(*friction, scene);
-    friction->finish();
   }
   root.finish();
   scene.resolved = std::move(resolved);

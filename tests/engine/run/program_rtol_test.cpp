@@ -134,6 +134,8 @@ normal = { control = "fixed-grips", by = -1.0e-6 }
 until = "separation"
 [discretization]
 rtol = 1e-4
+[solver]
+method = "event"
 )";
   const RunResult r =
       run_scene(SceneDocument::from_text(text, "hertz.toml").build(Registries::builtin()), {});

@@ -39,7 +39,8 @@ std::string program(const std::string& control, const std::string& by, const std
   return kMaterial + "[[loading.stage]]\nname = \"preload\"\n" +
          "normal = { control = \"fixed-grips\", to = " + kPreloadDepth + " }\n" +
          "[[loading.stage]]\nname = \"pull-off\"\nnormal = { control = \"" + control +
-         "\", by = " + by + " }\nuntil = \"separation\"\n[discretization]\nrtol = " + rtol + "\n";
+         "\", by = " + by + " }\nuntil = \"separation\"\n[discretization]\nrtol = " + rtol +
+         "\n[solver]\nmethod = \"event\"\n";  // the row's zoom (rtol alone: the continuum)
 }
 
 TEST(ProgramZoom, ThePaperPathAsAProgramGivesTheShorthandsCriticalPoint) {

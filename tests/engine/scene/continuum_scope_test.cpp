@@ -96,17 +96,26 @@ TEST(ContinuumScope, SpringsOrExtrapolationStayOnTheRow) {
   EXPECT_EQ(test::build_scene_text(extrapolated).solver.method, SolverMethod::event);
 }
 
-// A loading program is not on the route yet: with rtol and no method it stays on the row.
-TEST(ContinuumScope, ProgramsStayOnTheRow) {
+// A normal loading program takes the route with rtol alone; one that shears, or has
+// friction, stays on the row.
+TEST(ContinuumScope, NormalProgramsTakeTheRouteAndShearingOnesStayOnTheRow) {
   const std::string text =
       "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 100.0\n"
       "[profile]\ntype = \"sphere\"\nradius = 0.01\n"
       "[[loading.stage]]\nname = \"approach\"\nnormal = { control = \"fixed-grips\", to = "
       "1e-4 }\n"
       "[discretization]\nrtol = 1e-3\n";
-  const Scene scene = test::build_scene_text(text);
-  EXPECT_FALSE(continuum_answers(scene));
-  EXPECT_EQ(scene.solver.method, SolverMethod::event);
+  const Scene normal = test::build_scene_text(text);
+  EXPECT_TRUE(continuum_answers(normal));
+  EXPECT_EQ(normal.solver.method, SolverMethod::continuum);
+  const Scene sheared = test::build_scene_text(
+      text +
+      "[[loading.stage]]\nname = \"shear\"\ntangential = { control = \"fixed-grips\", "
+      "to = 1e-6 }\n");
+  EXPECT_FALSE(continuum_answers(sheared));
+  EXPECT_EQ(sheared.solver.method, SolverMethod::event);
+  const Scene rubbing = test::build_scene_text(text + "[friction]\ncoefficient = 0.5\n");
+  EXPECT_EQ(rubbing.solver.method, SolverMethod::event);
 }
 
 // A branch that may fold more than once stays on the row with rtol alone: a wavy sphere (at
