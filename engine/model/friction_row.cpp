@@ -14,6 +14,12 @@ FrictionRow::FrictionRow(const Material& material, const FrictionSettings& setti
       ratio_(settings.coefficient * material.effective_modulus / material.effective_shear_modulus),
       spacing_(spacing) {}
 
+void FrictionRow::reserve(std::int64_t springs) {
+  if (springs <= 0) return;
+  springs_.reserve(static_cast<std::size_t>(springs));
+  keys_.reserve(springs);
+}
+
 SpringGeometry FrictionRow::geometry(std::int64_t i) const {
   return {normal_stiffness_, tangential_stiffness_, springs_[index(i)].image};
 }

@@ -49,6 +49,9 @@ class FrictionRow {
   /// The law of spring i; nullopt for a glued spring under GluedLaw::unlimited (it never slips).
   std::optional<CoulombLaw> law(std::int64_t i) const;
 
+  /// Room for `springs` in contact without reallocation (the row's N: each regrowth copies the
+  /// springs into fresh pages, and at 1e6 springs the pages cost more than the events).
+  void reserve(std::int64_t springs);
   /// Spring m+1, of image g [m], is pressed with no tangential stretch at u_x [m].
   void touch(double image, double tangential);
   /// Spring m (not glued) leaves the indenter and forgets its slip.

@@ -32,6 +32,11 @@ class SlipKeys {
   bool empty() const { return forward_.size() == 0; }
   std::int64_t size() const { return forward_.size(); }
   bool contains(std::int64_t i) const { return forward_.contains(i); }
+  /// Room for springs 1..n without reallocation.
+  void reserve(std::int64_t n) {
+    forward_.reserve(n);
+    backward_.reserve(n);
+  }
   /// Puts spring i (not in the set) in with its keys.
   void insert(std::int64_t i, double forward, double backward);
   /// Takes spring i out; nothing when it is not in.
@@ -47,6 +52,7 @@ class SlipKeys {
    public:
     Side(int tie, std::size_t max_runs) : tie_(tie), max_runs_(max_runs) {}
     std::int64_t size() const { return size_; }
+    void reserve(std::int64_t n) { keys_.reserve(static_cast<std::size_t>(n)); }
     bool contains(std::int64_t i) const;
     void insert(std::int64_t i, double key);
     void erase(std::int64_t i);
