@@ -40,6 +40,7 @@ void IndexSet::insert(std::int64_t i) {
   if (contains(i)) return;
   if (levels_.empty() || (static_cast<std::size_t>(i) >> 6U) >= levels_[0].size()) grow(i);
   ++size_;
+  if (first_ == 0 || i < first_) first_ = i;
   auto k = static_cast<std::uint64_t>(i);
   for (auto& level : levels_) {
     std::uint64_t& word = level[k >> 6U];
@@ -57,12 +58,13 @@ void IndexSet::erase(std::int64_t i) {
   for (auto& level : levels_) {
     std::uint64_t& word = level[k >> 6U];
     word &= ~bit(k);
-    if (word != 0) return;
+    if (word != 0) break;
     k >>= 6U;
   }
+  if (i == first_) first_ = search_first();
 }
 
-std::int64_t IndexSet::first() const {
+std::int64_t IndexSet::search_first() const {
   if (size_ == 0) return 0;
   std::uint64_t k = 0;
   for (auto level = levels_.rbegin(); level != levels_.rend(); ++level)

@@ -14,16 +14,18 @@ class IndexSet {
   std::int64_t size() const { return size_; }
   bool contains(std::int64_t i) const;
   void insert(std::int64_t i);
-  void erase(std::int64_t i);  ///< nothing when i is not in
-  std::int64_t first() const;  ///< the smallest member; 0 when empty
+  void erase(std::int64_t i);                    ///< nothing when i is not in
+  std::int64_t first() const { return first_; }  ///< the smallest member; 0 when empty
 
  private:
   void grow(std::int64_t i);
+  std::int64_t search_first() const;
 
   /// levels_[0] holds bit i for member i; bit w of levels_[l + 1] is set where word w of
   /// levels_[l] is not 0; the last level is one word.
   std::vector<std::vector<std::uint64_t>> levels_;
   std::int64_t size_ = 0;
+  std::int64_t first_ = 0;
 };
 
 }  // namespace mdrsim

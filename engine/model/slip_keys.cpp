@@ -11,7 +11,6 @@ namespace mdrsim {
 
 void SlipKeys::insert(std::int64_t i, double forward, double backward) {
   if (i < 1) throw std::logic_error("SlipKeys::insert: spring index below 1");
-  if (forward_.contains(i)) throw std::logic_error("SlipKeys::insert: spring already in");
   forward_.insert(i, forward);
   // Negated exactly: the largest (key, i) is the least (-key, i) with ties to the larger i.
   backward_.insert(i, -backward);
@@ -48,11 +47,13 @@ std::vector<SlipKeys::Side::Run>::const_iterator SlipKeys::Side::run_after(std::
 bool SlipKeys::Side::contains(std::int64_t i) const {
   if (i < 1 || static_cast<std::size_t>(i) > keys_.size()) return false;
   if (tree_) return nodes_[leaves_ + static_cast<std::size_t>(i - 1)] == i;
+  if (runs_.empty() || runs_.back().last < i) return false;
   const auto after = run_after(i);
   return after != runs_.begin() && std::prev(after)->last >= i;
 }
 
 void SlipKeys::Side::insert(std::int64_t i, double key) {
+  if (contains(i)) throw std::logic_error("SlipKeys::insert: spring already in");
   if (static_cast<std::size_t>(i) > keys_.size()) keys_.resize(static_cast<std::size_t>(i));
   keys_[static_cast<std::size_t>(i - 1)] = key;
   ++size_;
@@ -66,7 +67,8 @@ void SlipKeys::Side::insert(std::int64_t i, double key) {
 }
 
 void SlipKeys::Side::insert_in_runs(std::int64_t i) {
-  const auto after = run_after(i);
+  // A row touches its next spring past every member: no search then.
+  const auto after = runs_.empty() || runs_.back().last < i ? runs_.end() : run_after(i);
   Run* left =
       after != runs_.begin() && std::prev(after)->last == i - 1 ? &*std::prev(after) : nullptr;
   Run* right = after != runs_.end() && after->first == i + 1 ? &*after : nullptr;

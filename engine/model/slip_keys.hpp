@@ -37,7 +37,7 @@ class SlipKeys {
     forward_.reserve(n);
     backward_.reserve(n);
   }
-  /// Puts spring i (not in the set) in with its keys.
+  /// Puts spring i (not in the set: std::logic_error if it is) in with its keys.
   void insert(std::int64_t i, double forward, double backward);
   /// Takes spring i out; nothing when it is not in.
   void erase(std::int64_t i);
