@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <stdexcept>
 
 namespace mdrsim {
@@ -14,6 +13,12 @@ FrictionRow::FrictionRow(const Material& material, const FrictionSettings& setti
       tangential_stiffness_(material.effective_shear_modulus * spacing),
       ratio_(settings.coefficient * material.effective_modulus / material.effective_shear_modulus),
       spacing_(spacing) {}
+
+void FrictionRow::reserve(std::int64_t springs) {
+  if (springs <= 0) return;
+  springs_.reserve(static_cast<std::size_t>(springs));
+  keys_.reserve(springs);
+}
 
 SpringGeometry FrictionRow::geometry(std::int64_t i) const {
   return {normal_stiffness_, tangential_stiffness_, springs_[index(i)].image};
@@ -38,42 +43,26 @@ double FrictionRow::limit_sum(std::size_t s, double indentation) const {
          (count * indentation - slider_images_[s].value());
 }
 
-namespace {
-
-/// Springs touch and stick in runs whose keys rise or fall with i: inserted next to the
-/// previous key, such a run costs O(1) per spring instead of O(log m).
-using KeySet = std::set<std::pair<double, std::int64_t>>;
-KeySet::iterator insert_near(KeySet& set, const std::optional<KeySet::iterator>& previous,
-                             const KeySet::value_type& value) {
-  if (!previous) return set.insert(value).first;
-  return set.insert(value < **previous ? *previous : std::next(*previous), value);
-}
-
-}  // namespace
-
-void FrictionRow::add_sticking(std::int64_t i, bool keyed) {
+void FrictionRow::add_sticking(std::int64_t i, bool keyed, int stuck_from) {
   const Spring& s = springs_[index(i)];
   ++sticking_;
   sticking_offsets_.add(s.state.offset);
   if (!keyed) return;
-  forward_hint_.at =
-      insert_near(forward_keys_, forward_hint_.at, {s.state.offset - ratio_ * s.image, i});
-  backward_hint_.at =
-      insert_near(backward_keys_, backward_hint_.at, {s.state.offset + ratio_ * s.image, i});
+  double forward = s.state.offset - ratio_ * s.image;
+  double backward = s.state.offset + ratio_ * s.image;
+  // A slider sticks where its p reverses: that p is its key on the side it slid to, the same
+  // bits for every slider that sticks with it (o -+ r g would scatter them by rounding, and the
+  // runs of neighbours SlipKeys keeps would break into pieces), the same value to rounding.
+  if (stuck_from > 0) forward = tangential_ - ratio_ * indentation_;
+  if (stuck_from < 0) backward = tangential_ + ratio_ * indentation_;
+  keys_.insert(i, forward, backward);
 }
 
 void FrictionRow::remove_sticking(std::int64_t i, bool keyed) {
   const Spring& s = springs_[index(i)];
   --sticking_;
   sticking_offsets_.add(-s.state.offset);
-  if (!keyed) return;
-  // The keys are computed as add_sticking computed them: the same bits.
-  const Key forward{s.state.offset - ratio_ * s.image, i};
-  const Key backward{s.state.offset + ratio_ * s.image, i};
-  if (forward_hint_.at && **forward_hint_.at == forward) forward_hint_.at.reset();
-  if (backward_hint_.at && **backward_hint_.at == backward) backward_hint_.at.reset();
-  forward_keys_.erase(forward);
-  backward_keys_.erase(backward);
+  if (keyed) keys_.erase(i);
 }
 
 void FrictionRow::add_sliding(std::int64_t i) {
@@ -166,8 +155,7 @@ double FrictionRow::tangential_stiffness() const {
 
 double FrictionRow::tangential_force_per_indentation(double indentation) const {
   const double per_spring = settings_.coefficient * normal_stiffness_;
-  double slope = per_spring * static_cast<double>(static_cast<std::int64_t>(sliders_[0].size()) -
-                                                  static_cast<std::int64_t>(sliders_[1].size()));
+  double slope = per_spring * static_cast<double>(sliders_[0].size() - sliders_[1].size());
   if (glued_sliding_ > 0) {
     for (std::int64_t i = 1; i <= glued_; ++i) {
       const Spring& s = springs_[index(i)];
@@ -178,13 +166,13 @@ double FrictionRow::tangential_force_per_indentation(double indentation) const {
 }
 
 std::int64_t FrictionRow::springs_sliding() const {
-  return static_cast<std::int64_t>(sliders_[0].size() + sliders_[1].size()) + glued_sliding_;
+  return sliders_[0].size() + sliders_[1].size() + glued_sliding_;
 }
 
 double FrictionRow::stick_radius() const {
   std::int64_t first = first_glued_sliding();
   for (const auto& side : sliders_)
-    if (!side.empty() && (first == 0 || *side.begin() < first)) first = *side.begin();
+    if (!side.empty() && (first == 0 || side.first() < first)) first = side.first();
   return first == 0 ? position(in_contact()) : position(first - 1);
 }
 
@@ -208,22 +196,22 @@ std::optional<RowFrictionEvent> FrictionRow::next_event(const LinearMotion& moti
   const double backward_rate = motion.tangential_rate + ratio_ * motion.indentation_rate;
   // Sliders stick at once where their common slip velocity reverses.
   if (!sliders_[0].empty() && forward_rate < 0.0)
-    consider(*sliders_[0].begin(), {FrictionEventKind::stick, t0, 1});
+    consider(sliders_[0].first(), {FrictionEventKind::stick, t0, 1});
   if (!sliders_[1].empty() && backward_rate > 0.0)
-    consider(*sliders_[1].begin(), {FrictionEventKind::stick, t0, -1});
+    consider(sliders_[1].first(), {FrictionEventKind::stick, t0, -1});
   // A sticking spring slips where p+ rises to its key (p- falls to it); on its limit already
   // (rounding, or a spring just stuck) it slips at once if the motion goes that way.
-  if (!forward_keys_.empty() && forward_rate > 0.0) {
-    const Key& key = *forward_keys_.begin();
+  if (!keys_.empty() && forward_rate > 0.0) {
+    const SlipKey key = keys_.forward_first();
     const double p = motion.tangential - ratio_ * motion.indentation;
-    consider(key.second,
-             {FrictionEventKind::slip, t0 + std::max(key.first - p, 0.0) / forward_rate, 1});
+    consider(key.spring,
+             {FrictionEventKind::slip, t0 + std::max(key.value - p, 0.0) / forward_rate, 1});
   }
-  if (!backward_keys_.empty() && backward_rate < 0.0) {
-    const Key& key = *backward_keys_.rbegin();
+  if (!keys_.empty() && backward_rate < 0.0) {
+    const SlipKey key = keys_.backward_last();
     const double p = motion.tangential + ratio_ * motion.indentation;
-    consider(key.second,
-             {FrictionEventKind::slip, t0 + std::max(p - key.first, 0.0) / (-backward_rate), -1});
+    consider(key.spring,
+             {FrictionEventKind::slip, t0 + std::max(p - key.value, 0.0) / (-backward_rate), -1});
   }
   return first;
 }
@@ -279,8 +267,9 @@ void FrictionRow::apply(const RowFrictionEvent& event) {
   } else if (kind == FrictionEventKind::stick && s.state.sliding != 0) {
     remove_sliding(i);
     s.state.offset = spring(i).offset;
+    const int direction = s.state.sliding;
     s.state.sliding = 0;
-    add_sticking(i, true);
+    add_sticking(i, true, direction);
   }
 }
 

@@ -4,7 +4,6 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -12,6 +11,8 @@
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/coulomb_spring.hpp"
 #include "engine/model/friction_settings.hpp"
+#include "engine/model/index_set.hpp"
+#include "engine/model/slip_keys.hpp"
 
 namespace mdrsim {
 
@@ -30,10 +31,10 @@ struct RowFrictionEvent {
 /// events keep true) need no pass over the row. With r = mu E*/G*, a sticking spring slips
 /// forward when p+ = u_x - r d rises to its key o_i - r g_i and backward when p- = u_x + r d
 /// falls to o_i + r g_i: keys that do not change while it sticks, kept in order, so the next
-/// slip is the smallest (largest) key, O(log m) per event. Every spring sliding along +x has
-/// the same slip velocity p+' (along -x, p-'), so they stick together when it reverses, and
-/// their force and dissipated work are sums of their count and images. Glued `coulomb`
-/// springs go spring by spring (O(k) per query); glued `unlimited` ones only stick.
+/// slip is the smallest (largest) key, O(log m) per event in flat arrays. Every spring sliding
+/// along +x has the same slip velocity p+' (along -x, p-'), so they stick together when it
+/// reverses, and their force and dissipated work are sums of their count and images. Glued
+/// `coulomb` springs go spring by spring (O(k) per query); glued `unlimited` ones only stick.
 class FrictionRow {
  public:
   FrictionRow(const Material& material, const FrictionSettings& settings, double spacing);
@@ -48,6 +49,9 @@ class FrictionRow {
   /// The law of spring i; nullopt for a glued spring under GluedLaw::unlimited (it never slips).
   std::optional<CoulombLaw> law(std::int64_t i) const;
 
+  /// Room for `springs` in contact without reallocation (the row's N: each regrowth copies the
+  /// springs into fresh pages, and at 1e6 springs the pages cost more than the events).
+  void reserve(std::int64_t springs);
   /// Spring m+1, of image g [m], is pressed with no tangential stretch at u_x [m].
   void touch(double image, double tangential);
   /// Spring m (not glued) leaves the indenter and forgets its slip.
@@ -85,11 +89,11 @@ class FrictionRow {
     CoulombSpring state;  ///< a sliding spring's offset is not kept up to date when it is not glued
     double image;         ///< g(x_i) [m]
   };
-  using Key = std::pair<double, std::int64_t>;  ///< (key [m], spring)
   std::size_t index(std::int64_t i) const { return static_cast<std::size_t>(i - 1); }
   static std::size_t side(int direction) { return direction > 0 ? 0 : 1; }
   double limit_sum(std::size_t s, double indentation) const;  ///< sum of mu f_z of a side [N]
-  void add_sticking(std::int64_t i, bool keyed);
+  /// `stuck_from`: the direction of the slide that just ended (0: none).
+  void add_sticking(std::int64_t i, bool keyed, int stuck_from = 0);
   void remove_sticking(std::int64_t i, bool keyed);
   void add_sliding(std::int64_t i);
   void remove_sliding(std::int64_t i);
@@ -107,24 +111,12 @@ class FrictionRow {
 
   std::int64_t sticking_ = 0;        ///< springs that stick, glued ones included
   CompensatedSum sticking_offsets_;  ///< their offsets [m]
-  std::set<Key> forward_keys_;       ///< o_i - r g_i of the sticking springs not glued
-  std::set<Key> backward_keys_;      ///< o_i + r g_i of the same
-  /// The key inserted last (none once erased): where the next of a run goes. A copied or moved
-  /// row starts without, its iterator pointing into the other row's set.
-  struct KeyHint {
-    std::optional<std::set<Key>::iterator> at;
-    KeyHint() = default;
-    KeyHint(const KeyHint&) {}
-    KeyHint& operator=(const KeyHint&) {
-      at.reset();
-      return *this;
-    }
-  };
-  KeyHint forward_hint_;
-  KeyHint backward_hint_;
-  std::array<std::set<std::int64_t>, 2> sliders_;  ///< not glued, sliding along +x, -x
-  std::array<CompensatedSum, 2> slider_images_;    ///< their sums of g_i [m]
-  std::int64_t glued_sliding_ = 0;                 ///< glued `coulomb` springs sliding
+  /// o_i - r g_i and o_i + r g_i of the sticking springs not glued: flat, no allocation per
+  /// spring (issue 21's speed).
+  SlipKeys keys_;
+  std::array<IndexSet, 2> sliders_;              ///< not glued, sliding along +x, -x
+  std::array<CompensatedSum, 2> slider_images_;  ///< their sums of g_i [m]
+  std::int64_t glued_sliding_ = 0;               ///< glued `coulomb` springs sliding
 };
 
 }  // namespace mdrsim

@@ -79,6 +79,7 @@ class ProgramRow {
   /// Coulomb friction on every spring in contact from now on (a row with nothing in contact).
   void enable_friction(const FrictionSettings& settings) {
     friction_.emplace(material_, settings, spacing_);
+    friction_->reserve(reference_springs_);
   }
   const FrictionRow* friction() const { return friction_ ? &*friction_ : nullptr; }
   /// Moves the friction row along `motion` to t (no friction event in between); returns the

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "engine/reference/friction_reference.hpp"
@@ -255,8 +256,8 @@ TEST(FrictionRow, ASpringWhoseGlueLetsGoSlipsToItsLimit) {
 }
 
 TEST(FrictionRow, ACopyGoesOnLikeTheOriginal) {
-  // The row keeps iterators into its own ordered keys as insertion hints: a copy must not use
-  // the original's. Both go on along the same path and must agree exactly.
+  // A copy keeps its own keys and sliders (the row once kept iterators into its ordered keys, a
+  // copy's pointing into the original's). Both go on along the same path and must agree exactly.
   const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
   FrictionRow original = pressed_row(100);
   double work = 0.0;
@@ -432,6 +433,83 @@ TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
     }
     EXPECT_EQ(events_row, events_oracle);
     EXPECT_GT(events_row, 2 * n);
+  }
+}
+
+TEST(FrictionRow, RandomNonMonotoneMotionsMatchTheBruteForceRow) {
+  // Springs with images in random order along the row (keys not monotone in i, unlike a
+  // parabola's) sheared and pressed along random legs, each reversing its slips anywhere in the
+  // row: the indexed keys must find the events each spring's own law finds, one for one, and
+  // the forces of the brute-force return map. All images lie below the smallest d, so the
+  // contact set stays whole. At 80 springs the keys make fewer runs of neighbours than SlipKeys
+  // keeps as runs; at 600 they make some 200 and the keys become a tree.
+  const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
+  struct Case {
+    std::int64_t n;
+    unsigned seed;
+  };
+  for (const auto [n, seed] : {Case{80, 1}, Case{80, 2}, Case{80, 3}, Case{80, 4}, Case{600, 5}}) {
+    const double dx = kA / static_cast<double>(n);
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    FrictionRow row(kMaterial, {kMu}, dx);
+    SpringBySpringRow oracle{{kMu}, dx, {}, {}, 0};
+    std::vector<double> images;
+    for (std::int64_t i = 1; i <= n; ++i) {
+      images.push_back(0.5 * kD * unit(random));
+      row.touch(images.back(), 0.0);
+      oracle.states.push_back({0.0, 0});
+      oracle.images.push_back(images.back());
+    }
+    fr::BruteForceRow brute(images, dx, kModulus, kShearModulus, kMu);
+    brute.move_to(kD, 0.0, 1);  // every spring touches unstretched at u = 0
+    double limit_sum = 0.0;     // the largest limits along the path, both halves [N]
+    for (const double g : images) limit_sum += 2.0 * kMu * kModulus * dx * (1.3 * kD - g);
+    const std::int64_t steps = 20000;
+    double d = kD;
+    double u = 0.0;
+    double dissipated = 0.0;
+    double dissipated_oracle = 0.0;
+    double brute_bound = 0.0;
+    double work = 0.0;
+    std::int64_t events = 0;
+    std::int64_t events_oracle = 0;
+    for (int leg = 0; leg < 12; ++leg) {
+      const double d1 = (0.6 + 0.7 * unit(random)) * kD;
+      const double u1 = (2.0 * unit(random) - 1.0) * 1.5 * us;
+      const LinearMotion motion{0.0, d, u, d1 - d, u1 - u};
+      dissipated += drive(row, motion, 1.0, work, &events);
+      dissipated_oracle += oracle.drive(motion, 1.0, events_oracle);
+      brute.move_to(d1, u1, steps);
+      // As in MatchesTheBruteForceRowUnderAChangingNormalLoad: one step's slip per spring and leg.
+      brute_bound += limit_sum *
+                     (std::abs(u1 - u) + kMu * kModulus / kShearModulus * std::abs(d1 - d)) /
+                     static_cast<double>(steps);
+      d = d1;
+      u = u1;
+      const double scale = 2.0 * kMu * kModulus * kD * kA;  // of F_x
+      EXPECT_NEAR(row.tangential_force(d, u), brute.tangential_force(), 1e-12 * scale) << seed;
+      EXPECT_NEAR(dissipated, brute.dissipated(), brute_bound) << seed;
+      EXPECT_NEAR(row.tangential_force(d, u), oracle.tangential_force(d, u), 1e-12 * scale);
+      EXPECT_NEAR(dissipated, dissipated_oracle, 1e-12 * scale * us);
+      std::int64_t sliding = 0;
+      std::int64_t first_sliding = 0;
+      for (std::int64_t i = 1; i <= n; ++i) {
+        const auto& expected = oracle.states[static_cast<std::size_t>(i - 1)];
+        EXPECT_EQ(row.spring(i).sliding, expected.sliding) << seed << " " << i;
+        EXPECT_NEAR(row.spring(i).offset, expected.offset, 1e-12 * us) << seed << " " << i;
+        if (expected.sliding != 0) {
+          ++sliding;
+          if (first_sliding == 0) first_sliding = i;
+        }
+      }
+      EXPECT_EQ(row.springs_sliding(), sliding);
+      EXPECT_EQ(row.stick_radius(), row.position(first_sliding == 0 ? n : first_sliding - 1));
+      if (HasFailure()) return;
+    }
+    EXPECT_EQ(events, events_oracle) << seed;
+    EXPECT_GT(events, 2 * n) << seed;  // slips and sticks all over the row did happen
+    EXPECT_GT(dissipated, 100.0 * brute_bound) << seed;
   }
 }
 
