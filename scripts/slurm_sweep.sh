@@ -16,7 +16,8 @@
 # A task runs its shard with --resume: a requeued task (node failure, preemption) or a
 # resubmitted array keeps every row its shard had finished. At the time limit SLURM sends
 # SIGTERM: mdrsim keeps the finished rows and exits 143. The merge runs anyway; it names the
-# shards that are missing or unfinished and exits 1 without writing OUT. Submit the same
+# shards that are missing (exit 1) or unfinished (exit 2, mdrsim merge's) without writing
+# OUT. Submit the same
 # array again to finish them, then merge by hand:
 #   bash path/to/slurm_sweep.sh merge OUT.csv 16
 # The two steps also run without SLURM, e.g. to try them:
