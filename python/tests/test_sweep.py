@@ -194,7 +194,7 @@ def test_log_lines_name_their_row(capfd):
     # 20 springs do not resolve the critical point: each row warns, and its warning says
     # which row it is, as the command's do.
     scene = mdrsim.Scene.from_file("scenes/fig3a_fixed_grips.toml").with_values(
-        {"discretization.springs": 20})
+        {"discretization": {"springs": 20}})  # a plain row (the scene extrapolates)
     mdrsim.set_log_level("warn")
     try:
         result = mdrsim.sweep(scene, {"loading.tangential.displacement": [0, 4e-6]})

@@ -114,7 +114,7 @@ TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
   // 20 springs do not resolve the critical point: every row warns once.
   const auto r = run_mdrsim(
       "sweep scenes/fig3a_fixed_grips.toml --vary loading.tangential.displacement=0,4e-6 "
-      "--vary detachment.criterion=mode-mixed,stress --set discretization.springs=20 "
+      "--vary detachment.criterion=mode-mixed,stress --set 'discretization={springs=20}' "
       "--threads 2 --log-level warn");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = csv_rows(r.out);
@@ -142,7 +142,7 @@ TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
 TEST(SweepLogs, ShardRowsKeepTheirIndexInTheWholeGrid) {
   const auto r = run_mdrsim(
       "sweep scenes/fig3a_fixed_grips.toml --vary loading.tangential.displacement=0,2e-6,4e-6 "
-      "--set discretization.springs=20 --shard 1/2 --log-level warn");
+      "--set 'discretization={springs=20}' --shard 1/2 --log-level warn");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("[warning] row 1 of 3 (loading.tangential.displacement=2e-06): "),
             std::string::npos)
@@ -152,7 +152,7 @@ TEST(SweepLogs, ShardRowsKeepTheirIndexInTheWholeGrid) {
 
 TEST(SweepLogs, ARunAloneIsNotLabelled) {
   const auto r = run_mdrsim(
-      "run scenes/fig3a_fixed_grips.toml --set discretization.springs=20 --log-level warn");
+      "run scenes/fig3a_fixed_grips.toml --set 'discretization={springs=20}' --log-level warn");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.rfind("[warning] the critical point has only", 0), 0u) << r.err;
 }
