@@ -2,8 +2,10 @@
 // engine/reference/program_reference (derived apart from the engine), and its refusals.
 #include "engine/run/run_continuum_program.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -205,6 +207,61 @@ TEST(ContinuumProgram, RefusesWhatItCannotAnswerExactly) {
   compliant.replace(compliant.find(retract), retract.size(),
                     "normal = { control = \"compliant\", stiffness = 100.0, by = -1.0e-6 }");
   refused(compliant, "drives through a machine spring");
+}
+
+}  // namespace
+}  // namespace mdrsim
+
+namespace mdrsim {
+namespace {
+
+// Beyond the parabola's closed forms: the sphere, a cone and a power law, glued on touch, at
+// dgamma_a = 0.3 dgamma and reversibly, retracted under fixed grips and a fixed load, against
+// the spring row of the same program at rtol 1e-5 (its own estimates, apart from the route):
+// the critical forces within the row's rtol, the works where the row vouches for its work.
+TEST(ContinuumProgram, AgreesWithTheRowOnOtherProfiles) {
+  struct Case {
+    const char* profile;
+    double approach_fraction;  ///< dgamma_a / dgamma
+    const char* retract;       ///< the retract stage's normal table
+    double depth;              ///< [m]
+  };
+  const Case cases[] = {
+      {"type = \"sphere\"\nradius = 0.01", 0.3, "control = \"fixed-grips\", by = -1e-6", 1.2e-5},
+      {"type = \"sphere\"\nradius = 0.01", 1.0, "control = \"fixed-load\", by = -1e-3", 6e-6},
+      {"type = \"cone\"\nslope_angle_deg = 5.0", 1.0, "control = \"fixed-grips\", by = -1e-6",
+       1e-4},
+      {"type = \"cone\"\nslope_angle_deg = 5.0", 0.0, "control = \"fixed-load\", by = -1e-3", 1e-4},
+      {"type = \"power_law\"\ncoefficient = 3e3\nexponent = 1.5", 0.0,
+       "control = \"fixed-load\", by = -1e-3", 1.5e-5},
+      {"type = \"power_law\"\ncoefficient = 3e3\nexponent = 1.5", 0.3,
+       "control = \"fixed-grips\", by = -1e-6", 8e-6},
+  };
+  for (const Case& c : cases) {
+    const std::string program = fmt::format(
+        "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+        "approach_work_of_adhesion = {}\n[profile]\n{}\n"
+        "[[loading.stage]]\nname = \"approach\"\nnormal = {{ control = \"fixed-grips\", to = {} "
+        "}}\n[[loading.stage]]\nname = \"retract\"\nnormal = {{ {} }}\nuntil = \"separation\"\n",
+        0.05 * c.approach_fraction, c.profile, c.depth, c.retract);
+    SCOPED_TRACE(program);
+    const RunResult continuum =
+        run_text(program + "[discretization]\nrtol = 1e-10\n[solver]\nmethod = \"continuum\"\n");
+    const RunResult row =
+        run_text(program + "[discretization]\nrtol = 1e-5\n[solver]\nmethod = \"event\"\n");
+    ASSERT_EQ(continuum.status, row.status);
+    ASSERT_TRUE(continuum.critical && row.critical);
+    EXPECT_NEAR(continuum.critical->normal_force, row.critical->normal_force,
+                1e-5 * std::abs(row.critical->normal_force));
+    EXPECT_EQ(continuum.jumps.size(), row.jumps.size());
+    const auto& covers = row.accuracy.covers;
+    if (std::find(covers.begin(), covers.end(), "work") != covers.end()) {
+      // Relative to the path's scale, as rtol is: a cycle's net work may nearly cancel.
+      double scale = 0.0;
+      for (const StageRecord& stage : row.stages) scale += std::abs(stage.work.normal);
+      EXPECT_NEAR(continuum.work->normal, row.work->normal, 1e-5 * scale);
+    }
+  }
 }
 
 }  // namespace
