@@ -35,13 +35,15 @@ struct Piece {
   double e0 = 0.0, e1 = 0.0;  ///< pinned: the stretches; empty: the indentations [m]
 };
 
-/// One stage on the continuum: the branch of its normal control (the tangential axis held
-/// at zero), the advancing and receding limits, and the work and pieces it went through.
+/// One stage on the continuum: the branch of its normal control with the tangential axis
+/// held (every glued spring carries the same u_x: the glue took no spring after u_x moved),
+/// the advancing and receding limits, and the work and pieces it went through.
 class ContinuumStage {
  public:
-  ContinuumStage(const Scene& scene, const AffineConstraint& normal)
-      : branch_(*scene.profile, *scene.criterion, scene.material, normal,
-                FixedGripsController().constraint(), 0.0),
+  ContinuumStage(const Scene& scene, const AffineConstraint& normal,
+                 const AffineConstraint& tangential, double tangential_held)
+      : branch_(*scene.profile, *scene.criterion, scene.material, normal, tangential,
+                tangential_held),
         advancing_per_radius_(
             hess_scale(scene.material.approach_work_of_adhesion, scene.material.effective_modulus)),
         modulus_(scene.material.effective_modulus) {}
@@ -56,6 +58,9 @@ class ContinuumStage {
       BranchState s;
       s.indentation = disk.indentation;
       s.control = branch_.normal().displacement_coefficient * disk.indentation;
+      // Out of contact fixed grips hold u_x; a tangential fixed load has flown off already.
+      if (is_fixed_grips(branch_.tangential()))
+        s.tangential_displacement = branch_.tangential_held();
       return s;
     }
     return branch_.state(disk.radius, branch_.profile().mdr_image(disk.radius) - disk.indentation);
@@ -106,9 +111,13 @@ class ContinuumStage {
   /// The machine's work from `from` to `to` with the front pinned or moving: the stored
   /// energy's change, plus the energy the receding springs take away, minus what gluing at
   /// the advancing limit gives (E* e_a(x)^2 per unit of x, both halves: 2 pi x dgamma_a).
-  double work(const Disk& from, const Disk& to, double& error) const {
-    const Estimated before = stored_energy(branch_, state(from));
-    const Estimated after = stored_energy(branch_, state(to));
+  /// A tangential fixed load moves u_x with the radius: its share is the held force times
+  /// that move, the normal axis the rest.
+  AxisWork work(const Disk& from, const Disk& to, double& error) const {
+    const BranchState s0 = state(from);
+    const BranchState s1 = state(to);
+    const Estimated before = stored_energy(branch_, s0);
+    const Estimated after = stored_energy(branch_, s1);
     error += before.error + after.error;
     double w = after.value - before.value;
     if (to.radius < from.radius) {
@@ -120,7 +129,13 @@ class ContinuumStage {
       w -= modulus_ * advancing_per_radius_ * 0.5 *
            (to.radius * to.radius - from.radius * from.radius);
     }
-    return w;
+    AxisWork split;
+    if (holds_force(branch_.tangential())) {
+      split.tangential =
+          branch_.tangential_held() * (s1.tangential_displacement - s0.tangential_displacement);
+    }
+    split.normal = w - split.tangential;
+    return split;
   }
   long long iterations() const { return iterations_ + branch_.iterations(); }
 
@@ -138,6 +153,7 @@ struct ProgramWalk {
   Disk disk;
   bool retracted = false;  ///< a stage has let springs go
   bool flying = false;     ///< a fixed load lost the contact: the indenter separated
+  bool stopped = false;    ///< the route cannot follow what comes next (a warning says why)
   RunResult result;
   double work_error = 0.0;
   double critical_error = 0.0;
@@ -155,7 +171,8 @@ void note_state(ProgramWalk& w, const BranchState& s) {
 
 /// Presses the disk from control c0 up to c1 (fixed grips from an empty contact: touch at
 /// d = 0, then the jump-in where the advancing limit lets the front glue at once).
-void press(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1, double& stage_work) {
+void press(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
+           AxisWork& stage_work) {
   Disk& disk = w.disk;
   if (disk.radius == 0.0 && !is_fixed_grips(st.branch().normal())) {
     // A compressive fixed load on an empty contact: the indenter falls in at F = 0 (no work)
@@ -224,7 +241,7 @@ void press(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1, do
 /// "separation"`): pinned until the boundary reaches its let-go stretch, then the receding
 /// branch with its partial jumps, and the jump-out at the fold.
 void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
-             double& stage_work) {
+             AxisWork& stage_work) {
   Disk& disk = w.disk;
   const bool grips = is_fixed_grips(st.branch().normal());
   if (disk.radius == 0.0) {
@@ -283,7 +300,7 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
     disk = end;
     if (k < p.partial_jumps.size()) {
       const ContinuumJump& jump = p.partial_jumps[k];
-      stage_work += jump_work(st.branch(), jump.from, jump.to).normal;
+      stage_work += jump_work(st.branch(), jump.from, jump.to);
       w.result.jumps.push_back({.stage = stage.name,
                                 .inward = false,
                                 .critical = jump.from.snapshot(),
@@ -295,6 +312,20 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
   // The contact is lost: at a fold (a jump) or by a smooth peel to a -> 0.
   const BranchState last = p.critical;
   w.result.critical_stage = stage.name;
+  if (p.end == ContinuumPullOff::End::shear_off ||
+      p.end == ContinuumPullOff::End::shear_off_at_application) {
+    // The glue breaks unstretched where its springs are pressed in: they stay in contact
+    // without glue, a disk the route does not follow. Stop there, and say so.
+    w.result.status = RunStatus::step_limit;
+    w.stopped = true;
+    disk = {last.contact_radius, last.indentation};
+    w.result.warnings.push_back(fmt::format(
+        "stage '{}': the tangential load breaks the glue unstretched at a = {:.6g} m with "
+        "springs still pressed in; the continuum route does not follow them without glue, and "
+        "the program stops there (solver.method = \"event\" follows it)",
+        stage.name, last.contact_radius));
+    return;
+  }
   if (p.end == ContinuumPullOff::End::smooth_peel) {
     w.result.status = RunStatus::no_instability;
     w.result.critical.reset();
@@ -305,7 +336,13 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
     w.peak_error = std::max(w.peak_error, p.critical_error);
   }
   JumpRecord out{.stage = stage.name, .inward = false, .critical = last.snapshot()};
-  if (grips) {
+  const AffineConstraint& tangential = st.branch().tangential();
+  if (grips && holds_force(tangential) && st.branch().tangential_held() != 0.0) {
+    out.end = JumpEnd::sliding;  // nothing holds the tangential fixed load: it slides away
+    w.result.sliding = true;
+    w.flying = true;
+    disk = {0.0, last.indentation};
+  } else if (grips) {
     BranchState empty;
     empty.indentation = last.indentation;
     empty.control = last.control;
@@ -317,7 +354,7 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
     disk = {0.0, last.indentation};
   }
   if (p.end != ContinuumPullOff::End::smooth_peel) w.result.jumps.push_back(out);
-  if (grips && std::isfinite(c1) && !stage.until_separation) {
+  if (grips && !w.flying && std::isfinite(c1) && !stage.until_separation) {
     st.pieces.push_back({Piece::Kind::empty, 0.0, 0.0, disk.indentation, c1});
     disk.indentation = c1;
   }
@@ -368,17 +405,67 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
   w.result.accuracy.route = Accuracy::Route::continuum;
   w.result.status = RunStatus::completed;
   AffineConstraint control = FixedGripsController().constraint();
+  AffineConstraint tangential = FixedGripsController().constraint();
+  double tangential_held = 0.0;
   std::vector<ContinuumStage> stages;
+  std::vector<const Stage*> stage_of;  ///< the program's stage of each of `stages`
   stages.reserve(scene.program->stages.size());
   std::vector<std::string> not_run;
   double largest_radius = 0.0;
   for (const Stage& stage : scene.program->stages) {
-    if (w.flying) {
+    if (w.flying || w.stopped) {
       not_run.push_back(stage.name);
       continue;
     }
     if (stage.normal) control = stage.normal->controller->constraint();
-    ContinuumStage& st = stages.emplace_back(scene, control);
+    AxisWork stage_work;
+    if (stage.tangential) {
+      // The normal axis holds (continuum_program_refusal): the disk keeps its radius and
+      // stretch while u_x moves on the uniformly stretched glue, F_x = 2 G* a u_x.
+      const ContinuumStage before(scene, control, tangential, tangential_held);
+      const BranchState s0 = before.state(w.disk);
+      const AffineConstraint next = stage.tangential->controller->constraint();
+      const double a = w.disk.radius;
+      const double t0 = next.displacement_coefficient * s0.tangential_displacement +
+                        next.force_coefficient * s0.tangential_force;
+      double t1 = t0;
+      if (stage.tangential->motion == StageAxis::Motion::to) t1 = stage.tangential->value;
+      if (stage.tangential->motion == StageAxis::Motion::by) t1 = t0 + stage.tangential->value;
+      tangential = next;
+      tangential_held = t1;
+      const ContinuumStage after(scene, control, tangential, tangential_held);
+      const BranchState s1 = after.state(w.disk);
+      const double shear = scene.material.effective_shear_modulus;
+      stage_work.tangential = a * shear *
+                              (s1.tangential_displacement * s1.tangential_displacement -
+                               s0.tangential_displacement * s0.tangential_displacement);
+      // The boundary holds along the whole ramp if it holds at its end (the criterion's
+      // holding set is convex in (elongation, u_x), and the start holds).
+      if (a > 0.0 && scene.criterion->margin(
+                         {std::max(s1.stretch, 0.0), s1.tangential_displacement, a}) <= 0.0) {
+        w.result.status = RunStatus::step_limit;
+        w.stopped = true;
+        w.result.critical_stage = stage.name;
+        w.result.warnings.push_back(fmt::format(
+            "stage '{}': the tangential load lets the glue go as it is applied (at a = {:.6g} "
+            "m); the continuum route does not follow a front receding under a moving "
+            "tangential load, and the program stops there (solver.method = \"event\" "
+            "follows it)",
+            stage.name, a));
+        stage_work = AxisWork{};
+        StageRecord record{stage.name, s0.snapshot(), stage_work};
+        w.result.stages.push_back(record);
+        continue;
+      }
+      if (a == 0.0 && holds_force(tangential) && tangential_held != 0.0) {
+        // A tangential fixed load with nothing in contact: the indenter slides away.
+        w.result.sliding = true;
+        w.flying = true;
+        w.result.critical_stage = stage.name;
+      }
+    }
+    ContinuumStage& st = stages.emplace_back(scene, control, tangential, tangential_held);
+    stage_of.push_back(&stage);
     const double c0 = st.state(w.disk).control;
     double c1 = c0;
     if (stage.normal && stage.normal->motion == StageAxis::Motion::to) c1 = stage.normal->value;
@@ -395,7 +482,6 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
         c1 = c0;
       }
     }
-    double stage_work = 0.0;
     if (c1 > c0) {
       if (w.retracted && !scene.program->rebinding) {
         throw SceneError(fmt::format(
@@ -413,7 +499,7 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
     note_state(w, end);
     StageRecord record{stage.name, end.snapshot(), {}};
     if (w.flying) record.end = w.result.critical.value_or(end.snapshot());
-    record.work.normal = stage_work;
+    record.work = stage_work;
     w.result.stages.push_back(record);
     if (!observers.empty()) {
       Event e{.kind = EventKind::stage_end, .state = record.end};
@@ -422,15 +508,27 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
     }
   }
   if (!not_run.empty()) {
-    w.result.warnings.push_back(fmt::format(
-        "stage '{}': the normal fixed load (F = {:.6g} N) lost what held it and the indenter "
-        "separates: the program ends at its critical point; stages not run: '{}'",
-        w.result.critical_stage, w.result.critical ? w.result.critical->normal_force : 0.0,
-        fmt::join(not_run, "', '")));
+    const std::string stages_not_run = fmt::format("'{}'", fmt::join(not_run, "', '"));
+    if (w.stopped) {
+      w.result.warnings.push_back(
+          fmt::format("the program stopped in stage '{}'; stages not run: {}",
+                      w.result.critical_stage, stages_not_run));
+    } else if (w.result.sliding) {
+      w.result.warnings.push_back(fmt::format(
+          "stage '{}': the tangential fixed load lost what held it and the indenter slides "
+          "away: the program ends at its critical point; stages not run: {}",
+          w.result.critical_stage, stages_not_run));
+    } else {
+      w.result.warnings.push_back(fmt::format(
+          "stage '{}': the normal fixed load (F = {:.6g} N) lost what held it and the indenter "
+          "separates: the program ends at its critical point; stages not run: {}",
+          w.result.critical_stage, w.result.critical ? w.result.critical->normal_force : 0.0,
+          stages_not_run));
+    }
   }
   std::vector<std::pair<const Stage*, ContinuumStage*>> walked;
   for (std::size_t k = 0; k < stages.size(); ++k) {
-    walked.emplace_back(&scene.program->stages[k], &stages[k]);
+    walked.emplace_back(stage_of[k], &stages[k]);
   }
   emit_samples(walked, samples, observers);
 
@@ -441,7 +539,7 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
   for (const ContinuumStage& st : stages) iterations += st.iterations();
   w.result.counts.root_iterations = iterations;
   w.result.accuracy.outer_radius = largest_radius;
-  w.result.accuracy.work_error_estimate = AxisWork{w.work_error, 0.0};
+  w.result.accuracy.work_error_estimate = AxisWork{w.work_error, w.work_error};
   if (w.result.critical) w.result.accuracy.critical_error_estimate = w.critical_error;
   if (w.result.peak) w.result.accuracy.peak_error_estimate = w.peak_error;
   w.result.accuracy.covers = {"critical.normal_force",
@@ -455,7 +553,9 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
   // The work relative to the path's scale, the sum of the stages' magnitudes: a cycle's net
   // work may cancel to nothing (no adhesion) while its parts are of that size.
   double work_scale = 1e-300;
-  for (const StageRecord& stage : w.result.stages) work_scale += std::abs(stage.work.normal);
+  for (const StageRecord& stage : w.result.stages) {
+    work_scale += std::abs(stage.work.normal) + std::abs(stage.work.tangential);
+  }
   bool met = w.work_error <= rtol * work_scale;
   if (w.result.critical) {
     met = met &&

@@ -34,6 +34,7 @@ std::optional<std::string> continuum_program_refusal(const Scene& scene) {
   double held = 0.0;  ///< the normal held value [m or N], where `known`
   bool known = true;
   bool may_have_let_go = false;
+  bool tangential_moved = false;
   for (const Stage& stage : scene.program->stages) {
     enum class Direction { none, press, pull, unknown } direction = Direction::none;
     if (stage.normal) {
@@ -61,6 +62,16 @@ std::optional<std::string> continuum_program_refusal(const Scene& scene) {
     }
     const bool presses = direction == Direction::press || direction == Direction::unknown;
     const bool pulls = direction == Direction::pull || direction == Direction::unknown;
+    if (presses && tangential_moved) {
+      return fmt::format(
+          "stage '{}' may press the contact after the tangential axis moved: the springs it "
+          "glues would carry another tangential stretch than the glue's, which the continuum "
+          "route does not follow",
+          printable(stage.name));
+    }
+    if (stage.tangential && stage.tangential->motion != StageAxis::Motion::hold) {
+      tangential_moved = true;
+    }
     if (presses && may_have_let_go && !scene.program->rebinding) {
       return fmt::format(
           "stage '{}' may press the contact again after springs let go: without "
@@ -72,10 +83,24 @@ std::optional<std::string> continuum_program_refusal(const Scene& scene) {
   }
   for (const Stage& stage : scene.program->stages) {
     if (stage.tangential) {
-      return fmt::format(
-          "stage '{}' drives the tangential axis: the continuum route runs normal-only "
-          "programs",
-          printable(stage.name));
+      if (stage.tangential->controller->drives_through_spring()) {
+        return fmt::format(
+            "stage '{}' drives the tangential axis through a machine spring (control = "
+            "\"{}\"): the continuum route runs fixed grips and fixed loads",
+            printable(stage.name), printable(stage.tangential->control));
+      }
+      if (stage.until_separation) {
+        return fmt::format(
+            "stage '{}' shears until separation: a front receding under a moving tangential "
+            "load is the row's, not the continuum route's",
+            printable(stage.name));
+      }
+      if (stage.normal && stage.normal->motion != StageAxis::Motion::hold) {
+        return fmt::format(
+            "stage '{}' moves the tangential axis together with the normal one: the "
+            "continuum route moves one axis per stage",
+            printable(stage.name));
+      }
     }
     if (stage.normal && stage.normal->controller->drives_through_spring()) {
       return fmt::format(

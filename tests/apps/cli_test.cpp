@@ -236,13 +236,14 @@ TEST_F(Cli, ContinuumRefusesAProgramThatShears) {
   const std::string scene = bad_scene(
       "[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = \"fixed-load\" }\n"
       "[discretization]\nsprings = 100\n",
-      "[[loading.stage]]\ntangential = { control = \"fixed-grips\", to = 1e-6 }\n"
-      "[solver]\nmethod = \"continuum\"\n");
+      "[[loading.stage]]\ntangential = { control = \"fixed-grips\", by = 1e-6 }\n"
+      "until = \"separation\"\n[solver]\nmethod = \"continuum\"\n");
   const std::string json = path("out.json");
   const auto r = run_mdrsim(fmt::format("run {} --json {}", scene, json));
-  EXPECT_TRUE(bad_input(r, scene + ":11:10: solver.method: stage 'stage 1' drives the "
-                                   "tangential axis: the continuum route runs normal-only "
-                                   "programs; use method = \"event\" (docs/continuum.md)"));
+  EXPECT_TRUE(bad_input(r, scene + ":12:10: solver.method: stage 'stage 1' shears until "
+                                   "separation: a front receding under a moving tangential "
+                                   "load is the row's, not the continuum route's; use method = "
+                                   "\"event\" (docs/continuum.md)"));
   EXPECT_TRUE(nothing_at(json));
 }
 

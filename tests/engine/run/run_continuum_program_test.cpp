@@ -198,7 +198,7 @@ TEST(ContinuumProgram, RefusesWhatItCannotAnswerExactly) {
       EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
     }
   };
-  refused(on_continuum(read_text("shear_ramp_fixed_grips.toml")), "drives the tangential axis");
+  refused(on_continuum(read_text("shear_ramp_fixed_grips.toml")), "shears until separation");
   // Known only as it runs: the reload presses back springs that let go, unglued.
   refused(on_continuum(read_text("reload_rebinding_false.toml")),
           "without loading.rebinding = true they push back unglued");
@@ -262,6 +262,82 @@ TEST(ContinuumProgram, AgreesWithTheRowOnOtherProfiles) {
       EXPECT_NEAR(continuum.work->normal, row.work->normal, 1e-5 * scale);
     }
   }
+}
+
+}  // namespace
+}  // namespace mdrsim
+
+namespace mdrsim {
+namespace {
+
+/// The paper's path on the parabola (scenes/fig3a_*: glued at 2 a0, d_p = 12 d0) with the
+/// tangential axis under `tangential` (a table's keys), pulled off under `normal`.
+std::string paper_path(const std::string& normal, const std::string& tangential, bool program) {
+  std::string s =
+      "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n";
+  if (program) {
+    s += fmt::format(
+        "[[loading.stage]]\nname = \"preload\"\nnormal = {{ control = \"fixed-grips\", to = "
+        "2.713781792333937e-5 }}\n[[loading.stage]]\nname = \"tangential\"\nnormal = {{ "
+        "control = \"{}\" }}\ntangential = {{ {} }}\n[[loading.stage]]\nname = "
+        "\"pull-off\"\nnormal = {{ by = {} }}\nuntil = \"separation\"\n",
+        normal, tangential, normal == "fixed-load" ? "-1e-3" : "-1e-6");
+  } else {
+    std::string shorthand = tangential;
+    shorthand.replace(
+        shorthand.find("to ="), 4,
+        tangential.find("fixed-load") != std::string::npos ? "force =" : "displacement =");
+    s += fmt::format(
+        "[loading]\npreload = {{ contact_radius = 5.209397078678047e-4 }}\nnormal = {{ control "
+        "= \"{}\" }}\ntangential = {{ {} }}\n",
+        normal, shorthand);
+  }
+  return s + "[discretization]\nrtol = 1e-10\n[solver]\nmethod = \"continuum\"\n";
+}
+
+// SPEC: the shorthand is a program. On the continuum route its three stages, with the
+// tangential load applied on the glued disk and held through the pull-off, give the
+// shorthand's critical point and works: the same branch, to the last bit here.
+TEST(ContinuumProgram, ThePaperPathAsAProgramIsTheShorthand) {
+  for (const char* normal : {"fixed-grips", "fixed-load"}) {
+    for (const char* tangential : {"control = \"fixed-grips\", to = 6e-6",
+                                   "control = \"fixed-load\", to = 2.356194490192345e-3"}) {
+      SCOPED_TRACE(std::string(normal) + " / " + tangential);
+      const RunResult shorthand = run_text(paper_path(normal, tangential, false));
+      const RunResult program = run_text(paper_path(normal, tangential, true));
+      ASSERT_EQ(program.status, shorthand.status);
+      ASSERT_TRUE(program.critical && shorthand.critical);
+      EXPECT_NEAR(program.critical->normal_force, shorthand.critical->normal_force,
+                  1e-12 * std::abs(shorthand.critical->normal_force));
+      EXPECT_NEAR(program.critical->tangential_force, shorthand.critical->tangential_force,
+                  1e-12 * std::abs(shorthand.critical->tangential_force));
+      ASSERT_TRUE(program.work && shorthand.work);
+      const double scale = std::abs(shorthand.stages[0].work.normal);
+      EXPECT_NEAR(program.work->normal, shorthand.work->normal, 1e-10 * scale);
+      EXPECT_NEAR(program.work->tangential, shorthand.work->tangential, 1e-10 * scale);
+    }
+  }
+}
+
+// A tangential load that lets the glue go as it is applied: the front would recede under a
+// moving u_x, which the route does not follow. The program stops there with a warning
+// (the shorthand reports the glue's strength: shear-off at application).
+TEST(ContinuumProgram, AGlueBrokenAsTheShearIsAppliedStopsTheProgram) {
+  const RunResult r =
+      run_text(paper_path("fixed-grips", "control = \"fixed-grips\", to = 3e-5", true));
+  EXPECT_EQ(r.status, RunStatus::step_limit);
+  EXPECT_FALSE(r.critical);
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_NE(r.warnings[0].find("lets the glue go as it is applied"), std::string::npos)
+      << r.warnings[0];
+  EXPECT_NE(
+      r.warnings[1].find("the program stopped in stage 'tangential'; stages not run: 'pull-off'"),
+      std::string::npos)
+      << r.warnings[1];
+  const RunResult shorthand =
+      run_text(paper_path("fixed-grips", "control = \"fixed-grips\", to = 3e-5", false));
+  EXPECT_EQ(shorthand.status, RunStatus::shear_off);
 }
 
 }  // namespace

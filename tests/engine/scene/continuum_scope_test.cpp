@@ -96,8 +96,8 @@ TEST(ContinuumScope, SpringsOrExtrapolationStayOnTheRow) {
   EXPECT_EQ(test::build_scene_text(extrapolated).solver.method, SolverMethod::event);
 }
 
-// A normal loading program takes the route with rtol alone; one that shears, or has
-// friction, stays on the row.
+// A normal loading program takes the route with rtol alone; one that shears until
+// separation, or has friction, stays on the row.
 TEST(ContinuumScope, NormalProgramsTakeTheRouteAndShearingOnesStayOnTheRow) {
   const std::string text =
       "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 100.0\n"
@@ -111,7 +111,7 @@ TEST(ContinuumScope, NormalProgramsTakeTheRouteAndShearingOnesStayOnTheRow) {
   const Scene sheared = test::build_scene_text(
       text +
       "[[loading.stage]]\nname = \"shear\"\ntangential = { control = \"fixed-grips\", "
-      "to = 1e-6 }\n");
+      "by = 1e-6 }\nuntil = \"separation\"\n");
   EXPECT_FALSE(continuum_answers(sheared));
   EXPECT_EQ(sheared.solver.method, SolverMethod::event);
   const Scene rubbing = test::build_scene_text(text + "[friction]\ncoefficient = 0.5\n");
