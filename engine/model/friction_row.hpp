@@ -75,6 +75,19 @@ class FrictionRow {
   /// sliding spring; the contact radius x_m when none slides [m].
   double stick_radius() const;
 
+  /// Whether F_x depends on d at a fixed u_x: only through a sliding spring's limit mu f_z.
+  /// Without one, F_x(d, u_x) is the same number for every finite d.
+  bool force_follows_indentation() const {
+    return glued_sliding_ > 0 || !sliders_[0].empty() || !sliders_[1].empty();
+  }
+  /// Whether next_event can find anything along `motion`: not when nothing slides, no glued
+  /// spring can slip (GluedLaw::unlimited) and p+ falls or stays (p- rises or stays) with u_x
+  /// still and d rising or still (a press: every touch of it would ask). Inline, so that the
+  /// program loop pays no call for it.
+  bool may_change(const LinearMotion& motion) const {
+    return settings_.glued == GluedLaw::coulomb || force_follows_indentation() ||
+           !(motion.tangential_rate == 0.0 && motion.indentation_rate >= 0.0);
+  }
   /// The first friction event of any spring along `motion` in [motion.start, end] (apply it
   /// and ask again at the same t for the next of a cascade).
   std::optional<RowFrictionEvent> next_event(const LinearMotion& motion, double end) const;

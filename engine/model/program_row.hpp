@@ -85,7 +85,10 @@ class ProgramRow {
   /// Moves the friction row along `motion` to t (no friction event in between); returns the
   /// work its slips dissipated [J].
   double advance_friction(const LinearMotion& motion, double t) {
-    tangential_cached_ = false;
+    // The held values' changes have dropped what they move (set_normal_held,
+    // set_tangential_held); the advance itself changes F_x(d, u_x) only through the sliding
+    // springs. Nothing sliding (a press's touches), the equilibrium stays as it is.
+    if (friction_->force_follows_indentation()) tangential_cached_ = false;
     return friction_->advance(motion, t);
   }
   void apply_friction(const RowFrictionEvent& event) {
@@ -110,7 +113,9 @@ class ProgramRow {
   void set_normal_held(double held) {
     normal_.held = held;
     normal_cached_ = false;
-    if (friction_) tangential_cached_ = false;  // sliding springs follow mu f_z
+    // Sliding springs follow mu f_z; with none F_x does not depend on d (a press with
+    // friction solves the tangential axis once per touch, not once more per move).
+    if (friction_ && friction_->force_follows_indentation()) tangential_cached_ = false;
   }
   void set_tangential_held(double held) {
     tangential_.held = held;

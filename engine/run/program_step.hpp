@@ -146,7 +146,10 @@ inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const Ste
   if (m > k && m < line.guards.touched_from && row.image(m) - d > 0.0) return Change::lift;
   if (const FrictionRow* friction = row.friction()) {
     // A spring on its limit moving outwards slips at once, a slide that reverses sticks.
-    if (const auto event = friction->next_event(motion(row, line), line.t);
+    // (Not asked where nothing can: a press's touches.)
+    const LinearMotion along = motion(row, line);
+    if (!friction->may_change(along)) return std::nullopt;
+    if (const auto event = friction->next_event(along, line.t);
         event && event->event.at <= line.t) {
       friction_event_ = *event;
       return Change::friction;
@@ -241,7 +244,8 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
   }
   if (const FrictionRow* friction = row.friction()) {
     const LinearMotion along{line.t, d, u, vd, vu};
-    if (const auto event = friction->next_event(along, best);
+    if (const auto event =
+            friction->may_change(along) ? friction->next_event(along, best) : std::nullopt;
         event && (event->event.at < best || !change)) {
       friction_event_ = *event;
       consider(event->event.at, Change::friction);

@@ -513,4 +513,52 @@ TEST(FrictionRow, RandomNonMonotoneMotionsMatchTheBruteForceRow) {
   }
 }
 
+TEST(FrictionRow, WhereNothingCanSlipItSaysSo) {
+  // What the program loop skips on (issue 21's speed): with nothing sliding, F_x at a fixed
+  // u_x is the same number for every d (only a slider's mu f_z depends on d), and along a press
+  // at still u_x no spring can slip (every limit grows, no stretch moves), so next_event need
+  // not be asked. Each "nothing" is checked against the force and the event search themselves.
+  const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
+  FrictionRow row = pressed_row(50);
+  const LinearMotion press{0.0, kD, 0.0, 0.5 * kD, 0.0};
+  const LinearMotion still{0.0, kD, 0.0, 0.0, 0.0};
+  const LinearMotion unload{0.0, kD, 0.0, -0.5 * kD, 0.0};
+  const LinearMotion shear{0.0, kD, 0.0, 0.0, 0.3 * us};
+  EXPECT_FALSE(row.force_follows_indentation());
+  EXPECT_FALSE(row.may_change(press));
+  EXPECT_FALSE(row.may_change(still));
+  EXPECT_FALSE(row.next_event(press, 1e9));
+  // Unloading, spring N (g = d, no limit left) slips at once; shearing, the outer springs slip.
+  EXPECT_TRUE(row.may_change(unload));
+  EXPECT_TRUE(row.next_event(unload, 1.0));
+  EXPECT_TRUE(row.may_change(shear));
+  EXPECT_TRUE(row.next_event(shear, 1.0));
+  // Sheared: the outer springs slide at their limits, which grow with d by 2 mu E* dx each.
+  double work = 0.0;
+  drive(row, shear, 1.0, work);
+  const double u = 0.3 * us;
+  const auto sliding = static_cast<double>(row.springs_sliding());
+  ASSERT_GT(sliding, 0.0);
+  EXPECT_TRUE(row.force_follows_indentation());
+  EXPECT_TRUE(row.may_change(press.from(0.0)));
+  const double dx = kA / 50.0;
+  const double slope = 2.0 * kMu * kModulus * dx * sliding;  // dF_x/dd [N/m]
+  // Rounding of a few terms of size mu F_z: 1e-12 of it.
+  EXPECT_NEAR(row.tangential_force(1.1 * kD, u) - row.tangential_force(kD, u), slope * 0.1 * kD,
+              1e-12 * kMu * kModulus * kD * kA);
+  // A small step back pressing on (spring N at g = d has no limit at d but gains one): every
+  // slider sticks, each keeping its own offset, and F_x leaves d alone, to the bit.
+  drive(row, {0.0, kD, u, 0.05 * kD, -0.01 * us}, 1.0, work);
+  EXPECT_EQ(row.springs_sliding(), 0);
+  EXPECT_FALSE(row.force_follows_indentation());
+  const double back = 0.99 * u;
+  const double deeper = 1.05 * kD;
+  for (const double d : {0.9 * kD, 1.1 * kD, 2.0 * kD})
+    EXPECT_EQ(row.tangential_force(d, back), row.tangential_force(deeper, back)) << d;
+  const LinearMotion press_back{0.0, deeper, back, 0.5 * kD, 0.0};
+  EXPECT_FALSE(row.may_change(press_back));
+  EXPECT_FALSE(row.next_event(press_back, 1e9));
+  EXPECT_TRUE(row.may_change({0.0, deeper, back, -0.5 * kD, 0.0}));
+}
+
 }  // namespace
