@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/base/large_pages.hpp"
 #include "engine/base/material.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/coulomb_spring.hpp"
@@ -118,7 +119,8 @@ class FrictionRow {
   double ratio_;                 ///< r = mu E*/G* [1]
   double spacing_;               ///< dx [m]
   std::int64_t glued_ = 0;
-  std::vector<Spring> springs_;
+  /// In large pages: 24 MB of fresh memory at 1e6 springs, one fault per 2 MiB, not per 4 KiB.
+  std::vector<Spring, LargePageAllocator<Spring>> springs_;
   double indentation_ = 0.0;  ///< d at the present position [m]
   double tangential_ = 0.0;   ///< u_x at the present position [m]
 
