@@ -165,11 +165,7 @@ double FrictionRow::tangential_force_per_indentation(double indentation) const {
   return 2.0 * slope;
 }
 
-std::int64_t FrictionRow::springs_sliding() const {
-  return sliders_[0].size() + sliders_[1].size() + glued_sliding_;
-}
-
-double FrictionRow::stick_radius() const {
+double FrictionRow::sliding_stick_radius() const {
   std::int64_t first = first_glued_sliding();
   for (const auto& side : sliders_)
     if (!side.empty() && (first == 0 || side.first() < first)) first = side.first();
@@ -216,7 +212,7 @@ std::optional<RowFrictionEvent> FrictionRow::next_event(const LinearMotion& moti
   return first;
 }
 
-double FrictionRow::advance(const LinearMotion& motion, double t) {
+double FrictionRow::advance_sliding(const LinearMotion& motion, double t) {
   double dissipated = 0.0;
   if (glued_sliding_ > 0) {
     for (std::int64_t i = 1; i <= glued_; ++i) {

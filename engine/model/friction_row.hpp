@@ -71,10 +71,15 @@ class FrictionRow {
   double tangential_stiffness() const;
   double tangential_force_per_indentation(double indentation) const;
   /// Springs i <= m sliding now (one half of the row, like ProgramRow's counts).
-  std::int64_t springs_sliding() const;
+  std::int64_t springs_sliding() const {
+    return sliders_[0].size() + sliders_[1].size() + glued_sliding_;
+  }
   /// The radius inside which every spring in contact sticks: x_{j-1}, j the innermost
-  /// sliding spring; the contact radius x_m when none slides [m].
-  double stick_radius() const;
+  /// sliding spring; the contact radius x_m when none slides [m]. Inline where none does:
+  /// every snapshot asks.
+  double stick_radius() const {
+    return force_follows_indentation() ? sliding_stick_radius() : position(in_contact());
+  }
 
   /// Whether F_x depends on d at a fixed u_x: only through a sliding spring's limit mu f_z.
   /// Without one, F_x(d, u_x) is the same number for every finite d.
@@ -94,7 +99,13 @@ class FrictionRow {
   std::optional<RowFrictionEvent> next_event(const LinearMotion& motion, double end) const;
   /// Moves every spring from motion.start to t with no event in between; returns the work
   /// the slips dissipated on both halves (the step's dissipated_by_friction increment) [J].
-  double advance(const LinearMotion& motion, double t);
+  double advance(const LinearMotion& motion, double t) {
+    if (force_follows_indentation()) return advance_sliding(motion, t);
+    // Nothing slides: nothing dissipates, only the position moves (each touch of a press).
+    indentation_ = motion.indentation_at(t);
+    tangential_ = motion.tangential_at(t);
+    return 0.0;
+  }
   /// Applies an event found by next_event, after advance to its time.
   void apply(const RowFrictionEvent& event);
 
@@ -112,6 +123,8 @@ class FrictionRow {
   void add_sliding(std::int64_t i);
   void remove_sliding(std::int64_t i);
   std::int64_t first_glued_sliding() const;  ///< 0 when none
+  double sliding_stick_radius() const;       ///< stick_radius with a spring sliding
+  double advance_sliding(const LinearMotion& motion, double t);  ///< advance, some sliding
 
   FrictionSettings settings_;
   double normal_stiffness_;      ///< E* dx [N/m]

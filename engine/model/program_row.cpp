@@ -91,6 +91,13 @@ double ProgramRow::solve_tangential_displacement() const {
   const double per_held = tangential_per_held();
   if (per_held == 0.0) return tangential_.rest;
   if (friction_) {
+    // Fixed grips (a_F = 0): u_x = held / a_u whatever F_x, held - 0 F_x(d, 0) being held but
+    // for held = -0 against F_x(d, 0) < 0 (+0): F_x(d, 0) is computed only then (a press asks
+    // at each touch). (With F_x(d, 0) beyond a double the run stops on its F_x either way.)
+    const double held = tangential_.held;
+    if (is_fixed_grips(tangential_.constraint) && !(held == 0.0 && std::signbit(held))) {
+      return held * per_held;
+    }
     // F_x = K u + F_x(d, 0), affine in u while no spring changes.
     const double at_zero = friction_->tangential_force(indentation(), 0.0);
     return (tangential_.held - tangential_.constraint.force_coefficient * at_zero) * per_held;
@@ -125,8 +132,7 @@ double ProgramRow::tangential_per_held() const {
   return tangential_per_held_;
 }
 
-double ProgramRow::tangential_per_indentation() const {
-  if (!friction_ || is_fixed_grips(tangential_.constraint)) return 0.0;
+double ProgramRow::held_force_per_indentation() const {
   return -tangential_.constraint.force_coefficient *
          friction_->tangential_force_per_indentation(indentation()) * tangential_per_held();
 }

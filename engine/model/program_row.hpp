@@ -138,7 +138,10 @@ class ProgramRow {
   double tangential_per_held() const;
   /// d(u_x)/d(d) at a fixed held value: with friction under a held force, the sliding springs'
   /// mu f_z moves u_x with d (0 without friction or under fixed grips).
-  double tangential_per_indentation() const;
+  double tangential_per_indentation() const {
+    if (!friction_ || is_fixed_grips(tangential_.constraint)) return 0.0;
+    return held_force_per_indentation();
+  }
   /// The held value that the present state satisfies under `constraint`.
   double held_value_of_normal(const AffineConstraint& constraint) const;
   double held_value_of_tangential(const AffineConstraint& constraint) const;
@@ -194,6 +197,7 @@ class ProgramRow {
   void solve_tangential() const;
   double solve_indentation() const;
   double solve_tangential_displacement() const;
+  double held_force_per_indentation() const;  ///< tangential_per_indentation under a held F_x
 
   /// g and the front's limit of the springs near the edges, computed once: each step asks
   /// for springs k, k + 1, m and m + 1 several times.
