@@ -11,7 +11,15 @@ namespace mdrsim {
 bool continuum_answers(const Scene& scene) {
   // One fold on the branch: the shapes that are always one disk (convex classics). A table
   // or a ripple may fold several times; the row follows every jump.
-  if (scene.program) return !continuum_program_refusal(scene);
+  if (scene.program) {
+    // A tangential stage may meet what the route stops at (a glue let go by the moving shear,
+    // pressed springs after a shear-off), which rtol alone must not end in: such programs
+    // take the route only when it is named, and the row otherwise.
+    for (const Stage& stage : scene.program->stages) {
+      if (stage.tangential) return false;
+    }
+    return !continuum_program_refusal(scene);
+  }
   return scene.profile->always_one_disk();
 }
 

@@ -10,9 +10,9 @@ namespace mdrsim {
 
 /// Whether rtol alone takes the continuum route (docs/continuum.md): the shorthand (any
 /// criterion and controller) on a profile whose branch folds once, the convex classics
-/// (Profile::always_one_disk). Tabulated and wavy profiles may fold several times, and
-/// loading programs take the route only when asked (method = "continuum"): those stay on the
-/// spring row.
+/// (Profile::always_one_disk), and the normal loading programs it answers. Tabulated and wavy
+/// profiles may fold several times, and a program with a tangential stage may stop on the
+/// route: those stay on the spring row unless the route is named (method = "continuum").
 bool continuum_answers(const Scene& scene);
 
 /// Why the continuum route cannot answer a loading program exactly (one line, naming the

@@ -144,3 +144,23 @@ TEST(ContinuumScope, BranchesThatMayFoldAgainStayOnTheRow) {
 
 }  // namespace
 }  // namespace mdrsim
+
+namespace mdrsim {
+namespace {
+
+// A program with a tangential stage may stop on the route (a glue let go by the moving shear):
+// rtol alone keeps it on the row, which follows it; named, the route runs it.
+TEST(ContinuumScope, AProgramThatShearsTakesTheRouteOnlyWhenNamed) {
+  const std::string text =
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[[loading.stage]]\nname = \"press\"\nnormal = { control = \"fixed-grips\", to = 2e-5 }\n"
+      "[[loading.stage]]\nname = \"shear\"\ntangential = { control = \"fixed-grips\", to = 1e-6 "
+      "}\n[discretization]\nrtol = 1e-4\n";
+  EXPECT_EQ(test::build_scene_text(text).solver.method, SolverMethod::event);
+  EXPECT_EQ(test::build_scene_text(text + "[solver]\nmethod = \"continuum\"\n").solver.method,
+            SolverMethod::continuum);
+}
+
+}  // namespace
+}  // namespace mdrsim
