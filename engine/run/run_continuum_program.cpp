@@ -114,28 +114,15 @@ class ContinuumStage {
   /// A tangential fixed load moves u_x with the radius: its share is the held force times
   /// that move, the normal axis the rest.
   AxisWork work(const Disk& from, const Disk& to, double& error) const {
-    const BranchState s0 = state(from);
-    const BranchState s1 = state(to);
-    const Estimated before = stored_energy(branch_, s0);
-    const Estimated after = stored_energy(branch_, s1);
-    error += before.error + after.error;
-    double w = after.value - before.value;
-    if (to.radius < from.radius) {
-      const Estimated released = released_energy(branch_, from.radius, to.radius);
-      error += released.error;
-      w += released.value;
-    } else if (to.radius > from.radius) {
-      // int_a0^a1 E* (2 pi x dgamma_a / E*) dx, in closed form.
-      w -= modulus_ * advancing_per_radius_ * 0.5 *
-           (to.radius * to.radius - from.radius * from.radius);
+    // Pinned or receding: the shorthand's stretch work (stored energy plus what the springs
+    // take away); advancing, less what gluing at the advancing limit gives, in closed form:
+    // int_a0^a1 E* (2 pi x dgamma_a / E*) dx.
+    AxisWork w = stretch_work(branch_, state(from), state(to), error);
+    if (to.radius > from.radius) {
+      w.normal -= modulus_ * advancing_per_radius_ * 0.5 *
+                  (to.radius * to.radius - from.radius * from.radius);
     }
-    AxisWork split;
-    if (holds_force(branch_.tangential())) {
-      split.tangential =
-          branch_.tangential_held() * (s1.tangential_displacement - s0.tangential_displacement);
-    }
-    split.normal = w - split.tangential;
-    return split;
+    return w;
   }
   long long iterations() const { return iterations_ + branch_.iterations(); }
 
