@@ -1,6 +1,7 @@
 // Equilibrium of a program's spring row from running sums; O(1) changes at its edges.
 #include "engine/model/program_row.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -153,6 +154,32 @@ void ProgramRow::glue_next() {
   // With friction a pressed spring glues keeping its stretch: its offset, not u_x.
   const bool pressed = friction_ && glued_ < in_contact_;
   glue_at(pressed ? friction_->spring(glued_ + 1).offset : tangential_.rest);
+}
+
+double ProgramRow::glue_through(std::int64_t last) {
+  // glue_next for each spring, with what does not change from one to the next done once:
+  // the displacements (fixed by the machine, or by glued springs at no stretch), the cache
+  // they drop, the run of the one offset.
+  if (glued_ >= last) return 0.0;
+  const double d = indentation();
+  const double u = tangential_displacement();
+  normal_.rest = d;
+  tangential_.rest = u;
+  springs_changed(true, !tangential_unchanged_by(u));
+  if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_ + 1, u});
+  CompensatedSum squares;
+  for (std::int64_t i = glued_ + 1; i <= last; ++i) {
+    const double g = image(i);
+    contact_images_.add(g);
+    glued_offsets_.add(u);
+    const double stretch = d - g;
+    squares.add(stretch * stretch);
+  }
+  glued_ = last;
+  in_contact_ = last;
+  ever_glued_ = std::max(ever_glued_, last);
+  // Half of 2 E* dx (both halves) per spring, times the stretch squared.
+  return material_.effective_modulus * spacing_ * squares.value();
 }
 
 void ProgramRow::glue_next_as_boundary() {

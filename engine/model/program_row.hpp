@@ -72,9 +72,7 @@ class ProgramRow {
   bool one_offset() const { return runs_.size() <= 1; }
   /// Springs 1..n glue, each at the present u_x, on a row with nothing in contact: a zoomed
   /// row's start (program_zoom.hpp).
-  void glue_first(std::int64_t n) {
-    for (std::int64_t i = 0; i < n; ++i) glue_next();
-  }
+  void glue_first(std::int64_t n) { glue_through(n); }
   bool adhesive() const { return material_.work_of_adhesion > 0.0; }
   /// Coulomb friction on every spring in contact from now on (a row with nothing in contact).
   void enable_friction(const FrictionSettings& settings) {
@@ -148,6 +146,14 @@ class ProgramRow {
 
   /// Spring k+1 glues at the present u_x; it was pressed (m > k) or becomes the new edge.
   void glue_next();
+  /// Whether the advancing front glues a spring as it touches it (dgamma_a = 0).
+  bool glues_on_touch() const { return front_coefficient_ == 0.0; }
+  /// Springs k+1..last glue at the present u_x, on a row without friction whose springs in
+  /// contact are all glued, as a press that glues on touch reaches them one by one (the same
+  /// row as glue_next one at a time, to the bit, where the machine fixes d and u_x); returns the
+  /// energy they store at the present indentation d, each glued where d passed its image: the work
+  /// the press did on them, sum of E* dx (d - g_i)^2 over both halves [J].
+  double glue_through(std::int64_t last);
   /// Spring k+1 glues at the boundary spring's offset s_k: the branch one spring further
   /// out, as a receding front left it (for locating the front between springs).
   void glue_next_as_boundary();

@@ -99,6 +99,8 @@ class ProgramRunner {
   /// would exceed `limit` changes and returns true if one was still due.
   bool run_changes(std::optional<Change> first, Cascade& cascade, std::int64_t limit);
   void take_step(double t_end);
+  /// A press that only glues springs as it reaches them, taken in one pass (below).
+  bool press_in_bulk(double t_end);
   void finish_cascade(const Cascade& cascade);
   /// Whether a fixed-load axis holds a force that nothing holds: a tension with no spring in
   /// contact, a tangential force with nothing glued.
@@ -609,6 +611,51 @@ void ProgramRunner::take_step(double t_end) {
   }
 }
 
+bool ProgramRunner::press_in_bulk(double t_end) {
+  // Fixed grips pressing at a held u_x, every spring in contact glued, the front gluing each
+  // spring as it touches (dgamma_a = 0), no friction: each event is one spring glued, in the
+  // order of the images, and nothing else happens (a glued spring pressed further holds: its
+  // margin does not fall with its elongation, criterion.hpp, and next_change asks no let-go
+  // here either). Every such spring but the last few before the stage's end glues in one pass,
+  // the stage's work on them in closed form; the loop then takes the rest one by one, with
+  // everything it records. Not where single springs are observed (their events are wanted).
+  constexpr std::int64_t kLeftToTheLoop = 3;
+  constexpr std::int64_t kWorthIt = 16;
+  if (!(normal_.rate > 0.0) || tangential_.rate != 0.0 || observe_springs_ || row_.friction() ||
+      !std::isfinite(t_end) || !is_fixed_grips(row_.normal().constraint) ||
+      !is_fixed_grips(row_.tangential().constraint) || !row_.adhesive() || !row_.glues_on_touch()) {
+    return false;
+  }
+  const std::int64_t k = row_.glued();
+  if (row_.in_contact() != k || !row_.can_glue(k + 1)) return false;
+  const double d = row_.indentation();
+  const double d_end = normal_.at(t_end, false) * row_.indentation_per_held();
+  // Springs whose images rise strictly between d and d_end glue one at a time (a spring whose
+  // image does not rise glues with the one before it: a jump, the loop's).
+  const std::int64_t limit = std::min(max_springs_, row_end_);
+  std::int64_t last = k;
+  double image = d;
+  while (last < limit) {
+    const double next = row_.image(last + 1);
+    if (!(next > image) || !(next < d_end)) break;
+    image = next;
+    ++last;
+  }
+  last -= kLeftToTheLoop;
+  if (last - k < kWorthIt) return false;
+  // Where the loop would glue spring `last`: the locator's parameter of its image.
+  const double vd = row_.indentation_per_held() * normal_.rate;
+  const double t = std::max(t_ + (row_.image(last) - d) * (1.0 / vd), next_parameter(t_));
+  advance_to(t);  // the springs glued before: the trapezoid
+  if (stop_ != Stop::none) return true;
+  record_.stage_work.normal += row_.glue_through(last);
+  result_.counts.events += last - k;
+  guards_.glued_from = last;
+  observe(row_.snapshot());  // the force rose all along: the ends hold the extremes
+  if (front_) front_->other_change();
+  return true;
+}
+
 void ProgramRunner::log_progress(const Stage& stage) {
   next_progress_check_ = result_.counts.events + (1 << 16);
   if (!progress_.interval_passed()) return;
@@ -668,6 +715,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
         if (flight_ != JumpEnd::state) break;
         continue;
       }
+      if (press_in_bulk(t_end)) continue;
       const auto next = next_change(t_end);
       if (!next) {
         if (std::isfinite(t_end)) {
