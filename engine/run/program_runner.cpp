@@ -376,6 +376,11 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
     }
   }
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
+  const std::int64_t spring = change == Change::friction ? locator_.friction_event().spring
+                              : change == Change::touch  ? m + 1
+                              : change == Change::lift   ? m
+                                                         : k;
+  locator_.changed(change, spring);
   if (change != Change::fall_in && change != Change::friction) {
     ++cascade.changes;
     ++result_.counts.events;

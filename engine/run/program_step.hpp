@@ -61,8 +61,35 @@ class ChangeLocator {
                                                        double t_end);
   /// Where the boundary spring lets go at tangential displacement u [m].
   LetGo boundary_let_go(const ProgramRow& row, double u);
-  /// Stepping takes a trial step back: what was cached of it goes too.
-  void forget() { let_go_cache_.reset(); }
+  /// Whether spring k+1 may glue at tangential displacement u [m] as far as its stretch goes.
+  /// A spring not pressed glues at no stretch: yes. A pressed spring sticking under friction
+  /// glues keeping its stretch (rebinding), and a glue whose boundary the criterion lets go at
+  /// once is none: it glues where some spring of the run that can glue now from k+1 outwards
+  /// (pressed, sticking, allowed to glue) holds at its kept stretch with no elongation, so
+  /// that the run glues out to its outermost such spring and no further (else glue and let-go
+  /// would follow each other without end). The run is scanned once per parameter value.
+  bool kept_stretch_holds(const ProgramRow& row, const StepLine& line, double u);
+  /// Stepping takes a trial step back  /// Stepping takes a trial step back: what was cached of it
+  /// goes too.
+  void forget() {
+    let_go_cache_.reset();
+    run_scan_.reset();
+    holdless_.reset();
+  }
+  /// The loop applied `change` to `spring` (the spring glued, let go, touched, lifted, or
+  /// that slipped or stuck): what kept_stretch_holds knows of the run stays
+  /// true where the change leaves it so.
+  void changed(Change change, std::int64_t spring) {
+    if (change == Change::glue) return;  // the run glues outwards: both scans still hold
+    run_scan_.reset();
+    if (change != Change::let_go && change != Change::fall_in && holdless_) {
+      // A slip ends the run there, a stick gives the spring a new offset, a touch or a lift
+      // changes the springs in contact there: the springs inside it are as they were.
+      holdless_->checked_to = std::min(holdless_->checked_to, spring - 1);
+    } else {
+      holdless_.reset();  // a let-go changes k
+    }
+  }
   /// The friction event the last Change::friction stands for.
   const RowFrictionEvent& friction_event() const { return friction_event_; }
   /// The motion of d and u_x along the line from its present parameter (affine while the
@@ -84,6 +111,26 @@ class ChangeLocator {
   };
   std::optional<LetGoCache> let_go_cache_;
   RowFrictionEvent friction_event_{};
+  /// kept_stretch_holds: the run scanned at this parameter, u_x and glued count, and the
+  /// outermost spring of it that holds (k itself: none).
+  struct RunScan {
+    double t;
+    double u;
+    std::int64_t glued;
+    std::int64_t holds_to;
+  };
+  std::optional<RunScan> run_scan_;
+  /// kept_stretch_holds: springs k+1..checked_to of the run hold at no stretch they had, and
+  /// u_x has moved only away from holding since (each stretch's sign along `direction`, or
+  /// u_x still): while they stick, none of them will hold (a convex holding set containing
+  /// no stretch is left for good along a ray). So a scan resumes past them.
+  struct HoldlessPrefix {
+    std::int64_t glued;
+    std::int64_t checked_to;
+    double u;
+    int direction;  ///< +1 / -1: every stretch u - s of the prefix has this sign; 0: u_x still
+  };
+  std::optional<HoldlessPrefix> holdless_;
   double inverse_of_ = 0.0;  ///< next_change: the d(d)/dt whose inverse is `inverse_`
   double inverse_ = 0.0;
 };
@@ -104,6 +151,44 @@ inline LetGo ChangeLocator::boundary_let_go(const ProgramRow& row, double u) {
   return go;
 }
 
+inline bool ChangeLocator::kept_stretch_holds(const ProgramRow& row, const StepLine& line,
+                                              double u) {
+  const std::int64_t k = row.glued();
+  const FrictionRow* friction = row.friction();
+  if (!friction || k + 1 > row.in_contact()) return true;
+  // Within one scan the run glues outwards: k grows up to the spring found.
+  if (run_scan_ && run_scan_->t == line.t && run_scan_->u == u && run_scan_->glued <= k &&
+      (k < run_scan_->holds_to || run_scan_->glued == k)) {
+    return k < run_scan_->holds_to;
+  }
+  std::int64_t first = k + 1;
+  int direction = 2;  // the stretches' one sign so far (2: no spring yet, 0: mixed or zero)
+  if (holdless_ && holdless_->glued == k &&
+      (u == holdless_->u ||
+       (holdless_->direction != 0 && (u - holdless_->u) * holdless_->direction > 0.0))) {
+    first = holdless_->checked_to + 1;
+    if (holdless_->checked_to > k) direction = holdless_->direction;
+  }
+  std::int64_t holds_to = k;
+  std::int64_t last = first - 1;
+  for (std::int64_t i = first; i <= row.in_contact() && i <= line.row_end && row.can_glue(i); ++i) {
+    const double stretch = u - friction->spring(i).offset;
+    if (criterion_.margin({0.0, stretch, row.position(i)}) > 0.0) holds_to = i;
+    const int sign = stretch > 0.0 ? 1 : (stretch < 0.0 ? -1 : 0);
+    if (direction == 2) direction = sign;
+    if (sign != direction) direction = 0;
+    last = i;
+  }
+  run_scan_ = RunScan{line.t, u, k, holds_to};
+  if (holds_to == k) {
+    // None holds: u_x moving along the stretches' one sign takes them further away.
+    holdless_ = HoldlessPrefix{k, last, u, direction == 2 ? 0 : direction};
+  } else {
+    holdless_.reset();
+  }
+  return k < holds_to;
+}
+
 inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const StepLine& line,
                                                 bool& outgrew) {
   const std::int64_t k = row.glued();
@@ -119,7 +204,10 @@ inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const Ste
     if (go.kind == LetGo::Kind::now || row.image(k) - d >= go.elongation) return Change::let_go;
   }
   const bool front_glues = row.adhesive() && row.can_glue(k + 1) && k < line.row_end;
-  if (front_glues) {
+  // A glue its criterion would let go at once is none: a pressed spring keeping a stretch
+  // beyond what the glue holds stays a friction spring (else glue and let-go would follow
+  // each other at the same parameter without end).
+  if (front_glues && kept_stretch_holds(row, line, row.tangential_displacement())) {
     const double gap = row.image(k + 1) - d;
     const double limit = k == 0 ? 0.0 : row.front_limit(k + 1);
     const bool released_now = k + 1 <= line.guards.released_to;
@@ -193,7 +281,7 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
     consider(-line.normal.start / line.normal.rate, Change::fall_in);
   }
   const bool front_glues = row.adhesive() && row.can_glue(k + 1) && k < line.row_end;
-  if (front_glues && vd > 0.0) {
+  if (front_glues && vd > 0.0 && kept_stretch_holds(row, line, u)) {
     consider(when_indentation(row.image(k + 1) - (k == 0 ? 0.0 : row.front_limit(k + 1))),
              Change::glue);
   }
@@ -201,6 +289,29 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
     consider(when_indentation(row.image(m + 1)), Change::touch);
   }
   if (m > k && vd < 0.0) consider(when_indentation(row.image(m)), Change::lift);
+  if (front_glues && k < m && vu != 0.0 && !kept_stretch_holds(row, line, u)) {
+    // Spring k+1 sticks, pressed, with more stretch than a glue there holds, and no spring of
+    // its run holds either: it glues where u_x, moving back towards its offset s, brings its
+    // margin above zero (the criterion holds at no stretch and its holding states are convex,
+    // so the margin rises once on the way to s). An outer spring of the run that comes to hold
+    // first glues the run at the next event (docs/friction.md).
+    const double s = row.friction()->spring(k + 1).offset;
+    const double a = row.position(k + 1);
+    const double towards = line.t + (s - u) / vu;
+    if (towards > line.t) {
+      const auto margin = [&](double t) {
+        return criterion_.margin({0.0, u + vu * (t - line.t) - s, a});
+      };
+      const double hi = std::min(towards, best);
+      if (margin(soonest) > 0.0) {
+        consider(soonest, Change::glue);
+      } else if (hi > soonest && margin(hi) > 0.0) {
+        const RootBracket b = bracket_root(margin, soonest, hi);
+        *root_iterations_ += b.iterations;
+        consider(b.hi, Change::glue);
+      }
+    }
+  }
   if (k > 0) {
     if (vu == 0.0) {
       // u_x stays: the spring lets go only as d falls to g - e*(u_x). (Broken at rest, it
