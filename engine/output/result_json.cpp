@@ -108,7 +108,7 @@ void add_provenance(nlohmann::ordered_json& j, const Scene& scene, const RunResu
                    {"effective_shear_modulus", m.effective_shear_modulus},
                    {"work_of_adhesion", m.work_of_adhesion},
                    {"approach_work_of_adhesion", m.approach_work_of_adhesion}};
-  if (!scene.program) {
+  if (scene.shorthand()) {
     j["preload"] = {{"glued_radius", scene.glued_radius},
                     {"depth", scene.preload_depth},
                     {"force", scene.preload_force}};

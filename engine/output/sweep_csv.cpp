@@ -108,7 +108,7 @@ std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& value
   // program has none); then the number of warnings it logged, which a plot should not hide.
   append_field(out, std::optional<std::int64_t>(r.springs));
   const auto preload = [&](double value) {
-    return scene.program ? std::nullopt : std::optional<double>(value);
+    return scene.shorthand() ? std::optional<double>(value) : std::nullopt;
   };
   append_field(out, preload(scene.glued_radius));
   append_field(out, preload(scene.preload_depth));

@@ -72,17 +72,21 @@ struct DiscretizationOptions {
 /// it holds during the pull-off.
 struct AxisLoading {
   std::string control;  ///< the controller's registered name
-  std::unique_ptr<AxisController> controller;
+  std::shared_ptr<const AxisController> controller;  ///< shared with a program built from it
   double held_value = 0.0;  ///< [m] or [N], see AxisController::held_value_key
 };
 
 struct Scene {
   std::string title;
   Material material{};
-  /// A loading program ([[loading.stage]]); empty for the shorthand (preload, tangential,
-  /// normal), whose fields below it leaves unset (glued_radius, preload_depth, normal,
-  /// tangential).
+  /// A loading program ([[loading.stage]]), whose scene leaves the shorthand's fields below
+  /// unset (glued_radius, preload_depth, normal, tangential); empty for the shorthand
+  /// (preload, tangential, normal) but with friction, where it is the shorthand's three
+  /// stages (engine/scene/shorthand_program.hpp).
   std::optional<Program> program;
+  /// Written with the shorthand keys: the preload and its controls are set. With friction
+  /// such a scene runs as its three-stage program too (docs/friction.md).
+  bool shorthand() const { return normal.controller != nullptr; }
   std::string profile_name;
   std::unique_ptr<Profile> profile;
   double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]

@@ -15,6 +15,7 @@
 #include "engine/scene/continuum_scope.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/friction_reader.hpp"
+#include "engine/scene/shorthand_program.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -438,6 +439,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   if (auto friction = root.optional_table("friction")) {
     scene.friction = read_friction(*friction, scene);
     friction->finish();
+    // Friction runs on programs: the shorthand as its three stages (docs/friction.md).
+    if (scene.friction && !scene.program) {
+      scene.program = shorthand_program(scene, registries.controllers);
+    }
   }
   if (!method_given) choose_continuum_route(scene, *resolved);
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {

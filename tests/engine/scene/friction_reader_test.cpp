@@ -74,6 +74,44 @@ TEST(FrictionScene, RefusesBadValues) {
                    "\"coulomb\"");
 }
 
+// The shorthand with friction runs as its three stages (docs/programs.md "The shorthand as a
+// program"): the preload pressed at fixed grips to its depth, the pull-off control and the
+// tangential ramp, the normal held value lowered until separation by the preload's force per
+// unit of the parameter under a fixed load.
+TEST(FrictionScene, TheShorthandBecomesItsThreeStages) {
+  std::string text(kProgram);
+  text.replace(text.find("[[loading.stage]]"), std::string::npos,
+               "[loading]\npreload = { depth = 1.0e-6 }\ntangential = { control = \"fixed-grips\", "
+               "displacement = 2.0e-7 }\nnormal = { control = \"fixed-load\" }\n[friction]\n"
+               "coefficient = 0.5\n");
+  const Scene scene = build(text);
+  ASSERT_TRUE(scene.friction.has_value());
+  ASSERT_TRUE(scene.program.has_value());
+  EXPECT_TRUE(scene.shorthand());
+  EXPECT_FALSE(scene.program->rebinding);
+  const auto& stages = scene.program->stages;
+  ASSERT_EQ(stages.size(), 3u);
+  EXPECT_EQ(stages[0].name, "preload");
+  ASSERT_TRUE(stages[0].normal);
+  EXPECT_EQ(stages[0].normal->control, "fixed-grips");
+  EXPECT_EQ(stages[0].normal->motion, StageAxis::Motion::to);
+  EXPECT_EQ(stages[0].normal->value, 1.0e-6);
+  EXPECT_FALSE(stages[0].tangential);
+  EXPECT_EQ(stages[1].name, "tangential");
+  ASSERT_TRUE(stages[1].normal && stages[1].tangential);
+  EXPECT_EQ(stages[1].normal->control, "fixed-load");
+  EXPECT_EQ(stages[1].normal->motion, StageAxis::Motion::hold);
+  EXPECT_EQ(stages[1].tangential->control, "fixed-grips");
+  EXPECT_EQ(stages[1].tangential->motion, StageAxis::Motion::to);
+  EXPECT_EQ(stages[1].tangential->value, 2.0e-7);
+  EXPECT_EQ(stages[2].name, "pull-off");
+  ASSERT_TRUE(stages[2].normal);
+  EXPECT_TRUE(stages[2].until_separation);
+  EXPECT_EQ(stages[2].normal->motion, StageAxis::Motion::by);
+  EXPECT_EQ(stages[2].normal->value, -scene.preload_force);
+  EXPECT_GT(scene.preload_force, 0.0);
+}
+
 TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
   const std::string p(kProgram);
   EXPECT_THROW_MSG(build(p + "coefficient = 0.5\nglued = \"coulomb\"\nshear_strength = 10.0\n"),
@@ -83,16 +121,18 @@ TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
   EXPECT_THROW_MSG(build(p + "coefficient = 0.5\n[solver]\nmethod = \"stepping\"\n"), SceneError,
                    "scene.toml:16:15: friction.coefficient: friction runs with solver.method = "
                    "\"event\" only");
-  // The shorthand: the same path written as its program runs (docs/programs.md).
+  // The shorthand with a held tangential force and adhesion: refused as in a program.
   std::string shorthand(p);
+  shorthand.replace(shorthand.find("work_of_adhesion = 0.0"),
+                    std::string_view("work_of_adhesion = 0.0").size(), "work_of_adhesion = 0.05");
   shorthand.replace(
       shorthand.find("[[loading.stage]]"), std::string::npos,
-      "[loading]\npreload = { depth = 1.0e-6 }\nnormal = { control = \"fixed-load\" }\n"
-      "[friction]\ncoefficient = 0.5\n");
+      "[loading]\npreload = { depth = 1.0e-6 }\ntangential = { control = \"fixed-load\", force "
+      "= 1.0e-4 }\nnormal = { control = \"fixed-load\" }\n[friction]\ncoefficient = 0.5\n");
   EXPECT_THROW_MSG(build(shorthand), SceneError,
-                   "scene.toml:13:15: friction.coefficient: the shorthand loading does not run "
-                   "with friction: write it as its three-stage loading program "
-                   "([[loading.stage]], docs/programs.md \"The shorthand as a program\")");
+                   "scene.toml:14:15: friction.coefficient: the shorthand holds the tangential "
+                   "axis with control = \"fixed-load\": with adhesion (work_of_adhesion > 0) "
+                   "friction runs with a fixed-grips tangential axis only (u_x driven) so far");
   std::string fixed_load(p);
   fixed_load.replace(fixed_load.find("tangential = { control = \"fixed-grips\""),
                      std::string_view("tangential = { control = \"fixed-grips\"").size(),
