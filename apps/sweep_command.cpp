@@ -248,11 +248,11 @@ int sweep_command(const SweepOptions& options) {
   }
   const SceneDocument base = load_scene_document(options.scene, options.sets);
   const Registries registries = Registries::builtin();
-  const bool dimensionless = check_values(base, grid, registries);
+  const SweepColumns columns = check_values(base, grid, registries);
 
   const SweepIdentity identity{scene_hash(read_bytes(options.scene), options.sets), grid.hash(),
                                grid.rows(), shard};
-  const std::string header = csv_header(grid, dimensionless);
+  const std::string header = csv_header(grid, columns);
   shard_rows = shard.rows_of(grid.rows());
   CsvSink csv(options.csv);
   std::uint64_t done = 0;
@@ -297,7 +297,7 @@ int sweep_command(const SweepOptions& options) {
       std::exception_ptr error;
       try {
         if (!document) document.emplace(base);  // a copy re-parses: once per worker
-        line = run_row(*document, grid, shard.row(position), registries, dimensionless);
+        line = run_row(*document, grid, shard.row(position), registries, columns);
       } catch (...) {
         error = std::current_exception();
       }

@@ -58,7 +58,8 @@ std::uint64_t scene_hash(std::string_view scene_bytes, const std::vector<std::st
   return h;
 }
 
-std::string csv_header(const SweepGrid& grid, bool dimensionless) {
+std::string csv_header(const SweepGrid& grid, SweepColumns columns) {
+  const bool dimensionless = columns.dimensionless;
   std::string out = "status";
   for (const VarySpec& spec : grid.keys()) out += "," + spec.key;
   for (const SnapshotField& f : kSnapshotFields) out += std::string(",") + f.name;
@@ -69,14 +70,18 @@ std::string csv_header(const SweepGrid& grid, bool dimensionless) {
   out += ",peak_normal_force";
   if (dimensionless) out += ",dimensionless_peak_normal_force";
   out += ",tangential_strength,critical_error_estimate";
-  out += ",springs,glued_radius,preload_depth,preload_force,warnings,disk_valid\n";
-  return out;
+  out += ",springs,glued_radius,preload_depth,preload_force,warnings,disk_valid";
+  // Friction (docs/friction.md): the critical state's sliding springs and stick radius,
+  // whether the contact slid away, and the frictional work of the whole run.
+  if (columns.friction) out += ",springs_sliding,stick_radius,sliding,dissipated_by_friction";
+  return out + "\n";
 }
 
 // The status leads each row, and a run without a critical point leaves the critical columns
 // empty, so that no plot mistakes it for one.
 std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& values,
-                    const Scene& scene, const RunResult& r, bool dimensionless) {
+                    const Scene& scene, const RunResult& r, SweepColumns columns) {
+  const bool dimensionless = columns.dimensionless;
   fmt::memory_buffer out;
   const auto s = dimensionless_scales(scene);
   fmt::format_to(std::back_inserter(out), "{}", to_string(r.status));
@@ -116,6 +121,17 @@ std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& value
   append_field(out, std::optional<std::size_t>(r.warnings.size()));
   const std::string_view disk = r.disk_valid ? ",true" : ",false";
   out.append(disk.data(), disk.data() + disk.size());
+  if (columns.friction) {
+    // A row without friction (mu = 0 in a varied coefficient) slides nowhere: 0, and no work.
+    const bool rubs = scene.friction.has_value();
+    append_field(
+        out, r.critical ? std::optional<std::int64_t>(r.critical->springs_sliding) : std::nullopt);
+    append_field(out, r.critical ? std::optional<double>(r.critical->stick_radius) : std::nullopt);
+    const std::string_view sliding = r.sliding ? ",true" : ",false";
+    out.append(sliding.data(), sliding.data() + sliding.size());
+    append_field(
+        out, rubs && r.work ? std::optional<double>(r.work->friction) : std::optional<double>(0.0));
+  }
   out.push_back('\n');
   return fmt::to_string(out);
 }

@@ -32,11 +32,18 @@ std::optional<SweepIdentity> parse_identity_line(std::string_view line);
 /// FNV-1a of the scene file's bytes, then of a NUL byte and the text of each --set in turn.
 std::uint64_t scene_hash(std::string_view scene_bytes, const std::vector<std::string>& sets);
 
+/// The columns a sweep adds where some row has them: dimensionless (the rows' JKR scales)
+/// and friction (docs/sweeps.md "Rows").
+struct SweepColumns {
+  bool dimensionless = false;
+  bool friction = false;
+};
+
 /// The header line, with its newline: status, the varied keys, the run's fields.
-std::string csv_header(const SweepGrid& grid, bool dimensionless);
+std::string csv_header(const SweepGrid& grid, SweepColumns columns);
 /// One row, with its newline; `values` index each key's values as SweepGrid::indices does.
 std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& values,
-                    const Scene& scene, const RunResult& result, bool dimensionless);
+                    const Scene& scene, const RunResult& result, SweepColumns columns);
 
 /// A sweep CSV as found on disk: complete lines end in a newline; a last line without one
 /// is torn (the writer was killed during it).

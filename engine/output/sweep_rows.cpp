@@ -66,29 +66,31 @@ Scene build_row(SceneDocument& document, const SweepGrid& grid,
   }
 }
 
-bool check_values(const SceneDocument& base, const SweepGrid& grid, const Registries& registries) {
+SweepColumns check_values(const SceneDocument& base, const SweepGrid& grid,
+                          const Registries& registries) {
   SceneDocument document = base;
-  bool dimensionless = false;
+  SweepColumns columns;
   for (std::size_t k = 0; k < grid.keys().size(); ++k) {
     for (const std::size_t probe : grid.keys()[k].probes()) {
       if (k > 0 && probe == 0) continue;  // the first row, built already
       std::vector<std::size_t> values(grid.keys().size(), 0);
       values[k] = probe;
       const Scene scene = build_row(document, grid, values, registries);
-      dimensionless = dimensionless || dimensionless_scales(scene).has_value();
+      columns.dimensionless = columns.dimensionless || dimensionless_scales(scene).has_value();
+      columns.friction = columns.friction || scene.friction.has_value();
     }
   }
-  return dimensionless;
+  return columns;
 }
 
 std::string run_row(SceneDocument& document, const SweepGrid& grid, std::uint64_t row,
-                    const Registries& registries, bool dimensionless) {
+                    const Registries& registries, SweepColumns columns) {
   const std::vector<std::size_t> values = grid.indices(row);
   const ScopedRunLabel label(row_label(grid, row, values));
   const Scene scene = build_row(document, grid, values, registries);
   const RunResult result = run_scene(scene, ObserverList{});
   require_finite(scene, result);
-  return csv_row(grid, values, scene, result, dimensionless);
+  return csv_row(grid, values, scene, result, columns);
 }
 
 }  // namespace mdrsim::cli

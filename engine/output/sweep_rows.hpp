@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/output/sweep_csv.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/scene/scene_document.hpp"
@@ -20,15 +21,16 @@ Scene build_row(SceneDocument& document, const SweepGrid& grid,
                 const std::vector<std::size_t>& values, const Registries& registries);
 
 /// Builds every probe of every key (VarySpec::probes) with the other keys at their first
-/// value, so that a bad value fails before any run; returns whether any of these scenes has
-/// JKR scales (the CSV's dimensionless columns).
-bool check_values(const SceneDocument& base, const SweepGrid& grid, const Registries& registries);
+/// value, so that a bad value fails before any run; returns the columns any of these scenes
+/// has: JKR scales (the dimensionless columns), friction.
+SweepColumns check_values(const SceneDocument& base, const SweepGrid& grid,
+                          const Registries& registries);
 
 /// Row `row` of the grid run to its CSV line: built, run and checked finite; the run's log
 /// lines (its warnings, progress) are labelled "row R of M (key=value, ...)" (run_label.hpp),
 /// R the row's index in the whole grid (a shard's rows keep theirs), the values as the CSV
 /// writes them.
 std::string run_row(SceneDocument& document, const SweepGrid& grid, std::uint64_t row,
-                    const Registries& registries, bool dimensionless);
+                    const Registries& registries, SweepColumns columns);
 
 }  // namespace mdrsim::cli

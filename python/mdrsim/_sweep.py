@@ -28,9 +28,9 @@ _MIN_TASKS = 32
 _PROGRESS_SECONDS = 10.0
 _log = logging.getLogger("mdrsim")
 # The columns of the command's CSV that count things, read as int.
-_COUNT_COLUMNS = frozenset({"springs_in_contact", "springs", "warnings"})
+_COUNT_COLUMNS = frozenset({"springs_in_contact", "springs", "warnings", "springs_sliding"})
 # The columns that are yes or no (true/false), read as bool.
-_FLAG_COLUMNS = frozenset({"disk_valid"})
+_FLAG_COLUMNS = frozenset({"disk_valid", "sliding"})
 
 
 def _item_text(key, item):
@@ -72,20 +72,20 @@ def _vary_text(key, values):
 
 class _Job:
     """What a task needs to run rows in any process: the scene's text and overrides, the
-    --vary texts and the dimensionless flag. Pickled without its plan, which each process
-    makes once (_plan_for)."""
+    --vary texts and the CSV's optional columns (dimensionless, friction). Pickled without
+    its plan, which each process makes once (_plan_for)."""
 
-    __slots__ = ("token", "scene", "vary", "dimensionless", "plan")
+    __slots__ = ("token", "scene", "vary", "columns", "plan")
 
-    def __init__(self, token, scene, vary, dimensionless, plan=None):
+    def __init__(self, token, scene, vary, columns, plan=None):
         self.token, self.scene, self.vary = token, scene, vary
-        self.dimensionless, self.plan = dimensionless, plan
+        self.columns, self.plan = columns, plan
 
     def __getstate__(self):
-        return (self.token, self.scene, self.vary, self.dimensionless)
+        return (self.token, self.scene, self.vary, self.columns)
 
     def __setstate__(self, state):
-        self.token, self.scene, self.vary, self.dimensionless = state
+        self.token, self.scene, self.vary, self.columns = state
         self.plan = None
 
 
@@ -99,7 +99,7 @@ def _plan_for(job):
     with _plans_lock:
         plan = _plans.get(job.token)
     if plan is None:
-        plan = _core.SweepPlan(*job.scene, job.vary, job.dimensionless)
+        plan = _core.SweepPlan(*job.scene, job.vary, *job.columns)
         with _plans_lock:
             _plans[job.token] = plan
             while len(_plans) > 4:
@@ -139,7 +139,8 @@ class SweepResult:
     def rows(self):
         """One dict per row, keyed by `columns`: the status and a varied name as str, a
         varied number and the fields as float (the counts springs_in_contact, springs and
-        warnings as int, disk_valid as bool), None where the CSV field is empty."""
+        warnings, springs_sliding as int; disk_valid, sliding as bool), None where the CSV
+        field is empty."""
         keys = [dict(values) for values in self._values]
         names = self.columns[1 + len(keys):]
         rows = []
@@ -225,7 +226,7 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None):
     vary = [_vary_text(key, values) for key, values in grid.items()]
     state = scene._state()
     plan = _core.SweepPlan(*state, vary)  # every value checked, as the command does
-    job = _Job(uuid.uuid4().hex, state, vary, plan.dimensionless, plan)
+    job = _Job(uuid.uuid4().hex, state, vary, (plan.dimensionless, plan.friction), plan)
 
     started = time.perf_counter()
     lines = plan.run_rows(0, 1)

@@ -51,12 +51,13 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 
 /// A sweep of one scene (its text and with_values overrides, as mdrsim.Scene keeps them) over
 /// the --vary texts. Made once by the caller, which checks the values, and again wherever
-/// rows run (a Dask worker), told the dimensionless flag so that it checks nothing.
+/// rows run (a Dask worker), told the columns (dimensionless, friction) so that it checks
+/// nothing.
 class SweepPlan {
  public:
   SweepPlan(const std::string& text, const std::string& source_name, const std::string& base_dir,
             const Overrides& overrides, const std::vector<std::string>& vary,
-            std::optional<bool> dimensionless)
+            std::optional<bool> dimensionless, std::optional<bool> friction)
       : grid_(parse_grid(vary)), registries_(current_registries()) {
     std::vector<std::string> sets;
     for (const auto& [key, value] : overrides) sets.push_back(key + "=" + value);
@@ -64,12 +65,17 @@ class SweepPlan {
     py::gil_scoped_release release;  // Python parts take the GIL back in their factories
     base_.emplace(SceneDocument::from_scene_text(text, source_name, base_dir));
     for (const auto& [key, value] : overrides) base_->set_value(key, value);
-    dimensionless_ = dimensionless ? *dimensionless : check_values(*base_, grid_, *registries_);
+    if (dimensionless && friction) {
+      columns_ = {*dimensionless, *friction};
+    } else {
+      columns_ = check_values(*base_, grid_, *registries_);
+    }
   }
 
   std::uint64_t rows() const { return grid_.rows(); }
-  bool dimensionless() const { return dimensionless_; }
-  std::string header() const { return cli::csv_header(grid_, dimensionless_); }
+  bool dimensionless() const { return columns_.dimensionless; }
+  bool friction() const { return columns_.friction; }
+  std::string header() const { return cli::csv_header(grid_, columns_); }
   std::string identity() const {
     return cli::identity_line({scene_hash_, grid_.hash(), grid_.rows(), cli::Shard{}});
   }
@@ -100,7 +106,7 @@ class SweepPlan {
     py::gil_scoped_release release;
     SceneDocument document = *base_;  // a copy re-parses: once per call, as once per worker
     for (std::uint64_t row = first; row < first + count; ++row) {
-      lines.push_back(cli::run_row(document, grid_, row, *registries_, dimensionless_));
+      lines.push_back(cli::run_row(document, grid_, row, *registries_, columns_));
     }
     return lines;
   }
@@ -110,7 +116,7 @@ class SweepPlan {
   std::shared_ptr<const Registries> registries_;
   std::optional<SceneDocument> base_;
   std::uint64_t scene_hash_ = 0;
-  bool dimensionless_ = false;
+  cli::SweepColumns columns_;
 };
 
 }  // namespace
@@ -122,11 +128,12 @@ void bind_sweep(py::module_& m) {
   py::class_<SweepPlan>(m, "SweepPlan",
                         "The rows of a sweep, as `mdrsim sweep` makes them (internal).")
       .def(py::init<const std::string&, const std::string&, const std::string&, const Overrides&,
-                    const std::vector<std::string>&, std::optional<bool>>(),
+                    const std::vector<std::string>&, std::optional<bool>, std::optional<bool>>(),
            py::arg("text"), py::arg("source_name"), py::arg("base_dir"), py::arg("overrides"),
-           py::arg("vary"), py::arg("dimensionless") = py::none())
+           py::arg("vary"), py::arg("dimensionless") = py::none(), py::arg("friction") = py::none())
       .def_property_readonly("rows", &SweepPlan::rows)
       .def_property_readonly("dimensionless", &SweepPlan::dimensionless)
+      .def_property_readonly("friction", &SweepPlan::friction)
       .def_property_readonly("header", &SweepPlan::header)
       .def_property_readonly("identity", &SweepPlan::identity)
       .def("values", &SweepPlan::values)

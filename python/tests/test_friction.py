@@ -288,3 +288,30 @@ def test_bad_friction_by_set_raises_scene_error():
         scene.set("friction.coefficient", -1.0)
     with pytest.raises(mdrsim.SceneError, match="friction"):
         scene.with_method("stepping")  # friction runs on the event engine only
+
+
+def test_sweep_of_friction_scenes_has_the_friction_columns(cli):
+    """A sweep of friction scenes (docs/outputs.md "The sweep CSV") ends each row with the
+    critical state's springs_sliding and stick_radius, sliding and dissipated_by_friction, read
+    as int, float, bool and float; its CSV is the command's byte for byte, and a process pool
+    (whose workers rebuild the plan from the job) writes the same."""
+    import concurrent.futures
+
+    scene = mdrsim.Scene.from_file("scenes/programs/pull_off_after_shear.toml")
+    grid = {"loading.stage.2.tangential.to": [5e-6, 2e-5], "friction.coefficient": [0.0, 1.0]}
+    result = mdrsim.sweep(scene, grid)
+    assert result.columns[-4:] == ["springs_sliding", "stick_radius", "sliding",
+                                   "dissipated_by_friction"]
+    rows = result.rows
+    assert [type(rows[0][k]) for k in ("springs_sliding", "sliding")] == [int, bool]
+    # Sheared past the glue's break under mu = 1: the pressed springs slid and dissipated.
+    assert rows[3]["dissipated_by_friction"] > 0 and rows[2]["dissipated_by_friction"] == 0.0
+    assert not any(row["sliding"] for row in rows)  # u_x driven: nothing slides away
+    command = subprocess.run(
+        [cli, "sweep", "scenes/programs/pull_off_after_shear.toml",
+         "--vary", "loading.stage.2.tangential.to=5e-6,2e-5", "--vary", "friction.coefficient=0,1",
+         "--csv", "-", "--log-level", "off"],
+        capture_output=True, text=True, check=True).stdout
+    assert result.to_csv().split("\n", 1)[1] == command.split("\n", 1)[1]
+    with concurrent.futures.ProcessPoolExecutor(2) as pool:
+        assert mdrsim.sweep(scene, grid, executor=pool).to_csv() == result.to_csv()

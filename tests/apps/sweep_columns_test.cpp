@@ -110,6 +110,45 @@ TEST(SweepColumns, PreloadStateIsTheRunsForEachPreloadForce) {
   EXPECT_LT(number(rows[0].at("glued_radius")), number(rows[1].at("glued_radius")));
 }
 
+TEST(SweepColumns, FrictionColumnsAreTheRunsAndZeroWithoutFriction) {
+  // The pull-off after shear, sheared past the glue's break (u = 2e-5 m > u_c) and below it,
+  // with mu = 1 and mu = 0 (no friction: nothing slides, no frictional work).
+  const std::string scene = "scenes/programs/pull_off_after_shear.toml";
+  const auto r = run_mdrsim(fmt::format(
+      "sweep {} --vary loading.stage.2.tangential.to=5e-6,2e-5 --vary friction.coefficient=0,1 "
+      "--log-level off",
+      scene));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(r.out);
+  ASSERT_EQ(rows.size(), 4u);
+  for (const auto& row : rows) {
+    const std::string sets =
+        "loading.stage.2.tangential.to=" + row.at("loading.stage.2.tangential.to") +
+        " --set friction.coefficient=" + row.at("friction.coefficient");
+    const auto json = run_json(scene, sets);
+    EXPECT_EQ(row.at("status"), json.at("status").get<std::string>()) << sets;
+    EXPECT_EQ(row.at("sliding"), json.value("sliding", false) ? "true" : "false") << sets;
+    const double friction =
+        json.at("work").value("dissipated_by_friction", 0.0);  // absent without friction
+    EXPECT_EQ(number(row.at("dissipated_by_friction")), friction) << sets;
+    if (json.contains("critical")) {
+      EXPECT_EQ(row.at("springs_sliding"),
+                std::to_string(json.at("critical").value("springs_sliding", 0)))
+          << sets;
+    } else {
+      EXPECT_EQ(row.at("springs_sliding"), "") << sets;
+    }
+  }
+  // Past the break under mu = 1 the pressed springs slide and dissipate; with mu = 0 nothing.
+  EXPECT_GT(number(rows[3].at("dissipated_by_friction")), 0.0);
+  EXPECT_EQ(number(rows[2].at("dissipated_by_friction")), 0.0);
+  // Without [friction] in any row the columns are not there.
+  const auto plain = run_mdrsim(
+      "sweep scenes/fig2_fixed_grips.toml --vary discretization.springs=100,200 --log-level off");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("sliding"), std::string::npos);
+}
+
 TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
   // 20 springs do not resolve the critical point: every row warns once.
   const auto r = run_mdrsim(

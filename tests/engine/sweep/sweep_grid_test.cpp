@@ -108,11 +108,18 @@ TEST(SweepCsv, SceneHashCoversTheFileAndEverySet) {
 
 TEST(SweepCsv, HeaderNamesEveryVariedKey) {
   const SweepGrid grid = grid_of({"material.poisson_ratio=0:0.3:2", "detachment.criterion=stress"});
-  const std::string header = csv_header(grid, false);
+  const std::string header = csv_header(grid, {});
   EXPECT_EQ(header.rfind("status,material.poisson_ratio,detachment.criterion,normal_force,", 0),
             0u);
   EXPECT_EQ(header.find("dimensionless"), std::string::npos);
-  EXPECT_NE(csv_header(grid, true).find(",dimensionless_normal_force,"), std::string::npos);
+  EXPECT_EQ(header.find("sliding"), std::string::npos);
+  EXPECT_NE(csv_header(grid, {.dimensionless = true}).find(",dimensionless_normal_force,"),
+            std::string::npos);
+  // Friction's columns come last, after disk_valid: the columns before keep their places.
+  const std::string friction = csv_header(grid, {.friction = true});
+  EXPECT_EQ(friction.substr(0, header.size() - 1), header.substr(0, header.size() - 1));
+  EXPECT_EQ(friction.substr(header.size() - 1),
+            ",springs_sliding,stick_radius,sliding,dissipated_by_friction\n");
   EXPECT_EQ(header.back(), '\n');
 }
 
