@@ -830,9 +830,11 @@ void ProgramRunner::finish(RunResult& r) {
     case Stop::cannot_hold_tangential:
       if (scene_.friction && row_.in_contact() > 0) {
         // Every spring in contact slides at its limit and the held F_x asks for more: gross
-        // sliding, at the last equilibrium (docs/friction.md "Statuses").
+        // sliding, at the last equilibrium (docs/friction.md "Statuses"): where the last
+        // spring began to slide, or, where a glue's jump ended in the slide, before that jump.
         r.status = RunStatus::shear_off;
-        r.critical = row_.snapshot();
+        r.critical = flight_ == JumpEnd::sliding ? flight_end_ : row_.snapshot();
+        if (flight_ == JumpEnd::sliding) r.refined_critical = flight_refined_end_;
         slid_ = true;
         r.warnings.push_back(fmt::format(
             "stage '{}': friction can no longer hold F_x = {:.6g} N ({} springs in contact, all "

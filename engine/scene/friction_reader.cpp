@@ -1,8 +1,6 @@
 // Reads the scene's [friction] table and refuses what the friction engine does not run yet.
 #include "engine/scene/friction_reader.hpp"
 
-#include <fmt/format.h>
-
 #include <string>
 
 namespace mdrsim {
@@ -36,25 +34,6 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene)
   }
   if (scene.solver.method != SolverMethod::event) {
     t.fail_at(key, "friction runs with solver.method = \"event\" only");
-  }
-  // A held F_x with glue: a let-go would move u_x within the jump, past other springs' limits,
-  // which the program loop does not solve yet.
-  if (!scene.program && scene.tangential && !scene.tangential->controller->is_fixed_grips() &&
-      scene.material.work_of_adhesion > 0.0) {
-    t.fail_at(key, fmt::format("the shorthand holds the tangential axis with control = \"{}\": "
-                               "with adhesion (work_of_adhesion > 0) friction runs with a "
-                               "fixed-grips tangential axis only (u_x driven) so far",
-                               scene.tangential->control));
-  }
-  if (!scene.program) return settings;  // the shorthand runs as its program (scene_builder)
-  for (const Stage& stage : scene.program->stages) {
-    if (stage.tangential && !stage.tangential->controller->is_fixed_grips() &&
-        scene.material.work_of_adhesion > 0.0) {
-      t.fail_at(key, fmt::format("stage '{}' drives the tangential axis with control = \"{}\": "
-                                 "with adhesion (work_of_adhesion > 0) friction runs with a "
-                                 "fixed-grips tangential axis only (u_x driven) so far",
-                                 stage.name, stage.tangential->control));
-    }
   }
   return settings;
 }
