@@ -71,7 +71,7 @@ struct DiscretizationOptions {
 /// One axis of the loading machine: its controller and, on the tangential axis, the value
 /// it holds during the pull-off.
 struct AxisLoading {
-  std::string control;  ///< the controller's registered name
+  std::string control;                               ///< the controller's registered name
   std::shared_ptr<const AxisController> controller;  ///< shared with a program built from it
   double held_value = 0.0;  ///< [m] or [N], see AxisController::held_value_key
 };

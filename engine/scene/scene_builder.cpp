@@ -15,10 +15,10 @@
 #include "engine/scene/continuum_scope.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/friction_reader.hpp"
-#include "engine/scene/shorthand_program.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/scene/shorthand_program.hpp"
 #include "engine/scene/toml_reader.hpp"
 
 namespace mdrsim {
