@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace mdrsim {
 
@@ -161,6 +162,9 @@ double ProgramRow::glue_through(std::int64_t last) {
   // the displacements (fixed by the machine, or by glued springs at no stretch), the cache
   // they drop, the run of the one offset.
   if (glued_ >= last) return 0.0;
+  if (friction_ || glued_ != in_contact_) {
+    throw std::logic_error("ProgramRow::glue_through: springs pressed or friction on the row");
+  }
   const double d = indentation();
   const double u = tangential_displacement();
   normal_.rest = d;

@@ -376,11 +376,13 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
     }
   }
   add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
-  const std::int64_t spring = change == Change::friction ? locator_.friction_event().spring
-                              : change == Change::touch  ? m + 1
-                              : change == Change::lift   ? m
-                                                         : k;
-  locator_.changed(change, spring);
+  if (row_.friction()) {  // what the locator keeps of a run that may glue again (rebinding)
+    const std::int64_t spring = change == Change::friction ? locator_.friction_event().spring
+                                : change == Change::touch  ? m + 1
+                                : change == Change::lift   ? m
+                                                           : k;
+    locator_.changed(change, spring);
+  }
   if (change != Change::fall_in && change != Change::friction) {
     ++cascade.changes;
     ++result_.counts.events;
@@ -833,8 +835,12 @@ void ProgramRunner::finish(RunResult& r) {
         // sliding, at the last equilibrium (docs/friction.md "Statuses"): where the last
         // spring began to slide, or, where a glue's jump ended in the slide, before that jump.
         r.status = RunStatus::shear_off;
-        r.critical = flight_ == JumpEnd::sliding ? flight_end_ : row_.snapshot();
-        if (flight_ == JumpEnd::sliding) r.refined_critical = flight_refined_end_;
+        if (flight_ == JumpEnd::sliding) {
+          r.critical = flight_end_;
+          r.refined_critical = flight_refined_end_;
+        } else {
+          r.critical = row_.snapshot();
+        }
         slid_ = true;
         r.warnings.push_back(fmt::format(
             "stage '{}': friction can no longer hold F_x = {:.6g} N ({} springs in contact, all "

@@ -2,6 +2,7 @@
 // along the stage's line the next one lies. The loop (program_runner.cpp) applies them.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -166,7 +167,7 @@ inline bool ChangeLocator::kept_stretch_holds(const ProgramRow& row, const StepL
   if (holdless_ && holdless_->glued == k &&
       (u == holdless_->u ||
        (holdless_->direction != 0 && (u - holdless_->u) * holdless_->direction > 0.0))) {
-    first = holdless_->checked_to + 1;
+    first = std::max(k + 1, holdless_->checked_to + 1);
     if (holdless_->checked_to > k) direction = holdless_->direction;
   }
   std::int64_t holds_to = k;
