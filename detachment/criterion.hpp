@@ -18,19 +18,35 @@ struct BoundarySpring {
 };
 
 /// The rule of Hess (paper eq. 12): the elongation dl(a) [m] at which a spring of a pure
-/// normal contact lets go at contact radius a [m].
+/// normal contact lets go at contact radius a [m], with dgamma at a (a criterion always takes
+/// the work of adhesion at the boundary spring's radius: p.work_of_adhesion_at(a)).
 inline double hess_elongation_limit(const InterfaceProperties& p, double contact_radius) {
-  return std::sqrt(hess_scale(p.work_of_adhesion, p.effective_modulus) * contact_radius);
+  return std::sqrt(hess_scale(p.work_of_adhesion_at(contact_radius), p.effective_modulus) *
+                   contact_radius);
 }
 
 /// Ratios the closed-form criteria need at every let-go, computed once.
-struct ElongationScales {
-  double hess_squared_per_radius;  ///< dl(a)^2 / a = 2 pi dgamma / E* [m]
-  double shear_ratio;              ///< G* / E* [1]
+class ElongationScales {
+ public:
+  double shear_ratio;  ///< G* / E* [1]
 
   explicit ElongationScales(const InterfaceProperties& p)
-      : hess_squared_per_radius(hess_scale(p.work_of_adhesion, p.effective_modulus)),
-        shear_ratio(p.effective_shear_modulus / p.effective_modulus) {}
+      : shear_ratio(p.effective_shear_modulus / p.effective_modulus),
+        hess_squared_per_radius_(hess_scale(p.work_of_adhesion, p.effective_modulus)),
+        by_radius_(p.work_of_adhesion_by_radius.get()),
+        effective_modulus_(p.effective_modulus) {}
+
+  /// dl(a)^2 = 2 pi a dgamma(a) / E* [m^2], in the arithmetic of hess_elongation_limit.
+  double hess_squared(double contact_radius) const {
+    return (by_radius_ ? hess_scale(by_radius_->at(contact_radius), effective_modulus_)
+                       : hess_squared_per_radius_) *
+           contact_radius;
+  }
+
+ private:
+  double hess_squared_per_radius_;   ///< 2 pi dgamma / E* of a uniform interface [m]
+  const RadialAdhesion* by_radius_;  ///< dgamma(r), or null (owned by the material)
+  double effective_modulus_;         ///< E* [Pa]
 };
 
 /// Required: margin(). Optional: critical_elongation().

@@ -9,7 +9,7 @@ double DeformationCriterion::margin(const BoundarySpring& s) const {
 }
 
 std::optional<double> DeformationCriterion::critical_elongation(double a, double ux) const {
-  const double squared = scales_.hess_squared_per_radius * a - ux * ux;
+  const double squared = scales_.hess_squared(a) - ux * ux;
   return squared > 0.0 ? std::sqrt(squared) : 0.0;
 }
 

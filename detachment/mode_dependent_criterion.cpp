@@ -151,18 +151,27 @@ double ModeDependentCriterion::margin(const BoundarySpring& s) const {
   const double c =
       normal == 0.0 ? (shear > 0.0 ? cos_at_pure_shear_ : 1.0)
                     : std::cos((1.0 - lambda_) * std::atan2(std::sqrt(shear), std::sqrt(normal)));
-  return 2.0 * std::numbers::pi * s.contact_radius * p_.work_of_adhesion - (normal + shear) * c * c;
+  return 2.0 * std::numbers::pi * s.contact_radius * p_.work_of_adhesion_at(s.contact_radius) -
+         (normal + shear) * c * c;
 }
 
 std::optional<double> ModeDependentCriterion::critical_elongation(double a, double ux) const {
   if (lambda_ == 1.0) {  // mode-mixed's let-go, to the bit (paper eq. 21)
-    const double squared = scales_.hess_squared_per_radius * a - scales_.shear_ratio * ux * ux;
+    const double squared = scales_.hess_squared(a) - scales_.shear_ratio * ux * ux;
     return squared > 0.0 ? std::sqrt(squared) : 0.0;
   }
   // 1 - lambda rounds to 1 for lambda <= 2^-54 (and 0): margin() is then normal-only's.
-  if (mu_ == 1.0) return std::sqrt(scales_.hess_squared_per_radius * a);
+  if (mu_ == 1.0) return std::sqrt(scales_.hess_squared(a));
   const double root_a = std::sqrt(a);
-  return root_a * root_per_radius_ * let_go_ratio(std::abs(ux) / root_a * t_per_root_);
+  if (!p_.work_of_adhesion_by_radius) {
+    return root_a * root_per_radius_ * let_go_ratio(std::abs(ux) / root_a * t_per_root_);
+  }
+  // dgamma at a: the table of the ratio is in t alone, the scales follow dgamma(a).
+  const double root_work = std::sqrt(2.0 * std::numbers::pi) * std::sqrt(p_.work_of_adhesion_at(a));
+  if (!(root_work > 0.0)) return 0.0;  // no glue at this radius
+  const double t_per_root = std::sqrt(p_.effective_shear_modulus) / root_work * sin_half_;
+  return root_a * (root_work / std::sqrt(p_.effective_modulus)) *
+         let_go_ratio(std::abs(ux) / root_a * t_per_root);
 }
 
 // The let-go elongation over sqrt(2 pi a dgamma / E*), from the table.

@@ -8,7 +8,7 @@ double NormalOnlyCriterion::margin(const BoundarySpring& s) const {
 }
 
 std::optional<double> NormalOnlyCriterion::critical_elongation(double a, double) const {
-  return std::sqrt(scales_.hess_squared_per_radius * a);
+  return std::sqrt(scales_.hess_squared(a));
 }
 
 }  // namespace mdrsim

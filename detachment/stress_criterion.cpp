@@ -11,7 +11,7 @@ double StressCriterion::margin(const BoundarySpring& s) const {
 
 std::optional<double> StressCriterion::critical_elongation(double a, double ux) const {
   const double shear = scales_.shear_ratio * ux;
-  const double squared = scales_.hess_squared_per_radius * a - shear * shear;
+  const double squared = scales_.hess_squared(a) - shear * shear;
   return squared > 0.0 ? std::sqrt(squared) : 0.0;
 }
 

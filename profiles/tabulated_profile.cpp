@@ -1,6 +1,8 @@
 // The tabulated profile: table checks, the CSV reader and eq. 4 on the interpolated shape.
 #include "profiles/tabulated_profile.hpp"
 
+#include "profiles/two_column_file.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -25,25 +27,6 @@ namespace mdrsim {
 namespace {
 
 constexpr std::size_t kLeastPoints = 4;  // the not-a-knot spline's least
-constexpr std::uintmax_t kLargestFile = 64u << 20;
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
-
-std::optional<double> parse_number(std::string_view s) {
-  s = trim(s);
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  double v = 0.0;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (s.empty() || error != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) {
-    return std::nullopt;
-  }
-  return v;
-}
-
 /// sum_i w_i fn(t_i) over [lo, hi] with Boost's N-point Gauss-Legendre nodes.
 template <unsigned N, class Fn>
 void gauss_legendre(double lo, double hi, Fn fn) {
@@ -93,52 +76,8 @@ std::optional<TableProblem> find_table_problem(const ProfileTable& t) {
 }
 
 ProfileTable read_profile_table(const std::string& path) {
-  const std::string shown = std::filesystem::path(path).lexically_normal().string();
-  std::error_code ec;
-  std::ifstream file(path, std::ios::binary);
-  if (!file || std::filesystem::is_directory(path, ec)) {
-    throw std::invalid_argument(fmt::format(
-        "cannot read '{}': {}", shown,
-        std::filesystem::is_directory(path, ec) ? "it is a directory" : std::strerror(errno)));
-  }
-  // Read through a capped buffer, not by the file's size: a device or a pipe has none.
-  std::string content;
-  std::vector<char> chunk(1 << 16);
-  while (file.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || file.gcount() > 0) {
-    content.append(chunk.data(), static_cast<std::size_t>(file.gcount()));
-    if (content.size() > kLargestFile) {
-      throw std::invalid_argument(
-          fmt::format("'{}' is larger than {} MiB", shown, kLargestFile >> 20));
-    }
-  }
-  if (file.bad()) throw std::invalid_argument(fmt::format("cannot read '{}'", shown));
-  std::istringstream in(content);
-  ProfileTable table;
-  std::string line;
-  bool header_allowed = true;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    const std::string_view text = trim(line);
-    if (text.empty() || text.front() == '#') continue;
-    const auto comma = text.find(',');
-    const bool header = header_allowed && comma != std::string_view::npos &&
-                        trim(text.substr(0, comma)) == "r" && trim(text.substr(comma + 1)) == "f";
-    header_allowed = false;
-    if (header) continue;
-    const auto r =
-        comma == std::string_view::npos ? std::nullopt : parse_number(text.substr(0, comma));
-    const auto f =
-        comma == std::string_view::npos ? std::nullopt : parse_number(text.substr(comma + 1));
-    if (!r || !f) {
-      std::string quoted(text.substr(0, 60));
-      if (text.size() > 60) quoted += "...";
-      throw std::invalid_argument(fmt::format(
-          "line {} of '{}': expected two numbers r,f, got \"{}\"", number, shown, quoted));
-    }
-    table.radii.push_back(*r);
-    table.gaps.push_back(*f);
-    table.lines.push_back(number);
-  }
-  return table;
+  TwoColumnFile columns = read_two_column_file(path, "r", "f");
+  return {std::move(columns.first), std::move(columns.second), std::move(columns.lines)};
 }
 
 TabulatedProfile::TabulatedProfile(const ProfileTable& table)

@@ -2,6 +2,12 @@
 // shared by the engine and the parts (a criterion sees it as InterfaceProperties).
 #pragma once
 
+#include <cmath>
+#include <memory>
+
+#include "engine/base/hess_scale.hpp"
+#include "engine/base/radial_adhesion.hpp"
+
 namespace mdrsim {
 
 struct Material {
@@ -11,6 +17,36 @@ struct Material {
   /// dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma: the advancing front of a loading program glues
   /// the spring just outside the contact at the gap sqrt(2 pi x dgamma_a / E*) (0: on touch).
   double approach_work_of_adhesion = 0.0;
+  /// dgamma(r) and dgamma_a(r) where the scene gives a table or a sinusoid (null: the numbers
+  /// above hold at every radius). The numbers above are then the scale values (the mean, or
+  /// the value at r = 0): F0, a0 and d0 use them; a spring at radius x uses the value at x.
+  std::shared_ptr<const RadialAdhesion> work_of_adhesion_by_radius;
+  std::shared_ptr<const RadialAdhesion> approach_work_of_adhesion_by_radius;
+
+  /// dgamma at the radius r [m] of a spring [J/m^2]: every criterion lets go with this.
+  double work_of_adhesion_at(double r) const {
+    return work_of_adhesion_by_radius ? work_of_adhesion_by_radius->at(r) : work_of_adhesion;
+  }
+  /// dgamma_a at the radius r [m]: the advancing front glues with this.
+  double approach_work_of_adhesion_at(double r) const {
+    return approach_work_of_adhesion_by_radius ? approach_work_of_adhesion_by_radius->at(r)
+                                               : approach_work_of_adhesion;
+  }
+  /// The gap g(x) - d [m] at which the advancing front glues the spring at radius x [m]:
+  /// sqrt(2 pi x dgamma_a(x) / E*) (0: on touch).
+  double advancing_glue_gap(double x) const {
+    return std::sqrt(hess_scale(approach_work_of_adhesion_at(x), effective_modulus) * x);
+  }
+  /// Whether either work of adhesion varies with the radius.
+  bool adhesion_varies() const {
+    return work_of_adhesion_by_radius != nullptr || approach_work_of_adhesion_by_radius != nullptr;
+  }
+  /// The largest dgamma at any radius [J/m^2] (the scales of what is zero use it).
+  double largest_work_of_adhesion() const {
+    return work_of_adhesion_by_radius ? work_of_adhesion_by_radius->largest() : work_of_adhesion;
+  }
+  /// Whether any spring has glue to lose: dgamma > 0 somewhere.
+  bool adhesive() const { return largest_work_of_adhesion() > 0.0; }
 
   /// From Young's modulus E [Pa] and Poisson's ratio nu (paper eq. 8).
   static Material from_youngs_modulus(double youngs_modulus, double poisson_ratio,

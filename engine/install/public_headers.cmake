@@ -8,6 +8,7 @@
 set(MDRSIM_PUBLIC_HEADERS
     # vocabulary of the parts: material and interface properties, parameters, the registry
     engine/base/material.hpp
+    engine/base/radial_adhesion.hpp
     engine/base/hess_scale.hpp
     engine/base/parameters.hpp
     engine/base/part_registry.hpp

@@ -49,7 +49,7 @@ class ProgramRow {
   double image(std::int64_t i) const { return values(i).image; }  ///< g(x_i) [m]
   double front_limit(std::int64_t i) const {  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
     SpringValues& v = values(i);
-    if (v.front_limit < 0.0) v.front_limit = std::sqrt(front_coefficient_ * position(i));
+    if (v.front_limit < 0.0) v.front_limit = front_limit_at(material_, position(i));
     return v.front_limit;
   }
   double spacing() const { return spacing_; }
@@ -57,7 +57,7 @@ class ProgramRow {
   /// The gap g(x) - d at which spring i > 1 of an adhesive front glues at x [m]:
   /// sqrt(2 pi x dgamma_a / E*), in the very arithmetic of front_limit.
   static double front_limit_at(const Material& material, double x) {
-    return std::sqrt(front_coefficient(material) * x);
+    return material.advancing_glue_gap(x);
   }
 
   std::int64_t glued() const { return glued_; }            ///< k
@@ -73,7 +73,7 @@ class ProgramRow {
   /// Springs 1..n glue, each at the present u_x, on a row with nothing in contact: a zoomed
   /// row's start (program_zoom.hpp).
   void glue_first(std::int64_t n) { glue_through(n); }
-  bool adhesive() const { return material_.work_of_adhesion > 0.0; }
+  bool adhesive() const { return material_.adhesive(); }
   /// Coulomb friction on every spring in contact from now on (a row with nothing in contact).
   void enable_friction(const FrictionSettings& settings) {
     friction_.emplace(material_, settings, spacing_);
@@ -148,6 +148,11 @@ class ProgramRow {
   void glue_next();
   /// Whether the advancing front glues a spring as it touches it (dgamma_a = 0).
   bool glues_on_touch() const { return front_coefficient_ == 0.0; }
+  /// Whether the advancing front of a row of this material glues (or presses) on touch at
+  /// every radius: dgamma_a = 0 everywhere.
+  static bool glues_on_touch(const Material& material) {
+    return front_coefficient(material) == 0.0;
+  }
   /// Springs k+1..last glue at the present u_x, on a row without friction whose springs in
   /// contact are all glued, as a press that glues on touch reaches them one by one (the same
   /// row as glue_next one at a time, to the bit, where the machine fixes d and u_x); returns the
@@ -180,8 +185,12 @@ class ProgramRow {
   void record_edge_forces(bool on) { edge_forces_ = on; }
 
  private:
+  /// 2 pi dgamma_a / E* [m], the largest where dgamma_a varies: 0 only where the front glues
+  /// on touch at every radius.
   static double front_coefficient(const Material& material) {
-    return hess_scale(material.approach_work_of_adhesion, material.effective_modulus);
+    const auto& by_radius = material.approach_work_of_adhesion_by_radius;
+    return hess_scale(by_radius ? by_radius->largest() : material.approach_work_of_adhesion,
+                      material.effective_modulus);
   }
 
   /// The equilibrium of each axis, computed once per change of the row or of that axis: a

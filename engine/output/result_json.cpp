@@ -108,6 +108,14 @@ void add_provenance(nlohmann::ordered_json& j, const Scene& scene, const RunResu
                    {"effective_shear_modulus", m.effective_shear_modulus},
                    {"work_of_adhesion", m.work_of_adhesion},
                    {"approach_work_of_adhesion", m.approach_work_of_adhesion}};
+  // Where dgamma varies, the numbers above are its scale values; say what varies.
+  if (m.work_of_adhesion_by_radius) {
+    j["material"]["work_of_adhesion_by_radius"] = m.work_of_adhesion_by_radius->describe();
+  }
+  if (m.approach_work_of_adhesion_by_radius) {
+    j["material"]["approach_work_of_adhesion_by_radius"] =
+        m.approach_work_of_adhesion_by_radius->describe();
+  }
   if (scene.shorthand()) {
     j["preload"] = {{"glued_radius", scene.glued_radius},
                     {"depth", scene.preload_depth},

@@ -155,7 +155,7 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
       fmt::print(out, "dimensionless: {}\n", line);
       fmt::print(out, "scales: F0 = {:.8g} N, a0 = {:.8g} m, d0 = {:.8g} m; {}\n", s->force,
                  s->radius, s->depth, s->basis);
-    } else if (!(scene.material.work_of_adhesion > 0.0)) {
+    } else if (!(scene.material.adhesive())) {
       fmt::print(out, "dimensionless: not defined without adhesion (F0 = 0)\n");
     } else {
       fmt::print(out,

@@ -31,7 +31,7 @@ constexpr double kRounding = 1e-9;
 void check_at(const DetachmentCriterion& criterion, std::string_view name, const Material& material,
               double a) {
   const double hess =
-      std::sqrt(hess_scale(material.work_of_adhesion, material.effective_modulus) * a);
+      std::sqrt(hess_scale(material.work_of_adhesion_at(a), material.effective_modulus) * a);
   const double e_scale = hess > 0.0 && std::isfinite(hess) ? hess : 1e-6 * a;
   const double ratio = material.effective_modulus / material.effective_shear_modulus;
   const double u_scale = std::isfinite(ratio) && ratio > 0.0 ? e_scale * std::sqrt(ratio) : e_scale;

@@ -15,7 +15,7 @@ void check_disk_states(const Scene& scene, RunResult& result) {
   const Profile& profile = *scene.profile;
   if (profile.always_one_disk()) return;
   const double modulus = scene.material.effective_modulus;
-  const bool adhesive = scene.material.work_of_adhesion > 0.0;
+  const bool adhesive = scene.material.adhesive();
   struct Worst {
     std::string state;
     DiskValidity check;

@@ -10,9 +10,10 @@
 namespace mdrsim {
 namespace {
 
-/// The depth at which a spring at radius x [m] glues: g(x) minus the advancing limit.
-double gluing_depth(const Profile& profile, double coefficient, double x) {
-  return profile.mdr_image(x) - std::sqrt(coefficient * x);
+/// The depth at which a spring at radius x [m] glues (or touches): g(x) minus the advancing
+/// limit.
+double gluing_depth(const Profile& profile, const Material& material, bool glued, double x) {
+  return profile.mdr_image(x) - (glued ? material.advancing_glue_gap(x) : 0.0);
 }
 
 }  // namespace
@@ -33,14 +34,14 @@ std::optional<double> row_radius_reaching_held(const Profile& profile, const Mat
     }
     images.add(profile.mdr_image(a));
     const double sum = images.value();
-    const double d_n = gluing_depth(profile, deepest.limit_coefficient, a);
+    const double d_n = gluing_depth(profile, material, deepest.glued_edge, a);
     double d_next = d_n;
     const double x_next = a + dx;
     if (x_next <= profile.outer_radius()) {
-      d_next = gluing_depth(profile, deepest.limit_coefficient, x_next);
+      d_next = gluing_depth(profile, material, deepest.glued_edge, x_next);
     } else {
       // Beyond the profile's end (a sphere's radius): the step before it, continued.
-      d_next = 2.0 * d_n - gluing_depth(profile, deepest.limit_coefficient, a - dx);
+      d_next = 2.0 * d_n - gluing_depth(profile, material, deepest.glued_edge, a - dx);
     }
     const auto control = [&](double d) {
       return c.displacement_coefficient * d +

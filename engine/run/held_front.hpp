@@ -16,8 +16,9 @@ namespace mdrsim {
 struct HeldDeepest {
   AffineConstraint constraint;
   double held;
-  /// The advancing limit's square per radius, l(x)^2 / x = 2 pi dgamma_a / E* [m] (0: touch).
-  double limit_coefficient;
+  /// Whether the front glues (at the gap l(x) = Material::advancing_glue_gap(x)) or presses
+  /// on touch (l = 0).
+  bool glued_edge;
 };
 
 /// The radius a of a row of `springs` springs (spring i at i a / N) on which the row's own

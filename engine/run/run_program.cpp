@@ -70,13 +70,11 @@ double guess_radius(const Scene& scene) {
 double front_radius(const Scene& scene, const LargestContact& largest, double spacing) {
   const Profile& profile = *scene.profile;
   if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
-  const double coefficient =
-      largest.glued_edge
-          ? hess_scale(scene.material.approach_work_of_adhesion, scene.material.effective_modulus)
-          : 0.0;
-  if (coefficient == 0.0) return profile.contact_radius_at_depth(largest.indentation);
+  if (!largest.glued_edge || ProgramRow::glues_on_touch(scene.material)) {
+    return profile.contact_radius_at_depth(largest.indentation);
+  }
   const auto excess = [&](double x) {
-    return profile.mdr_image(x) - std::sqrt(coefficient * x) - largest.indentation;
+    return profile.mdr_image(x) - scene.material.advancing_glue_gap(x) - largest.indentation;
   };
   const double lo = spacing * static_cast<double>(largest.springs);
   double hi = lo + spacing;
@@ -128,12 +126,10 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   if (!(deepest > 0.0) || profile.fixed_contact_radius()) return std::nullopt;
   // The front glues where the gap reaches sqrt(2 pi x dgamma_a / E*) (0: glue or press on
   // touch), as ProgramRow's front does.
-  const double coefficient =
-      scene.material.work_of_adhesion > 0.0
-          ? hess_scale(scene.material.approach_work_of_adhesion, scene.material.effective_modulus)
-          : 0.0;
+  const bool glued_edge = scene.material.adhesive();
   const auto excess = [&](double x) {
-    return profile.mdr_image(x) - std::sqrt(coefficient * x) - deepest;
+    return profile.mdr_image(x) - (glued_edge ? scene.material.advancing_glue_gap(x) : 0.0) -
+           deepest;
   };
   double hi = 0.0;
   try {
@@ -150,7 +146,7 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   }
   const double a_max = bracketed_root(excess, 0.0, hi);
   if (!(a_max > 0.0)) return std::nullopt;
-  return frame_at(scene, a_max, deepest, coefficient > 0.0);
+  return frame_at(scene, a_max, deepest, glued_edge && !ProgramRow::glues_on_touch(scene.material));
 }
 
 /// The continuum front [m] at which the control a_u d + a_F F reaches the held value, with
@@ -161,7 +157,7 @@ std::optional<double> continuum_front_reaching_held(const Scene& scene, const He
   const Profile& profile = *scene.profile;
   const double e_star = scene.material.effective_modulus;
   const auto excess = [&](double a) {
-    const double limit = std::sqrt(held.limit_coefficient * a);
+    const double limit = held.glued_edge ? scene.material.advancing_glue_gap(a) : 0.0;
     const double d = profile.mdr_image(a) - limit;
     const double force = e_star * (profile.nonadhesive_force_per_modulus(a) - 2.0 * a * limit);
     return held.constraint.displacement_coefficient * d +
@@ -210,10 +206,7 @@ ProgramRowFrame located_frame(const Scene& scene) {
   ProgramRowFrame frame = frame_at(scene, a_max, largest.indentation, largest.glued_edge);
   if (largest.normal_constraint.force_coefficient != 0.0 &&
       !scene.profile->fixed_contact_radius()) {
-    const HeldDeepest held{largest.normal_constraint, largest.normal_held,
-                           largest.glued_edge ? hess_scale(scene.material.approach_work_of_adhesion,
-                                                           scene.material.effective_modulus)
-                                              : 0.0};
+    const HeldDeepest held{largest.normal_constraint, largest.normal_held, largest.glued_edge};
     if (const auto a =
             continuum_front_reaching_held(scene, held, a_max, pilot_radius / kPilotSprings)) {
       frame = {*a, scene.profile->mdr_image(*a)};
@@ -234,7 +227,7 @@ ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
     }
   }
   return zero_scale(scene.material.effective_modulus, radius, image,
-                    scene.material.work_of_adhesion, held_force);
+                    scene.material.largest_work_of_adhesion(), held_force);
 }
 
 ProgramRowFrame program_row_frame(const Scene& scene) {

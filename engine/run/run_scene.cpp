@@ -77,7 +77,7 @@ void warn_resolution(const Scene& scene, RunResult& result) {
   const std::int64_t springs = result.springs;
   const double glued = scene.glued_radius;
   const ResolvedRow row{springs, glued, "glued", "discretization.rtol zooms in on it"};
-  if (auto w = unresolved_smooth_peel(result, row, scene.material.work_of_adhesion > 0.0)) {
+  if (auto w = unresolved_smooth_peel(result, row, scene.material.adhesive())) {
     result.warnings.push_back(std::move(*w));
   } else if (!status_resolved(result)) {
     result.warnings.push_back(cannot_tell_status(result));
@@ -104,7 +104,7 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
   const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
                         "discretization.rtol refines the row until it is resolved"};
-  const bool adhesive = scene.material.work_of_adhesion > 0.0;
+  const bool adhesive = scene.material.adhesive();
   for (auto w : {never_in_contact(result, row), unresolved_critical(result, row),
                  unresolved_smooth_peel(result, row, adhesive)}) {
     if (w) result.warnings.push_back(std::move(*w));

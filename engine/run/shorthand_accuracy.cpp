@@ -81,8 +81,8 @@ void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result) {
 
 ZeroScale shorthand_zero_scale(const Scene& scene) {
   return zero_scale(scene.material.effective_modulus, scene.glued_radius,
-                    scene.profile->mdr_image(scene.glued_radius), scene.material.work_of_adhesion,
-                    scene.preload_force);
+                    scene.profile->mdr_image(scene.glued_radius),
+                    scene.material.largest_work_of_adhesion(), scene.preload_force);
 }
 
 void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result) {

@@ -9,6 +9,8 @@
 namespace mdrsim {
 
 bool continuum_answers(const Scene& scene) {
+  // dgamma(r) pins the front and lets it jump at every change: several folds.
+  if (scene.material.adhesion_varies()) return false;
   // One fold on the branch: the shapes that are always one disk (convex classics). A table
   // or a ripple may fold several times; the row follows every jump.
   if (scene.program) {

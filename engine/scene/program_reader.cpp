@@ -185,7 +185,7 @@ void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Mater
                        }
                        return std::nullopt;
                      });
-  if (values.approach_work_of_adhesion > 0.0) {
+  if (values.approach_work_of_adhesion > 0.0 || values.approach_work_of_adhesion_by_radius) {
     material.fail_at("approach_work_of_adhesion",
                      "applies to loading programs ([[loading.stage]]) only; the shorthand's "
                      "preload glues on touch");

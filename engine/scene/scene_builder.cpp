@@ -12,6 +12,7 @@
 
 #include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/preload.hpp"
+#include "engine/scene/adhesion_reader.hpp"
 #include "engine/scene/continuum_scope.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/friction_reader.hpp"
@@ -28,21 +29,6 @@ constexpr Bound kPositive{0.0, false};
 
 /// Springs across the glued radius when the scene gives neither springs nor rtol.
 constexpr std::int64_t kDefaultSprings = 2000;
-
-/// dgamma_a [J/m^2] of the advancing front: 0 <= dgamma_a <= dgamma (docs/programs.md).
-double read_approach_work(TomlReader& t, double dgamma) {
-  const double approach = t.optional_number({.key = "approach_work_of_adhesion",
-                                             .help = "dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma",
-                                             .default_value = 0.0,
-                                             .lower = Bound{0.0, true}})
-                              .value_or(0.0);
-  if (approach > dgamma) {
-    t.fail_range("approach_work_of_adhesion",
-                 fmt::format("= {} is above work_of_adhesion = {} (0 <= dgamma_a <= dgamma)",
-                             approach, dgamma));
-  }
-  return approach;
-}
 
 /// An isotropic half-space has G*/E* = 2(1 - nu)/(2 - nu) in [2/3, 4/3) for -1 < nu <= 0.5
 /// (paper eq. 8); a pair outside is accepted, with a warning.
@@ -67,17 +53,18 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings) {
               "give youngs_modulus and poisson_ratio, or effective_modulus (and "
               "effective_shear_modulus), not both");
   }
-  const double dgamma = t.number({.key = "work_of_adhesion",
-                                  .help = "work of adhesion dgamma [J/m^2], >= 0",
-                                  .lower = Bound{0.0, true}});
-  const double approach = read_approach_work(t, dgamma);
+  const ReadAdhesion dgamma =
+      read_adhesion(t, "work_of_adhesion", "work of adhesion dgamma [J/m^2], >= 0", std::nullopt);
+  const ReadAdhesion approach = read_adhesion(t, "approach_work_of_adhesion",
+                                              "dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma", 0.0);
   if (effective) {
     const double e_star =
         t.number({.key = "effective_modulus", .help = "E* [Pa], > 0", .lower = kPositive});
     const auto g_star = t.optional_number(
         {.key = "effective_shear_modulus", .help = "G* [Pa], > 0", .lower = kPositive});
     if (!g_star) t.record("effective_shear_modulus", e_star);
-    const Material m{e_star, g_star.value_or(e_star), dgamma, approach};
+    Material m{e_star, g_star.value_or(e_star), 0.0};
+    apply_adhesion(t, dgamma, approach, m);
     warn_moduli(t, m, warnings);
     return m;
   }
@@ -88,8 +75,8 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings) {
                               .help = "Poisson's ratio nu in (-1, 0.5]",
                               .lower = Bound{-1.0, false},
                               .upper = Bound{0.5, true}});
-  Material m = Material::from_youngs_modulus(e, nu, dgamma);
-  m.approach_work_of_adhesion = approach;
+  Material m = Material::from_youngs_modulus(e, nu, 0.0);
+  apply_adhesion(t, dgamma, approach, m);
   // Extreme E and nu near -1 overflow G = E/(2(1+nu)) (paper eq. 8).
   for (const double modulus : {m.effective_modulus, m.effective_shear_modulus}) {
     if (!std::isfinite(modulus) || !(modulus > 0.0)) {
@@ -371,6 +358,12 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
       if (const auto why = continuum_program_refusal(scene)) {
         solver->fail_at("method", *why + "; use method = \"event\" (docs/continuum.md)");
       }
+    }
+    if (scene.solver.method == SolverMethod::continuum && scene.material.adhesion_varies()) {
+      solver->fail_at("method",
+                      "a work of adhesion that varies with the radius pins and releases the "
+                      "front at every change (several folds), and the continuum route follows "
+                      "one fold only; use method = \"event\" (docs/continuum.md)");
     }
     if (scene.solver.method == SolverMethod::continuum && scene.profile_name == "wavy" &&
         !scene.profile->always_one_disk()) {

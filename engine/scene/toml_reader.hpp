@@ -34,6 +34,11 @@ class TomlReader {
              std::filesystem::path base_dir, nlohmann::json* resolved = nullptr);
 
   bool has(std::string_view key) const { return table_->contains(key); }
+  /// Whether the value at `key` is a table (an inline one, { ... }, or [key]).
+  bool holds_table(std::string_view key) const {
+    const toml::node* node = table_->get(key);
+    return node != nullptr && node->is_table();
+  }
 
   /// Reads a declared parameter; absent and not required gives its default or nullopt.
   std::optional<ParameterValue> read(const ParameterSpec& spec);

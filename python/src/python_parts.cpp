@@ -336,6 +336,10 @@ void bind_parts(py::module_& m) {
       .def_readonly("work_of_adhesion", &Material::work_of_adhesion, "dgamma [J/m^2]")
       .def_readonly("approach_work_of_adhesion", &Material::approach_work_of_adhesion,
                     "dgamma_a [J/m^2]")
+      .def("work_of_adhesion_at", &Material::work_of_adhesion_at, py::arg("r"),
+           "dgamma at the radius r [m] of a spring [J/m^2] (a criterion lets go with this)")
+      .def("approach_work_of_adhesion_at", &Material::approach_work_of_adhesion_at, py::arg("r"),
+           "dgamma_a at the radius r [m] [J/m^2]")
       .def("__repr__", [](const Material& p) {
         return fmt::format(
             "Material(effective_modulus={}, effective_shear_modulus={}, work_of_adhesion={}, "

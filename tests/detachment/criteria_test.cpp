@@ -13,7 +13,7 @@
 
 namespace {
 
-constexpr mdrsim::InterfaceProperties kInterface{1e6, 0.8e6, 0.05};
+const mdrsim::InterfaceProperties kInterface{1e6, 0.8e6, 0.05};
 constexpr double kRadius = 2e-4;
 
 double dl(double a) {

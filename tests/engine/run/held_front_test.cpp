@@ -94,9 +94,9 @@ TEST(HeldFront, DeepestHeldStateReachesSpringN) {
 
 TEST(HeldFront, RowRadiusPutsHeldBetweenSpringNAndTheNext) {
   const ParabolicProfile profile(kRadius);
-  const Material material = Material::from_youngs_modulus(kModulus, 0.0, kAdhesion);
-  const double coefficient = 2.0 * kPi * kAdhesion / kModulus;
-  const HeldDeepest held{{0.0, 1.0}, 5e-3, coefficient};
+  Material material = Material::from_youngs_modulus(kModulus, 0.0, kAdhesion);
+  material.approach_work_of_adhesion = kAdhesion;  // the front glues at the Hess limit
+  const HeldDeepest held{{0.0, 1.0}, 5e-3, true};
   for (const std::int64_t n : {3, 50, 1000}) {
     const double guess = front_at([](double a) { return force(a, kAdhesion); }, 5e-3);
     const auto a = row_radius_reaching_held(profile, material, held, n, guess);
