@@ -79,6 +79,24 @@ echo "== a wavy sphere: pull-off against the ripple amplitude" >&2
   --csv "$results/wavy_amplitude.csv" --threads "$threads" --log-level error
 "$py" scripts/plot_wavy.py --csv "$results/wavy_amplitude.csv" --out "$results"
 
+# Beyond the paper: a work of adhesion that varies with the radius, the crack-front codes'
+# axisymmetric test case (w0 (1 + A sin(2 pi r / 0.1))) for A = 0, 0.1, 0.2, its loop drawn
+# against the uniform JKR loop; A = 0 against the JKR closed forms, each row within 3/N of its
+# rtol run (docs/scene.md "Adhesion that varies with radius"; about 1 s).
+echo "== adhesion that varies with radius: the crack-front test case" >&2
+for amplitude in 0 0.1 0.2; do
+  ripple=(--set "material.work_of_adhesion.amplitude=$amplitude"
+          --set "material.approach_work_of_adhesion.amplitude=$amplitude")
+  "$mdrsim" run scenes/programs/crack_front_sinusoid.toml "${ripple[@]}" \
+    --set discretization.springs=20000 --trajectory "$results/crack_front_$amplitude.csv" \
+    --json "$results/crack_front_$amplitude.json" --log-level error
+  "$mdrsim" run scenes/programs/crack_front_sinusoid.toml "${ripple[@]}" \
+    --set discretization.rtol=1e-6 --json "$results/crack_front_${amplitude}_rtol.json" \
+    --log-level error
+done
+echo
+"$py" scripts/plot_crack_front.py --results "$results" --amplitudes 0 0.1 0.2
+
 # Beyond the paper: Coulomb friction (docs/friction.md) at 1000 and 10000 springs, a fretting
 # cycle against Cattaneo-Mindlin and Mindlin-Deresiewicz and the transition from adhesion to
 # sliding friction (chi = mu F_z / F_x,peak below and above 1) against its closed forms; their
