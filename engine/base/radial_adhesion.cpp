@@ -11,35 +11,44 @@
 
 namespace mdrsim {
 
-std::string find_adhesion_table_problem(const RadialAdhesion::Table& t) {
-  if (t.radii.empty()) return "is empty: expected at least one point";
+std::optional<AdhesionTableProblem> find_adhesion_table_problem(const RadialAdhesion::Table& t) {
+  if (t.radii.empty())
+    return AdhesionTableProblem{"r", std::nullopt, "is empty: expected at least one point"};
   if (t.radii.size() != t.values.size()) {
-    return fmt::format("has {} radii and {} values: expected as many of each", t.radii.size(),
-                       t.values.size());
+    return AdhesionTableProblem{"value", std::nullopt,
+                                fmt::format("has {} values for {} radii: expected as many of each",
+                                            t.values.size(), t.radii.size())};
   }
   for (std::size_t i = 0; i < t.radii.size(); ++i) {
     if (!std::isfinite(t.radii[i]) || t.radii[i] < 0.0) {
-      return fmt::format("r[{}] = {} is not a finite radius >= 0", i, t.radii[i]);
+      return AdhesionTableProblem{
+          "r", i, fmt::format("r[{}] = {} is not a finite radius >= 0", i, t.radii[i])};
     }
     if (!std::isfinite(t.values[i]) || t.values[i] < 0.0) {
-      return fmt::format("value[{}] = {} at r = {} is not a finite work of adhesion >= 0", i,
-                         t.values[i], t.radii[i]);
+      return AdhesionTableProblem{
+          "value", i,
+          fmt::format("value[{}] = {} at r = {} is not a finite work of adhesion >= 0", i,
+                      t.values[i], t.radii[i])};
     }
     if (i > 0 && t.radii[i] < t.radii[i - 1]) {
-      return fmt::format("r[{}] = {} is below r[{}] = {}: expected radii in increasing order", i,
-                         t.radii[i], i - 1, t.radii[i - 1]);
+      return AdhesionTableProblem{
+          "r", i,
+          fmt::format("r[{}] = {} is below r[{}] = {}: expected radii in increasing order", i,
+                      t.radii[i], i - 1, t.radii[i - 1])};
     }
     if (i > 1 && t.radii[i] == t.radii[i - 2]) {
-      return fmt::format("r[{}] = r[{}] = r[{}] = {}: a radius at most twice (a step)", i - 2,
-                         i - 1, i, t.radii[i]);
+      return AdhesionTableProblem{
+          "r", i,
+          fmt::format("r[{}] = r[{}] = r[{}] = {}: a radius at most twice (a step)", i - 2, i - 1,
+                      i, t.radii[i])};
     }
   }
-  return {};
+  return std::nullopt;
 }
 
 RadialAdhesion::RadialAdhesion(Table table) {
-  if (const std::string problem = find_adhesion_table_problem(table); !problem.empty()) {
-    throw std::invalid_argument("the table " + problem);
+  if (const auto problem = find_adhesion_table_problem(table)) {
+    throw std::invalid_argument(problem->message);
   }
   breakpoints_ = table.radii;
   breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end()), breakpoints_.end());

@@ -94,9 +94,16 @@ inline double RadialAdhesion::finest_length() const {
   return finest;
 }
 
-/// What is wrong with a table, or an empty string: "r[3] = ... is below r[2] = ...",
-/// "value[1] = -0.2 is negative", "r[2] = r[3] = r[4]: a radius at most twice (a step)".
-std::string find_adhesion_table_problem(const RadialAdhesion::Table& table);
+/// What is wrong with a table: the column it is about ("r" or "value"), the point where one
+/// is named, and the message ("r[3] = ... is below r[2] = ...", "value[1] = -0.2 at r = ...
+/// is not a finite work of adhesion >= 0", "r[2] = r[3] = r[4] = ...: a radius at most twice
+/// (a step)").
+struct AdhesionTableProblem {
+  std::string column;
+  std::optional<std::size_t> point;
+  std::string message;
+};
+std::optional<AdhesionTableProblem> find_adhesion_table_problem(const RadialAdhesion::Table& table);
 
 /// The first radius [m] where `approach` exceeds `receding` (0 <= dgamma_a <= dgamma must hold
 /// at every r): checked at both tables' points (and just inside each, for steps) and, with a

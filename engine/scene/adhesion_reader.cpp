@@ -51,20 +51,13 @@ std::shared_ptr<const RadialAdhesion> read_table(TomlReader& w) {
     table.values = std::get<std::vector<double>>(*w.read(
         {.key = "value", .kind = ParameterKind::number_list, .help = "dgamma(r_i) [J/m^2], >= 0"}));
   }
-  if (const std::string problem = find_adhesion_table_problem(table); !problem.empty()) {
-    if (!file.empty()) {
-      // Name the file's line of the first point the message names.
-      std::string where;
-      const auto open = problem.find('[');
-      if (open != std::string::npos) {
-        const std::size_t i = std::stoul(problem.substr(open + 1));
-        if (i < lines.size()) where = fmt::format("line {} of '{}': ", lines[i], file);
-      }
-      w.fail_at("file", where + problem);
-    }
-    const bool about_values =
-        problem.rfind("value", 0) == 0 || problem.find("values") != std::string::npos;
-    w.fail_at(about_values ? "value" : "r", problem);
+  if (const auto problem = find_adhesion_table_problem(table)) {
+    if (file.empty()) w.fail_at(problem->column, problem->message);
+    // In a file: the line of the point the message names.
+    const bool located = problem->point && *problem->point < lines.size();
+    w.fail_at("file", located ? fmt::format("line {} of '{}': {}", lines[*problem->point], file,
+                                            problem->message)
+                              : fmt::format("'{}': {}", file, problem->message));
   }
   return std::make_shared<const RadialAdhesion>(std::move(table));
 }
