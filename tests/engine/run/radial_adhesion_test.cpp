@@ -207,5 +207,44 @@ normal = {{ control = "fixed-grips", to = {} }}
   }
 }
 
+// The shorthand's pull-off with a tougher core, dgamma_in = 0.5 inside b = 2e-4 and 0.05
+// outside, glued at 4e-4 (R = 1 cm, E* = 1 MPa). Under a fixed load the outer branch folds at
+// a^3 = 9 c_out R^2 / 16 (F = -1.5 pi dgamma_out R): the front jumps in, is caught pinned at b
+// (F = E* (2 b d - 2 b^3 / (3R)) rises with d: stable) and holds until the first spring inside
+// lets go at d = g(b) - sqrt(2 pi b dgamma_in / E*); the inner branch is unstable there (b
+// lies below its fold (c_in R^2 / 16)^(1/3)), so that is the pull-off under either control.
+// The row pins at the last spring inside b: within 3/N (measured 6e-4 at N = 4000, 2.5/N).
+TEST(RadialAdhesion, ATougherCoreCatchesTheFixedLoadJumpAndSetsThePullOff) {
+  const double e_star = 1e6, radius = 0.01, b = 2e-4, inner = 0.5, outer = 0.05;
+  const double d_leave = b * b / radius - std::sqrt(2.0 * std::numbers::pi * b * inner / e_star);
+  const double expected = e_star * (2.0 * b * d_leave - 2.0 * b * b * b / (3.0 * radius));
+  ASSERT_LT(b, std::cbrt(2.0 * std::numbers::pi * inner / e_star * radius * radius / 16.0));
+  for (const std::string control : {"fixed-load", "fixed-grips"}) {
+    for (const int n : {4000, 16000}) {
+      SCOPED_TRACE(fmt::format("{} at N = {}", control, n));
+      const Scene scene = test::build_scene_text(fmt::format(R"(
+[material]
+effective_modulus = {}
+work_of_adhesion = {{ r = [0.0, {b}, {b}], value = [{}, {}, {}] }}
+[profile]
+type = "parabolic"
+radius = {}
+[loading]
+preload = {{ contact_radius = 4e-4 }}
+normal = {{ control = "{}" }}
+[discretization]
+springs = {}
+)",
+                                                             e_star, inner, inner, outer, radius,
+                                                             control, n, fmt::arg("b", b)));
+      const RunResult r = run_scene(scene, {});
+      ASSERT_TRUE(r.critical.has_value());
+      EXPECT_EQ(r.status, RunStatus::instability);
+      EXPECT_NEAR(r.critical->normal_force / expected, 1.0, 3.0 / n);
+      EXPECT_NEAR(r.critical->indentation / d_leave, 1.0, 3.0 / n);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mdrsim
