@@ -2,7 +2,7 @@
 import os
 from collections.abc import Callable, Mapping, Sequence
 from concurrent.futures import Executor
-from typing import Any, Literal, TypedDict, Union
+from typing import Any, Literal, TypedDict, Union, overload
 
 from typing_extensions import NotRequired
 
@@ -13,7 +13,7 @@ __version__: str
 TRAJECTORY_ROWS: int
 SAMPLES: int
 
-SceneValue = Union[bool, int, float, str, Sequence[Any], Mapping[str, Any]]
+SceneValue = Union[bool, int, float, str, Sequence[Any], npt.NDArray[Any], Mapping[str, Any]]
 ScenePath = Union[str, os.PathLike[str]]
 Status = Literal["instability", "shear-off", "no-instability", "step-limit", "completed"]
 Method = Literal["event", "stepping", "continuum"]
@@ -30,6 +30,14 @@ class Material:
     def work_of_adhesion(self) -> float: ...
     @property
     def approach_work_of_adhesion(self) -> float: ...
+    @overload
+    def work_of_adhesion_at(self, r: float) -> float: ...
+    @overload
+    def work_of_adhesion_at(self, r: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    @overload
+    def approach_work_of_adhesion_at(self, r: float) -> float: ...
+    @overload
+    def approach_work_of_adhesion_at(self, r: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 
 class Scene:
     @classmethod

@@ -63,7 +63,8 @@ def register_criterion(name, margin, *, critical_elongation=None, parameters=Non
     margin(elongation, tangential_displacement, contact_radius, material, **parameters)
     returns a float: > 0 while the boundary spring holds, <= 0 when it lets go; continuous
     and non-increasing in the elongation (-u_z >= 0) [m]. tangential_displacement is u_x [m],
-    contact_radius a [m], material an mdrsim.Material (E*, G*, dgamma). Without
+    contact_radius a [m], material an mdrsim.Material (E*, G*, dgamma; where the scene's
+    dgamma varies with the radius, material.work_of_adhesion_at(contact_radius)). Without
     critical_elongation the engine root-finds the let-go on margin.
     critical_elongation(contact_radius, tangential_displacement, material, **parameters),
     optional, returns the closed-form smallest elongation [m] with margin <= 0 (None: root-find).

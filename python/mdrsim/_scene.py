@@ -63,12 +63,33 @@ def toml_value(value, where):
         items = ", ".join(f"{_key(k, where)} = {toml_value(v, f'{where}.{k}')}"
                           for k, v in value.items())
         return "{ " + items + " }" if items else "{}"
-    if hasattr(value, "tolist"):  # a NumPy array
-        value = value.tolist()
+    if hasattr(value, "tolist"):  # a NumPy array (a pandas Series)
+        value = _array_value(value, where)
+        if isinstance(value, str):
+            return value
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(toml_value(v, where) for v in value) + "]"
     raise SceneError(f"{where}: {type(value).__name__} {value!r:.40} is not a scene value "
                      "(expected a number, string, boolean, list or table)")
+
+
+def _array_value(array, where):
+    """A NumPy array as a TOML array's text (1-D of floats or integers: every element as
+    its exact double, non-finite ones as nan/inf for the engine to refuse by index), or its
+    elements as a list for toml_value; more than one dimension is refused here: no scene key
+    takes an array of arrays."""
+    ndim, dtype = getattr(array, "ndim", 1), getattr(array, "dtype", None)
+    if ndim > 1:
+        raise SceneError(f"{where}: a {ndim}-D array of shape {tuple(array.shape)} is not a "
+                         "scene value (expected a 1-D array)")
+    kind, size = getattr(dtype, "kind", ""), getattr(dtype, "itemsize", 0)
+    if ndim == 1 and kind in ("i", "u"):
+        return "[" + ", ".join(map(str, array.tolist())) + "]"
+    if ndim == 1 and kind == "f" and size <= 8:
+        # repr of a float is what toml_value writes: the shortest text of the same double,
+        # and nan, inf and -inf as TOML spells them.
+        return "[" + ", ".join(map(repr, array.tolist())) + "]"
+    return array.tolist()
 
 
 def _inline(value, path):

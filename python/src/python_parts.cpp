@@ -3,6 +3,7 @@
 #include "python/src/python_parts.hpp"
 
 #include <fmt/format.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -336,16 +337,32 @@ void bind_parts(py::module_& m) {
       .def_readonly("work_of_adhesion", &Material::work_of_adhesion, "dgamma [J/m^2]")
       .def_readonly("approach_work_of_adhesion", &Material::approach_work_of_adhesion,
                     "dgamma_a [J/m^2]")
+      // A float first: a criterion's call finds it in the first pass of the overloads. An
+      // array (or a list) of radii gives an array of the values, element by element.
       .def("work_of_adhesion_at", &Material::work_of_adhesion_at, py::arg("r"),
            "dgamma at the radius r [m] of a spring [J/m^2] (a criterion lets go with this)")
+      .def("work_of_adhesion_at", py::vectorize(&Material::work_of_adhesion_at), py::arg("r"),
+           "dgamma at each radius of an array r [m] [J/m^2]")
       .def("approach_work_of_adhesion_at", &Material::approach_work_of_adhesion_at, py::arg("r"),
            "dgamma_a at the radius r [m] [J/m^2]")
+      .def("approach_work_of_adhesion_at", py::vectorize(&Material::approach_work_of_adhesion_at),
+           py::arg("r"), "dgamma_a at each radius of an array r [m] [J/m^2]")
       .def("__repr__", [](const Material& p) {
-        return fmt::format(
+        std::string text = fmt::format(
             "Material(effective_modulus={}, effective_shear_modulus={}, work_of_adhesion={}, "
-            "approach_work_of_adhesion={})",
+            "approach_work_of_adhesion={}",
             p.effective_modulus, p.effective_shear_modulus, p.work_of_adhesion,
             p.approach_work_of_adhesion);
+        // Where dgamma varies with r the numbers above are its scale values: say so.
+        if (p.work_of_adhesion_by_radius) {
+          text += fmt::format(", work_of_adhesion_by_radius='{}'",
+                              p.work_of_adhesion_by_radius->describe());
+        }
+        if (p.approach_work_of_adhesion_by_radius) {
+          text += fmt::format(", approach_work_of_adhesion_by_radius='{}'",
+                              p.approach_work_of_adhesion_by_radius->describe());
+        }
+        return text + ")";
       });
   m.def(
       "register_criterion",
