@@ -22,6 +22,10 @@ struct ContactSnapshot {
   /// springs. Set by loading programs' rows; rtol adds it to its estimates.
   double edge_normal_force = 0.0;
   double edge_tangential_force = 0.0;
+  /// Loading programs: the radius out to which the springs in contact are glued [m] (the
+  /// contact radius when all are, 0 when none); negative where every spring in contact is
+  /// glued by construction (the shorthand). The disk check asks for p >= 0 beyond it.
+  double glued_radius = -1.0;
   /// Whether the MDR's one contact disk holds at this state (engine/model/disk_validity):
   /// set on reported states after a run; true where the profile's shape guarantees it.
   bool disk_valid = true;

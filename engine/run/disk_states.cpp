@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -26,7 +27,11 @@ void check_disk_states(const Scene& scene, RunResult& result) {
   const auto check = [&](ContactSnapshot& s, const std::string& name) {
     const double a = s.contact_radius;
     if (!(a > 0.0) || !std::isfinite(a) || !std::isfinite(s.indentation)) return;
-    const DiskValidity c = check_disk(profile, modulus, a, s.indentation, adhesive ? a : 0.0);
+    // The pressure must not pull where springs in contact are not glued: beyond the glued
+    // radius (all of the contact without adhesion; none of it where all are glued).
+    const double unglued_from =
+        !adhesive ? 0.0 : (s.glued_radius >= 0.0 ? std::min(s.glued_radius, a) : a);
+    const DiskValidity c = check_disk(profile, modulus, a, s.indentation, unglued_from);
     s.disk_valid = c.valid;
     if (c.valid) return;
     ++invalid;

@@ -66,5 +66,56 @@ TEST(DiskStates, AGentleRippleIsOneDisk) {
   }
 }
 
+// With adhesion the pressure is checked where springs in contact are not glued. A wavy sphere
+// (A = 1 um, wavelength 100 um) glued on touch to d = 30 um, retracted to d = 0 (the front
+// recedes to 3.95e-4 m) and pressed back to 30 um without rebinding: the same contact as the
+// first press (a = 5.18e-4 m), but the ring outside 3.95e-4 m is pressed unglued, and over the
+// ripple's falling flank there the MDR pressure pulls (-1.35e4 Pa at r = 4.51e-4 m, computed
+// apart with scipy's quadrature of p(r) = (E*/pi) [(d - g(a)) / sqrt(a^2 - r^2) + int_r^a
+// g'(x) / sqrt(x^2 - r^2) dx]): the glued first press is one disk, the pressed-back one is not.
+TEST(DiskStates, PressedBackUngluedSpringsMustNotPull) {
+  const Scene scene = test::build_scene_text(R"(
+[material]
+effective_modulus = 1e6
+work_of_adhesion = 0.05
+[profile]
+type = "wavy"
+radius = 0.01
+amplitude = 1e-6
+wavelength = 1e-4
+[[loading.stage]]
+name = "press"
+normal = { control = "fixed-grips", to = 3e-5 }
+[[loading.stage]]
+name = "retract"
+normal = { control = "fixed-grips", to = 0.0 }
+[[loading.stage]]
+name = "repress"
+normal = { control = "fixed-grips", to = 3e-5 }
+[discretization]
+springs = 2000
+)");
+  const RunResult r = run_scene(scene, {});
+  ASSERT_EQ(r.stages.size(), 3u);
+  const ContactSnapshot& press = r.stages[0].end;
+  const ContactSnapshot& repress = r.stages[2].end;
+  ASSERT_EQ(press.springs_in_contact, repress.springs_in_contact);
+  EXPECT_EQ(press.glued_radius, press.contact_radius);
+  EXPECT_NEAR(repress.glued_radius, 3.953e-4, 1e-7);
+  EXPECT_TRUE(press.disk_valid);
+  EXPECT_FALSE(repress.disk_valid);
+  // The check at the glued radius finds the pull; at the contact's edge (all glued) none.
+  const DiskValidity ring = check_disk(*scene.profile, 1e6, repress.contact_radius,
+                                       repress.indentation, repress.glued_radius);
+  EXPECT_EQ(ring.violation, DiskValidity::Violation::pressure);
+  ASSERT_TRUE(ring.worst_radius.has_value());
+  // scipy, on 60 radii across the ring: -13488.5 Pa at 4.5125e-4 m.
+  EXPECT_NEAR(*ring.worst_radius, 4.5125e-4, 2e-6);
+  EXPECT_NEAR(ring.worst / -13488.5, 1.0, 1e-3);
+  EXPECT_TRUE(check_disk(*scene.profile, 1e6, repress.contact_radius, repress.indentation,
+                         repress.contact_radius)
+                  .valid);
+}
+
 }  // namespace
 }  // namespace mdrsim
