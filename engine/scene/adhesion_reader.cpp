@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/scene/embedded_table.hpp"
 #include "profiles/two_column_file.hpp"
 
 namespace mdrsim {
@@ -35,6 +36,8 @@ std::shared_ptr<const RadialAdhesion> read_table(TomlReader& w) {
       table.radii = std::move(columns.first);
       table.values = std::move(columns.second);
       lines = std::move(columns.lines);
+      // The result carries the table, so that it reruns without the file.
+      w.record("table", adhesion_table_record(file));
     } catch (const std::invalid_argument& e) {
       w.fail_at("file", e.what());
     }

@@ -1,5 +1,5 @@
-// A profile table read from a file, carried in the resolved scene so that the result reruns
-// without the file.
+// The tables a scene read from files (a profile's, a work of adhesion's), carried in the
+// resolved scene so that the result reruns without the files.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,12 +13,16 @@ namespace mdrsim {
 /// digits, which tells whether a CSV on disk is the one used. `file` stays, for the record.
 void embed_profile_table(nlohmann::json& profile, const std::string& path);
 
-/// Reads a resolved scene's embedded table (`scene` is the `scene` of a result, or a scene
-/// object): while `profile.file` holds the very bytes hashed, the file is read as before
-/// (and the rerun's resolved scene is the same); when it is gone or changed, `profile.r`
-/// and `profile.f` come from `profile.table` instead, with a warning naming `source_name`.
-/// `table` is removed either way. A profile without a `table` object of arrays r and f is
-/// left alone.
+/// The record `table` = {r, value, fnv1a} of a work of adhesion read from the CSV `path`
+/// (columns r,value), as embed_profile_table writes a profile's.
+nlohmann::json adhesion_table_record(const std::string& path);
+
+/// Reads a resolved scene's embedded tables (`scene` is the `scene` of a result, or a scene
+/// object): the profile's (columns r, f) and each work of adhesion's given as a file (r,
+/// value). While `file` holds the very bytes hashed, the file is read as before (and the
+/// rerun's resolved scene is the same); when it is gone or changed, the columns come from
+/// `table` instead, with a warning naming `source_name` and the key. `table` is removed either
+/// way. A holder without a `table` object of both columns is left alone.
 void use_embedded_table(nlohmann::json& scene, const std::string& source_name);
 
 }  // namespace mdrsim

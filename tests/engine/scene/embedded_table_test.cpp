@@ -66,5 +66,22 @@ TEST_F(EmbeddedTable, AProfileWithoutATableIsLeftAlone) {
   EXPECT_EQ(scene, before);
 }
 
+// A work of adhesion read from a CSV (columns r,value) travels the same way. FNV-1a 64 of
+// these bytes, computed apart as above: e84a937069ccd193.
+TEST_F(EmbeddedTable, AWorkOfAdhesionTableTravelsToo) {
+  const std::string file = dir_ + "/w.csv";
+  std::ofstream(file, std::ios::binary) << "r,value\n0,0.05\n1e-4,0.07\n";
+  nlohmann::json scene = {{"material", {{"work_of_adhesion", {{"file", file}}}}}};
+  scene["material"]["work_of_adhesion"]["table"] = adhesion_table_record(file);
+  EXPECT_EQ(scene["material"]["work_of_adhesion"]["table"]["fnv1a"], "e84a937069ccd193");
+  nlohmann::json same = scene;
+  use_embedded_table(same, "r.json");
+  EXPECT_EQ(same["material"]["work_of_adhesion"], nlohmann::json({{"file", file}}));
+  std::filesystem::remove(file);
+  use_embedded_table(scene, "r.json");
+  EXPECT_EQ(scene["material"]["work_of_adhesion"],
+            nlohmann::json({{"r", {0.0, 1e-4}}, {"value", {0.05, 0.07}}}));
+}
+
 }  // namespace
 }  // namespace mdrsim::test
