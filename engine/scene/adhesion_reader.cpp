@@ -83,14 +83,12 @@ std::shared_ptr<const RadialAdhesion> read_sinusoid(TomlReader& w) {
 ReadAdhesion read_adhesion(TomlReader& t, std::string_view key, const char* help,
                            std::optional<double> fallback) {
   if (!t.holds_table(key)) {
-    const auto value =
-        fallback ? t.optional_number({.key = std::string(key),
-                                      .help = help,
-                                      .default_value = *fallback,
-                                      .lower = Bound{0.0, true}})
-                 : std::optional<double>(t.number(
-                       {.key = std::string(key), .help = help, .lower = Bound{0.0, true}}));
-    return {value.value_or(fallback.value_or(0.0)), nullptr};
+    // One named spec, not a temporary in each arm of a ?: (clang 14 destroys such a
+    // temporary twice when its arm throws: a double free under ASan).
+    ParameterSpec spec{.key = std::string(key), .help = help, .lower = Bound{0.0, true}};
+    if (!fallback) return {t.number(spec), nullptr};
+    spec.default_value = *fallback;
+    return {t.optional_number(spec).value_or(*fallback), nullptr};
   }
   TomlReader w = t.table(key);
   w.check_keys({"r", "value", "file", "mean", "amplitude", "wavelength"});
