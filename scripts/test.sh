@@ -85,10 +85,15 @@ cmake -S . -B "$sanitize_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMP
   -DMDRSIM_WERROR=ON -DMDRSIM_SANITIZE=fuzzer-no-link,address,undefined -DMDRSIM_BUILD_FUZZ=ON
 cmake --build "$sanitize_dir" -j"$jobs"
 # Any report aborts the test that caused it (-fno-sanitize-recover=all, abort_on_error); the
-# tests run the mdrsim binary too, which inherits these options.
+# tests run the mdrsim binary too, which inherits these options. Left out here (run in stage 1):
+# the cases that only repeat covered paths on huge rows or many times, 10 to 20 times slower
+# under the sanitizers (10^7 springs; the plain rows of rtol 1e-4 and 1e-6, up to 2^25
+# springs; every example scene run twice for byte-identical JSON: 94 s alone), which would
+# take the CI past its 30 minutes on 2 cores.
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1" \
 UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-  ctest --test-dir "$sanitize_dir" --output-on-failure -j"$jobs" -E '^EdgeCasesLarge\.|rtol1e6_none' |
+  ctest --test-dir "$sanitize_dir" --output-on-failure -j"$jobs" \
+    -E '^EdgeCasesLarge\.|rtol1e[46]_none|^Determinism\.SameSceneTwiceGivesByteIdenticalJson$' |
   tee "$logs/ctest3.log"
 
 stage "4/4 fuzz for ${FUZZ_SECONDS:-60} s"

@@ -44,5 +44,7 @@ if(mdrsim_quick_names)
   set_tests_properties(${mdrsim_quick_names} PROPERTIES LABELS quick)
 endif()
 if(mdrsim_slow_names)
-  set_tests_properties(${mdrsim_slow_names} PROPERTIES LABELS slow)
+  # COST: ctest -j starts the costliest first (a fresh build has no timings of its own), so
+  # that a long case runs beside the many short ones instead of alone at the end.
+  set_tests_properties(${mdrsim_slow_names} PROPERTIES LABELS slow COST 100)
 endif()
