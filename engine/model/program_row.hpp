@@ -187,6 +187,9 @@ class ProgramRow {
  private:
   /// 2 pi dgamma_a / E* [m], the largest where dgamma_a varies: 0 only where the front glues
   /// on touch at every radius.
+  /// Resets the sums over springs in contact and glued once no spring is left in them.
+  void forget_rounding_of_empty_sums();
+
   static double front_coefficient(const Material& material) {
     const auto& by_radius = material.approach_work_of_adhesion_by_radius;
     return hess_scale(by_radius ? by_radius->largest() : material.approach_work_of_adhesion,
