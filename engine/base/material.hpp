@@ -37,6 +37,13 @@ struct Material {
   double advancing_glue_gap(double x) const {
     return std::sqrt(hess_scale(approach_work_of_adhesion_at(x), effective_modulus) * x);
   }
+  /// Whether the advancing front glues (or presses) each spring as it touches it: dgamma_a = 0
+  /// at every radius (its Hess scale 2 pi dgamma_a / E* is 0).
+  bool glues_on_touch() const {
+    const auto& by_radius = approach_work_of_adhesion_by_radius;
+    return hess_scale(by_radius ? by_radius->largest() : approach_work_of_adhesion,
+                      effective_modulus) == 0.0;
+  }
   /// Whether either work of adhesion varies with the radius.
   bool adhesion_varies() const {
     return work_of_adhesion_by_radius != nullptr || approach_work_of_adhesion_by_radius != nullptr;

@@ -16,7 +16,6 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
       reference_springs_(reference_springs),
       reference_image_(reference_image),
       spacing_(reference_radius / static_cast<double>(reference_springs)),
-      front_coefficient_(front_coefficient(material)),
       rebinding_(rebinding) {}
 
 void ProgramRow::springs_changed(bool normal, bool tangential) {

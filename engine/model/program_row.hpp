@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "controllers/controller.hpp"
-#include "engine/base/hess_scale.hpp"
 #include "engine/base/material.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/contact_snapshot.hpp"
@@ -49,16 +48,11 @@ class ProgramRow {
   double image(std::int64_t i) const { return values(i).image; }  ///< g(x_i) [m]
   double front_limit(std::int64_t i) const {  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
     SpringValues& v = values(i);
-    if (v.front_limit < 0.0) v.front_limit = front_limit_at(material_, position(i));
+    if (v.front_limit < 0.0) v.front_limit = material_.advancing_glue_gap(position(i));
     return v.front_limit;
   }
   double spacing() const { return spacing_; }
   std::int64_t reference_springs() const { return reference_springs_; }
-  /// The gap g(x) - d at which spring i > 1 of an adhesive front glues at x [m]:
-  /// sqrt(2 pi x dgamma_a / E*), in the very arithmetic of front_limit.
-  static double front_limit_at(const Material& material, double x) {
-    return material.advancing_glue_gap(x);
-  }
 
   std::int64_t glued() const { return glued_; }            ///< k
   std::int64_t in_contact() const { return in_contact_; }  ///< m
@@ -147,12 +141,7 @@ class ProgramRow {
   /// Spring k+1 glues at the present u_x; it was pressed (m > k) or becomes the new edge.
   void glue_next();
   /// Whether the advancing front glues a spring as it touches it (dgamma_a = 0).
-  bool glues_on_touch() const { return front_coefficient_ == 0.0; }
-  /// Whether the advancing front of a row of this material glues (or presses) on touch at
-  /// every radius: dgamma_a = 0 everywhere.
-  static bool glues_on_touch(const Material& material) {
-    return front_coefficient(material) == 0.0;
-  }
+  bool glues_on_touch() const { return material_.glues_on_touch(); }
   /// Springs k+1..last glue at the present u_x, on a row without friction whose springs in
   /// contact are all glued, as a press that glues on touch reaches them one by one (the same
   /// row as glue_next one at a time, to the bit, where the machine fixes d and u_x); returns the
@@ -185,16 +174,8 @@ class ProgramRow {
   void record_edge_forces(bool on) { edge_forces_ = on; }
 
  private:
-  /// 2 pi dgamma_a / E* [m], the largest where dgamma_a varies: 0 only where the front glues
-  /// on touch at every radius.
   /// Resets the sums over springs in contact and glued once no spring is left in them.
   void forget_rounding_of_empty_sums();
-
-  static double front_coefficient(const Material& material) {
-    const auto& by_radius = material.approach_work_of_adhesion_by_radius;
-    return hess_scale(by_radius ? by_radius->largest() : material.approach_work_of_adhesion,
-                      material.effective_modulus);
-  }
 
   /// The equilibrium of each axis, computed once per change of the row or of that axis: a
   /// step asks for it many times.
@@ -247,7 +228,6 @@ class ProgramRow {
   std::int64_t reference_springs_;
   double reference_image_;
   double spacing_;
-  double front_coefficient_;  ///< 2 pi dgamma_a / E* [m]
   bool rebinding_;
 
   std::int64_t glued_ = 0;

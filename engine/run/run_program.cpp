@@ -70,7 +70,7 @@ double guess_radius(const Scene& scene) {
 double front_radius(const Scene& scene, const LargestContact& largest, double spacing) {
   const Profile& profile = *scene.profile;
   if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
-  if (!largest.glued_edge || ProgramRow::glues_on_touch(scene.material)) {
+  if (!largest.glued_edge || scene.material.glues_on_touch()) {
     return profile.contact_radius_at_depth(largest.indentation);
   }
   const auto excess = [&](double x) {
@@ -88,7 +88,7 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
 /// reached at the deepest point (docs).
 ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
   const double g = scene.profile->mdr_image(a_max);
-  const double limit = glued_edge ? ProgramRow::front_limit_at(scene.material, a_max) : 0.0;
+  const double limit = glued_edge ? scene.material.advancing_glue_gap(a_max) : 0.0;
   double front = indentation + limit;
   if (!(std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)))) {
     return {a_max, g};
@@ -146,7 +146,7 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   }
   const double a_max = bracketed_root(excess, 0.0, hi);
   if (!(a_max > 0.0)) return std::nullopt;
-  return frame_at(scene, a_max, deepest, glued_edge && !ProgramRow::glues_on_touch(scene.material));
+  return frame_at(scene, a_max, deepest, glued_edge && !scene.material.glues_on_touch());
 }
 
 /// The continuum front [m] at which the control a_u d + a_F F reaches the held value, with
