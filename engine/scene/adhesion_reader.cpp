@@ -33,11 +33,11 @@ std::shared_ptr<const RadialAdhesion> read_table(TomlReader& w) {
                                           .help = "CSV file with columns r [m], value [J/m^2]"}));
     try {
       TwoColumnFile columns = read_two_column_file(file, "r", "value");
+      // The result carries the table, so that it reruns without the file.
+      w.record("table", adhesion_table_record(file, columns));
       table.radii = std::move(columns.first);
       table.values = std::move(columns.second);
       lines = std::move(columns.lines);
-      // The result carries the table, so that it reruns without the file.
-      w.record("table", adhesion_table_record(file));
     } catch (const std::invalid_argument& e) {
       w.fail_at("file", e.what());
     }

@@ -12,7 +12,6 @@
 
 #include "engine/scene/scene_error.hpp"
 #include "profiles/tabulated_profile.hpp"
-#include "profiles/two_column_file.hpp"
 
 namespace mdrsim {
 namespace {
@@ -37,8 +36,7 @@ void embed_profile_table(nlohmann::json& profile, const std::string& path) {
       {"r", table.radii}, {"f", table.gaps}, {"fnv1a", file_hash(path).value_or("")}};
 }
 
-nlohmann::json adhesion_table_record(const std::string& path) {
-  const TwoColumnFile table = read_two_column_file(path, "r", "value");
+nlohmann::json adhesion_table_record(const std::string& path, const TwoColumnFile& table) {
   return {{"r", table.first}, {"value", table.second}, {"fnv1a", file_hash(path).value_or("")}};
 }
 

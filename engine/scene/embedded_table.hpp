@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "profiles/two_column_file.hpp"
+
 namespace mdrsim {
 
 /// Writes `table` = {r, f, fnv1a} into the resolved `profile` object: the points read from
@@ -14,8 +16,9 @@ namespace mdrsim {
 void embed_profile_table(nlohmann::json& profile, const std::string& path);
 
 /// The record `table` = {r, value, fnv1a} of a work of adhesion read from the CSV `path`
-/// (columns r,value), as embed_profile_table writes a profile's.
-nlohmann::json adhesion_table_record(const std::string& path);
+/// (its columns r,value as read_two_column_file returned them), as embed_profile_table writes a
+/// profile's.
+nlohmann::json adhesion_table_record(const std::string& path, const TwoColumnFile& table);
 
 /// Reads a resolved scene's embedded tables (`scene` is the `scene` of a result, or a scene
 /// object): the profile's (columns r, f) and each work of adhesion's given as a file (r,

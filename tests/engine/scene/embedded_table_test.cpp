@@ -72,7 +72,8 @@ TEST_F(EmbeddedTable, AWorkOfAdhesionTableTravelsToo) {
   const std::string file = dir_ + "/w.csv";
   std::ofstream(file, std::ios::binary) << "r,value\n0,0.05\n1e-4,0.07\n";
   nlohmann::json scene = {{"material", {{"work_of_adhesion", {{"file", file}}}}}};
-  scene["material"]["work_of_adhesion"]["table"] = adhesion_table_record(file);
+  scene["material"]["work_of_adhesion"]["table"] =
+      adhesion_table_record(file, read_two_column_file(file, "r", "value"));
   EXPECT_EQ(scene["material"]["work_of_adhesion"]["table"]["fnv1a"], "e84a937069ccd193");
   nlohmann::json same = scene;
   use_embedded_table(same, "r.json");
