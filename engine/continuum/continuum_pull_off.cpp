@@ -2,11 +2,11 @@
 #include "engine/continuum/continuum_pull_off.hpp"
 
 #include <algorithm>
-#include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 
+#include "engine/base/bracketed_minimum.hpp"
 #include "engine/base/bracketed_root.hpp"
 
 namespace mdrsim {
@@ -61,9 +61,9 @@ struct Walk {
     } else {
       // No clean sign change (a turn the difference quotient cannot see): the minimum of the
       // control value itself, whose place is then known to half the digits.
-      const auto r = boost::math::tools::brent_find_minima(
-          [&](double x) { return branch.at(x).control; }, lower, upper, kMinimumBits);
-      a = r.first;
+      a = bracketed_minimum([&](double x) { return branch.at(x).control; }, lower, upper,
+                            kMinimumBits)
+              .at;
       const double step = std::ldexp(a, -kMinimumBits);
       error = std::abs(branch.at(a + step).normal_force - branch.at(a).normal_force);
     }
@@ -129,9 +129,8 @@ struct Walk {
     }
     if (bracket) {
       const auto force = [&](double a) { return branch.at(a).normal_force; };
-      const auto r = boost::math::tools::brent_find_minima(force, bracket->first, bracket->second,
-                                                           kMinimumBits);
-      if (r.second < best.normal_force) best = branch.at(r.first);
+      const Minimum m = bracketed_minimum(force, bracket->first, bracket->second, kMinimumBits);
+      if (m.value < best.normal_force) best = branch.at(m.at);
       // The minimum's value is off by F'' delta^2 / 2 for a place off by delta.
       const double step = std::ldexp(best.contact_radius, -kMinimumBits);
       error = std::abs(force(best.contact_radius + step) - best.normal_force);

@@ -3,9 +3,10 @@
 
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
-#include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <numbers>
+
+#include "engine/base/bracketed_minimum.hpp"
 
 namespace mdrsim {
 namespace {
@@ -92,14 +93,13 @@ DiskValidity check_disk(const Profile& profile, double effective_modulus, double
         const double s = static_cast<double>(std::clamp(j, 0, kGapSamples)) / kGapSamples;
         return a + (r_max - a) * s * s;
       };
-      const auto best =
-          boost::math::tools::brent_find_minima(gap, radius_of(at - 1), radius_of(at + 1), 40);
-      if (best.second < lowest) lowest = best.second;
+      const Minimum best = bracketed_minimum(gap, radius_of(at - 1), radius_of(at + 1), 40);
+      if (best.value < lowest) lowest = best.value;
       if (lowest < gap_floor) {
         out.valid = false;
         out.violation = DiskValidity::Violation::gap;
         out.worst = lowest;
-        out.worst_radius = best.second <= gap(radius_of(at)) ? best.first : radius_of(at);
+        out.worst_radius = best.value <= gap(radius_of(at)) ? best.at : radius_of(at);
       }
     }
   }
