@@ -9,9 +9,9 @@
 #      build is its own, in build-python-package: it needs position-independent code, which
 #      costs the command 10-20 % per event, so the C++ build of stage 1 stays without it.)
 #   3. build again with clang, AddressSanitizer + UndefinedBehaviorSanitizer (leak checks on)
-#      and run the same C++ tests there, except the 10^7-spring case (EdgeCasesLarge: minutes
-#      under ASan) and the plain-route rtol 1e-6 runs of the random set (rows of up to 2^25
-#      springs: a minute in Release);
+#      and run the same C++ tests there, except those labelled `unsanitized` (the 10^7-spring
+#      case, the random set's rtol 1e-6 and plain-row runs, the install tree's builds: minutes
+#      under ASan for paths the other tests cover; tests/test_labels.cmake);
 #   4. fuzz the scene reader and the engine for FUZZ_SECONDS (default 60, scripts/fuzz.sh) with
 #      the libFuzzer target of that same build.
 # `bash scripts/test.sh --quick` runs stage 1 only (no Python), and of its tests only the
@@ -86,14 +86,14 @@ cmake -S . -B "$sanitize_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMP
 cmake --build "$sanitize_dir" -j"$jobs"
 # Any report aborts the test that caused it (-fno-sanitize-recover=all, abort_on_error); the
 # tests run the mdrsim binary too, which inherits these options. Left out here (run in stage 1):
-# the cases that only repeat covered paths on huge rows or many times, 10 to 20 times slower
-# under the sanitizers (10^7 springs; the plain rows of rtol 1e-4 and 1e-6, up to 2^25
-# springs; every example scene run twice for byte-identical JSON: 94 s alone), which would
-# take the CI past its 30 minutes on 2 cores.
+# the cases labelled `unsanitized` (tests/test_labels.cmake), which only repeat covered paths
+# on huge rows or many scenes, 10 to 20 times slower under the sanitizers (10^7 springs; the
+# random set at rtol 1e-6 and on the plain rows, up to 2^25 springs; every example scene run
+# twice for byte-identical JSON: 94 s alone), and the install tree's builds; with them the CI
+# would pass its 30 minutes on 2 cores.
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1" \
 UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-  ctest --test-dir "$sanitize_dir" --output-on-failure -j"$jobs" \
-    -E '^EdgeCasesLarge\.|rtol1e[46]_none|^Determinism\.SameSceneTwiceGivesByteIdenticalJson$' |
+  ctest --test-dir "$sanitize_dir" --output-on-failure -j"$jobs" -LE unsanitized |
   tee "$logs/ctest3.log"
 
 stage "4/4 fuzz for ${FUZZ_SECONDS:-60} s"

@@ -20,10 +20,27 @@ set(mdrsim_slow_tests
     "^Sweep\\.KilledMidwayThenResumedEqualsAnUninterruptedSweep$"  # 3 s
     "^Sweep\\.InterruptedByCtrlCExits130WithWholeRows$"  # 1.7 s
     "^StatusMargin\\.TheStatusDoesNotDependOnRtol$"  # 1.5 s
-    "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$")  # 1.4 s
+    "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$"  # 1.4 s
+    "^RouteAgreement\\.")  # 120 scenes on both routes, the row at rtol 1e-8: 5 s
+
+# Also labelled `unsanitized`: cases that run the paths other cases cover, on bigger rows or
+# more scenes, 10 to 20 times slower under AddressSanitizer (or a plot through matplotlib). scripts/test.sh leaves them
+# out of its sanitizer stage (ctest -LE unsanitized) and runs them in its first stage only.
+set(mdrsim_unsanitized_tests
+    "^RandomSet/RtolGuarantee\\.WithinRtolOfTheContinuum/rtol1e[46]_none"
+    "^RandomSet/RtolGuarantee\\.WithinRtolOfTheContinuum/rtol1e6_"
+    "^RandomScenes\\.PlainRowAgreesWithTheReference$"
+    "^EdgeCasesLarge\\."
+    "^Determinism\\.SameSceneTwiceGivesByteIdenticalJson$"
+    "^PlotProgram\\."
+    "^StatusMargin\\.TheStatusDoesNotDependOnRtol$"
+    "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$"
+    "^RouteAgreement\\.")
 
 set(mdrsim_quick_names)
 set(mdrsim_slow_names)
+set(mdrsim_quick_unsanitized_names)
+set(mdrsim_slow_unsanitized_names)
 foreach(list IN LISTS mdrsim_test_lists)
   foreach(name IN LISTS ${list})
     set(slow FALSE)
@@ -33,8 +50,19 @@ foreach(list IN LISTS mdrsim_test_lists)
         break()
       endif()
     endforeach()
-    if(slow)
+    set(unsanitized FALSE)
+    foreach(pattern IN LISTS mdrsim_unsanitized_tests)
+      if(name MATCHES "${pattern}")
+        set(unsanitized TRUE)
+        break()
+      endif()
+    endforeach()
+    if(slow AND unsanitized)
+      list(APPEND mdrsim_slow_unsanitized_names "${name}")
+    elseif(slow)
       list(APPEND mdrsim_slow_names "${name}")
+    elseif(unsanitized)
+      list(APPEND mdrsim_quick_unsanitized_names "${name}")
     else()
       list(APPEND mdrsim_quick_names "${name}")
     endif()
@@ -47,4 +75,11 @@ if(mdrsim_slow_names)
   # COST: ctest -j starts the costliest first (a fresh build has no timings of its own), so
   # that a long case runs beside the many short ones instead of alone at the end.
   set_tests_properties(${mdrsim_slow_names} PROPERTIES LABELS slow COST 100)
+endif()
+if(mdrsim_quick_unsanitized_names)
+  set_tests_properties(${mdrsim_quick_unsanitized_names} PROPERTIES LABELS "quick;unsanitized")
+endif()
+if(mdrsim_slow_unsanitized_names)
+  set_tests_properties(${mdrsim_slow_unsanitized_names} PROPERTIES LABELS "slow;unsanitized"
+                                                                   COST 100)
 endif()
