@@ -140,7 +140,6 @@ struct ProgramWalk {
   Disk disk;
   bool retracted = false;  ///< a stage has let springs go
   bool flying = false;     ///< a fixed load lost the contact: the indenter separated
-  bool stopped = false;    ///< the route cannot follow what comes next (a warning says why)
   RunResult result;
   double work_error = 0.0;
   double critical_error = 0.0;
@@ -302,16 +301,12 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
   if (p.end == ContinuumPullOff::End::shear_off ||
       p.end == ContinuumPullOff::End::shear_off_at_application) {
     // The glue breaks unstretched where its springs are pressed in: they stay in contact
-    // without glue, a disk the route does not follow. Stop there, and say so.
-    w.result.status = RunStatus::step_limit;
-    w.stopped = true;
-    disk = {last.contact_radius, last.indentation};
-    w.result.warnings.push_back(fmt::format(
+    // without glue, a disk the route does not follow.
+    throw ContinuumRouteStops(fmt::format(
         "stage '{}': the tangential load breaks the glue unstretched at a = {:.6g} m with "
-        "springs still pressed in; the continuum route does not follow them without glue, and "
-        "the program stops there (solver.method = \"event\" follows it)",
+        "springs still pressed in, and the continuum route does not follow pressed springs "
+        "without glue",
         stage.name, last.contact_radius));
-    return;
   }
   if (p.end == ContinuumPullOff::End::smooth_peel) {
     w.result.status = RunStatus::no_instability;
@@ -400,7 +395,7 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
   std::vector<std::string> not_run;
   double largest_radius = 0.0;
   for (const Stage& stage : scene.program->stages) {
-    if (w.flying || w.stopped) {
+    if (w.flying) {
       not_run.push_back(stage.name);
       continue;
     }
@@ -430,19 +425,11 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
       // holding set is convex in (elongation, u_x), and the start holds).
       if (a > 0.0 && scene.criterion->margin(
                          {std::max(s1.stretch, 0.0), s1.tangential_displacement, a}) <= 0.0) {
-        w.result.status = RunStatus::step_limit;
-        w.stopped = true;
-        w.result.critical_stage = stage.name;
-        w.result.warnings.push_back(fmt::format(
+        throw ContinuumRouteStops(fmt::format(
             "stage '{}': the tangential load lets the glue go as it is applied (at a = {:.6g} "
-            "m); the continuum route does not follow a front receding under a moving "
-            "tangential load, and the program stops there (solver.method = \"event\" "
-            "follows it)",
+            "m), and the continuum route does not follow a front receding under a moving "
+            "tangential load",
             stage.name, a));
-        stage_work = AxisWork{};
-        StageRecord record{stage.name, s0.snapshot(), stage_work};
-        w.result.stages.push_back(record);
-        continue;
       }
       if (a == 0.0 && holds_force(tangential) && tangential_held != 0.0) {
         // A tangential fixed load with nothing in contact: the indenter slides away.
@@ -496,11 +483,7 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
   }
   if (!not_run.empty()) {
     const std::string stages_not_run = fmt::format("'{}'", fmt::join(not_run, "', '"));
-    if (w.stopped) {
-      w.result.warnings.push_back(
-          fmt::format("the program stopped in stage '{}'; stages not run: {}",
-                      w.result.critical_stage, stages_not_run));
-    } else if (w.result.sliding) {
+    if (w.result.sliding) {
       w.result.warnings.push_back(fmt::format(
           "stage '{}': the tangential fixed load lost what held it and the indenter slides "
           "away: the program ends at its critical point; stages not run: {}",

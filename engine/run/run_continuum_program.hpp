@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 
 #include "engine/events/observer.hpp"
 #include "engine/result/run_result.hpp"
@@ -20,8 +21,15 @@ namespace mdrsim {
 /// moves u_x on the uniformly stretched glue, which the later stages hold. Scenes the route
 /// cannot answer are refused before the run (continuum_program_refusal); where the path
 /// leaves the one glued disk as it runs (the glue let go by a moving shear, or broken
-/// unstretched over pressed springs) the program stops with step-limit and a warning.
+/// unstretched over pressed springs) it throws ContinuumRouteStops, after emitting the
+/// events of the stages before (run_scene runs it first without observers).
 RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t samples,
                                 const ObserverList& observers);
+
+/// Why the continuum route cannot follow a program past a stage (one line, naming it).
+class ContinuumRouteStops : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 }  // namespace mdrsim

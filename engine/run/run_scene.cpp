@@ -20,6 +20,7 @@
 #include "engine/run/run_program.hpp"
 #include "engine/run/shorthand_accuracy.hpp"
 #include "engine/run/status_margin.hpp"
+#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
 namespace {
@@ -128,10 +129,20 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
                              scene.glued_radius);
   }
   const bool continuum = scene.solver.method == SolverMethod::continuum;
-  if (continuum) {
+  if (continuum && scene.program) {
     const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
-    result = scene.program ? run_continuum_program(scene, rtol, samples, observers)
-                           : run_continuum(scene, rtol, samples, observers);
+    // First without observers: a program the route cannot follow to its end is refused
+    // (SPEC "Continuum route"), at the key that chose the route, before any event is emitted.
+    try {
+      result = run_continuum_program(scene, rtol, samples, ObserverList{});
+    } catch (const ContinuumRouteStops& stop) {
+      throw SceneError(scene.solver.continuum_chosen_at + stop.what() +
+                       "; use method = \"event\" (docs/continuum.md)");
+    }
+    if (!observers.empty()) result = run_continuum_program(scene, rtol, samples, observers);
+  } else if (continuum) {
+    const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
+    result = run_continuum(scene, rtol, samples, observers);
   } else if (scene.program) {
     if (scene.discretization.rtol) {
       result = run_program_rtol(scene, *scene.discretization.rtol, observers);

@@ -45,6 +45,10 @@ struct SolverOptions {
   /// radius (the command's --samples with --trajectory); 0: none. Not a scene key.
   std::int64_t samples = 0;
   std::int64_t max_steps = 100'000'000;
+  /// The key that chose the continuum route, "file:line:col: key: " (solver.method, or
+  /// discretization.rtol where rtol alone took the route), for a refusal that only the run
+  /// finds: a program the route cannot follow to its end.
+  std::string continuum_chosen_at;
 };
 
 /// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends

@@ -282,13 +282,14 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
 /// `discretization.rtol` with no `method`: the continuum route wherever it answers the scene
 /// (docs/continuum.md "Which route rtol takes"), else the row. The resolved scene then leaves
 /// `method` out, as the input did, so that rerunning it takes the same route.
-void choose_continuum_route(Scene& scene, nlohmann::json& resolved) {
+void choose_continuum_route(Scene& scene, nlohmann::json& resolved, const std::string& rtol_at) {
   if (!scene.discretization.rtol ||
       scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::automatic ||
       !continuum_answers(scene)) {
     return;
   }
   scene.solver.method = SolverMethod::continuum;
+  scene.solver.continuum_chosen_at = rtol_at;
   if (auto solver = resolved.find("solver"); solver != resolved.end()) {
     solver->erase("method");
     if (solver->empty()) resolved.erase(solver);
@@ -354,6 +355,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   if (auto solver = root.optional_table("solver")) {
     method_given = solver->has("method");
     read_solver(*solver, scene.solver);
+    if (method_given) scene.solver.continuum_chosen_at = solver->message_at("method", "");
     if (scene.solver.method == SolverMethod::continuum) {
       if (const auto why = continuum_program_refusal(scene)) {
         solver->fail_at("method", *why + "; use method = \"event\" (docs/continuum.md)");
@@ -377,7 +379,9 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   const bool continuum = scene.solver.method == SolverMethod::continuum;
 
   scene.springs = kDefaultSprings;
+  std::string rtol_at;  // where rtol is given: it may choose the continuum route
   if (auto discretization = root.optional_table("discretization")) {
+    if (discretization->has("rtol")) rtol_at = discretization->message_at("rtol", "");
     if (continuum) {
       for (const char* key : {"springs", "extrapolation"}) {
         if (discretization->has(key)) {
@@ -437,7 +441,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
       scene.program = shorthand_program(scene, registries.controllers);
     }
   }
-  if (!method_given) choose_continuum_route(scene, *resolved);
+  if (!method_given) choose_continuum_route(scene, *resolved, rtol_at);
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");

@@ -320,24 +320,62 @@ TEST(ContinuumProgram, ThePaperPathAsAProgramIsTheShorthand) {
   }
 }
 
-// A tangential load that lets the glue go as it is applied: the front would recede under a
-// moving u_x, which the route does not follow. The program stops there with a warning
-// (the shorthand reports the glue's strength: shear-off at application).
-TEST(ContinuumProgram, AGlueBrokenAsTheShearIsAppliedStopsTheProgram) {
-  const RunResult r =
-      run_text(paper_path("fixed-grips", "control = \"fixed-grips\", to = 3e-5", true));
-  EXPECT_EQ(r.status, RunStatus::step_limit);
-  EXPECT_FALSE(r.critical);
-  ASSERT_EQ(r.warnings.size(), 2u);
-  EXPECT_NE(r.warnings[0].find("lets the glue go as it is applied"), std::string::npos)
-      << r.warnings[0];
-  EXPECT_NE(
-      r.warnings[1].find("the program stopped in stage 'tangential'; stages not run: 'pull-off'"),
-      std::string::npos)
-      << r.warnings[1];
+/// The refusal a run of `text` ends with: its message, or "" when it runs.
+std::string refusal(const std::string& text) {
+  try {
+    run_text(text);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// SPEC "Continuum route": a scene the route cannot answer exactly is refused with one line,
+// never approximated. A tangential load that lets the glue go as it is applied would make the
+// front recede under a moving u_x, which the route does not follow: refused at the key that
+// chose the route (the row then reports a shear-off, as the shorthand does).
+TEST(ContinuumProgram, AShearThatLetsTheGlueGoAsItIsAppliedIsRefused) {
+  const std::string text = paper_path("fixed-grips", "control = \"fixed-grips\", to = 3e-5", true);
+  EXPECT_EQ(refusal(text),
+            "program.toml:22:10: solver.method: stage 'tangential': the tangential load lets the "
+            "glue go as it is applied (at a = 0.00052094 m), and the continuum route does not "
+            "follow a front receding under a moving tangential load; use method = \"event\" "
+            "(docs/continuum.md)");
   const RunResult shorthand =
       run_text(paper_path("fixed-grips", "control = \"fixed-grips\", to = 3e-5", false));
   EXPECT_EQ(shorthand.status, RunStatus::shear_off);
+}
+
+// Mode-dependent (lambda = 0.5): e' stays finite where the held u_x alone breaks the glue, so
+// the retract reaches that radius with springs pressed in and shears off there; without glue
+// they are the row's. Refused, where the smaller shear runs to its fold.
+TEST(ContinuumProgram, AGlueBrokenOverPressedSpringsIsRefused) {
+  const auto scene = [](double ux) {
+    return paper_path("fixed-grips", fmt::format("control = \"fixed-grips\", to = {}", ux), true) +
+           "[detachment]\ncriterion = \"mode-dependent\"\nlambda = 0.5\n";
+  };
+  const std::string why = refusal(scene(1.5e-5));
+  EXPECT_NE(why.find("program.toml:22:10: solver.method: stage 'pull-off': the tangential load "
+                     "breaks the glue unstretched at a = "),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("the continuum route does not follow pressed springs without glue; use "
+                     "method = \"event\""),
+            std::string::npos)
+      << why;
+  EXPECT_EQ(refusal(scene(1e-5)), "");
+}
+
+// With rtol alone a program that shears stays on the row (docs/continuum.md "Which route rtol
+// takes"): the same scene then runs, to its shear-off.
+TEST(ContinuumProgram, RtolAloneLeavesAShearingProgramOnTheRow) {
+  std::string text = paper_path("fixed-grips", "control = \"fixed-grips\", to = 3e-5", true);
+  const std::string method = "[solver]\nmethod = \"continuum\"\n";
+  text.replace(text.find(method), method.size(), "");
+  text.replace(text.find("rtol = 1e-10"), std::string("rtol = 1e-10").size(), "rtol = 1e-4");
+  const RunResult r = run_text(text);
+  EXPECT_NE(r.accuracy.route, Accuracy::Route::continuum);
+  EXPECT_EQ(r.status, RunStatus::shear_off);
 }
 
 }  // namespace
