@@ -74,6 +74,27 @@ def test_a_normal_program_runs_on_the_continuum_route_and_a_shear_is_refused():
             "continuum")
 
 
+def test_a_shear_the_route_cannot_follow_is_refused_by_the_run():
+    # Known only once the route runs: the tangential load lets the glue go as it is applied
+    # (docs/continuum.md "What it refuses"). The row follows it to a shear-off.
+    table = {
+        "material": {"youngs_modulus": 1e6, "poisson_ratio": 0.0, "work_of_adhesion": 0.05},
+        "profile": {"type": "parabolic", "radius": 0.01},
+        "loading": {"stage": [
+            {"name": "preload", "normal": {"control": "fixed-grips", "to": 2.713781792333937e-5}},
+            {"name": "tangential", "normal": {"control": "fixed-grips"},
+             "tangential": {"control": "fixed-grips", "to": 3e-5}},
+            {"name": "pull-off", "normal": {"by": -1e-6}, "until": "separation"},
+        ]},
+    }
+    scene = mdrsim.Scene.from_dict(table)
+    with pytest.raises(mdrsim.SceneError,
+                       match=r"solver\.method: stage 'tangential': the tangential load lets the "
+                             r"glue go as it is applied"):
+        mdrsim.run(scene.with_method("continuum"), trajectory=False)
+    assert mdrsim.run(scene, trajectory=False).status == "shear-off"
+
+
 def test_samples_are_the_branch_evenly_in_the_contact_radius():
     scene = mdrsim.Scene.from_file(FIG2).with_method("continuum")
     result = mdrsim.run(scene, samples=1000)
