@@ -393,6 +393,7 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
   std::vector<const Stage*> stage_of;  ///< the program's stage of each of `stages`
   stages.reserve(scene.program->stages.size());
   std::vector<std::string> not_run;
+  std::vector<Event> stage_ends;
   double largest_radius = 0.0;
   for (const Stage& stage : scene.program->stages) {
     if (w.flying) {
@@ -475,12 +476,13 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
     if (w.flying) record.end = w.result.critical.value_or(end.snapshot());
     record.work = stage_work;
     w.result.stages.push_back(record);
-    if (!observers.empty()) {
-      Event e{.kind = EventKind::stage_end, .state = record.end};
-      e.stage = stage.name;
-      observers.emit(e);
-    }
+    Event e{.kind = EventKind::stage_end, .state = record.end};
+    e.stage = stage.name;
+    stage_ends.push_back(e);
   }
+  // The events once every stage stands (a stage the route cannot follow throws above, before
+  // any): the stage ends, then the samples.
+  for (const Event& e : stage_ends) observers.emit(e);
   if (!not_run.empty()) {
     const std::string stages_not_run = fmt::format("'{}'", fmt::join(not_run, "', '"));
     if (w.result.sliding) {

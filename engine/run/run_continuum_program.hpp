@@ -21,8 +21,8 @@ namespace mdrsim {
 /// moves u_x on the uniformly stretched glue, which the later stages hold. Scenes the route
 /// cannot answer are refused before the run (continuum_program_refusal); where the path
 /// leaves the one glued disk as it runs (the glue let go by a moving shear, or broken
-/// unstretched over pressed springs) it throws ContinuumRouteStops, after emitting the
-/// events of the stages before (run_scene runs it first without observers).
+/// unstretched over pressed springs) it throws ContinuumRouteStops, before emitting any event
+/// (stage ends and samples are emitted once every stage stands).
 RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t samples,
                                 const ObserverList& observers);
 

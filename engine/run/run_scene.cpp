@@ -131,15 +131,14 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
   const bool continuum = scene.solver.method == SolverMethod::continuum;
   if (continuum && scene.program) {
     const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
-    // First without observers: a program the route cannot follow to its end is refused
-    // (SPEC "Continuum route"), at the key that chose the route, before any event is emitted.
+    // A program the route cannot follow to its end is refused (SPEC "Continuum route") at the
+    // key that chose the route; the route emits no event before it knows.
     try {
-      result = run_continuum_program(scene, rtol, samples, ObserverList{});
+      result = run_continuum_program(scene, rtol, samples, observers);
     } catch (const ContinuumRouteStops& stop) {
       throw SceneError(scene.solver.continuum_chosen_at + stop.what() +
                        "; use method = \"event\" (docs/continuum.md)");
     }
-    if (!observers.empty()) result = run_continuum_program(scene, rtol, samples, observers);
   } else if (continuum) {
     const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
     result = run_continuum(scene, rtol, samples, observers);
