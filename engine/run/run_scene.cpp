@@ -129,19 +129,17 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
                              scene.glued_radius);
   }
   const bool continuum = scene.solver.method == SolverMethod::continuum;
-  if (continuum && scene.program) {
+  if (continuum) {
     const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
     // A program the route cannot follow to its end is refused (SPEC "Continuum route") at the
     // key that chose the route; the route emits no event before it knows.
     try {
-      result = run_continuum_program(scene, rtol, samples, observers);
+      result = scene.program ? run_continuum_program(scene, rtol, samples, observers)
+                             : run_continuum(scene, rtol, samples, observers);
     } catch (const ContinuumRouteStops& stop) {
       throw SceneError(scene.solver.continuum_chosen_at + stop.what() +
                        "; use method = \"event\" (docs/continuum.md)");
     }
-  } else if (continuum) {
-    const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
-    result = run_continuum(scene, rtol, samples, observers);
   } else if (scene.program) {
     if (scene.discretization.rtol) {
       result = run_program_rtol(scene, *scene.discretization.rtol, observers);

@@ -355,8 +355,8 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   if (auto solver = root.optional_table("solver")) {
     method_given = solver->has("method");
     read_solver(*solver, scene.solver);
-    if (method_given) scene.solver.continuum_chosen_at = solver->message_at("method", "");
     if (scene.solver.method == SolverMethod::continuum) {
+      scene.solver.continuum_chosen_at = solver->message_at("method", "");
       if (const auto why = continuum_program_refusal(scene)) {
         solver->fail_at("method", *why + "; use method = \"event\" (docs/continuum.md)");
       }
