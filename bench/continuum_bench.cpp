@@ -15,6 +15,12 @@
 
 namespace {
 
+/// The [profile] table of a tabulated profile of the points (r_i, f_i).
+std::string table_profile(const std::vector<double>& r, const std::vector<double>& f) {
+  return fmt::format("type = \"tabulated\"\nr = [{:.17g}]\nf = [{:.17g}]\n", fmt::join(r, ", "),
+                     fmt::join(f, ", "));
+}
+
 /// A 200-point table of a sphere of radius 1 cm, f = R - sqrt(R^2 - r^2), out to 0.6 R.
 std::string tabulated_profile() {
   std::vector<double> r, f;
@@ -23,8 +29,7 @@ std::string tabulated_profile() {
     r.push_back(x);
     f.push_back(0.01 - std::sqrt(0.01 * 0.01 - x * x));
   }
-  return fmt::format("type = \"tabulated\"\nr = [{:.17g}]\nf = [{:.17g}]\n", fmt::join(r, ", "),
-                     fmt::join(f, ", "));
+  return table_profile(r, f);
 }
 
 /// scenes/tabulated_power_law.csv: f = 0.8 r^1.5 at 201 points graded towards the tip, out to
@@ -37,8 +42,7 @@ std::string tabulated_power_law_profile() {
     r.push_back(x);
     f.push_back(0.8 * std::pow(x, 1.5));
   }
-  return fmt::format("type = \"tabulated\"\nr = [{:.17g}]\nf = [{:.17g}]\n", fmt::join(r, ", "),
-                     fmt::join(f, ", "));
+  return table_profile(r, f);
 }
 
 /// The scene of one profile: E = 1 MPa, dgamma = 0.05 J/m^2, glued at 0.5 mm, under the

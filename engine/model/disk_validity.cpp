@@ -46,7 +46,7 @@ double mdr_surface_displacement(const Profile& profile, double contact_radius, d
   const double scale = std::abs(indentation) + std::abs(profile.mdr_image(contact_radius));
   // t = top q^2: an image that grows like x^n with n < 2 at the centre (a power law r^1.5, a
   // table of one) makes the integrand in t grow like t^n there, on which Gauss panels converge
-  // slowly (a 205-point table of 0.8 r^1.5: 680 panels per integral on average, 45 % of them
+  // slowly (a 201-point table of 0.8 r^1.5: 680 panels per integral on average, 45 % of them
   // stopping at the 1024 cap, 0.6 s for one continuum run); in q it grows like q^(2n+1).
   const auto in_q = [&](double q) {
     const double t = top * q * q;

@@ -66,8 +66,8 @@ TEST(DiskValidity, PowerLawSurfaceDisplacementOutsideTheContact) {
     const double d = 1.2 * law.mdr_image(kA);
     for (const double r : {kA, 1.0001 * kA, 1.3 * kA, 2.0 * kA, 7.7 * kA}) {
       SCOPED_TRACE(testing::Message() << "n = " << n << ", r = " << r);
-      const double top = std::asin(std::min(1.0, kA / r));
-      const double sine = std::sin(top);
+      const double sine = std::min(1.0, kA / r);  // sin T
+      const double top = std::asin(sine);
       const double sin_power_integral = 0.5 * boost::math::beta((n + 1.0) / 2.0, 0.5, sine * sine);
       const double expected =
           (2.0 / kPi) * (d * top - image_coefficient * std::pow(r, n) * sin_power_integral);
