@@ -83,7 +83,8 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
   if (zoomed) counts += zoomed->counts;
   // The peak likewise where it lies in the last stage's peel (the fixed-grips pull-off's -F0).
   const std::optional<ZoomedCritical> zoomed_peak =
-      zoomed ? zoom_program_state(scene, *first, start, rtol, Target::peak) : std::nullopt;
+      zoomed ? zoom_program_state(scene, *first, start, rtol, Target::peak, &*zoomed)
+             : std::nullopt;
   if (zoomed_peak) counts += zoomed_peak->counts;
   // With the critical point zoomed, the path's rows stop where the shorthand's do
   // (path_estimates.hpp): past the cap its states and works carry their estimates only.

@@ -7,6 +7,9 @@
 
 #include <algorithm>
 
+#include "engine/run/pull_off.hpp"
+#include "engine/run/stage_motion.hpp"
+
 namespace mdrsim {
 namespace {
 
@@ -34,8 +37,45 @@ struct ZoomRow {
   bool exact;
 };
 
+/// Whether the last stage only lowers the normal held value at a still tangential one: the
+/// shorthand's pull-off, which the pull-off loop runs at a third of the program loop's cost
+/// per let-go (docs/design.md "Why two loops").
+bool peels_as_pull_off(const Scene& scene, const LastStageStart& start) {
+  const Stage& stage = scene.program->stages[start.stage];
+  return axis_motion(stage.normal, start.normal.held).rate < 0.0 &&
+         axis_motion(stage.tangential, start.tangential.held).rate == 0.0;
+}
+
+/// A pull-off row's state as the program row would report it: the glued springs' offset s
+/// added back to u_x (the row ran on the stretch u_x - s), and glued out to its edge.
+void as_program_state(std::optional<ContactSnapshot>& state, double offset) {
+  if (!state) return;
+  state->tangential_displacement += offset;
+  state->glued_radius = state->contact_radius;
+}
+
+/// The zoomed row on the pull-off loop: every spring glued at the offset s, so that the
+/// stretch is u_x - s; the tangential constraint a_u u_x + a_F F_x = h holds the stretch
+/// at h - a_u s.
+RunResult pull_off_row(const Scene& scene, const LastStageStart& start, double radius,
+                       std::int64_t springs) {
+  const MachineStart machine{
+      .normal = start.normal.constraint,
+      .normal_held = start.normal.held,
+      .tangential = start.tangential.constraint,
+      .tangential_held = start.tangential.held -
+                         start.tangential.constraint.displacement_coefficient * start.offset};
+  RunResult row = run_row(
+      scene, {.springs = springs, .outer_radius = radius, .zoomed = true, .start = machine}, {});
+  for (auto* state : {&row.critical, &row.refined_critical, &row.peak, &row.refined_peak}) {
+    as_program_state(*state, start.offset);
+  }
+  return row;
+}
+
 ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroScale& zero,
                    double radius, std::int64_t springs) {
+  if (peels_as_pull_off(scene, start)) return {pull_off_row(scene, start, radius, springs), true};
   ProgramRowSpec spec{
       .reference_radius = radius,
       .reference_springs = springs,
@@ -48,6 +88,18 @@ ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroSc
   LastStageStart seen;
   RunResult row = run_program_row(scene, spec, {}, nullptr, &seen);
   return {std::move(row), seen.zoomable};
+}
+
+/// Whether the row's peak is its critical point, as the row located both: the zoom of one is
+/// the zoom of the other.
+bool peak_is_critical(const RunResult& row) {
+  if (!row.peak || !row.critical || row.peak->springs_in_contact >= row.springs) return false;
+  if (row.peak->springs_in_contact != row.critical->springs_in_contact ||
+      row.peak->normal_force != row.critical->normal_force) {
+    return false;
+  }
+  if (row.refined_peak.has_value() != row.refined_critical.has_value()) return false;
+  return !row.refined_peak || row.refined_peak->normal_force == row.refined_critical->normal_force;
 }
 
 }  // namespace
@@ -63,7 +115,7 @@ std::int64_t target_springs(const RunResult& row, Target target, bool zoomed) {
 
 std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunResult& coarse,
                                                  const LastStageStart& start, double rtol,
-                                                 Target target) {
+                                                 Target target, const ZoomedCritical* critical) {
   if (!start.zoomable || !coarse.critical || scene.solver.method != SolverMethod::event) {
     return std::nullopt;
   }
@@ -84,6 +136,11 @@ std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunRe
   if (k <= 0 || k > top) return std::nullopt;
   std::int64_t index = std::min(top, k + std::max<std::int64_t>(4, k / 8));
   if (3 * index > 2 * coarse.springs) return std::nullopt;  // gains less than 1.5x
+  if (target == Target::peak && critical && critical->holds_peak && peak_is_critical(coarse)) {
+    ZoomedCritical same = *critical;
+    same.counts = {};
+    return same;
+  }
   std::optional<RunResult> first;
   double radius = 0.0;
   while (index < coarse.springs) {
@@ -136,7 +193,11 @@ std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunRe
   out.estimate = *estimate;
   out.route = route;
   out.outer_radius = radius;
-  for (const RunResult& row : seq.rows()) out.rows.push_back(row.springs);
+  out.holds_peak = target == Target::critical;
+  for (const RunResult& row : seq.rows()) {
+    out.rows.push_back(row.springs);
+    out.holds_peak = out.holds_peak && peak_is_critical(row);
+  }
   return out;
 }
 

@@ -188,23 +188,28 @@ void emit_closing_events(const RunResult& result, const ObserverList& observers)
 
 RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& observers) {
   const SpringFoundation foundation(*scene.profile, row.outer_radius, row.springs);
-  const AffineConstraint tangential_constraint = scene.tangential
+  const AffineConstraint normal_constraint =
+      row.start ? row.start->normal : scene.normal.controller->constraint();
+  const AffineConstraint tangential_constraint = row.start ? row.start->tangential
+                                                 : scene.tangential
                                                      ? scene.tangential->controller->constraint()
                                                      : FixedGripsController().constraint();
-  Contact contact(foundation, scene.material, scene.normal.controller->constraint(),
-                  tangential_constraint);
+  Contact contact(foundation, scene.material, normal_constraint, tangential_constraint);
 
-  contact.set_normal_control(contact.normal_control_at(scene.preload_depth));
+  contact.set_normal_control(row.start ? row.start->normal_held
+                                       : contact.normal_control_at(scene.preload_depth));
   // A zoomed row starts past the preload: only a row across the glued radius runs the path.
   std::optional<ShorthandPath> path;
   if (!row.zoomed && row.record_path) {
-    path.emplace(scene.normal.controller->constraint(), tangential_constraint);
+    path.emplace(normal_constraint, tangential_constraint);
     path->preload(contact);
   }
   if (!row.zoomed) {
     observers.emit({.kind = EventKind::preload_reached, .state = contact.snapshot()});
   }
-  if (scene.tangential) {
+  if (row.start) {
+    contact.set_tangential_held(row.start->tangential_held);
+  } else if (scene.tangential) {
     contact.set_tangential_held(scene.tangential->held_value);
     if (!row.zoomed) {
       observers.emit({.kind = EventKind::tangential_applied, .state = contact.snapshot()});
@@ -234,8 +239,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   ObserverList buffered;
   buffered.add(buffer);
   const bool may_fly =
-      (holds_force(scene.normal.controller->constraint()) || holds_force(tangential_constraint)) &&
-      !observers.empty();
+      (holds_force(normal_constraint) || holds_force(tangential_constraint)) && !observers.empty();
   const ObserverList& pull_off_observers = may_fly ? buffered : observers;
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
@@ -264,8 +268,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
       cascade.size += out.detached;
     }
   }
-  const JumpEnd flight = shorthand_flight(contact.save(), scene.normal.controller->constraint(),
-                                          tangential_constraint);
+  const JumpEnd flight = shorthand_flight(contact.save(), normal_constraint, tangential_constraint);
   if (flight == JumpEnd::state) {
     buffer.flush();
   } else {

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
+#include "controllers/controller.hpp"
 #include "engine/events/observer.hpp"
 #include "engine/result/run_result.hpp"
 #include "engine/scene/scene.hpp"
@@ -12,10 +14,22 @@ namespace mdrsim {
 /// One row of springs: `springs` springs across `outer_radius`. A row narrower than the
 /// glued radius (a zoomed row) stands for the glued contact after every spring outside it
 /// has let go, which is exact for the irreversible path: those springs carry nothing.
+/// The machine a row starts from where it is not the shorthand's preload and tangential load:
+/// a program's last stage (program_zoom.cpp), every spring glued at zero offset.
+struct MachineStart {
+  AffineConstraint normal;
+  double normal_held;  ///< [m or N]
+  AffineConstraint tangential;
+  double tangential_held;  ///< [m or N]
+};
+
 struct RowSpec {
   std::int64_t springs = 0;
   double outer_radius = 0.0;  ///< [m]
   bool zoomed = false;        ///< outer_radius < the glued radius: emits no preload events
+  /// Where given, the row starts from this machine instead (with `zoomed`: no path, no
+  /// preload events), and the pull-off loop peels it as the held normal value falls.
+  std::optional<MachineStart> start;
   /// Record the path's stages, jumps and work (shorthand_path.hpp): for the row a run reports,
   /// not for the rows it only compares (a few ns per let-go).
   bool record_path = false;

@@ -97,6 +97,47 @@ TEST(ProgramZoom, ShearRampsMeetRtolOnTheirZoomedRows) {
   }
 }
 
+/// The paper's path with the contact glued at u_x = s (the tangential machine moved there
+/// before the touch), sheared to s + 2 um and pulled off under `tangential` control.
+std::string glued_at_offset(const std::string& s, const std::string& sheared,
+                            const std::string& tangential) {
+  return kMaterial + "[detachment]\ncriterion = \"mode-mixed\"\n" +
+         "[[loading.stage]]\nname = \"shift\"\n" +
+         "tangential = { control = \"fixed-grips\", to = " + s + " }\n" +
+         "[[loading.stage]]\nname = \"preload\"\n" +
+         "normal = { control = \"fixed-grips\", to = " + kPreloadDepth + " }\n" +
+         "[[loading.stage]]\nname = \"shear\"\n" +
+         "tangential = { control = \"fixed-grips\", to = " + sheared + " }\n" +
+         "[[loading.stage]]\nname = \"pull-off\"\nnormal = { control = \"fixed-grips\", by = -" +
+         kPreloadDepth + " }\ntangential = { control = \"" + tangential +
+         "\" }\nuntil = \"separation\"\n[discretization]\nrtol = 1e-6\n[solver]\n" +
+         "method = \"event\"\n";
+}
+
+TEST(ProgramZoom, TheGluesOffsetIsNoStretch) {
+  // A contact glued at u_x = s and sheared to s + u is the one glued at 0 and sheared to u,
+  // moved by s: the same critical force, u_x larger by s. The zoomed rows run on the pull-off
+  // loop, which knows one stretch for every spring: they hold it at u_x - s (program_zoom.cpp);
+  // with the offset left out, the fixed-grips critical force came out 18.5 % apart (measured;
+  // a fixed load holds F_x, a_u = 0, and needs no shift).
+  for (const char* control : {"fixed-grips", "fixed-load"}) {
+    const RunResult at_zero =
+        run_scene(test::build_scene_text(glued_at_offset("0.0", "2.0e-6", control)), {});
+    const RunResult at_s =
+        run_scene(test::build_scene_text(glued_at_offset("3.0e-6", "5.0e-6", control)), {});
+    ASSERT_TRUE(at_zero.critical && at_s.critical) << control;
+    ASSERT_TRUE(at_zero.accuracy.critical_zoom && at_s.accuracy.critical_zoom) << control;
+    EXPECT_TRUE(at_zero.accuracy.rtol_met && at_s.accuracy.rtol_met) << control;
+    EXPECT_NEAR(at_s.critical->normal_force / at_zero.critical->normal_force, 1.0, 1e-10)
+        << control;
+    EXPECT_NEAR(at_s.critical->tangential_displacement - at_zero.critical->tangential_displacement,
+                3.0e-6, 1e-15)
+        << control;
+    EXPECT_NEAR(at_s.critical->tangential_force / at_zero.critical->tangential_force, 1.0, 1e-10)
+        << control;
+  }
+}
+
 TEST(ProgramZoom, NotWhereTheLastStageCanGlue) {
   // rebinding = true: a spring that let go may glue again, so the contact's state is not the
   // springs inside its front alone.
