@@ -91,7 +91,7 @@ class ProgramRunner {
   std::optional<std::pair<double, Change>> next_change(double t_end) {
     return locator_.next_change(row_, step_line(), t_end);
   }
-  LetGo boundary_let_go(double u) { return locator_.boundary_let_go(row_, u); }
+  const LetGo& boundary_let_go(double u) { return locator_.boundary_let_go(row_, u); }
   void apply(Change change, Cascade& cascade);
   /// The state a cascade starts from, observed as an equilibrium.
   Cascade begin_cascade();
@@ -526,12 +526,13 @@ void ProgramRunner::track_front(const Cascade& cascade) {
 }
 
 Cascade ProgramRunner::begin_cascade() {
-  Cascade cascade;
-  cascade.before = row_.snapshot();
-  cascade.in_contact = row_.in_contact();
-  cascade.glued = row_.glued();
-  cascade.work_before = record_.stage_work;
-  cascade.stage = stage_;
+  // Built in place: a snapshot assigned into a zeroed Cascade cost 4 % of a one-row program's
+  // time (the zeroing, and a copy whose loads waited on the snapshot's stores).
+  Cascade cascade{.before = row_.snapshot(),
+                  .in_contact = row_.in_contact(),
+                  .glued = row_.glued(),
+                  .work_before = record_.stage_work,
+                  .stage = stage_};
   observe(cascade.before);
   return cascade;
 }
