@@ -138,6 +138,8 @@ class ProgramRunner {
   bool observe_slips_;  ///< the same for slip and stick
   LargestContact* largest_;
   LastStageStart* last_stage_;  ///< null where nobody asks
+  /// While finish_cascade observes a cascade's end: the state it began at (LastStageStart).
+  const ContactSnapshot* cascade_before_ = nullptr;
   std::optional<ZoomedStart> zoomed_;
   bool keep_machine_ = false;  ///< a zoomed row's first stage: the machine is set already
   /// The last spring that exists: a zoomed row has none outside its radius (the springs there
@@ -273,6 +275,7 @@ void ProgramRunner::observe(const ContactSnapshot& s) {
       ((row_.in_contact() > 0 && row_.in_contact() != row_.glued()) ||
        row_.glued() > last_stage_->springs)) {
     last_stage_->zoomable = false;
+    if (cascade_before_) last_stage_->lost_after = *cascade_before_;
   }
   if (largest_ && s.springs_in_contact > 0) {
     largest_->most_springs = std::max(largest_->most_springs, s.springs_in_contact);
@@ -459,7 +462,9 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
     stop_ = Stop::overflow;  // values beyond a double: nothing of it is recorded
     return;
   }
+  cascade_before_ = &cascade.before;
   observe(after);
+  cascade_before_ = nullptr;
   losses_.record(cascade, row_.glued(), row_.in_contact());
   // Springs that carry no force and no glue leaving together (a flat tip at rounding) is no jump.
   const bool idle = cascade.glued == 0 && row_.glued() == 0 &&

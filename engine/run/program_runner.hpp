@@ -41,6 +41,19 @@ struct LastStageStart {
   /// The most tensile normal force before the stage [N] (+inf: none): a peak below it lies
   /// in the stage.
   double peak_before = std::numeric_limits<double>::infinity();
+  /// Where the stage lost `zoomable` at the end of a cascade (a spring left pressed, or glued
+  /// anew): the state that cascade began at. A cascade that begins at the row's critical point
+  /// loses nothing the zoom needs (a glue sheared off under compression leaves its springs
+  /// pressed only after it): what follows the critical point is not zoomed.
+  std::optional<ContactSnapshot> lost_after;
+
+  /// Whether the stage kept the zoom's conditions up to `critical`, the row's critical point.
+  bool zoomable_to(const ContactSnapshot& critical) const {
+    return zoomable ||
+           (lost_after && lost_after->springs_in_contact == critical.springs_in_contact &&
+            lost_after->normal_control == critical.normal_control &&
+            lost_after->tangential_displacement == critical.tangential_displacement);
+  }
 };
 
 /// A row that starts at a program's last stage, glued on all its springs with one offset and

@@ -87,7 +87,8 @@ ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroSc
       .zoomed = ZoomedStart{start.stage, start.normal, start.tangential, start.offset}};
   LastStageStart seen;
   RunResult row = run_program_row(scene, spec, {}, nullptr, &seen);
-  return {std::move(row), seen.zoomable};
+  const bool exact = row.critical ? seen.zoomable_to(*row.critical) : seen.zoomable;
+  return {std::move(row), exact};
 }
 
 /// Whether the row's peak is its critical point, as the row located both: the zoom of one is
@@ -116,7 +117,8 @@ std::int64_t target_springs(const RunResult& row, Target target, bool zoomed) {
 std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunResult& coarse,
                                                  const LastStageStart& start, double rtol,
                                                  Target target, const ZoomedCritical* critical) {
-  if (!start.zoomable || !coarse.critical || scene.solver.method != SolverMethod::event) {
+  if (!coarse.critical || !start.zoomable_to(*coarse.critical) ||
+      scene.solver.method != SolverMethod::event) {
     return std::nullopt;
   }
   // The peak only where the last stage holds it: more tensile than anything before it.

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "engine/reference/jkr_scenario.hpp"
@@ -136,6 +137,48 @@ TEST(ProgramZoom, TheGluesOffsetIsNoStretch) {
     EXPECT_NEAR(at_s.critical->tangential_force / at_zero.critical->tangential_force, 1.0, 1e-10)
         << control;
   }
+}
+
+/// A 10-degree cone glued across 20 um and sheared by 1 um, pulled off in fixed grips: its
+/// glue shears off in a jump at a compressive force (F = +1.3e-7 N) and leaves springs pressed
+/// in. `program`: the same path as three stages.
+std::string sheared_cone(bool program, const std::string& rtol) {
+  const std::string head =
+      "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"cone\"\nslope_angle_deg = 10.0\n[detachment]\ncriterion = "
+      "\"mode-mixed\"\n[solver]\nmethod = \"event\"\n[discretization]\nrtol = " +
+      rtol + "\n";
+  if (!program) {
+    return head +
+           "[loading]\npreload = { contact_radius = 2.0e-5 }\n"
+           "tangential = { control = \"fixed-grips\", displacement = 1.0e-6 }\n"
+           "normal = { control = \"fixed-grips\" }\n";
+  }
+  const std::string depth = "5.539475472233828e-06";  // the glued radius's (shorthand's)
+  return head +
+         "[[loading.stage]]\nname = \"preload\"\nnormal = { control = \"fixed-grips\", to = " +
+         depth + " }\n[[loading.stage]]\nname = \"tangential\"\n" +
+         "tangential = { control = \"fixed-grips\", to = 1.0e-6 }\n" +
+         "[[loading.stage]]\nname = \"pull-off\"\nnormal = { by = -" + depth +
+         " }\nuntil = \"separation\"\n";
+}
+
+TEST(ProgramZoom, AGlueShearedOffUnderCompressionIsZoomed) {
+  // The springs the jump leaves pressed come after the critical point, which the zoomed rows
+  // reach exactly. Before, they made the whole stage unzoomable: full rows to their cap of
+  // 2^25 springs, 8.3 s against the shorthand's 2.4 ms (now 0.08 s, path rows to 2^18).
+  const RunResult p = run_scene(test::build_scene_text(sheared_cone(true, "1e-6")), {});
+  const RunResult s = run_scene(test::build_scene_text(sheared_cone(false, "1e-8")), {});
+  ASSERT_EQ(p.status, RunStatus::instability);
+  ASSERT_EQ(s.status, RunStatus::instability);
+  ASSERT_TRUE(p.critical && s.critical);
+  EXPECT_GT(p.critical->normal_force, 0.0);
+  ASSERT_TRUE(p.accuracy.critical_zoom.has_value());
+  EXPECT_LE(p.accuracy.rows.back(), std::int64_t{1} << 18);
+  ASSERT_TRUE(p.accuracy.critical_error_estimate.has_value());
+  EXPECT_LE(*p.accuracy.critical_error_estimate, 1e-6 * p.critical->normal_force);
+  // The shorthand at rtol 1e-8 is the reference (measured 1.7e-8 apart).
+  EXPECT_NEAR(p.critical->normal_force / s.critical->normal_force, 1.0, 1e-6);
 }
 
 TEST(ProgramZoom, NotWhereTheLastStageCanGlue) {
