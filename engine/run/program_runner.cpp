@@ -114,7 +114,9 @@ class ProgramRunner {
   void end_in_flight(const Cascade& cascade, JumpEnd end);
   /// The stages after the one under way, which a flight does not run.
   void warn_skipped_stages();
-  void observe(const ContactSnapshot& s);
+  /// An equilibrium on the path; `cascade_before`: the state the cascade that ended at `s`
+  /// began at, where it did (LastStageStart::lost_after).
+  void observe(const ContactSnapshot& s, const ContactSnapshot* cascade_before = nullptr);
   void emit(EventKind kind, const ContactSnapshot& state, std::int64_t spring = 0,
             bool in_cascade = false);
   void finish(RunResult& result);
@@ -138,8 +140,6 @@ class ProgramRunner {
   bool observe_slips_;  ///< the same for slip and stick
   LargestContact* largest_;
   LastStageStart* last_stage_;  ///< null where nobody asks
-  /// While finish_cascade observes a cascade's end: the state it began at (LastStageStart).
-  const ContactSnapshot* cascade_before_ = nullptr;
   std::optional<ZoomedStart> zoomed_;
   bool keep_machine_ = false;  ///< a zoomed row's first stage: the machine is set already
   /// The last spring that exists: a zoomed row has none outside its radius (the springs there
@@ -262,7 +262,7 @@ void ProgramRunner::advance_to(double t) {
   guards_ = {};
 }
 
-void ProgramRunner::observe(const ContactSnapshot& s) {
+void ProgramRunner::observe(const ContactSnapshot& s, const ContactSnapshot* cascade_before) {
   if (!finite(s)) return;
   largest_force_ = std::max(largest_force_, std::abs(s.normal_force));
   if (s.springs_in_contact > 0 && s.normal_force < -zero_.force &&
@@ -275,7 +275,7 @@ void ProgramRunner::observe(const ContactSnapshot& s) {
       ((row_.in_contact() > 0 && row_.in_contact() != row_.glued()) ||
        row_.glued() > last_stage_->springs)) {
     last_stage_->zoomable = false;
-    if (cascade_before_) last_stage_->lost_after = *cascade_before_;
+    if (cascade_before) last_stage_->lost_after = *cascade_before;
   }
   if (largest_ && s.springs_in_contact > 0) {
     largest_->most_springs = std::max(largest_->most_springs, s.springs_in_contact);
@@ -462,9 +462,7 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
     stop_ = Stop::overflow;  // values beyond a double: nothing of it is recorded
     return;
   }
-  cascade_before_ = &cascade.before;
-  observe(after);
-  cascade_before_ = nullptr;
+  observe(after, &cascade.before);
   losses_.record(cascade, row_.glued(), row_.in_contact());
   // Springs that carry no force and no glue leaving together (a flat tip at rounding) is no jump.
   const bool idle = cascade.glued == 0 && row_.glued() == 0 &&

@@ -102,6 +102,13 @@ void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result) {
   result.stages = std::move(finest.stages);
   result.jumps = std::move(finest.jumps);
   result.work = finest.work;
+  // What the path's row said of its path (the glue letting go pressed in, a work beyond a
+  // double): the rows run above recorded none.
+  for (std::string& w : finest.warnings) {
+    if (std::find(result.warnings.begin(), result.warnings.end(), w) == result.warnings.end()) {
+      result.warnings.push_back(std::move(w));
+    }
+  }
   if (!result.work) return;  // the work left the range of a double: the row said so
   if (!p.choices.empty()) {
     take_critical(result, p.choices);

@@ -19,6 +19,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -411,6 +413,22 @@ TEST(FixedLoadSeparation, ShorthandHeldCompressionEndsPressedAtTheCriticalPoint)
     works.push_back(r.work->normal);
   }
   EXPECT_NEAR(works[1], works[0], 2e-3 * std::abs(works[1]));
+}
+
+// Under rtol the path comes from rows of its own, whose warnings were dropped: the run above
+// at rtol 1e-4 reported the same pressed jump without the warning a plain row gives.
+TEST(FixedLoadSeparation, ThePressedWarningHoldsUnderRtol) {
+  Scene scene = fig3a_fixed_load(4.0 * 2.2614848269449475e-6, 1000);
+  scene.discretization.rtol = 1e-4;
+  scene.solver.method = SolverMethod::event;
+  const RunResult r = run_scene(scene, {});
+  ASSERT_EQ(r.status, RunStatus::instability);
+  ASSERT_EQ(r.jumps.size(), 1u);
+  EXPECT_EQ(r.jumps[0].end, JumpEnd::pressed);
+  const auto pressed = std::count_if(r.warnings.begin(), r.warnings.end(), [](const auto& w) {
+    return w.find("let go with the indenter pressed in") != std::string::npos;
+  });
+  EXPECT_EQ(pressed, 1);
 }
 
 // The glue sheared off as the tangential load was applied (u = 2e-5 m, far past the glue's
