@@ -1,7 +1,7 @@
 // The two engines against each other (issue 20): each shorthand scene and its equal program.
 //
 //   build/bench/mdrsim_engines [--out PATH.csv] [--repeats N] [--part springs|rtol|all]
-//                              [--case fig2|tangential-u|tangential-F|cone]
+//                              [--case fig2|tangential-u|tangential-F|cone|cone-u]
 //
 // Every shorthand scene (preload to the glued radius, tangential load, pull-off) is also run as
 // its three-stage program (tests/engine/run/shorthand_program_grid_test.cpp builds the same).
@@ -69,6 +69,10 @@ std::vector<Case> cases() {
       // scenes/cone_fixed_*.toml
       {"cone", cone, "mode-mixed", "fixed-grips", 2.0e-5, "", 0.0},
       {"cone", cone, "mode-mixed", "fixed-load", 2.0e-5, "", 0.0},
+      // sheared by 1 um: under fixed grips the glue shears off at a compression, and the
+      // program follows the springs it leaves pressed (tests/engine/run/program_zoom_test.cpp)
+      {"cone-u", cone, "mode-mixed", "fixed-grips", 2.0e-5, "fixed-grips", 1.0e-6},
+      {"cone-u", cone, "mode-mixed", "fixed-load", 2.0e-5, "fixed-grips", 1.0e-6},
   };
 }
 

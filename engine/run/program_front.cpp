@@ -24,8 +24,10 @@ double ProgramFront::let_go_margin(const ProgramRow& row) const {
 
 std::optional<ContactSnapshot> ProgramFront::at_rest(ProgramRow& row) {
   const std::int64_t k = row.glued();
-  if (row.in_contact() == 0) return row.snapshot();  // nothing in contact: no front to place
-  if (row.in_contact() != k || k < 2) {
+  const std::int64_t m = row.in_contact();
+  if (m == 0) return row.snapshot();  // nothing in contact: no front to place
+  if (k == 0 && m >= 2 && !row.friction()) return pressed_at_rest(row);
+  if (m != k || k < 2) {
     phase_.reset();
     return std::nullopt;
   }
@@ -71,6 +73,21 @@ std::optional<ContactSnapshot> ProgramFront::at_rest(ProgramRow& row) {
     return std::nullopt;  // pinned, with no phase known since it last moved
   }
   return interpolate_snapshots(inner.state, at, *outer, *phase_);
+}
+
+std::optional<ContactSnapshot> ProgramFront::pressed_at_rest(ProgramRow& row) {
+  // Springs pressed without glue (a press that does not glue, the springs a glue sheared off
+  // under compression left in): the front sits where g(a) = d, at the phase of d between
+  // g_m and g_m+1, on the branch of springs m - 1, m and m + 1 in contact at the same held
+  // values.
+  const std::int64_t m = row.in_contact();
+  const double here = row.image(m) - row.indentation();
+  const double next = row.image(m + 1) - row.indentation();
+  if (!(here <= 0.0 && next > 0.0)) return std::nullopt;
+  const auto look = [](const ProgramRow& r) { return r.snapshot(); };
+  const ContactSnapshot inner = row.trial([](ProgramRow& r) { r.lift_outer(); }, look);
+  const ContactSnapshot outer = row.trial([](ProgramRow& r) { r.touch_next(); }, look);
+  return interpolate_snapshots(inner, row.snapshot(), outer, here / (here - next));
 }
 
 void ProgramFront::candidate(const std::optional<ContactSnapshot>& state) {

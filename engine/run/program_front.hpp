@@ -70,6 +70,8 @@ class ProgramFront {
   /// The state of `row`, at rest at this parameter, with its front between springs; sets the
   /// phase where the front is moving. Tries changes on `row` and puts it back exactly.
   std::optional<ContactSnapshot> at_rest(ProgramRow& row);
+  /// at_rest where every spring in contact is pressed, none glued.
+  static std::optional<ContactSnapshot> pressed_at_rest(ProgramRow& row);
 
   /// The fold of a run of single let-gos: spring k let go at t from `before`, `row` is the
   /// row after it (k - 1 glued, still at t) and its boundary is due too. The parabola

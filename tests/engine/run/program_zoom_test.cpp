@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 
 #include "engine/reference/jkr_scenario.hpp"
@@ -166,7 +167,7 @@ std::string sheared_cone(bool program, const std::string& rtol) {
 TEST(ProgramZoom, AGlueShearedOffUnderCompressionIsZoomed) {
   // The springs the jump leaves pressed come after the critical point, which the zoomed rows
   // reach exactly. Before, they made the whole stage unzoomable: full rows to their cap of
-  // 2^25 springs, 8.3 s against the shorthand's 2.4 ms (now 0.08 s, path rows to 2^18).
+  // 2^25 springs, 8.3 s against the shorthand's 2.4 ms (now 0.01 s).
   const RunResult p = run_scene(test::build_scene_text(sheared_cone(true, "1e-6")), {});
   const RunResult s = run_scene(test::build_scene_text(sheared_cone(false, "1e-8")), {});
   ASSERT_EQ(p.status, RunStatus::instability);
@@ -179,6 +180,26 @@ TEST(ProgramZoom, AGlueShearedOffUnderCompressionIsZoomed) {
   EXPECT_LE(*p.accuracy.critical_error_estimate, 1e-6 * p.critical->normal_force);
   // The shorthand at rtol 1e-8 is the reference (measured 1.7e-8 apart).
   EXPECT_NEAR(p.critical->normal_force / s.critical->normal_force, 1.0, 1e-6);
+}
+
+TEST(ProgramZoom, TheSpringsAShearedOffGlueLeavesPressedAreLocated) {
+  // After the jump the springs pressed without glue are a frictionless cone at the held depth:
+  // Sneddon's F = 2 E* d^2 / (pi tan(theta)) (the MDR image (pi/2) tan(theta) |x| pressed to
+  // d: 2 E* int_0^a (d - g) dx with g(a) = d). Their front is located between springs where
+  // g(a) = d (program_front.cpp), so that rtol covers the jump's end: before, the row's own
+  // value with its plain estimate, 3.5e-5 off on rows of 2^18 springs, and the path's rows
+  // ran to their cap without meeting rtol 1e-6 (a warning). Now rows of 2^15 meet it.
+  const RunResult p = run_scene(test::build_scene_text(sheared_cone(true, "1e-6")), {});
+  ASSERT_EQ(p.jumps.size(), 1u);
+  const ContactSnapshot& after = p.jumps[0].after;
+  ASSERT_GT(after.springs_in_contact, 0);
+  const double tan_theta = std::tan(10.0 * std::numbers::pi / 180.0);
+  const double sneddon =
+      2.0 * 1.0e6 * after.indentation * after.indentation / (std::numbers::pi * tan_theta);
+  EXPECT_NEAR(after.normal_force / sneddon, 1.0, 1e-6);
+  EXPECT_TRUE(p.accuracy.rtol_met);
+  EXPECT_TRUE(p.warnings.empty()) << p.warnings.front();
+  EXPECT_LE(p.accuracy.rows.back(), std::int64_t{1} << 15);
 }
 
 TEST(ProgramZoom, NotWhereTheLastStageCanGlue) {
