@@ -238,8 +238,8 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   CascadeBuffer buffer(observers);
   ObserverList buffered;
   buffered.add(buffer);
-  const bool may_fly =
-      (holds_force(normal_constraint) || holds_force(tangential_constraint)) && !observers.empty();
+  // Any control: a glue sheared off under compression ends pressed in under fixed grips too.
+  const bool may_fly = !observers.empty();
   const ObserverList& pull_off_observers = may_fly ? buffered : observers;
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
@@ -268,7 +268,8 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
       cascade.size += out.detached;
     }
   }
-  const JumpEnd flight = shorthand_flight(contact.save(), normal_constraint, tangential_constraint);
+  const JumpEnd flight = shorthand_flight(contact.save(), normal_constraint, tangential_constraint,
+                                          foundation.image(1));
   if (flight == JumpEnd::state) {
     buffer.flush();
   } else {
@@ -277,10 +278,11 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   result.sliding = flight == JumpEnd::sliding;
   if (flight == JumpEnd::pressed && path) {
     result.warnings.push_back(fmt::format(
-        "the glue let go with the indenter pressed in (held normal force {:.6g} N): the springs "
-        "pressed back carry that load, which the shorthand does not follow; its pull-off stage "
+        "the glue let go with the indenter pressed in (held normal {} {:.6g} {}): the springs "
+        "pressed back carry a load, which the shorthand does not follow; its pull-off stage "
         "ends where the glue let go, and the same path written as a program follows it on",
-        contact.save().normal_control));
+        holds_force(normal_constraint) ? "force" : "value", contact.save().normal_control,
+        holds_force(normal_constraint) ? "N" : "m"));
   }
   if (path) path->finish(contact, result.stages, result.jumps, result.work);
   if (result.work &&

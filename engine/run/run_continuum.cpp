@@ -16,13 +16,15 @@ namespace {
 /// How the indenter goes on once the contact is empty (docs/programs.md "A fixed load that
 /// loses the contact"), as the row decides it: a normal fixed load holding a tension
 /// separates, one holding a compression presses in; a tangential fixed load slides away.
-JumpEnd flight_after(const ContinuumBranch& branch, double normal_held) {
+JumpEnd flight_after(const ContinuumBranch& branch, double normal_held, double g0) {
   if (holds_force(branch.normal())) {
     return normal_held <= 0.0 ? JumpEnd::separated : JumpEnd::pressed;
   }
   if (holds_force(branch.tangential()) && branch.tangential_held() != 0.0) {
     return JumpEnd::sliding;
   }
+  // Held where the glue left it, pressed in beyond g(0): a glue sheared off under compression.
+  if (normal_held / branch.normal().displacement_coefficient > g0) return JumpEnd::pressed;
   return JumpEnd::state;
 }
 
@@ -113,7 +115,8 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
     result.status = RunStatus::shear_off;
     if (std::isfinite(p.tangential_strength)) result.tangential_strength = p.tangential_strength;
     result.stages.push_back({"pull-off", applied.snapshot(), {}});
-    if (flight_after(branch, applied.control) == JumpEnd::sliding) result.sliding = true;
+    if (flight_after(branch, applied.control, scene.profile->mdr_image(0.0)) == JumpEnd::sliding)
+      result.sliding = true;
   } else {
     // The pinned phase (the front stays at a_g until e reaches its let-go value), then each
     // stable stretch of the branch and the jumps between them.
@@ -132,7 +135,7 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
       }
     }
     emit_samples(branch, p, samples, observers);
-    const JumpEnd flight = flight_after(branch, p.critical.control);
+    const JumpEnd flight = flight_after(branch, p.critical.control, scene.profile->mdr_image(0.0));
     result.sliding = flight == JumpEnd::sliding;
     if (p.end == End::smooth_peel) {
       result.status = RunStatus::no_instability;
@@ -157,9 +160,10 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
                                work});
       if (flight == JumpEnd::pressed) {
         result.warnings.push_back(fmt::format(
-            "the glue let go with the indenter pressed in (held normal force {:.6g} N): the "
+            "the glue let go with the indenter pressed in (held normal {} {:.6g} {}): the "
             "shorthand's pull-off stage ends where the glue let go",
-            p.critical.control));
+            holds_force(branch.normal()) ? "force" : "value", p.critical.control,
+            holds_force(branch.normal()) ? "N" : "m"));
       }
     }
     if (p.peak) {

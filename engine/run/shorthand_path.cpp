@@ -17,7 +17,7 @@ void locate_whole_row(const Contact& contact, StageRecord& stage) {
 }  // namespace
 
 JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
-                         const AffineConstraint& tangential) {
+                         const AffineConstraint& tangential, double first_image) {
   if (lost.springs_in_contact > 0) return JumpEnd::state;
   // The held normal value falls during the pull-off: a fixed load at zero pulls next. A held
   // compression (Fig. 3a's positive branch, or the glue sheared off as the tangential load
@@ -27,6 +27,10 @@ JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& nor
   }
   if (holds_force(tangential) && lost.tangential_held != 0.0) {
     return JumpEnd::sliding;
+  }
+  // With no spring the machine's force is zero: the indentation is the held value over a_u.
+  if (lost.normal_control / normal.displacement_coefficient > first_image) {
+    return JumpEnd::pressed;
   }
   return JumpEnd::state;
 }
@@ -129,7 +133,8 @@ JumpEnd ShorthandPath::finish(const Contact& contact, std::vector<StageRecord>& 
     last_ = contact.save();
     add_work(contact, last_);
   }
-  const JumpEnd flight = shorthand_flight(last_, normal_, tangential_);
+  const JumpEnd flight =
+      shorthand_flight(last_, normal_, tangential_, contact.foundation().image(1));
   if (flight == JumpEnd::state) {
     close_cascade(contact);
     stages_.push_back({"pull-off", snapshot(contact, last_), pull_off_work_});

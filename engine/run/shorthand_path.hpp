@@ -17,9 +17,12 @@ namespace mdrsim {
 /// fixed load that holds a tension the indenter separates (one that holds a
 /// compression presses it in on springs without glue, which the row does not follow); under a
 /// tangential fixed load that holds a force it slides away (docs/programs.md "A fixed load that
-/// loses the contact"); otherwise the machine holds it where the last spring left it.
+/// loses the contact"); otherwise the machine holds it where the last spring left it, which
+/// is pressed in too where that indentation is beyond `first_image`, g at the first spring
+/// [m]: the glue sheared off under compression, and the springs pressed back carry a force
+/// the row does not follow either.
 JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
-                         const AffineConstraint& tangential);
+                         const AffineConstraint& tangential, double first_image);
 
 class ShorthandPath {
  public:

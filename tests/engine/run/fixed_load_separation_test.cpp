@@ -415,6 +415,38 @@ TEST(FixedLoadSeparation, ShorthandHeldCompressionEndsPressedAtTheCriticalPoint)
   EXPECT_NEAR(works[1], works[0], 2e-3 * std::abs(works[1]));
 }
 
+// Under fixed grips the machine holds the indenter where the glue let go; a glue sheared off
+// under compression leaves it pressed into springs the shorthand drops. A 10-degree cone glued
+// across 20 um and sheared by 1 um: the shorthand's jump said `after` = no spring, F = 0 at
+// d = 6e-7 m, where those springs carry Sneddon's 1.29e-6 N (the program follows them:
+// tests/engine/run/program_zoom_test.cpp). Both shorthand routes now end it `pressed`, at the
+// critical point, with the warning a held compression gives.
+TEST(FixedLoadSeparation, AFixedGripsGlueShearedOffUnderCompressionEndsPressed) {
+  const std::string text =
+      "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"cone\"\nslope_angle_deg = 10.0\n[detachment]\n"
+      "criterion = \"mode-mixed\"\n[loading]\npreload = { contact_radius = 2.0e-5 }\n"
+      "tangential = { control = \"fixed-grips\", displacement = 1.0e-6 }\n"
+      "normal = { control = \"fixed-grips\" }\n";
+  for (const char* route : {"springs = 20000\n[solver]\nmethod = \"event\"\n",
+                            "rtol = 1e-6\n[solver]\nmethod = \"event\"\n",
+                            "rtol = 1e-8\n[solver]\nmethod = \"continuum\"\n"}) {
+    SCOPED_TRACE(route);
+    const RunResult r = run_scene(test::build_scene_text(text + "[discretization]\n" + route), {});
+    ASSERT_EQ(r.status, RunStatus::instability);
+    ASSERT_TRUE(r.critical);
+    EXPECT_GT(r.critical->normal_force, 0.0);
+    ASSERT_FALSE(r.jumps.empty());
+    EXPECT_EQ(r.jumps.back().end, JumpEnd::pressed);
+    ASSERT_EQ(r.stages.size(), 3u);
+    EXPECT_EQ(r.stages[2].end.normal_force, r.critical->normal_force);
+    const auto pressed = std::count_if(r.warnings.begin(), r.warnings.end(), [](const auto& w) {
+      return w.find("let go with the indenter pressed in") != std::string::npos;
+    });
+    EXPECT_EQ(pressed, 1);
+  }
+}
+
 // Under rtol the path comes from rows of its own, whose warnings were dropped: the run above
 // at rtol 1e-4 reported the same pressed jump without the warning a plain row gives.
 TEST(FixedLoadSeparation, ThePressedWarningHoldsUnderRtol) {

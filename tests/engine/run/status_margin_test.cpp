@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "engine/reference/continuum_reference.hpp"
 #include "engine/reference/jkr_scenario.hpp"
@@ -82,6 +83,17 @@ TEST(StatusMargin, TheRowsFoldIsTheContinuumsFold) {
   EXPECT_TRUE(status_resolved(row));
 }
 
+/// The warnings but the one every run of this shorthand scene carries: its glue lets go with
+/// the indenter still pressed in, which the shorthand does not follow (docs/programs.md).
+std::vector<std::string> besides_pressed_in(const std::vector<std::string>& warnings) {
+  std::vector<std::string> out;
+  for (const std::string& w : warnings) {
+    if (w.find("let go with the indenter pressed in") == std::string::npos) out.push_back(w);
+  }
+  EXPECT_EQ(out.size() + 1, warnings.size()) << "the pressed-in warning, once";
+  return out;
+}
+
 // rtol 1e-4 and 1e-6, on every route, give the continuum's status and a force within rtol
 // of it (the reference is exact to 1e-12).
 TEST(StatusMargin, TheStatusDoesNotDependOnRtol) {
@@ -96,7 +108,11 @@ TEST(StatusMargin, TheStatusDoesNotDependOnRtol) {
       ASSERT_TRUE(r.critical.has_value());
       EXPECT_NEAR(r.critical->normal_force, ref.point.normal_force,
                   std::stod(rtol) * std::abs(ref.point.normal_force));
-      EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+      // Beside it, only the path's rtol may be said unmet: the pull-off stage ends at the
+      // critical point, whose F_x the plain route at 1e-6 resolves to 1.05e-6 on 2^23 springs.
+      for (const std::string& w : besides_pressed_in(r.warnings)) {
+        EXPECT_NE(w.find("not met for the stages, jumps and work"), std::string::npos) << w;
+      }
     }
   }
 }
@@ -106,12 +122,13 @@ TEST(StatusMargin, TheStatusDoesNotDependOnRtol) {
 TEST(StatusMargin, APlainRowSaysWhenItCannotTell) {
   const RunResult coarse = run_scene(test::build_scene_text(scene_text("springs = 4096\n")), {});
   EXPECT_EQ(coarse.status, RunStatus::shear_off);
-  ASSERT_EQ(coarse.warnings.size(), 1u);
-  EXPECT_NE(coarse.warnings[0].find("cannot tell instability from shear-off"), std::string::npos)
-      << coarse.warnings[0];
+  const auto said = besides_pressed_in(coarse.warnings);
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said[0].find("cannot tell instability from shear-off"), std::string::npos) << said[0];
   const RunResult fine = run_scene(test::build_scene_text(scene_text("springs = 1048576\n")), {});
   EXPECT_EQ(fine.status, RunStatus::instability);
-  EXPECT_TRUE(fine.warnings.empty()) << fine.warnings.front();
+  const auto fine_said = besides_pressed_in(fine.warnings);
+  EXPECT_TRUE(fine_said.empty()) << fine_said.front();
 }
 
 /// The shorthand as its three-stage program (preload to the depth that glues a_g, u_x, pull).
