@@ -20,6 +20,17 @@ using Extrapolation = DiscretizationOptions::Extrapolation;
 
 constexpr std::int64_t kFirstRow = 256;
 
+/// Whether an observer wants any event a program row gives (the closing events come after).
+bool wants_row_events(const ObserverList& observers) {
+  for (const EventKind kind :
+       {EventKind::spring_detached, EventKind::spring_glued, EventKind::spring_touched,
+        EventKind::spring_lifted, EventKind::stage_end, EventKind::jump, EventKind::step_accepted,
+        EventKind::step_halved, EventKind::spring_slipped, EventKind::spring_stuck}) {
+    if (observers.wants(kind)) return true;
+  }
+  return false;
+}
+
 ProgramRowSpec resolving_row(const Scene& scene, const ProgramRowFrame& frame,
                              std::int64_t springs) {
   ProgramRowSpec spec = program_row(scene, frame, springs);
@@ -113,9 +124,10 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
     take_critical(zoomed->value, zoomed->estimate, p.choices);
     if (zoomed_peak) take_peak(zoomed_peak->value, zoomed_peak->estimate, p.choices);
   }
-  // The finest row again, for its events (the rows above ran without observers).
+  // The finest row again, for its events (the rows above ran without observers), where an
+  // observer wants any.
   RunResult result =
-      observers.empty()
+      !wants_row_events(observers)
           ? std::move(p.rows.back())
           : run_program_row(scene, resolving_row(scene, frame, p.springs.back()), observers);
   result.accuracy.route = Accuracy::Route::row;
