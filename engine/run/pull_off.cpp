@@ -278,11 +278,10 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   result.sliding = flight == JumpEnd::sliding;
   if (flight == JumpEnd::pressed && path) {
     result.warnings.push_back(fmt::format(
-        "the glue let go with the indenter pressed in (held normal {} {:.6g} {}): the springs "
-        "pressed back carry a load, which the shorthand does not follow; its pull-off stage "
-        "ends where the glue let go, and the same path written as a program follows it on",
-        holds_force(normal_constraint) ? "force" : "value", contact.save().normal_control,
-        holds_force(normal_constraint) ? "N" : "m"));
+        "the glue let go with the indenter pressed in (held normal {}): the springs pressed "
+        "back carry a load, which the shorthand does not follow; its pull-off stage ends where "
+        "the glue let go, and the same path written as a program follows it on",
+        held_normal_text(normal_constraint, contact.save().normal_control)));
   }
   if (path) path->finish(contact, result.stages, result.jumps, result.work);
   if (result.work &&

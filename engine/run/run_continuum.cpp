@@ -9,23 +9,16 @@
 #include "controllers/builtin_controllers.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
+#include "engine/run/shorthand_path.hpp"
 
 namespace mdrsim {
 namespace {
 
 /// How the indenter goes on once the contact is empty (docs/programs.md "A fixed load that
-/// loses the contact"), as the row decides it: a normal fixed load holding a tension
-/// separates, one holding a compression presses in; a tangential fixed load slides away.
+/// loses the contact"), as the row decides it (shorthand_path.hpp), g(0) for its first spring.
 JumpEnd flight_after(const ContinuumBranch& branch, double normal_held, double g0) {
-  if (holds_force(branch.normal())) {
-    return normal_held <= 0.0 ? JumpEnd::separated : JumpEnd::pressed;
-  }
-  if (holds_force(branch.tangential()) && branch.tangential_held() != 0.0) {
-    return JumpEnd::sliding;
-  }
-  // Held where the glue left it, pressed in beyond g(0): a glue sheared off under compression.
-  if (normal_held / branch.normal().displacement_coefficient > g0) return JumpEnd::pressed;
-  return JumpEnd::state;
+  return lost_contact_flight(branch.normal(), normal_held, branch.tangential(),
+                             branch.tangential_held(), g0);
 }
 
 /// The empty contact the machine holds where the last spring left: at zero force the
@@ -160,10 +153,9 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
                                work});
       if (flight == JumpEnd::pressed) {
         result.warnings.push_back(fmt::format(
-            "the glue let go with the indenter pressed in (held normal {} {:.6g} {}): the "
-            "shorthand's pull-off stage ends where the glue let go",
-            holds_force(branch.normal()) ? "force" : "value", p.critical.control,
-            holds_force(branch.normal()) ? "N" : "m"));
+            "the glue let go with the indenter pressed in (held normal {}): the shorthand's "
+            "pull-off stage ends where the glue let go",
+            held_normal_text(branch.normal(), p.critical.control)));
       }
     }
     if (p.peak) {

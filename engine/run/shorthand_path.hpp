@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "controllers/controller.hpp"
@@ -23,6 +24,14 @@ namespace mdrsim {
 /// the row does not follow either.
 JumpEnd shorthand_flight(const Contact::State& lost, const AffineConstraint& normal,
                          const AffineConstraint& tangential, double first_image);
+/// The same rule from the held values alone, once no spring is left (the continuum route's,
+/// with g(0) for `first_image`).
+JumpEnd lost_contact_flight(const AffineConstraint& normal, double normal_held,
+                            const AffineConstraint& tangential, double tangential_held,
+                            double first_image);
+/// "force 0.0207 N" or "value 6e-07 m": the held normal value in its unit, for the warning
+/// that the shorthand does not follow a contact left pressed in.
+std::string held_normal_text(const AffineConstraint& normal, double held);
 
 class ShorthandPath {
  public:
