@@ -31,8 +31,10 @@ JumpEnd lost_contact_flight(const AffineConstraint& normal, double normal_held,
   // The held normal value falls during the pull-off: a fixed load at zero pulls next. A held
   // compression (Fig. 3a's positive branch, or the glue sheared off as the tangential load
   // was applied) pushed the row's last spring ever deeper instead, by F / (E* dx).
-  if (holds_force(normal)) return normal_held <= 0.0 ? JumpEnd::separated : JumpEnd::pressed;
+  if (holds_force(normal) && normal_held <= 0.0) return JumpEnd::separated;
+  // Springs pressed without glue (and without friction) hold no tangential force.
   if (holds_force(tangential) && tangential_held != 0.0) return JumpEnd::sliding;
+  if (holds_force(normal)) return JumpEnd::pressed;
   // With no spring the machine's force is zero: the indentation is the held value over a_u,
   // pressed in past the first spring where a glue sheared off under compression.
   if (normal_held / normal.displacement_coefficient > first_image) return JumpEnd::pressed;
