@@ -70,7 +70,8 @@ std::vector<Case> cases() {
       {"cone", cone, "mode-mixed", "fixed-grips", 2.0e-5, "", 0.0},
       {"cone", cone, "mode-mixed", "fixed-load", 2.0e-5, "", 0.0},
       // sheared by 1 um: under fixed grips the glue shears off at a compression, and the
-      // program follows the springs it leaves pressed (tests/engine/run/program_zoom_test.cpp)
+      // shorthand runs as its program, which follows the springs it leaves pressed
+      // (engine/run/shorthand_as_program.hpp): the same numbers, the same engine
       {"cone-u", cone, "mode-mixed", "fixed-grips", 2.0e-5, "fixed-grips", 1.0e-6},
       {"cone-u", cone, "mode-mixed", "fixed-load", 2.0e-5, "fixed-grips", 1.0e-6},
   };

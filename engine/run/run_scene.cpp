@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "engine/base/zero_scale.hpp"
+#include "engine/events/cascade_buffer.hpp"
 #include "engine/run/adaptive_resolution.hpp"
 #include "engine/run/criterion_contract.hpp"
 #include "engine/run/disk_states.hpp"
@@ -19,6 +20,7 @@
 #include "engine/run/run_continuum_program.hpp"
 #include "engine/run/run_program.hpp"
 #include "engine/run/shorthand_accuracy.hpp"
+#include "engine/run/shorthand_as_program.hpp"
 #include "engine/run/status_margin.hpp"
 #include "engine/scene/scene_error.hpp"
 
@@ -113,14 +115,8 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (!status_resolved(result)) result.warnings.push_back(cannot_tell_status(result));
 }
 
-}  // namespace
-
-RunResult run_scene(const Scene& scene, const ObserverList& observers) {
-  return run_scene(scene, observers, scene.solver.samples);
-}
-
-RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int64_t samples) {
-  const auto started = std::chrono::steady_clock::now();
+/// The run as the scene gives it, without the closing events.
+RunResult run_as_given(const Scene& scene, const ObserverList& observers, std::int64_t samples) {
   using Extrapolation = DiscretizationOptions::Extrapolation;
   RunResult result;
   // Once per run, at the glued radius; a program checks at the radius its rows reach.
@@ -178,6 +174,40 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
   }
   check_disk_states(scene, result);
   result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());
+  return result;
+}
+
+constexpr const char* kAsItsProgram =
+    "the glue lets go with the indenter pressed in: the shorthand runs as its three stages on "
+    "the program engine, which follows the springs left pressed (docs/programs.md)";
+
+}  // namespace
+
+RunResult run_scene(const Scene& scene, const ObserverList& observers) {
+  return run_scene(scene, observers, scene.solver.samples);
+}
+
+RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int64_t samples) {
+  const auto started = std::chrono::steady_clock::now();
+  RunResult result;
+  if (const std::optional<Scene> as_program = pressed_in_on_a_first_row(scene)) {
+    spdlog::info(kAsItsProgram);
+    result = run_as_given(*as_program, observers, samples);
+  } else if (scene.shorthand_stages && scene.solver.continuum_by_rtol) {
+    // rtol alone chose the continuum route: its events wait until it is known to apply.
+    CascadeBuffer buffer(observers);
+    ObserverList buffered;
+    buffered.add(buffer);
+    result = run_as_given(scene, buffered, samples);
+    if (ends_pressed_in(result)) {
+      spdlog::info(kAsItsProgram);
+      result = run_as_given(as_its_program(scene), observers, samples);
+    } else {
+      buffer.flush();
+    }
+  } else {
+    result = run_as_given(scene, observers, samples);
+  }
   for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

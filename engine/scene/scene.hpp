@@ -49,6 +49,9 @@ struct SolverOptions {
   /// discretization.rtol where rtol alone took the route), for a refusal that only the run
   /// finds: a program the route cannot follow to its end.
   std::string continuum_chosen_at;
+  /// discretization.rtol alone took the continuum route (no method given): a shorthand whose
+  /// glue lets go pressed in, which the route does not follow, takes the event route instead.
+  bool continuum_by_rtol = false;
 };
 
 /// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends
@@ -88,18 +91,22 @@ struct Scene {
   /// (preload, tangential, normal) but with friction, where it is the shorthand's three
   /// stages (engine/scene/shorthand_program.hpp).
   std::optional<Program> program;
+  /// The shorthand (without friction) as the same three stages, which the program engine
+  /// runs where the pull-off loop cannot follow the path: a glue that lets go with the
+  /// indenter pressed in (engine/run/shorthand_as_program.hpp).
+  std::optional<Program> shorthand_stages;
   /// Written with the shorthand keys: the preload and its controls are set. With friction
   /// such a scene runs as its three-stage program too (docs/friction.md).
   bool shorthand() const { return normal.controller != nullptr; }
   std::string profile_name;
-  std::unique_ptr<Profile> profile;
-  double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
-  double preload_depth = 0.0;  ///< indentation at the preload [m]
-  double preload_force = 0.0;  ///< normal force at the preload, without adhesion [N]
+  std::shared_ptr<const Profile> profile;  ///< shared by the scene's copies
+  double glued_radius = 0.0;               ///< radius of the contact glued at the preload [m]
+  double preload_depth = 0.0;              ///< indentation at the preload [m]
+  double preload_force = 0.0;              ///< normal force at the preload, without adhesion [N]
   AxisLoading normal;
   std::optional<AxisLoading> tangential;
   std::string criterion_name;
-  std::unique_ptr<DetachmentCriterion> criterion;
+  std::shared_ptr<const DetachmentCriterion> criterion;  ///< shared by the scene's copies
   /// [friction] where it acts (docs/friction.md); none: springs not glued push frictionlessly.
   std::optional<FrictionSettings> friction;
   std::int64_t springs = 0;  ///< springs across the glued radius (one half)

@@ -290,6 +290,7 @@ void choose_continuum_route(Scene& scene, nlohmann::json& resolved, const std::s
   }
   scene.solver.method = SolverMethod::continuum;
   scene.solver.continuum_chosen_at = rtol_at;
+  scene.solver.continuum_by_rtol = true;
   if (auto solver = resolved.find("solver"); solver != resolved.end()) {
     solver->erase("method");
     if (solver->empty()) resolved.erase(solver);
@@ -440,6 +441,9 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     if (scene.friction && !scene.program) {
       scene.program = shorthand_program(scene, registries.controllers);
     }
+  }
+  if (scene.shorthand() && !scene.program) {
+    scene.shorthand_stages = shorthand_program(scene, registries.controllers);
   }
   if (!method_given) choose_continuum_route(scene, *resolved, rtol_at);
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {

@@ -1,0 +1,38 @@
+// A first row of the shorthand tells whether its glue lets go with the indenter pressed in.
+#include "engine/run/shorthand_as_program.hpp"
+
+#include <algorithm>
+
+#include "engine/run/pull_off.hpp"
+
+namespace mdrsim {
+
+bool ends_pressed_in(const RunResult& result) {
+  return !result.jumps.empty() && result.jumps.back().end == JumpEnd::pressed;
+}
+
+Scene as_its_program(const Scene& scene) {
+  Scene as_program = scene;
+  as_program.program = scene.shorthand_stages;
+  as_program.shorthand_stages.reset();
+  if (as_program.solver.method == SolverMethod::continuum) {
+    as_program.solver.method = SolverMethod::event;
+    as_program.solver.continuum_chosen_at.clear();
+    as_program.solver.continuum_by_rtol = false;
+  }
+  return as_program;
+}
+
+std::optional<Scene> pressed_in_on_a_first_row(const Scene& scene) {
+  if (scene.program || !scene.shorthand_stages || scene.solver.method == SolverMethod::continuum) {
+    return std::nullopt;
+  }
+  const std::int64_t springs =
+      scene.springs > 0 ? std::min(kPressedCheckSprings, scene.springs) : kPressedCheckSprings;
+  const RunResult first = run_row(
+      scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {});
+  if (!ends_pressed_in(first)) return std::nullopt;
+  return as_its_program(scene);
+}
+
+}  // namespace mdrsim
