@@ -8,11 +8,12 @@ namespace mdrsim {
 
 /// The slip limit of one spring, mu max(f_z, 0) + adhesive_limit (docs/friction.md). A spring in
 /// contact that is not glued has adhesive_limit 0 (and f_z >= 0 while it stays in contact); a
-/// spring glued under glued = "coulomb" has tau_0 dx and may carry tension. A glued spring under
+/// spring glued under glued = "coulomb" has the MDR image of the shear strength tau_0 over the
+/// glued disk, 2 tau_0 sqrt(a_g^2 - x^2) dx, and may carry tension. A glued spring under
 /// glued = "unlimited" has no law: it never slips.
 struct CoulombLaw {
   double coefficient = 0.0;     ///< mu [1]
-  double adhesive_limit = 0.0;  ///< tau_0 dx [N]
+  double adhesive_limit = 0.0;  ///< 2 tau_0 sqrt(a_g^2 - x^2) dx [N]
 };
 
 /// What the law needs of one spring (MDR: each spring independent, paper eq. 7).

@@ -27,7 +27,37 @@ SpringGeometry FrictionRow::geometry(std::int64_t i) const {
 std::optional<CoulombLaw> FrictionRow::law(std::int64_t i) const {
   if (i > glued_) return CoulombLaw{settings_.coefficient, 0.0};
   if (settings_.glued == GluedLaw::unlimited) return std::nullopt;
-  return CoulombLaw{settings_.coefficient, settings_.shear_strength * spacing_};
+  return CoulombLaw{settings_.coefficient, glued_adhesive_limit(i, glued_)};
+}
+
+double FrictionRow::glued_adhesive_limit(std::int64_t i, std::int64_t glued) const {
+  // 2 tau_0 sqrt(a_g^2 - x_i^2) dx with a_g = x_k, x_i = i dx: in whole spacings, exactly.
+  const double k = static_cast<double>(glued);
+  const double x = static_cast<double>(i);
+  return 2.0 * settings_.shear_strength * spacing_ * spacing_ *
+         std::sqrt(std::max(k * k - x * x, 0.0));
+}
+
+double FrictionRow::limit_glued_springs() {
+  if (settings_.glued != GluedLaw::coulomb || settings_.shear_strength == 0.0) return 0.0;
+  double dissipated = 0.0;
+  for (std::int64_t i = 1; i <= glued_; ++i) {
+    CoulombSpring& state = springs_[index(i)].state;
+    const bool was_sliding = state.sliding != 0;
+    // Within its new limit a spring sticks where it is (a slide goes on only at the limit);
+    // over it, it slips to the limit at once.
+    state.sliding = 0;
+    dissipated += slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
+    const bool sliding = state.sliding != 0;
+    if (was_sliding && !sliding) {
+      --glued_sliding_;
+      add_sticking(i, false);
+    } else if (!was_sliding && sliding) {
+      remove_sticking(i, false);
+      ++glued_sliding_;
+    }
+  }
+  return 2.0 * dissipated;
 }
 
 CoulombSpring FrictionRow::spring(std::int64_t i) const {
@@ -109,6 +139,8 @@ void FrictionRow::glue_next() {
   remove_sticking(i, true);
   ++glued_;
   add_sticking(i, false);
+  // Every glued spring's adhesive limit grows with a_g: nothing slips, sliders stick.
+  if (glued_sliding_ > 0) limit_glued_springs();
 }
 
 double FrictionRow::let_go_boundary(double indentation, double tangential) {
@@ -132,7 +164,8 @@ double FrictionRow::let_go_boundary(double indentation, double tangential) {
   } else {
     add_sticking(i, true);
   }
-  return 2.0 * dissipated;
+  // The glued springs' adhesive limits fall with a_g: those over theirs slip at once.
+  return 2.0 * dissipated + limit_glued_springs();
 }
 
 double FrictionRow::tangential_force(double indentation, double tangential) const {

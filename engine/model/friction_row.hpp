@@ -35,7 +35,8 @@ struct RowFrictionEvent {
 /// slip is the smallest (largest) key, O(log m) per event in flat arrays. Every spring sliding
 /// along +x has the same slip velocity p+' (along -x, p-'), so they stick together when it
 /// reverses, and their force and dissipated work are sums of their count and images. Glued
-/// `coulomb` springs go spring by spring (O(k) per query); glued `unlimited` ones only stick.
+/// `coulomb` springs go spring by spring (O(k) per query, and per change of the glued radius,
+/// which moves every glued spring's adhesive limit); glued `unlimited` ones only stick.
 class FrictionRow {
  public:
   FrictionRow(const Material& material, const FrictionSettings& settings, double spacing);
@@ -117,6 +118,13 @@ class FrictionRow {
   std::size_t index(std::int64_t i) const { return static_cast<std::size_t>(i - 1); }
   static std::size_t side(int direction) { return direction > 0 ? 0 : 1; }
   double limit_sum(std::size_t s, double indentation) const;  ///< sum of mu f_z of a side [N]
+  /// The adhesive part of a glued `coulomb` spring's limit with springs 1..glued glued: the
+  /// MDR image of a uniform shear strength tau_0 over the glued disk, 2 tau_0 sqrt(a_g^2 - x_i^2)
+  /// dx with a_g = x_glued (docs/friction.md) [N].
+  double glued_adhesive_limit(std::int64_t i, std::int64_t glued) const;
+  /// After a_g changed: every glued spring within its new limit sticks, one over it slips to it
+  /// at once. Returns the work dissipated on both halves [J]; O(k), with tau_0 > 0 only.
+  double limit_glued_springs();
   /// `stuck_from`: the direction of the slide that just ended (0: none).
   void add_sticking(std::int64_t i, bool keyed, int stuck_from = 0);
   void remove_sticking(std::int64_t i, bool keyed);

@@ -143,16 +143,17 @@ double CattaneoMindlin::loop_energy_from_branches(double amplitude) const {
 
 BruteForceRow::BruteForceRow(std::vector<double> images, double spacing, double effective_modulus,
                              double effective_shear_modulus, double coefficient, std::int64_t glued,
-                             double adhesive_limit)
+                             double shear_strength)
     : images_(std::move(images)),
       offsets_(images_.size(), 0.0),
       in_contact_(images_.size(), 0),
       limits_(images_.size(), 0.0),
       normal_stiffness_(effective_modulus * spacing),
       tangential_stiffness_(effective_shear_modulus * spacing),
+      spacing_(spacing),
       coefficient_(coefficient),
       glued_(glued),
-      adhesive_limit_(adhesive_limit) {
+      shear_strength_(shear_strength) {
   if (glued_ < 0 || glued_ > static_cast<std::int64_t>(images_.size()))
     throw std::invalid_argument("BruteForceRow: glued out of range");
   for (std::int64_t i = 0; i < glued_; ++i) in_contact_[static_cast<std::size_t>(i)] = 1;
@@ -176,7 +177,14 @@ void BruteForceRow::step(double indentation, double tangential) {
       in_contact_[i] = 0;
       continue;
     }
-    const double limit = coefficient_ * std::max(normal, 0.0) + (glued ? adhesive_limit_ : 0.0);
+    // The glued disk's uniform shear strength seen by the spring at x: 2 tau_0 sqrt(a_g^2 - x^2)
+    // per unit length (the MDR transform of tau_0 over r < a_g).
+    const double a_g = spacing_ * static_cast<double>(glued_);
+    const double x = spacing_ * static_cast<double>(i + 1);
+    const double adhesive =
+        glued ? 2.0 * shear_strength_ * std::sqrt(std::max(a_g * a_g - x * x, 0.0)) * spacing_
+              : 0.0;
+    const double limit = coefficient_ * std::max(normal, 0.0) + adhesive;
     if (!in_contact_[i]) {
       in_contact_[i] = 1;
       offsets_[i] = tangential;

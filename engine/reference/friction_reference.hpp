@@ -96,14 +96,15 @@ class CattaneoMindlin {
 
 /// The row moved in tiny fixed steps with no event location: after each step every spring in
 /// contact is put back on its limit where the trial stick exceeds it (a return map). Springs
-/// 1..glued are glued (always attached, limit mu max(f_z, 0) + adhesive_limit); the others are
-/// in contact while d > g_i, start unstretched on touch and forget their slip on lifting.
+/// 1..glued are glued (always attached, limit mu max(f_z, 0) + 2 tau_0 sqrt(a_g^2 - x^2) dx); the
+/// others are in contact while d > g_i, start unstretched on touch and forget their slip on
+/// lifting.
 class BruteForceRow {
  public:
   /// images: g(x_i) for i = 1..n [m]; spacing dx [m].
   BruteForceRow(std::vector<double> images, double spacing, double effective_modulus,
                 double effective_shear_modulus, double coefficient, std::int64_t glued = 0,
-                double adhesive_limit = 0.0);
+                double shear_strength = 0.0);
 
   /// Moves the indenter to (d, u) in `steps` equal steps from where it is.
   void move_to(double indentation, double tangential, std::int64_t steps);
@@ -121,9 +122,10 @@ class BruteForceRow {
   std::vector<double> limits_;
   double normal_stiffness_;
   double tangential_stiffness_;
+  double spacing_;  ///< dx [m]
   double coefficient_;
   std::int64_t glued_;
-  double adhesive_limit_;
+  double shear_strength_;  ///< tau_0 [Pa] of the glued springs (glued = "coulomb")
   double indentation_ = 0.0;
   double tangential_ = 0.0;
   double dissipated_ = 0.0;

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <vector>
@@ -105,6 +107,99 @@ TEST(FrictionRow, CattaneoMindlinLoadingAtTwoSpringCounts) {
   EXPECT_NEAR(order, 1.0, 0.1) << errors[0] << " " << errors[1];
 }
 
+// glued = "coulomb" with a shear strength tau_0 [Pa]: a contact glued across a, pressed to d =
+// a^2/R and sheared at fixed grips. In 3D the traction slides at mu p + tau_0 in an annulus c < r
+// < a and sticks inside; its MDR image slides at mu E* (d - g(x)) + 2 tau_0 sqrt(a^2 - x^2) per
+// unit length for x > c, with G* u = that at c, so (both halves, g = x^2/R)
+//   F_x = 2 [G* u c + mu E*/R (a^2 (a - c) - (a^3 - c^3)/3)
+//            + tau_0 (pi a^2/2 - c sqrt(a^2 - c^2) - a^2 asin(c/a))],
+// and at full slip mu F_z + tau_0 pi a^2: the shear strength times the contact's area (the
+// local tau_0 dx of an earlier reading would give 2 tau_0 a, not even a force). First order in
+// dx: doubling N halves the error (measured 1.5e-7 N at 400 springs, 7.6e-8 N at 800, order
+// 1.005; 1.4e-3 of mu F_z).
+TEST(FrictionRow, CattaneoMindlinWithAShearStrengthAtTwoSpringCounts) {
+  const double tau0 = 0.25 * kMu * kModulus * kD / kA;
+  const double stiff = kMu * kModulus / kRadius;  // mu E*/R [Pa/m]
+  const double full_slip = (stiff * kA * kA + 2.0 * tau0 * kA) / kShearModulus;
+  const auto exact = [&](double u) {
+    // s = sqrt(a^2 - c^2) from G* u = mu E* s^2 / R + 2 tau_0 s.
+    const double s =
+        std::min((-2.0 * tau0 + std::sqrt(4.0 * tau0 * tau0 + 4.0 * stiff * kShearModulus * u)) /
+                     (2.0 * stiff),
+                 kA);
+    const double c = std::sqrt(kA * kA - s * s);
+    return 2.0 * (kShearModulus * u * c +
+                  stiff * (kA * kA * (kA - c) - (kA * kA * kA - c * c * c) / 3.0) +
+                  tau0 * (std::numbers::pi * kA * kA / 2.0 - c * s - kA * kA * std::asin(c / kA)));
+  };
+  const double fz = 4.0 * kModulus * kA * kA * kA / (3.0 * kRadius);
+  EXPECT_NEAR(exact(1.2 * full_slip), kMu * fz + tau0 * std::numbers::pi * kA * kA,
+              1e-12 * kMu * fz);
+  std::vector<double> errors;
+  for (const std::int64_t n : {400, 800}) {
+    FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedLaw::coulomb, tau0});
+    for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
+    const double dx = kA / static_cast<double>(n);
+    // The line load min(G* u, mu E* (d - g) + 2 tau_0 sqrt(a^2 - x^2)) falls from at most its
+    // centre's value to 0.
+    const double bound = row_sum_bound(dx, kMu * kModulus * kD + 2.0 * tau0 * kA);
+    double work = 0.0;
+    double worst = 0.0;
+    double previous = 0.0;
+    for (const double xi : {0.1, 0.3, 0.5, 0.7, 0.9, 1.2}) {
+      const double u = xi * full_slip;
+      drive(row, shear(previous, u), 1.0, work);
+      previous = u;
+      const double fx = row.tangential_force(kD, u);
+      EXPECT_NEAR(fx, exact(u), bound) << n << " springs, u/u* = " << xi;
+      worst = std::max(worst, std::abs(fx - exact(u)));
+    }
+    EXPECT_EQ(row.springs_sliding(), n);  // past u*, every spring slides
+    errors.push_back(worst);
+  }
+  const double order = std::log2(errors[0] / errors[1]);
+  EXPECT_NEAR(order, 1.0, 0.15) << errors[0] << " " << errors[1];
+}
+
+// The boundary spring letting go shrinks a_g, and with it every glued spring's 2 tau_0
+// sqrt(a_g^2 - x^2) dx: at full slip each glued spring slips down to its new limit at once and
+// dissipates new limit x slip, (L_old - L_new) L_new / kx on each half; F_x falls to the sum of
+// the new limits (the spring let go keeps mu f_z).
+TEST(FrictionRow, ALetGoLowersEveryGluedSpringsShearStrength) {
+  const std::int64_t n = 200;
+  const double tau0 = 0.25 * kMu * kModulus * kD / kA;
+  FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedLaw::coulomb, tau0});
+  for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
+  const double dx = kA / static_cast<double>(n);
+  const double kz = kModulus * dx;
+  const double kx = kShearModulus * dx;
+  const double u = 2.0 * (kMu * kModulus * kD + 2.0 * tau0 * kA) / kShearModulus;  // past u*
+  double work = 0.0;
+  drive(row, shear(0.0, u), 1.0, work);
+  ASSERT_EQ(row.springs_sliding(), n);
+  const mdrsim::ParabolicProfile profile(kRadius);
+  const auto strength = [&](std::int64_t i, std::int64_t glued) {
+    const double a_g = dx * static_cast<double>(glued);
+    const double x = dx * static_cast<double>(i);
+    return 2.0 * tau0 * std::sqrt(std::max(a_g * a_g - x * x, 0.0)) * dx;
+  };
+  double expected_dissipation = 0.0;
+  double expected_force = 0.0;
+  const std::int64_t k = n - 1;
+  for (std::int64_t i = 1; i <= n; ++i) {
+    const double friction = kMu * kz * (kD - profile.mdr_image(dx * static_cast<double>(i)));
+    const double old_limit = friction + strength(i, n);
+    const double new_limit = friction + (i <= k ? strength(i, k) : 0.0);
+    expected_dissipation += 2.0 * new_limit * (old_limit - new_limit) / kx;
+    expected_force += 2.0 * new_limit;
+  }
+  const double dissipated = row.let_go_boundary(kD, u);
+  EXPECT_EQ(row.glued(), k);
+  EXPECT_NEAR(dissipated, expected_dissipation, 1e-12 * expected_dissipation);
+  EXPECT_NEAR(row.tangential_force(kD, u), expected_force, 1e-12 * expected_force);
+  EXPECT_EQ(row.springs_sliding(), n);
+}
+
 TEST(FrictionRow, MindlinDeresiewiczBranchesAndLoopEnergy) {
   const std::int64_t n = 1000;
   const double dx = kA / static_cast<double>(n);
@@ -197,14 +292,15 @@ TEST(FrictionRow, MatchesTheBruteForceRowUnderAChangingNormalLoad) {
 }
 
 TEST(FrictionRow, GluedCoulombSpringsSlideInTensionLikeTheBruteForce) {
-  // glued = "coulomb", tau_0 = mu E* d / 4 (a quarter of the centre's friction limit): springs 1..k
-  // glued at u = 0 carry tension near the edge (d below their g) and slide at tau_0 dx there, at mu
-  // f_z + tau_0 dx inside; pulled out (d falling to 0.6 d0) while sheared, the glued springs slide
-  // with kinks where f_z changes sign. A glued spring under "unlimited" never slides.
+  // glued = "coulomb", tau_0 = mu E* d / (4 a) (its image at the centre, 2 tau_0 a, half the
+  // centre's friction limit): springs 1..k glued at u = 0 carry tension near the edge (d below
+  // their g) and slide at 2 tau_0 sqrt(a^2 - x^2) dx there, at mu f_z plus that inside; pulled out
+  // (d falling to 0.6 d0) while sheared, the glued springs slide with kinks where f_z changes
+  // sign. A glued spring under "unlimited" never slides.
   const std::int64_t n = 40;
   const mdrsim::ParabolicProfile profile(kRadius);
   const double dx = kA / static_cast<double>(n);
-  const double tau0 = 0.25 * kMu * kModulus * kD;
+  const double tau0 = 0.25 * kMu * kModulus * kD / kA;
   FrictionRow row(kMaterial, {kMu, mdrsim::GluedLaw::coulomb, tau0}, dx);
   std::vector<double> images;
   for (std::int64_t i = 1; i <= n; ++i) {
@@ -212,7 +308,7 @@ TEST(FrictionRow, GluedCoulombSpringsSlideInTensionLikeTheBruteForce) {
     row.touch(images.back(), 0.0);
     row.glue_next();
   }
-  fr::BruteForceRow brute(images, dx, kModulus, kShearModulus, kMu, n, tau0 * dx);
+  fr::BruteForceRow brute(images, dx, kModulus, kShearModulus, kMu, n, tau0);
   brute.move_to(kD, 0.0, 10);
   const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
   double work = 0.0;
@@ -220,7 +316,7 @@ TEST(FrictionRow, GluedCoulombSpringsSlideInTensionLikeTheBruteForce) {
   const double dissipated = drive(row, {0.0, kD, 0.0, -0.4 * kD, 1.5 * us}, 1.0, work, &events);
   const std::int64_t steps = 200000;
   brute.move_to(0.6 * kD, 1.5 * us, steps);
-  const double scale = 2.0 * (kMu * kModulus * kD + tau0) * kA;  // of F_x
+  const double scale = 2.0 * (kMu * kModulus * kD + 2.0 * tau0 * kA) * kA;  // of F_x
   EXPECT_NEAR(row.tangential_force(0.6 * kD, 1.5 * us), brute.tangential_force(), 1e-12 * scale);
   // The brute force's dissipation errs by at most limit x one step's slip per spring (above).
   const double step_slip = (1.5 * us + kMu * kModulus / kShearModulus * 0.4 * kD) / steps;
@@ -312,7 +408,22 @@ struct SpringBySpringRow {
   std::optional<mdrsim::CoulombLaw> law(std::size_t i) const {
     if (static_cast<std::int64_t>(i) >= glued) return mdrsim::CoulombLaw{settings.coefficient};
     if (settings.glued == mdrsim::GluedLaw::unlimited) return std::nullopt;
-    return mdrsim::CoulombLaw{settings.coefficient, settings.shear_strength * dx};
+    // tau_0 over the glued disk r < a_g = x_glued, seen by the spring at x: 2 tau_0 sqrt(a_g^2 -
+    // x^2) per unit length.
+    const double a_g = dx * static_cast<double>(glued);
+    const double x = dx * static_cast<double>(i + 1);
+    return mdrsim::CoulombLaw{settings.coefficient,
+                              2.0 * settings.shear_strength * std::sqrt(a_g * a_g - x * x) * dx};
+  }
+  /// A new glued radius moves every glued spring's limit: within it a spring sticks, over it
+  /// it slips to it at once. Returns the dissipated work, both halves [J].
+  double relimit(double d, double u) {
+    double dissipated = 0.0;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(glued); ++i) {
+      states[i].sliding = 0;
+      dissipated += 2.0 * mdrsim::slip_to_limit(states[i], *law(i), geometry(i), d, u);
+    }
+    return dissipated;
   }
   double tangential_force(double d, double u) const {
     double sum = 0.0;
@@ -354,7 +465,7 @@ TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
   // limit), lift; the indenter shears back and forth while it presses and unloads. The row's
   // keys and sums must give what each spring's own law gives, event for event, to rounding.
   for (const auto glued_law : {mdrsim::GluedLaw::unlimited, mdrsim::GluedLaw::coulomb}) {
-    const mdrsim::FrictionSettings settings{kMu, glued_law, 0.1 * kMu * kModulus * kD};
+    const mdrsim::FrictionSettings settings{kMu, glued_law, 0.1 * kMu * kModulus * kD / kA};
     const std::int64_t n = 50;
     const double dx = kA / static_cast<double>(n);
     const mdrsim::ParabolicProfile profile(kRadius);
@@ -404,6 +515,7 @@ TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
         oracle.states[b].sliding = 0;
         dissipated_oracle +=
             2.0 * mdrsim::slip_to_limit(oracle.states[b], *oracle.law(b), oracle.geometry(b), d, u);
+        if (glued_law == mdrsim::GluedLaw::coulomb) dissipated_oracle += oracle.relimit(d, u);
         dissipated_row += row.let_go_boundary(d, u);
       }
       lift_unpressed(leg.d);
