@@ -38,6 +38,12 @@ double FrictionRow::glued_adhesive_limit(std::int64_t i, std::int64_t glued) con
          std::sqrt(std::max(k * k - x * x, 0.0));
 }
 
+double FrictionRow::glued_stretch(std::int64_t i, double indentation, double tangential) const {
+  const CoulombSpring& state = springs_[index(i)].state;
+  if (state.sliding == 0) return tangential - state.offset;
+  return state.sliding * slip_limit(*law(i), geometry(i), indentation) / tangential_stiffness_;
+}
+
 double FrictionRow::limit_glued_springs() {
   if (settings_.glued != GluedLaw::coulomb || settings_.shear_strength == 0.0) return 0.0;
   double dissipated = 0.0;

@@ -50,6 +50,13 @@ class FrictionRow {
   SpringGeometry geometry(std::int64_t i) const;
   /// The law of spring i; nullopt for a glued spring under GluedLaw::unlimited (it never slips).
   std::optional<CoulombLaw> law(std::int64_t i) const;
+  /// Whether glued springs slip by their own law (glued = "coulomb"): each then carries its own
+  /// stretch, not its glued run's u_x - s.
+  bool glued_springs_slip() const { return settings_.glued == GluedLaw::coulomb; }
+  /// Glued spring i's tangential stretch f_x / kx at (d, u_x) in its present state (sticking or
+  /// sliding, as between two events): u_x - offset while it sticks, +-limit / kx while it
+  /// slides (0 at the glued edge in tension, where its limit is 0) [m].
+  double glued_stretch(std::int64_t i, double indentation, double tangential) const;
 
   /// Room for `springs` in contact without reallocation (the row's N: each regrowth copies the
   /// springs into fresh pages, and at 1e6 springs the pages cost more than the events).

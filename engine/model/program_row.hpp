@@ -62,6 +62,23 @@ class ProgramRow {
            !(friction_ && i <= in_contact_ && friction_->spring(i).sliding != 0);
   }
   double boundary_offset() const { return runs_.back().offset; }  ///< s of spring k [m]
+  /// Whether the boundary spring's tangential stretch is its own (glued = "coulomb": it slips,
+  /// staying glued) rather than its glued run's u_x - s.
+  bool boundary_slips() const { return friction_ && friction_->glued_springs_slip(); }
+  /// The boundary spring k's tangential stretch at (d, u_x) while no spring changes: u_x - s,
+  /// or under glued = "coulomb" the friction row's (docs/friction.md) [m].
+  double boundary_stretch(double indentation, double tangential) const {
+    if (boundary_slips()) return friction_->glued_stretch(glued_, indentation, tangential);
+    return tangential - boundary_offset();
+  }
+  /// Whether that stretch moves as d and u_x move at rates vd and vu: with u_x alone for a
+  /// spring that sticks; with d alone for a glued `coulomb` spring sliding while pressed (its
+  /// limit mu f_z over kx), not while it is in tension (limit 0 at the glued edge).
+  bool boundary_stretch_moves(double indentation, double vd, double vu) const {
+    if (!boundary_slips() || friction_->spring(glued_).sliding == 0) return vu != 0.0;
+    const double g = image(glued_);
+    return vd != 0.0 && (indentation > g || (indentation == g && vd > 0.0));
+  }
   /// Whether every glued spring carries the same offset s (one run).
   bool one_offset() const { return runs_.size() <= 1; }
   /// Springs 1..n glue, each at the present u_x, on a row with nothing in contact: a zoomed

@@ -96,7 +96,9 @@ class ProgramRunner {
   std::optional<std::pair<double, Change>> next_change(double t_end) {
     return locator_.next_change(row_, step_line(), t_end);
   }
-  const LetGo& boundary_let_go(double u) { return locator_.boundary_let_go(row_, u); }
+  const LetGo& boundary_let_go(double stretch_x) {
+    return locator_.boundary_let_go(row_, stretch_x);
+  }
   void apply(Change change, Cascade& cascade);
   /// The state a cascade starts from, observed as an equilibrium.
   Cascade begin_cascade();
@@ -348,9 +350,9 @@ void ProgramRunner::apply(Change change, Cascade& cascade) {
     case Change::let_go: {
       const double d = row_.indentation();
       const double u = row_.tangential_displacement();
-      const double stretch_x = u - row_.boundary_offset();
+      const double stretch_x = row_.boundary_stretch(d, u);
       // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
-      by_shear = boundary_let_go(u).kind == LetGo::Kind::now;
+      by_shear = boundary_let_go(stretch_x).kind == LetGo::Kind::now;
       note_let_go(cascade, k, stretch_x, by_shear);
       if (observe_springs_) emit(EventKind::spring_detached, row_.snapshot(), k, in_cascade_);
       record_.stage_work.friction += row_.let_go_boundary(row_.image(k) <= d);

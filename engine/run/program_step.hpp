@@ -60,11 +60,12 @@ class ChangeLocator {
   /// The first change along the line before t_end, and its parameter.
   std::optional<std::pair<double, Change>> next_change(const ProgramRow& row, const StepLine& line,
                                                        double t_end);
-  /// Where the boundary spring lets go at tangential displacement u [m].
+  /// Where the boundary spring lets go at tangential stretch stretch_x [m] (ProgramRow::
+  /// boundary_stretch).
   /// A reference into the locator's cache, valid until its next call: a LetGo returned by
   /// value went through the stack on every event, and the loads that read it back waited on
   /// its stores (a one-row program's pull-off 10 % slower).
-  const LetGo& boundary_let_go(const ProgramRow& row, double u);
+  const LetGo& boundary_let_go(const ProgramRow& row, double stretch_x);
   /// Whether spring k+1 may glue at tangential displacement u [m] as far as its stretch goes.
   /// A spring not pressed glues at no stretch: yes. A pressed spring sticking under friction
   /// glues keeping its stretch (rebinding), and a glue whose boundary the criterion lets go at
@@ -139,9 +140,8 @@ class ChangeLocator {
   double inverse_ = 0.0;
 };
 
-inline const LetGo& ChangeLocator::boundary_let_go(const ProgramRow& row, double u) {
+inline const LetGo& ChangeLocator::boundary_let_go(const ProgramRow& row, double stretch_x) {
   const double a = row.position(row.glued());
-  const double stretch_x = u - row.boundary_offset();
   // The same spring at the same tangential stretch lets go at the same elongation: a step
   // asks twice (what is due, what comes next), and a retract at fixed u_x asks once per spring.
   if (let_go_cache_ && let_go_cache_->spring == row.glued() &&
@@ -204,7 +204,7 @@ inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const Ste
   }
   const double d = row.indentation();
   if (k > 0 && k < line.guards.glued_from) {
-    const LetGo& go = boundary_let_go(row, row.tangential_displacement());
+    const LetGo& go = boundary_let_go(row, row.boundary_stretch(d, row.tangential_displacement()));
     if (go.kind == LetGo::Kind::now || row.image(k) - d >= go.elongation) return Change::let_go;
   }
   const bool front_glues = row.adhesive() && row.can_glue(k + 1) && k < line.row_end;
@@ -317,11 +317,11 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
     }
   }
   if (k > 0) {
-    if (vu == 0.0) {
-      // u_x stays: the spring lets go only as d falls to g - e*(u_x). (Broken at rest, it
-      // would be due already.)
+    if (!row.boundary_stretch_moves(d, vd, vu)) {
+      // Its stretch stays (u_x still): the spring lets go only as d falls to g - e*(stretch).
+      // (Broken at rest, it would be due already.)
       if (vd < 0.0) {
-        const LetGo& go = boundary_let_go(row, u);
+        const LetGo& go = boundary_let_go(row, row.boundary_stretch(d, u));
         if (go.kind == LetGo::Kind::now) {
           consider(soonest, Change::let_go);
         } else {
@@ -336,9 +336,13 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
       const double a = row.position(k);
       const double g = row.image(k);
       const double s = row.boundary_offset();
+      const bool own = row.boundary_slips();
       const auto margin = [&](double t) {
-        const double stretch = std::max(0.0, g - (d + vd * (t - line.t)));
-        return criterion_.margin({stretch, u + vu * (t - line.t) - s, a});
+        const double d_t = d + vd * (t - line.t);
+        const double stretch = std::max(0.0, g - d_t);
+        const double stretch_x =
+            own ? row.boundary_stretch(d_t, u + vu * (t - line.t)) : u + vu * (t - line.t) - s;
+        return criterion_.margin({stretch, stretch_x, a});
       };
       const double now = margin(line.t);
       if (now <= 0.0) {

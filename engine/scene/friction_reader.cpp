@@ -1,4 +1,4 @@
-// Reads the scene's [friction] table and refuses what the friction engine does not run yet.
+// Reads the scene's [friction] table and refuses what the friction engine does not run.
 #include "engine/scene/friction_reader.hpp"
 
 #include <string>
@@ -25,13 +25,8 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene)
   const bool acts = settings.coefficient > 0.0 || settings.glued == GluedLaw::coulomb;
   if (!acts) return std::nullopt;
 
-  // What the friction engine does not run yet: refused with the reason, never ignored.
+  // What the friction engine does not run: refused with the reason, never ignored.
   const std::string key = settings.glued == GluedLaw::coulomb ? "glued" : "coefficient";
-  if (settings.glued == GluedLaw::coulomb) {
-    t.fail_at("glued",
-              "glued = \"coulomb\" is not run yet (issue 21): use glued = \"unlimited\" "
-              "(docs/friction.md)");
-  }
   if (scene.solver.method != SolverMethod::event) {
     t.fail_at(key, "friction runs with solver.method = \"event\" only");
   }

@@ -114,10 +114,12 @@ TEST(FrictionScene, TheShorthandBecomesItsThreeStages) {
 
 TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
   const std::string p(kProgram);
-  EXPECT_THROW_MSG(build(p + "coefficient = 0.5\nglued = \"coulomb\"\nshear_strength = 10.0\n"),
-                   SceneError,
-                   "scene.toml:17:9: friction.glued: glued = \"coulomb\" is not run yet (issue "
-                   "21): use glued = \"unlimited\" (docs/friction.md)");
+  // glued = "coulomb" runs, with its shear strength in Pa.
+  const Scene coulomb =
+      build(p + "coefficient = 0.5\nglued = \"coulomb\"\nshear_strength = 10.0\n");
+  ASSERT_TRUE(coulomb.friction);
+  EXPECT_EQ(coulomb.friction->glued, GluedLaw::coulomb);
+  EXPECT_EQ(coulomb.friction->shear_strength, 10.0);
   EXPECT_THROW_MSG(build(p + "coefficient = 0.5\n[solver]\nmethod = \"stepping\"\n"), SceneError,
                    "scene.toml:16:15: friction.coefficient: friction runs with solver.method = "
                    "\"event\" only");
