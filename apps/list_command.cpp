@@ -95,6 +95,8 @@ int list_command() {
              "stage's axes, then its keys):\n");
   print_parts(out, registries.controllers,
               [](const ControllerRegistry::Entry& e) { return held_value(e); });
+  fmt::print(out, "\nfriction laws ([friction] law = NAME, default \"coulomb\", then its keys):\n");
+  print_parts(out, registries.friction_laws, nothing);
   fmt::print(out,
              "\nThe scene's other tables ([material], [loading], [discretization], [solver]) are "
              "described in docs/scene.md.\n");

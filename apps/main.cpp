@@ -83,10 +83,11 @@ std::string parts_footer() {
     return out;
   };
   return fmt::format(
-      "Profiles: {}\nCriteria: {}\nControllers: {}\n`mdrsim list` gives each one's keys and "
-      "units; docs/scene.md \"Changing values from the command line\" the keys a --set replaces.",
+      "Profiles: {}\nCriteria: {}\nControllers: {}\nFriction laws: {}\n`mdrsim list` gives each "
+      "one's keys and units; docs/scene.md \"Changing values from the command line\" the keys a "
+      "--set replaces.",
       join(registries.profiles.names()), join(registries.criteria.names()),
-      join(registries.controllers.names()));
+      join(registries.controllers.names()), join(registries.friction_laws.names()));
 }
 
 /// A --set value the shell has split (an unquoted inline table): CLI11 then complains about
@@ -191,8 +192,8 @@ int main(int argc, char** argv) {
     }
   }
 
-  CLI::App* list_app =
-      app.add_subcommand("list", "the registered profiles, criteria and controllers, with keys");
+  CLI::App* list_app = app.add_subcommand(
+      "list", "the registered profiles, criteria, controllers and friction laws, with keys");
   // Set last: a subcommand made after it would inherit it.
   app.footer("`mdrsim list` names every profile, criterion and controller with its keys.");
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The layout rules, checked in CI (scripts/test.sh): the folders' #include "..." graph has no
-# circle; the parts (profiles/, detachment/, controllers/) include nothing of engine/ but its
+# circle; the parts (profiles/, detachment/, controllers/, friction/) include nothing of engine/ but its
 # vocabulary, engine/base/; nothing below the outputs includes engine/output/; only tests and
 # bench include engine/reference/; nothing but apps/ includes apps/; bench/ includes no tests/.
 set -euo pipefail
@@ -18,7 +18,7 @@ refuse() {
 includes() { grep -rnE '^#include "' "$@" --include='*.hpp' --include='*.cpp' --include='*.h' || true; }
 
 refuse "the parts may include only engine/base/ of engine/:" \
-  "$(includes profiles detachment controllers | grep '#include "engine/' | grep -v '#include "engine/base/' || true)"
+  "$(includes profiles detachment controllers friction | grep '#include "engine/' | grep -v '#include "engine/base/' || true)"
 refuse "apps/ may not include engine/reference/ (tests and bench only):" \
   "$(includes apps | grep '#include "engine/reference/' || true)"
 refuse "only the command (apps/) includes apps/; engine/ and python/ may not:" \
@@ -29,9 +29,9 @@ refuse "the outputs sit above the engine: engine/ includes engine/output/ only f
   "$(includes engine | grep '#include "engine/output/' | grep -v '^engine/output/' || true)"
 
 # The folder graph: each engine/ subfolder a node, and apps, python/src, controllers, detachment,
-# profiles; an edge for every #include "..." from one node into another. A circle is refused
+# profiles, friction; an edge for every #include "..." from one node into another. A circle is refused
 # with the include lines that make each of its edges.
-nodes=(engine/*/ apps/ python/src/ controllers/ detachment/ profiles/)
+nodes=(engine/*/ apps/ python/src/ controllers/ detachment/ profiles/ friction/)
 cycles="$(includes "${nodes[@]%/}" | awk '
   function node(path,   parts) {
     split(path, parts, "/")
@@ -64,7 +64,7 @@ cycles="$(includes "${nodes[@]%/}" | awk '
     file = $0; sub(/:.*/, "", file)
     target = $0; sub(/^[^"]*"/, "", target); sub(/".*/, "", target)
     from = node(file); to = node(target)
-    if (from == to || !(to ~ /^(engine\/[^\/]+|apps|python\/src|controllers|detachment|profiles)$/)) next
+    if (from == to || !(to ~ /^(engine\/[^\/]+|apps|python\/src|controllers|detachment|profiles|friction)$/)) next
     # Each edge keeps its first three include lines to show, and how many it has.
     if (!((from, to) in edge_lines)) {
       next_of[from, ++degree[from]] = to

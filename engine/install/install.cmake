@@ -7,7 +7,7 @@ include(${CMAKE_CURRENT_LIST_DIR}/public_headers.cmake)
 
 set(mdrsim_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/mdrsim)
 set(mdrsim_exported mdrsim_vocabulary mdrsim_profiles mdrsim_detachment mdrsim_controllers
-                    mdrsim_engine)
+                    mdrsim_friction mdrsim_engine)
 
 # The names a downstream project links, also usable in-tree: mdrsim_engine is mdrsim::engine.
 foreach(target IN LISTS mdrsim_exported)

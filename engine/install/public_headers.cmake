@@ -20,6 +20,8 @@ set(MDRSIM_PUBLIC_HEADERS
     detachment/criterion_registry.hpp
     controllers/controller.hpp
     controllers/controller_registry.hpp
+    friction/friction_law.hpp
+    friction/friction_law_registry.hpp
     # scenes: the registries a scene draws from, the document, the built scene, bad input
     engine/scene/registries.hpp
     engine/scene/scene_document.hpp

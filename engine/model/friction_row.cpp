@@ -12,12 +12,17 @@ FrictionRow::FrictionRow(const Material& material, const FrictionSettings& setti
       normal_stiffness_(material.effective_modulus * spacing),
       tangential_stiffness_(material.effective_shear_modulus * spacing),
       ratio_(settings.coefficient * material.effective_modulus / material.effective_shear_modulus),
-      spacing_(spacing) {}
+      spacing_(spacing),
+      individual_(settings.law != nullptr) {}
 
 void FrictionRow::reserve(std::int64_t springs) {
   if (springs <= 0) return;
   springs_.reserve(static_cast<std::size_t>(springs));
-  keys_.reserve(springs);
+  if (individual_) {
+    laws_.reserve(static_cast<std::size_t>(springs));
+  } else {
+    keys_.reserve(springs);
+  }
 }
 
 SpringGeometry FrictionRow::geometry(std::int64_t i) const {
@@ -25,7 +30,7 @@ SpringGeometry FrictionRow::geometry(std::int64_t i) const {
 }
 
 std::optional<CoulombLaw> FrictionRow::law(std::int64_t i) const {
-  if (i > glued_) return CoulombLaw{settings_.coefficient, 0.0};
+  if (i > glued_) return individual_ ? laws_[index(i)] : CoulombLaw{settings_.coefficient, 0.0};
   if (settings_.glued == GluedLaw::unlimited) return std::nullopt;
   return CoulombLaw{settings_.coefficient, glued_adhesive_limit(i, glued_)};
 }
@@ -56,11 +61,11 @@ double FrictionRow::limit_glued_springs() {
     dissipated += slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
     const bool sliding = state.sliding != 0;
     if (was_sliding && !sliding) {
-      --glued_sliding_;
+      --own_sliding_;
       add_sticking(i, false);
     } else if (!was_sliding && sliding) {
       remove_sticking(i, false);
-      ++glued_sliding_;
+      ++own_sliding_;
     }
   }
   return 2.0 * dissipated;
@@ -68,7 +73,7 @@ double FrictionRow::limit_glued_springs() {
 
 CoulombSpring FrictionRow::spring(std::int64_t i) const {
   CoulombSpring state = springs_[index(i)].state;
-  if (i > glued_ && state.sliding != 0)
+  if (i > glued_ && state.sliding != 0 && !individual_)
     state.offset = tangential_ - state.sliding * ratio_ * (indentation_ - springs_[index(i)].image);
   return state;
 }
@@ -113,27 +118,36 @@ void FrictionRow::remove_sliding(std::int64_t i) {
   slider_images_[side(s.state.sliding)].add(-s.image);
 }
 
-std::int64_t FrictionRow::first_glued_sliding() const {
-  if (glued_sliding_ == 0) return 0;
-  for (std::int64_t i = 1; i <= glued_; ++i)
+std::int64_t FrictionRow::first_own_sliding() const {
+  if (own_sliding_ == 0) return 0;
+  for (std::int64_t i = 1; i <= own_springs(); ++i)
     if (springs_[index(i)].state.sliding != 0) return i;
   return 0;
 }
 
 void FrictionRow::touch(double image, double tangential) {
   springs_.push_back({CoulombSpring{tangential, 0}, image});
-  add_sticking(in_contact(), true);
+  if (individual_) {
+    const SlipLimit limit = settings_.law->limit_at(position(in_contact()), spacing_);
+    laws_.push_back({limit.coefficient, limit.constant});
+  }
+  add_sticking(in_contact(), !individual_);
 }
 
 void FrictionRow::lift_outer() {
   const std::int64_t i = in_contact();
   if (i <= glued_) throw std::logic_error("FrictionRow::lift_outer: spring m is glued");
   if (springs_[index(i)].state.sliding != 0) {
-    remove_sliding(i);
+    if (individual_) {
+      --own_sliding_;
+    } else {
+      remove_sliding(i);
+    }
   } else {
-    remove_sticking(i, true);
+    remove_sticking(i, !individual_);
   }
   springs_.pop_back();
+  if (individual_) laws_.pop_back();
 }
 
 void FrictionRow::glue_next() {
@@ -142,11 +156,11 @@ void FrictionRow::glue_next() {
   const std::int64_t i = glued_ + 1;
   if (springs_[index(i)].state.sliding != 0)
     throw std::logic_error("FrictionRow::glue_next: spring k+1 slides");
-  remove_sticking(i, true);
+  remove_sticking(i, !individual_);
   ++glued_;
   add_sticking(i, false);
   // Every glued spring's adhesive limit grows with a_g: nothing slips, sliders stick.
-  if (glued_sliding_ > 0) limit_glued_springs();
+  if (own_sliding_ > 0) limit_glued_springs();
 }
 
 double FrictionRow::let_go_boundary(double indentation, double tangential) {
@@ -158,7 +172,7 @@ double FrictionRow::let_go_boundary(double indentation, double tangential) {
   // A glued coulomb spring sliding at its glued limit sticks for the moment: its offset is
   // up to date (the glued springs are advanced spring by spring).
   if (s.state.sliding != 0) {
-    --glued_sliding_;
+    --own_sliding_;
     s.state.sliding = 0;
   } else {
     remove_sticking(i, false);
@@ -166,9 +180,13 @@ double FrictionRow::let_go_boundary(double indentation, double tangential) {
   --glued_;
   const double dissipated = slip_to_limit(s.state, *law(i), geometry(i), indentation, tangential);
   if (s.state.sliding != 0) {
-    add_sliding(i);
+    if (individual_) {
+      ++own_sliding_;
+    } else {
+      add_sliding(i);
+    }
   } else {
-    add_sticking(i, true);
+    add_sticking(i, !individual_);
   }
   // The glued springs' adhesive limits fall with a_g: those over theirs slip at once.
   return 2.0 * dissipated + limit_glued_springs();
@@ -178,8 +196,8 @@ double FrictionRow::tangential_force(double indentation, double tangential) cons
   double sum = tangential_stiffness_ *
                (static_cast<double>(sticking_) * tangential - sticking_offsets_.value());
   sum += limit_sum(0, indentation) - limit_sum(1, indentation);
-  if (glued_sliding_ > 0) {
-    for (std::int64_t i = 1; i <= glued_; ++i) {
+  if (own_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= own_springs(); ++i) {
       const CoulombSpring& state = springs_[index(i)].state;
       if (state.sliding != 0)
         sum += spring_tangential_force(state, *law(i), geometry(i), indentation, tangential);
@@ -195,17 +213,18 @@ double FrictionRow::tangential_stiffness() const {
 double FrictionRow::tangential_force_per_indentation(double indentation) const {
   const double per_spring = settings_.coefficient * normal_stiffness_;
   double slope = per_spring * static_cast<double>(sliders_[0].size() - sliders_[1].size());
-  if (glued_sliding_ > 0) {
-    for (std::int64_t i = 1; i <= glued_; ++i) {
+  if (own_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= own_springs(); ++i) {
       const Spring& s = springs_[index(i)];
-      if (s.state.sliding != 0 && indentation > s.image) slope += s.state.sliding * per_spring;
+      if (s.state.sliding != 0 && indentation > s.image)
+        slope += s.state.sliding * law(i)->coefficient * normal_stiffness_;
     }
   }
   return 2.0 * slope;
 }
 
 double FrictionRow::sliding_stick_radius() const {
-  std::int64_t first = first_glued_sliding();
+  std::int64_t first = first_own_sliding();
   for (const auto& side : sliders_)
     if (!side.empty() && (first == 0 || side.first() < first)) first = side.first();
   return first == 0 ? position(in_contact()) : position(first - 1);
@@ -219,12 +238,11 @@ std::optional<RowFrictionEvent> FrictionRow::next_event(const LinearMotion& moti
     if (!first || event.at < first->event.at || (event.at == first->event.at && i < first->spring))
       first = RowFrictionEvent{i, event};
   };
-  if (settings_.glued == GluedLaw::coulomb) {
-    for (std::int64_t i = 1; i <= glued_; ++i) {
-      const auto event =
-          next_friction_event(springs_[index(i)].state, *law(i), geometry(i), motion, end);
-      if (event) consider(i, *event);
-    }
+  for (std::int64_t i = 1; i <= own_springs(); ++i) {
+    const auto l = law(i);
+    if (!l) continue;  // a glued `unlimited` spring under a law of its own never slips
+    const auto event = next_friction_event(springs_[index(i)].state, *l, geometry(i), motion, end);
+    if (event) consider(i, *event);
   }
   const double t0 = motion.start;
   const double forward_rate = motion.tangential_rate - ratio_ * motion.indentation_rate;
@@ -253,8 +271,8 @@ std::optional<RowFrictionEvent> FrictionRow::next_event(const LinearMotion& moti
 
 double FrictionRow::advance_sliding(const LinearMotion& motion, double t) {
   double dissipated = 0.0;
-  if (glued_sliding_ > 0) {
-    for (std::int64_t i = 1; i <= glued_; ++i) {
+  if (own_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= own_springs(); ++i) {
       Spring& s = springs_[index(i)];
       if (s.state.sliding != 0)
         dissipated += advance_spring(s.state, *law(i), geometry(i), motion, t);
@@ -282,12 +300,12 @@ void FrictionRow::apply(const RowFrictionEvent& event) {
   Spring& s = springs_[index(i)];
   const FrictionEventKind kind = event.event.kind;
   if (kind == FrictionEventKind::limit_kink) return;
-  if (i <= glued_) {
+  if (i <= glued_ || individual_) {
     if (kind == FrictionEventKind::slip && s.state.sliding == 0) {
       remove_sticking(i, false);
-      ++glued_sliding_;
+      ++own_sliding_;
     } else if (kind == FrictionEventKind::stick && s.state.sliding != 0) {
-      --glued_sliding_;
+      --own_sliding_;
       apply_friction_event(s.state, event.event);
       add_sticking(i, false);
       return;

@@ -36,7 +36,9 @@ struct RowFrictionEvent {
 /// along +x has the same slip velocity p+' (along -x, p-'), so they stick together when it
 /// reverses, and their force and dissipated work are sums of their count and images. Glued
 /// `coulomb` springs go spring by spring (O(k) per query, and per change of the glued radius,
-/// which moves every glued spring's adhesive limit); glued `unlimited` ones only stick.
+/// which moves every glued spring's adhesive limit); glued `unlimited` ones only stick. Under a
+/// law other than Coulomb's (FrictionSettings::law) every spring goes spring by spring, with
+/// the limit the law gave it as it touched (O(m) per query).
 class FrictionRow {
  public:
   FrictionRow(const Material& material, const FrictionSettings& settings, double spacing);
@@ -80,7 +82,7 @@ class FrictionRow {
   double tangential_force_per_indentation(double indentation) const;
   /// Springs i <= m sliding now (one half of the row, like ProgramRow's counts).
   std::int64_t springs_sliding() const {
-    return sliders_[0].size() + sliders_[1].size() + glued_sliding_;
+    return sliders_[0].size() + sliders_[1].size() + own_sliding_;
   }
   /// The radius inside which every spring in contact sticks: x_{j-1}, j the innermost
   /// sliding spring; the contact radius x_m when none slides [m]. Inline where none does:
@@ -92,14 +94,14 @@ class FrictionRow {
   /// Whether F_x depends on d at a fixed u_x: only through a sliding spring's limit mu f_z.
   /// Without one, F_x(d, u_x) is the same number for every finite d.
   bool force_follows_indentation() const {
-    return glued_sliding_ > 0 || !sliders_[0].empty() || !sliders_[1].empty();
+    return own_sliding_ > 0 || !sliders_[0].empty() || !sliders_[1].empty();
   }
   /// Whether next_event can find anything along `motion`: not when nothing slides, no glued
   /// spring can slip (GluedLaw::unlimited) and p+ falls or stays (p- rises or stays) with u_x
   /// still and d rising or still (a press: every touch of it would ask). Inline, so that the
   /// program loop pays no call for it.
   bool may_change(const LinearMotion& motion) const {
-    return settings_.glued == GluedLaw::coulomb || force_follows_indentation() ||
+    return settings_.glued == GluedLaw::coulomb || individual_ || force_follows_indentation() ||
            !(motion.tangential_rate == 0.0 && motion.indentation_rate >= 0.0);
   }
   /// The first friction event of any spring along `motion` in [motion.start, end] (apply it
@@ -137,8 +139,8 @@ class FrictionRow {
   void remove_sticking(std::int64_t i, bool keyed);
   void add_sliding(std::int64_t i);
   void remove_sliding(std::int64_t i);
-  std::int64_t first_glued_sliding() const;  ///< 0 when none
-  double sliding_stick_radius() const;       ///< stick_radius with a spring sliding
+  std::int64_t first_own_sliding() const;  ///< of own_springs(); 0 when none
+  double sliding_stick_radius() const;     ///< stick_radius with a spring sliding
   double advance_sliding(const LinearMotion& motion, double t);  ///< advance, some sliding
 
   FrictionSettings settings_;
@@ -159,7 +161,16 @@ class FrictionRow {
   SlipKeys keys_;
   std::array<IndexSet, 2> sliders_;              ///< not glued, sliding along +x, -x
   std::array<CompensatedSum, 2> slider_images_;  ///< their sums of g_i [m]
-  std::int64_t glued_sliding_ = 0;               ///< glued `coulomb` springs sliding
+  std::int64_t own_sliding_ = 0;  ///< springs sliding that go one by one (own_springs)
+  /// Every spring in contact goes one by one, with its own law (a law other than Coulomb's).
+  bool individual_;
+  std::vector<CoulombLaw> laws_;  ///< individual_: spring i's law while it is not glued
+  /// The springs 1..own_springs() go one by one: every spring in contact under a law of its
+  /// own, the glued ones under glued = "coulomb", none else (they are on the keys).
+  std::int64_t own_springs() const {
+    if (individual_) return in_contact();
+    return settings_.glued == GluedLaw::coulomb ? glued_ : 0;
+  }
 };
 
 }  // namespace mdrsim

@@ -159,6 +159,13 @@ BruteForceRow::BruteForceRow(std::vector<double> images, double spacing, double 
   for (std::int64_t i = 0; i < glued_; ++i) in_contact_[static_cast<std::size_t>(i)] = 1;
 }
 
+void BruteForceRow::set_limits(std::vector<double> coefficients, std::vector<double> constants) {
+  if (coefficients.size() != images_.size() || constants.size() != images_.size())
+    throw std::invalid_argument("BruteForceRow::set_limits: one limit per spring");
+  coefficients_ = std::move(coefficients);
+  constants_ = std::move(constants);
+}
+
 void BruteForceRow::move_to(double indentation, double tangential, std::int64_t steps) {
   const double d0 = indentation_;
   const double u0 = tangential_;
@@ -184,7 +191,9 @@ void BruteForceRow::step(double indentation, double tangential) {
     const double adhesive =
         glued ? 2.0 * shear_strength_ * std::sqrt(std::max(a_g * a_g - x * x, 0.0)) * spacing_
               : 0.0;
-    const double limit = coefficient_ * std::max(normal, 0.0) + adhesive;
+    const bool own = !glued && !coefficients_.empty();
+    const double limit = (own ? coefficients_[i] : coefficient_) * std::max(normal, 0.0) +
+                         (own ? constants_[i] : adhesive);
     if (!in_contact_[i]) {
       in_contact_[i] = 1;
       offsets_[i] = tangential;

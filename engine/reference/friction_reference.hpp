@@ -106,6 +106,9 @@ class BruteForceRow {
                 double effective_shear_modulus, double coefficient, std::int64_t glued = 0,
                 double shear_strength = 0.0);
 
+  /// Springs not glued slide at coefficients[i] max(f_z, 0) + constants[i] [N] instead of the
+  /// one coefficient: a law of their own (friction/friction_law.hpp).
+  void set_limits(std::vector<double> coefficients, std::vector<double> constants);
   /// Moves the indenter to (d, u) in `steps` equal steps from where it is.
   void move_to(double indentation, double tangential, std::int64_t steps);
   double tangential_force() const;                   ///< 2 sum f_x [N]
@@ -125,6 +128,8 @@ class BruteForceRow {
   double spacing_;  ///< dx [m]
   double coefficient_;
   std::int64_t glued_;
+  std::vector<double> coefficients_;  ///< set_limits: per spring not glued
+  std::vector<double> constants_;
   double shear_strength_;  ///< tau_0 [Pa] of the glued springs (glued = "coulomb")
   double indentation_ = 0.0;
   double tangential_ = 0.0;

@@ -1,32 +1,51 @@
 // Reads the scene's [friction] table and refuses what the friction engine does not run.
 #include "engine/scene/friction_reader.hpp"
 
+#include <memory>
 #include <string>
 
 namespace mdrsim {
 
-std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene) {
-  t.check_keys({"coefficient", "glued", "shear_strength"});
+std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene,
+                                              const FrictionLawRegistry& laws) {
+  const std::string name = t.name("law", laws.names(), std::string("coulomb"));
+  check_part_keys(t, "law", name, laws, {"glued", "shear_strength"});
+  const auto* entry = laws.find(name);
+  const ParameterValues values = t.read_all(entry->parameters);
+  const std::shared_ptr<const FrictionLaw> law =
+      create_part(t, "law", [&] { return entry->create(values); });
   FrictionSettings settings;
-  settings.coefficient = t.number(
-      {.key = "coefficient", .help = "Coulomb coefficient mu >= 0", .lower = Bound{0.0, true}});
+  // One coefficient everywhere runs on the ordered slip keys; any other law spring by spring.
+  if (const auto mu = law->uniform_coefficient()) {
+    settings.coefficient = *mu;
+  } else {
+    settings.law = law;
+  }
   const std::string glued = t.name("glued", {"unlimited", "coulomb"}, std::string("unlimited"));
   settings.glued = glued == "coulomb" ? GluedLaw::coulomb : GluedLaw::unlimited;
   if (t.has("shear_strength") && settings.glued != GluedLaw::coulomb) {
     t.fail_at("shear_strength", "applies only with glued = \"coulomb\"");
   }
   if (settings.glued == GluedLaw::coulomb) {
+    if (settings.law) {
+      t.fail_at("glued", fmt::format("glued = \"coulomb\" slides at mu f_z with one mu, which law "
+                                     "= \"{}\" does not give: use a law with one coefficient",
+                                     name));
+    }
     settings.shear_strength = t.optional_number({.key = "shear_strength",
                                                  .help = "tau_0 [Pa] >= 0",
                                                  .default_value = 0.0,
                                                  .lower = Bound{0.0, true}})
                                   .value_or(0.0);
   }
-  const bool acts = settings.coefficient > 0.0 || settings.glued == GluedLaw::coulomb;
+  const bool acts =
+      settings.law || settings.coefficient > 0.0 || settings.glued == GluedLaw::coulomb;
   if (!acts) return std::nullopt;
 
   // What the friction engine does not run: refused with the reason, never ignored.
-  const std::string key = settings.glued == GluedLaw::coulomb ? "glued" : "coefficient";
+  const std::string key = settings.glued == GluedLaw::coulomb ? "glued"
+                          : settings.law                      ? "law"
+                                                              : "coefficient";
   if (scene.solver.method != SolverMethod::event) {
     t.fail_at(key, "friction runs with solver.method = \"event\" only");
   }

@@ -435,7 +435,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
   // [friction] before the route: a scene with friction stays on the row.
   if (auto friction = root.optional_table("friction")) {
-    scene.friction = read_friction(*friction, scene);
+    scene.friction = read_friction(*friction, scene, registries.friction_laws);
     friction->finish();
     // Friction runs on programs: the shorthand as its three stages (docs/friction.md).
     if (scene.friction && !scene.program) {

@@ -1,17 +1,7 @@
 # Install.CustomCriterionExample: examples/custom_criterion built against the installed
 # package and run; its pull-off force against the closed form.
 include(${CMAKE_CURRENT_LIST_DIR}/downstream.cmake)
-set(build ${WORK_DIR}/custom_criterion-build)
-build_downstream(${SOURCE_DIR}/examples/custom_criterion ${build})
-execute_process(COMMAND ${build}/custom_criterion ${SOURCE_DIR}/examples/custom_criterion/scene.toml
-                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message(STATUS "custom_criterion:\n${out}${err}")
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "custom_criterion exited with ${status}")
-endif()
-if(NOT out MATCHES "status: instability\n")
-  message(FATAL_ERROR "custom_criterion: expected status instability")
-endif()
+run_example(custom_criterion instability)
 if(NOT out MATCHES "pull-off force: ([-+0-9.e]+) N")
   message(FATAL_ERROR "custom_criterion printed no pull-off force")
 endif()

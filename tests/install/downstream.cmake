@@ -23,3 +23,20 @@ function(build_downstream source build)
            -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF ${flags})
   run_step("building ${source}" ${CMAKE_COMMAND} --build ${build} -j2)
 endfunction()
+
+# Builds examples/<name> against the prefix, runs it on its scene.toml and sets `out` in the
+# caller to what it printed; fails unless it exits 0 and prints "status: <status>".
+function(run_example name status)
+  set(build ${WORK_DIR}/${name}-build)
+  build_downstream(${SOURCE_DIR}/examples/${name} ${build})
+  execute_process(COMMAND ${build}/${name} ${SOURCE_DIR}/examples/${name}/scene.toml
+                  RESULT_VARIABLE code OUTPUT_VARIABLE printed ERROR_VARIABLE err)
+  message(STATUS "${name}:\n${printed}${err}")
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "${name} exited with ${code}")
+  endif()
+  if(NOT printed MATCHES "status: ${status}\n")
+    message(FATAL_ERROR "${name}: expected status ${status}")
+  endif()
+  set(out "${printed}" PARENT_SCOPE)
+endfunction()

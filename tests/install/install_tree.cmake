@@ -14,7 +14,7 @@ file(GLOB binaries RELATIVE ${prefix} ${prefix}/bin/* ${prefix}/lib*/*.a ${prefi
 list(TRANSFORM binaries REPLACE "^lib[^/]*/" "lib/")
 list(SORT binaries)
 set(expected bin/mdrsim lib/libmdrsim_controllers.a lib/libmdrsim_detachment.a
-    lib/libmdrsim_engine.a lib/libmdrsim_profiles.a)
+    lib/libmdrsim_engine.a lib/libmdrsim_friction.a lib/libmdrsim_profiles.a)
 if(NOT binaries STREQUAL expected)
   message(FATAL_ERROR "installed programs and libraries: ${binaries}\nexpected: ${expected}")
 endif()

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "engine/reference/friction_reference.hpp"
@@ -334,6 +336,84 @@ TEST(FrictionRow, GluedCoulombSpringsSlideInTensionLikeTheBruteForce) {
   EXPECT_NEAR(unlimited.tangential_force(0.6 * kD, 1.5 * us), stretched, 1e-14 * stretched);
 }
 
+/// A law of its own: mu (1 + x / a) max(f_z, 0) + c0 (x / a) dx, rising with the radius; or,
+/// with `like_coulomb`, Coulomb's mu max(f_z, 0) without saying so (spring by spring).
+class GradedLaw final : public mdrsim::FrictionLaw {
+ public:
+  GradedLaw(double cohesion, bool like_coulomb) : cohesion_(cohesion), like_(like_coulomb) {}
+  mdrsim::SlipLimit limit_at(double radius, double spacing) const override {
+    if (like_) return {kMu, 0.0};
+    return {kMu * (1.0 + radius / kA), cohesion_ * radius / kA * spacing};
+  }
+
+ private:
+  double cohesion_;  ///< [N/m]
+  bool like_;
+};
+
+// A law of its own runs spring by spring with each spring's limit from the law. Against the
+// brute-force row with the same per-spring limits, along the path of the test above (the normal
+// load falling, coming back, rising): its F_x to rounding, its dissipation within the brute
+// force's own error. Coulomb's law given as a law of its own equals the keyed row exactly.
+TEST(FrictionRow, ALawOfItsOwnMatchesTheBruteForceRow) {
+  const std::int64_t n = 60;
+  const mdrsim::ParabolicProfile profile(kRadius);
+  const double dx = kA / static_cast<double>(n);
+  const double cohesion = 0.1 * kMu * kModulus * kD;  // [N/m]
+  const auto law = std::make_shared<GradedLaw>(cohesion, false);
+  FrictionRow row(kMaterial, {kMu, mdrsim::GluedLaw::unlimited, 0.0, law}, dx);
+  FrictionRow keyed(kMaterial, {kMu}, dx);
+  FrictionRow coulomb_own(
+      kMaterial, {kMu, mdrsim::GluedLaw::unlimited, 0.0, std::make_shared<GradedLaw>(0.0, true)},
+      dx);
+  std::vector<double> images, coefficients, constants;
+  for (std::int64_t i = 1; i <= n && profile.mdr_image(i * dx) < 0.7 * kD; ++i) {
+    images.push_back(profile.mdr_image(row.position(i)));
+    const mdrsim::SlipLimit l = law->limit_at(row.position(i), dx);
+    coefficients.push_back(l.coefficient);
+    constants.push_back(l.constant);
+    row.touch(images.back(), 0.0);
+    keyed.touch(images.back(), 0.0);
+    coulomb_own.touch(images.back(), 0.0);
+  }
+  const std::int64_t steps = 100000;
+  fr::BruteForceRow brute(images, dx, kModulus, kShearModulus, kMu);
+  brute.set_limits(coefficients, constants);
+  brute.move_to(kD, 0.0, 100);
+  const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
+  const std::vector<std::pair<double, double>> legs{
+      {0.7 * kD, 0.6 * us}, {kD, -0.2 * us}, {1.2 * kD, 0.9 * us}};
+  double d = kD, u = 0.0, dissipated = 0.0, keyed_dissipated = 0.0, own_dissipated = 0.0;
+  double work = 0.0, brute_bound = 0.0;
+  double limit_sum = 0.0;  // the largest limits along the path, both halves [N]
+  for (std::size_t i = 0; i < images.size(); ++i)
+    limit_sum += 2.0 * (coefficients[i] * kModulus * dx * (1.2 * kD - images[i]) + constants[i]);
+  std::int64_t events = 0, keyed_events = 0, own_events = 0;
+  for (const auto& [leg_d, leg_u] : legs) {
+    const LinearMotion motion{0.0, d, u, leg_d - d, leg_u - u};
+    dissipated += drive(row, motion, 1.0, work, &events);
+    keyed_dissipated += drive(keyed, motion, 1.0, work, &keyed_events);
+    own_dissipated += drive(coulomb_own, motion, 1.0, work, &own_events);
+    brute.move_to(leg_d, leg_u, steps);
+    brute_bound +=
+        limit_sum *
+        (std::abs(leg_u - u) + 2.0 * kMu * kModulus / kShearModulus * std::abs(leg_d - d)) /
+        static_cast<double>(steps);
+    d = leg_d;
+    u = leg_u;
+    const double scale = 2.0 * (2.0 * kMu * kModulus * kD + cohesion) * kA;  // of F_x
+    EXPECT_NEAR(row.tangential_force(d, u), brute.tangential_force(), 1e-12 * scale);
+    EXPECT_NEAR(dissipated, brute.dissipated(), brute_bound);
+    EXPECT_NEAR(coulomb_own.tangential_force(d, u), keyed.tangential_force(d, u), 1e-12 * scale);
+    EXPECT_NEAR(own_dissipated, keyed_dissipated, 1e-12 * scale * us);
+    EXPECT_EQ(coulomb_own.springs_sliding(), keyed.springs_sliding());
+    EXPECT_EQ(coulomb_own.stick_radius(), keyed.stick_radius());
+  }
+  EXPECT_EQ(own_events, keyed_events);
+  EXPECT_GT(events, 20);  // slips and sticks did happen (30 of them; the graded law holds more)
+  EXPECT_GT(dissipated, 100.0 * brute_bound);
+}
+
 TEST(FrictionRow, ASpringWhoseGlueLetsGoSlipsToItsLimit) {
   // Glued "unlimited" at u = 0, sheared to u = 2 mu E* (d - g)/G* of spring 1 with d held: once
   // its glue lets go it keeps its stretch, twice its limit, and slips half of it at once,
@@ -464,88 +544,92 @@ TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
   // One path through every change of the row: springs touch, glue, let go (slipping to their
   // limit), lift; the indenter shears back and forth while it presses and unloads. The row's
   // keys and sums must give what each spring's own law gives, event for event, to rounding.
-  for (const auto glued_law : {mdrsim::GluedLaw::unlimited, mdrsim::GluedLaw::coulomb}) {
-    const mdrsim::FrictionSettings settings{kMu, glued_law, 0.1 * kMu * kModulus * kD / kA};
-    const std::int64_t n = 50;
-    const double dx = kA / static_cast<double>(n);
-    const mdrsim::ParabolicProfile profile(kRadius);
-    FrictionRow row(kMaterial, settings, dx);
-    SpringBySpringRow oracle{settings, dx, {}, {}, 0};
-    const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
-    double d = 0.8 * kD;
-    double u = 0.0;
-    const auto touch_pressed = [&] {
-      while (row.in_contact() < n && profile.mdr_image(row.position(row.in_contact() + 1)) < d) {
-        const double g = profile.mdr_image(row.position(row.in_contact() + 1));
-        row.touch(g, u);
-        oracle.states.push_back({u, 0});
-        oracle.images.push_back(g);
-      }
-    };
-    const auto lift_unpressed = [&](double d_next) {
-      while (row.in_contact() > row.glued() && oracle.images.back() >= d_next) {
-        row.lift_outer();
-        oracle.states.pop_back();
-        oracle.images.pop_back();
-      }
-    };
-    touch_pressed();
-    for (int k = 0; k < 12; ++k) {
-      row.glue_next();
-      ++oracle.glued;
-    }
-    struct Leg {
-      double d;
-      double u;
-      int let_go;  ///< boundary springs that let go before the leg
-    };
-    const std::vector<Leg> legs{{0.8 * kD, 0.6 * us, 0},   {0.9 * kD, -0.4 * us, 3},
-                                {0.7 * kD, 0.3 * us, 2},   {1.0 * kD, 0.9 * us, 0},
-                                {0.75 * kD, -0.8 * us, 4}, {0.75 * kD, 0.1 * us, 0}};
-    double dissipated_row = 0.0;
-    double dissipated_oracle = 0.0;
-    std::int64_t events_row = 0;
-    std::int64_t events_oracle = 0;
-    double work = 0.0;
-    for (const Leg& leg : legs) {
-      for (int k = 0; k < leg.let_go; ++k) {
-        const std::size_t b = static_cast<std::size_t>(oracle.glued - 1);
-        --oracle.glued;
-        // The spring slides at its glued limit or sticks: as an unglued spring it starts stuck.
-        oracle.states[b].sliding = 0;
-        dissipated_oracle +=
-            2.0 * mdrsim::slip_to_limit(oracle.states[b], *oracle.law(b), oracle.geometry(b), d, u);
-        if (glued_law == mdrsim::GluedLaw::coulomb) dissipated_oracle += oracle.relimit(d, u);
-        dissipated_row += row.let_go_boundary(d, u);
-      }
-      lift_unpressed(leg.d);
-      const LinearMotion motion{0.0, d, u, leg.d - d, leg.u - u};
-      dissipated_row += drive(row, motion, 1.0, work, &events_row);
-      dissipated_oracle += oracle.drive(motion, 1.0, events_oracle);
-      d = leg.d;
-      u = leg.u;
-      touch_pressed();
-      const double scale = 2.0 * kMu * kModulus * kD * kA;  // of F_x
-      EXPECT_NEAR(row.tangential_force(d, u), oracle.tangential_force(d, u), 1e-12 * scale);
-      EXPECT_NEAR(dissipated_row, dissipated_oracle, 1e-12 * scale * us);
-      std::int64_t sliding = 0;
-      std::int64_t first_sliding = 0;
-      for (std::int64_t i = 1; i <= row.in_contact(); ++i) {
-        const auto& expected = oracle.states[static_cast<std::size_t>(i - 1)];
-        EXPECT_EQ(row.spring(i).sliding, expected.sliding) << i;
-        EXPECT_NEAR(row.spring(i).offset, expected.offset, 1e-12 * us) << i;
-        if (expected.sliding != 0) {
-          ++sliding;
-          if (first_sliding == 0) first_sliding = i;
+  // Also with Coulomb's law given as a law of its own: every spring spring by spring.
+  for (const bool own_law : {false, true})
+    for (const auto glued_law : {mdrsim::GluedLaw::unlimited, mdrsim::GluedLaw::coulomb}) {
+      SCOPED_TRACE(own_law ? "a law of its own" : "the keys");
+      mdrsim::FrictionSettings settings{kMu, glued_law, 0.1 * kMu * kModulus * kD / kA};
+      if (own_law) settings.law = std::make_shared<GradedLaw>(0.0, true);
+      const std::int64_t n = 50;
+      const double dx = kA / static_cast<double>(n);
+      const mdrsim::ParabolicProfile profile(kRadius);
+      FrictionRow row(kMaterial, settings, dx);
+      SpringBySpringRow oracle{settings, dx, {}, {}, 0};
+      const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
+      double d = 0.8 * kD;
+      double u = 0.0;
+      const auto touch_pressed = [&] {
+        while (row.in_contact() < n && profile.mdr_image(row.position(row.in_contact() + 1)) < d) {
+          const double g = profile.mdr_image(row.position(row.in_contact() + 1));
+          row.touch(g, u);
+          oracle.states.push_back({u, 0});
+          oracle.images.push_back(g);
         }
+      };
+      const auto lift_unpressed = [&](double d_next) {
+        while (row.in_contact() > row.glued() && oracle.images.back() >= d_next) {
+          row.lift_outer();
+          oracle.states.pop_back();
+          oracle.images.pop_back();
+        }
+      };
+      touch_pressed();
+      for (int k = 0; k < 12; ++k) {
+        row.glue_next();
+        ++oracle.glued;
       }
-      EXPECT_EQ(row.springs_sliding(), sliding);
-      EXPECT_EQ(row.stick_radius(),
-                row.position(first_sliding == 0 ? row.in_contact() : first_sliding - 1));
+      struct Leg {
+        double d;
+        double u;
+        int let_go;  ///< boundary springs that let go before the leg
+      };
+      const std::vector<Leg> legs{{0.8 * kD, 0.6 * us, 0},   {0.9 * kD, -0.4 * us, 3},
+                                  {0.7 * kD, 0.3 * us, 2},   {1.0 * kD, 0.9 * us, 0},
+                                  {0.75 * kD, -0.8 * us, 4}, {0.75 * kD, 0.1 * us, 0}};
+      double dissipated_row = 0.0;
+      double dissipated_oracle = 0.0;
+      std::int64_t events_row = 0;
+      std::int64_t events_oracle = 0;
+      double work = 0.0;
+      for (const Leg& leg : legs) {
+        for (int k = 0; k < leg.let_go; ++k) {
+          const std::size_t b = static_cast<std::size_t>(oracle.glued - 1);
+          --oracle.glued;
+          // The spring slides at its glued limit or sticks: as an unglued spring it starts stuck.
+          oracle.states[b].sliding = 0;
+          dissipated_oracle += 2.0 * mdrsim::slip_to_limit(oracle.states[b], *oracle.law(b),
+                                                           oracle.geometry(b), d, u);
+          if (glued_law == mdrsim::GluedLaw::coulomb) dissipated_oracle += oracle.relimit(d, u);
+          dissipated_row += row.let_go_boundary(d, u);
+        }
+        lift_unpressed(leg.d);
+        const LinearMotion motion{0.0, d, u, leg.d - d, leg.u - u};
+        dissipated_row += drive(row, motion, 1.0, work, &events_row);
+        dissipated_oracle += oracle.drive(motion, 1.0, events_oracle);
+        d = leg.d;
+        u = leg.u;
+        touch_pressed();
+        const double scale = 2.0 * kMu * kModulus * kD * kA;  // of F_x
+        EXPECT_NEAR(row.tangential_force(d, u), oracle.tangential_force(d, u), 1e-12 * scale);
+        EXPECT_NEAR(dissipated_row, dissipated_oracle, 1e-12 * scale * us);
+        std::int64_t sliding = 0;
+        std::int64_t first_sliding = 0;
+        for (std::int64_t i = 1; i <= row.in_contact(); ++i) {
+          const auto& expected = oracle.states[static_cast<std::size_t>(i - 1)];
+          EXPECT_EQ(row.spring(i).sliding, expected.sliding) << i;
+          EXPECT_NEAR(row.spring(i).offset, expected.offset, 1e-12 * us) << i;
+          if (expected.sliding != 0) {
+            ++sliding;
+            if (first_sliding == 0) first_sliding = i;
+          }
+        }
+        EXPECT_EQ(row.springs_sliding(), sliding);
+        EXPECT_EQ(row.stick_radius(),
+                  row.position(first_sliding == 0 ? row.in_contact() : first_sliding - 1));
+      }
+      EXPECT_EQ(events_row, events_oracle);
+      EXPECT_GT(events_row, 2 * n);
     }
-    EXPECT_EQ(events_row, events_oracle);
-    EXPECT_GT(events_row, 2 * n);
-  }
 }
 
 TEST(FrictionRow, RandomNonMonotoneMotionsMatchTheBruteForceRow) {

@@ -6,6 +6,8 @@
 
 #include "tests/support/expect_throw_msg.hpp"
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -63,7 +65,7 @@ TEST(FrictionScene, RefusesBadValues) {
                    "scene.toml:16:15: friction.coefficient = -0.1 is outside [0, inf)");
   EXPECT_THROW_MSG(build(p + "coeficient = 0.5\n"), SceneError,
                    "scene.toml:16:1: friction.coeficient: unknown key; did you mean 'coefficient'? "
-                   "(known: coefficient, glued, shear_strength)");
+                   "(known: coefficient, glued, law, shear_strength)");
   EXPECT_THROW_MSG(build(p), SceneError,
                    "scene.toml:15:1: friction.coefficient: missing, expected a number (Coulomb "
                    "coefficient mu >= 0)");
@@ -138,6 +140,54 @@ TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
       "[loading]\npreload = { depth = 1.0e-6 }\ntangential = { control = \"fixed-load\", force "
       "= 1.0e-4 }\nnormal = { control = \"fixed-load\" }\n[friction]\ncoefficient = 0.5\n");
   EXPECT_TRUE(build(shorthand).program.has_value());
+}
+
+/// A law of its own for the reader: a coefficient per radius (key `slope`), no uniform one.
+class SlopedLaw final : public FrictionLaw {
+ public:
+  explicit SlopedLaw(double slope) : slope_(slope) {}
+  SlipLimit limit_at(double radius, double /*spacing*/) const override {
+    return {slope_ * radius, 0.0};
+  }
+
+ private:
+  double slope_;
+};
+
+Registries with_sloped_law() {
+  Registries r = Registries::builtin();
+  r.friction_laws.add({.name = "sloped",
+                       .summary = "mu = slope x",
+                       .parameters = {{.key = "slope", .help = "[1/m]", .lower = Bound{0.0, true}}},
+                       .create = [](const ParameterValues& v) -> std::unique_ptr<FrictionLaw> {
+                         return std::make_unique<SlopedLaw>(v.number("slope"));
+                       }});
+  return r;
+}
+
+// `law` names a registered friction law; its keys are read, the others' refused; a law with
+// no one coefficient is kept as the scene's law (spring by spring), Coulomb's as its number.
+TEST(FrictionScene, ALawOfItsOwnIsNamedByLaw) {
+  const Registries registries = with_sloped_law();
+  const auto with = [&](const std::string& keys) {
+    return SceneDocument::from_text(std::string(kProgram) + keys, "scene.toml").build(registries);
+  };
+  const Scene sloped = with("law = \"sloped\"\nslope = 2000.0\n");
+  ASSERT_TRUE(sloped.friction && sloped.friction->law);
+  EXPECT_EQ(sloped.friction->law->limit_at(1e-4, 1e-6).coefficient, 0.2);
+  EXPECT_FALSE(sloped.friction->law->uniform_coefficient().has_value());
+  const Scene coulomb = with("law = \"coulomb\"\ncoefficient = 0.3\n");
+  ASSERT_TRUE(coulomb.friction);
+  EXPECT_EQ(coulomb.friction->law, nullptr);
+  EXPECT_EQ(coulomb.friction->coefficient, 0.3);
+  EXPECT_THROW_MSG(with("law = \"sloped\"\ncoefficient = 0.3\n"), SceneError,
+                   "scene.toml:17:15: friction.coefficient: applies to law = \"coulomb\" only");
+  EXPECT_THROW_MSG(
+      with("law = \"sloped\"\nslope = 1.0\nglued = \"coulomb\"\n"), SceneError,
+      "scene.toml:18:9: friction.glued: glued = \"coulomb\" slides at mu f_z with one mu, which "
+      "law = \"sloped\" does not give: use a law with one coefficient");
+  EXPECT_THROW_MSG(build(std::string(kProgram) + "law = \"sloped\"\n"), SceneError,
+                   "scene.toml:16:7: friction.law: unknown 'sloped' (known: coulomb)");
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// Every registered criterion and controller, and one criterion from outside, through a short
-// program (approach, hold, retract), against a discrete row summed here and against each other.
+// Every registered criterion, controller and friction law, and one of each kind from outside,
+// through a short program, against a discrete row summed here and against each other.
 #include "engine/scene/registries.hpp"
 
 #include <fmt/format.h>
@@ -116,6 +116,19 @@ RowState discrete_approach_end(const mdrsim::AffineConstraint& c, double held, d
   return {hi, row_force(hi, a_ref, n)};
 }
 
+/// Coulomb's law written outside the built-ins as a user would (examples/custom_friction_law),
+/// without saying it is uniform: the engine runs it spring by spring.
+class OutsideCoulomb final : public mdrsim::FrictionLaw {
+ public:
+  explicit OutsideCoulomb(double mu) : mu_(mu) {}
+  mdrsim::SlipLimit limit_at(double /*radius*/, double /*spacing*/) const override {
+    return {mu_, 0.0};
+  }
+
+ private:
+  double mu_;
+};
+
 }  // namespace
 
 // Each controller approaches Hertz at 3 d0 (its held value through its own constraint), holds
@@ -164,4 +177,54 @@ TEST(Registries, EveryCriterionAndControllerRunsAProgram) {
       }
     }
   }
+}
+
+// Every registered friction law, and one from outside, from its declared example values: pressed
+// to 3 d0 at fixed grips without adhesion and sheared to twice Cattaneo-Mindlin's u* = mu E* d
+// / G*, where every spring slides and F_x = 2 mu E* dx sum (d - g_i) of the row, summed here
+// (1e-12: the same sums in another order). The laws' coefficients differ only through their
+// example values; the outside law at the built-in's example gives the same F_x to 1e-12.
+TEST(Registries, EveryFrictionLawRunsAProgram) {
+  mdrsim::Registries registries = mdrsim::Registries::builtin();
+  registries.friction_laws.add(
+      {.name = "outside-coulomb",
+       .summary = "mu max(f_z, 0), from outside",
+       .parameters = {{.key = "mu", .help = "mu >= 0", .example = 0.5}},
+       .create = [](const mdrsim::ParameterValues& v) -> std::unique_ptr<mdrsim::FrictionLaw> {
+         return std::make_unique<OutsideCoulomb>(v.number("mu"));
+       }});
+  const double d0 = std::cbrt(3.0 * std::numbers::pi * std::numbers::pi * kTip * kDgamma * kDgamma /
+                              (64.0 * kEStar * kEStar));
+  const double d = 3.0 * d0;
+  const double g_star = 4.0 * kYoungs / (2.0 * (1.0 + kPoisson)) / (2.0 - kPoisson);
+  std::vector<double> forces;
+  for (const std::string& name : registries.friction_laws.names()) {
+    SCOPED_TRACE(name);
+    std::string law_keys;
+    double mu = 0.0;
+    for (const mdrsim::ParameterSpec& spec : registries.friction_laws.find(name)->parameters) {
+      ASSERT_TRUE(spec.example.has_value()) << spec.key;
+      law_keys += fmt::format("{} = {}\n", spec.key, *spec.example);
+      mu = *spec.example;  // each law here has its coefficient as its one key
+    }
+    const double u = 2.0 * mu * kEStar * d / g_star;
+    const std::string text = fmt::format(
+        "[material]\nyoungs_modulus = {}\npoisson_ratio = {}\nwork_of_adhesion = 0.0\n"
+        "[profile]\ntype = \"parabolic\"\nradius = {}\n[discretization]\nsprings = {}\n"
+        "[[loading.stage]]\nname = \"press\"\nnormal = {{ control = \"fixed-grips\", to = {} "
+        "}}\n[[loading.stage]]\nname = \"shear\"\ntangential = {{ control = \"fixed-grips\", to "
+        "= {} }}\n[friction]\nlaw = \"{}\"\n{}",
+        kYoungs, kPoisson, kTip, kSprings, d, u, name, law_keys);
+    const mdrsim::Scene scene =
+        mdrsim::SceneDocument::from_text(text, "test.toml").build(registries);
+    const mdrsim::RunResult r = mdrsim::run_scene(scene, mdrsim::ObserverList{});
+    ASSERT_EQ(r.stages.size(), 2U);
+    const mdrsim::ContactSnapshot& end = r.stages[1].end;
+    EXPECT_EQ(end.springs_sliding, end.springs_in_contact);
+    const double expected = mu * row_force(d, r.accuracy.outer_radius, kSprings);
+    EXPECT_NEAR(end.tangential_force, expected, 1e-12 * expected);
+    forces.push_back(end.tangential_force);
+  }
+  ASSERT_EQ(forces.size(), 2U);
+  EXPECT_NEAR(forces[0], forces[1], 1e-12 * forces[0]);
 }
