@@ -129,7 +129,7 @@ TEST(FrictionRow, CattaneoMindlinWithAShearStrengthAtTwoSpringCounts) {
         std::min((-2.0 * tau0 + std::sqrt(4.0 * tau0 * tau0 + 4.0 * stiff * kShearModulus * u)) /
                      (2.0 * stiff),
                  kA);
-    const double c = std::sqrt(kA * kA - s * s);
+    const double c = std::sqrt(std::max(kA * kA - s * s, 0.0));
     return 2.0 * (kShearModulus * u * c +
                   stiff * (kA * kA * (kA - c) - (kA * kA * kA - c * c * c) / 3.0) +
                   tau0 * (std::numbers::pi * kA * kA / 2.0 - c * s - kA * kA * std::asin(c / kA)));
@@ -492,8 +492,9 @@ struct SpringBySpringRow {
     // x^2) per unit length.
     const double a_g = dx * static_cast<double>(glued);
     const double x = dx * static_cast<double>(i + 1);
-    return mdrsim::CoulombLaw{settings.coefficient,
-                              2.0 * settings.shear_strength * std::sqrt(a_g * a_g - x * x) * dx};
+    return mdrsim::CoulombLaw{
+        settings.coefficient,
+        2.0 * settings.shear_strength * std::sqrt(std::max(a_g * a_g - x * x, 0.0)) * dx};
   }
   /// A new glued radius moves every glued spring's limit: within it a spring sticks, over it
   /// it slips to it at once. Returns the dissipated work, both halves [J].

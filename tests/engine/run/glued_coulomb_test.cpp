@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -53,7 +54,7 @@ double loading_force(double u) {
   const double s = std::min(
       (-2.0 * kTau + std::sqrt(4.0 * kTau * kTau + 4.0 * stiff * kModulus * u)) / (2.0 * stiff),
       kA);
-  const double c = std::sqrt(kA * kA - s * s);
+  const double c = std::sqrt(std::max(kA * kA - s * s, 0.0));
   return 2.0 * (kModulus * u * c + stiff * (kA * kA * (kA - c) - (kA * kA * kA - c * c * c) / 3.0) +
                 kTau * (std::numbers::pi * kA * kA / 2.0 - c * s - kA * kA * std::asin(c / kA)));
 }
