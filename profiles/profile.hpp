@@ -46,6 +46,10 @@ class Profile {
   /// to which adhesion only adds the flat punch's lift dl (1 - (2/pi) asin(a/r)) >= 0.
   virtual bool always_one_disk() const { return false; }
 
+  /// Optional: the shortest length the shape varies on (a ripple's wavelength) [m]. A row whose
+  /// spacing is more than a quarter of it cannot follow the shape; the scene is refused.
+  virtual std::optional<double> shortest_feature() const { return std::nullopt; }
+
   /// Optional: the radius R of the JKR scales F0, a0, d0 (paper eq. 17), for profiles whose
   /// tip is the parabola r^2/(2R); nullopt where those scales do not apply [m].
   virtual std::optional<double> jkr_scale_radius() const { return std::nullopt; }

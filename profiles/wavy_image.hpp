@@ -13,8 +13,9 @@ struct RippleIntegrals {
 /// Small z by their power series, I(z) = sum_j (-1)^j z^(2j+1) / ((2j+1)!!)^2; otherwise
 /// from Bessel functions of the first kind (Jacobi-Anger):
 ///   I(z) = 2 sum_j J_{2j+1}(z) / (2j+1),   I'(z) = J_0(z) + 2 sum_{j>=1} J_{2j}(z) / (1 - 4 j^2),
-/// with every J_n(z) from Miller's backward recurrence, normalized by J_0 + 2 sum J_{2j} = 1.
-/// About 1e-15 relative to the scale of I (which is at most about 1.4) for z up to 1e4.
+/// with every J_n(z) from Miller's backward recurrence, normalized by J_0 + 2 sum J_{2j} = 1,
+/// up to z = 100; from there the Struve functions' asymptotic series over Y_0 and Y_1, in O(1).
+/// About 1e-15 relative to the scale of I (which is at most about 1.4).
 RippleIntegrals ripple_integrals(double z);
 
 }  // namespace mdrsim

@@ -1,6 +1,9 @@
 // Guduru's wavy sphere f(r) = r^2/(2R) + A (1 - cos(2 pi r / lambda)) and its MDR image.
 #pragma once
 
+#include <numbers>
+#include <optional>
+
 #include <optional>
 
 #include "profiles/profile.hpp"
@@ -25,6 +28,10 @@ class WavyProfile final : public Profile {
   double mdr_image(double x) const override;
   double mdr_image_slope(double x) const override;
   std::optional<double> jkr_scale_radius() const override { return radius_; }
+
+  std::optional<double> shortest_feature() const override {
+    return 2.0 * std::numbers::pi / wavenumber_;
+  }
 
  private:
   double radius_;      ///< R [m]
