@@ -32,12 +32,12 @@ SpringGeometry FrictionRow::geometry(std::int64_t i) const {
 std::optional<CoulombLaw> FrictionRow::law(std::int64_t i) const {
   if (i > glued_) return individual_ ? laws_[index(i)] : CoulombLaw{settings_.coefficient, 0.0};
   if (settings_.glued == GluedLaw::unlimited) return std::nullopt;
-  return CoulombLaw{settings_.coefficient, glued_adhesive_limit(i, glued_)};
+  return CoulombLaw{settings_.coefficient, glued_adhesive_limit(i)};
 }
 
-double FrictionRow::glued_adhesive_limit(std::int64_t i, std::int64_t glued) const {
+double FrictionRow::glued_adhesive_limit(std::int64_t i) const {
   // 2 tau_0 sqrt(a_g^2 - x_i^2) dx with a_g = x_k, x_i = i dx: in whole spacings, exactly.
-  const double k = static_cast<double>(glued);
+  const double k = static_cast<double>(glued_);
   const double x = static_cast<double>(i);
   return 2.0 * settings_.shear_strength * spacing_ * spacing_ *
          std::sqrt(std::max(k * k - x * x, 0.0));

@@ -127,10 +127,10 @@ class FrictionRow {
   std::size_t index(std::int64_t i) const { return static_cast<std::size_t>(i - 1); }
   static std::size_t side(int direction) { return direction > 0 ? 0 : 1; }
   double limit_sum(std::size_t s, double indentation) const;  ///< sum of mu f_z of a side [N]
-  /// The adhesive part of a glued `coulomb` spring's limit with springs 1..glued glued: the
-  /// MDR image of a uniform shear strength tau_0 over the glued disk, 2 tau_0 sqrt(a_g^2 - x_i^2)
-  /// dx with a_g = x_glued (docs/friction.md) [N].
-  double glued_adhesive_limit(std::int64_t i, std::int64_t glued) const;
+  /// The adhesive part of glued `coulomb` spring i's limit: the MDR image of a uniform shear
+  /// strength tau_0 over the glued disk, 2 tau_0 sqrt(a_g^2 - x_i^2) dx with a_g = x_k
+  /// (docs/friction.md) [N].
+  double glued_adhesive_limit(std::int64_t i) const;
   /// After a_g changed: every glued spring within its new limit sticks, one over it slips to it
   /// at once. Returns the work dissipated on both halves [J]; O(k), with tau_0 > 0 only.
   double limit_glued_springs();

@@ -335,14 +335,10 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
       // sign change brackets the first let-go.
       const double a = row.position(k);
       const double g = row.image(k);
-      const double s = row.boundary_offset();
-      const bool own = row.boundary_slips();
       const auto margin = [&](double t) {
         const double d_t = d + vd * (t - line.t);
         const double stretch = std::max(0.0, g - d_t);
-        const double stretch_x =
-            own ? row.boundary_stretch(d_t, u + vu * (t - line.t)) : u + vu * (t - line.t) - s;
-        return criterion_.margin({stretch, stretch_x, a});
+        return criterion_.margin({stretch, row.boundary_stretch(d_t, u + vu * (t - line.t)), a});
       };
       const double now = margin(line.t);
       if (now <= 0.0) {

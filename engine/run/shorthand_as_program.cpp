@@ -27,10 +27,11 @@ std::optional<Scene> pressed_in_on_a_first_row(const Scene& scene) {
   if (scene.program || !scene.shorthand_stages || scene.solver.method == SolverMethod::continuum) {
     return std::nullopt;
   }
-  const std::int64_t springs =
-      scene.springs > 0 ? std::min(kPressedCheckSprings, scene.springs) : kPressedCheckSprings;
-  const RunResult first = run_row(
-      scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {});
+  const RunResult first = run_row(scene,
+                                  {.springs = std::min(kPressedCheckSprings, scene.springs),
+                                   .outer_radius = scene.glued_radius,
+                                   .record_path = true},
+                                  {});
   if (!ends_pressed_in(first)) return std::nullopt;
   return as_its_program(scene);
 }
