@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <string_view>
 #include <utility>
 
 #include "engine/output/finite_check.hpp"
@@ -56,6 +57,16 @@ SceneCheck check_scene_text(std::string_view text) {
   RunResult result;
   try {
     result = run_scene(scene, ObserverList{});
+  } catch (const SceneError& e) {
+    // docs/continuum.md: a program the continuum route cannot follow to its end is refused by
+    // its run (decided by the disk's state at a stage), with one line naming the key that
+    // chose the route: exit 2, as the reader's refusals.
+    const std::string_view why = e.what();
+    if (why.rfind("fuzz.toml:", 0) == 0 && why.find('\n') == std::string_view::npos) {
+      return {Outcome::refused, {}};
+    }
+    return {Outcome::broken,
+            fmt::format("the run refused without one line naming the file: {}", why)};
   } catch (const std::exception& e) {
     // A scene the reader accepted must run: anything else is an engine bug (mdrsim exits 1).
     return {Outcome::broken, fmt::format("the run of an accepted scene threw: {}", e.what())};
