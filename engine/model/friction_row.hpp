@@ -104,6 +104,9 @@ class FrictionRow {
     return settings_.glued == GluedLaw::coulomb || individual_ || force_follows_indentation() ||
            !(motion.tangential_rate == 0.0 && motion.indentation_rate >= 0.0);
   }
+  /// Whether every spring in contact is on the keys and sliders (nothing glued, no law of its
+  /// own): its events are then found in O(1) each, and a ramp may take them in bulk.
+  bool slides_in_bulk() const { return glued_ == 0 && !individual_; }
   /// The first friction event of any spring along `motion` in [motion.start, end] (apply it
   /// and ask again at the same t for the next of a cascade).
   std::optional<RowFrictionEvent> next_event(const LinearMotion& motion, double end) const;

@@ -108,6 +108,9 @@ class ProgramRunner {
   void take_step(double t_end);
   /// A press that only glues springs as it reaches them, taken in one pass (below).
   bool press_in_bulk(double t_end);
+  /// A tangential ramp whose only changes are slips and sticks, taken event by event without
+  /// the rest of the loop (below); stops once result_.counts.events passes `events_until`.
+  bool slide_in_bulk(double t_end, std::int64_t events_until);
   void finish_cascade(const Cascade& cascade);
   /// Whether a fixed-load axis holds a force that nothing holds: a tension with no spring in
   /// contact, a tangential force with nothing glued.
@@ -675,6 +678,58 @@ bool ProgramRunner::press_in_bulk(double t_end) {
   return true;
 }
 
+bool ProgramRunner::slide_in_bulk(double t_end, std::int64_t events_until) {
+  // Fixed grips moving u_x at a still normal held value, nothing glued nor able to glue, every
+  // spring on the keys (FrictionRow::slides_in_bulk), nobody observing single slips: d stays
+  // (the axes are uncoupled), so no spring touches, lifts, glues or lets go, and the only
+  // changes are the friction row's own events, which it locates exactly as the loop does
+  // (FrictionRow::next_event, in the same order). Each is applied where the loop would apply
+  // it, with the same advance and work, without looking for changes that cannot come, nor
+  // snapshots of equilibria whose normal state does not change (observed once, at the end).
+  const FrictionRow* friction = row_.friction();
+  if (stepping_ || observe_slips_ || friction == nullptr || normal_.rate != 0.0 ||
+      tangential_.rate == 0.0 || !is_fixed_grips(row_.tangential().constraint) ||
+      row_.glued() > 0 || !friction->slides_in_bulk()) {
+    return false;
+  }
+  const std::int64_t m = row_.in_contact();
+  const double d = row_.indentation();
+  // Nothing else due now (a spring to touch, lift or glue is the loop's), and nothing can be.
+  if (m == 0 || (row_.adhesive() && row_.can_glue(1)) || row_.image(m) - d > 0.0 ||
+      (m < row_end_ && row_.image(m + 1) - d <= 0.0)) {
+    return false;
+  }
+  const std::int64_t cap = 4 * (max_springs_ + 2);
+  std::int64_t at_this_t = 0;
+  bool applied = false;
+  while (result_.counts.events <= events_until) {
+    const LinearMotion along = ChangeLocator::motion(row_, step_line());
+    const auto event = friction->next_event(along, t_end);
+    if (!event) break;
+    double t = t_;
+    if (event->event.at > t_) {
+      t = std::max(event->event.at, next_parameter(t_));
+      if (!(t < t_end)) break;  // the stage's end is the loop's
+      advance_to(t);
+      if (stop_ != Stop::none) return true;
+      at_this_t = 0;
+    }
+    if (++at_this_t > cap) {
+      // Rounding that keeps one parameter value's slips and sticks from settling (run_changes).
+      stop_ = Stop::unending_cascade;
+      unending_at_ = t_;
+      return true;
+    }
+    row_.apply_friction(*event);
+    ++result_.counts.events;
+    applied = true;
+  }
+  if (!applied) return false;
+  locator_.forget();
+  observe(row_.snapshot());
+  return true;
+}
+
 void ProgramRunner::log_progress(const Stage& stage) {
   next_progress_check_ = result_.counts.events + (1 << 16);
   if (!progress_.interval_passed()) return;
@@ -694,7 +749,9 @@ void ProgramRunner::run_stage(const Stage& stage) {
   } else {
     const bool buffer_cascades = observe_springs_ && (holds_force(row_.normal().constraint) ||
                                                       holds_force(row_.tangential().constraint));
-    {
+    // The sticks a ramp's reversal makes due at its start are a friction row's own as well.
+    slide_in_bulk(t_end, next_progress_check_);
+    if (stop_ == Stop::none) {
       Cascade cascade = begin_cascade();
       buffering_ = buffer_cascades;
       run_changes(std::nullopt, cascade, std::numeric_limits<std::int64_t>::max());
@@ -735,6 +792,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
         continue;
       }
       if (press_in_bulk(t_end)) continue;
+      if (slide_in_bulk(t_end, look_at)) continue;
       const auto next = next_change(t_end);
       if (!next) {
         if (std::isfinite(t_end)) {
