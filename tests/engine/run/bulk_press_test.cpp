@@ -6,9 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "engine/events/event_recorder.hpp"
-#include "engine/reference/jkr_scenario.hpp"
-#include "engine/run/run_scene.hpp"
+#include "tests/support/observed_or_not.hpp"
 
 namespace mdrsim {
 namespace {
@@ -25,30 +23,10 @@ radius = 0.01
 criterion = "mode-mixed"
 )";
 
-struct Pair {
-  RunResult bulk;        ///< no observer: the press in one pass
-  RunResult one_by_one;  ///< an observer of single springs: one event per glue
-};
+using test::expect_same_state;
+using Pair = test::ObservedOrNot;
 
-Pair run_both(const std::string& text) {
-  const Scene scene = test::build_scene_text(text);
-  Pair p;
-  p.bulk = run_scene(scene, {});
-  EventRecorder recorder;
-  ObserverList observers;
-  observers.add(recorder);
-  p.one_by_one = run_scene(scene, observers);
-  return p;
-}
-
-void expect_same_state(const ContactSnapshot& a, const ContactSnapshot& b, const char* what) {
-  EXPECT_EQ(a.indentation, b.indentation) << what;
-  EXPECT_EQ(a.normal_force, b.normal_force) << what;
-  EXPECT_EQ(a.contact_radius, b.contact_radius) << what;
-  EXPECT_EQ(a.tangential_displacement, b.tangential_displacement) << what;
-  EXPECT_EQ(a.tangential_force, b.tangential_force) << what;
-  EXPECT_EQ(a.springs_in_contact, b.springs_in_contact) << what;
-}
+Pair run_both(const std::string& text) { return test::run_observed_or_not(text); }
 
 /// Every state to the bit; each stage's work, summed per spring in closed form against the
 /// loop's trapezoids, within rounding (1e-13 of the largest stage work).

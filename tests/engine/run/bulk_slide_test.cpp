@@ -9,9 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "engine/events/event_recorder.hpp"
-#include "engine/reference/jkr_scenario.hpp"
-#include "engine/run/run_scene.hpp"
+#include "tests/support/observed_or_not.hpp"
 
 namespace mdrsim {
 namespace {
@@ -23,21 +21,16 @@ std::string scene_file(const std::string& name) {
   return text.str();
 }
 
+using test::expect_same_state;
+
 struct Pair {
-  RunResult bulk;                    ///< no observer: the ramps in bulk
-  RunResult one_by_one;              ///< an observer of single slips: the loop takes every event
+  test::ObservedOrNot runs;
   std::int64_t friction_events = 0;  ///< slips and sticks the observer saw
 };
 
 Pair run_both(const std::string& text) {
-  const Scene scene = test::build_scene_text(text);
-  Pair p;
-  p.bulk = run_scene(scene, {});
-  EventRecorder recorder;
-  ObserverList observers;
-  observers.add(recorder);
-  p.one_by_one = run_scene(scene, observers);
-  for (const Event& e : recorder.events()) {
+  Pair p{test::run_observed_or_not(text)};
+  for (const Event& e : p.runs.recorder.events()) {
     if (e.kind == EventKind::spring_slipped || e.kind == EventKind::spring_stuck) {
       ++p.friction_events;
     }
@@ -45,23 +38,11 @@ Pair run_both(const std::string& text) {
   return p;
 }
 
-void expect_same_state(const ContactSnapshot& a, const ContactSnapshot& b,
-                       const std::string& what) {
-  EXPECT_EQ(a.indentation, b.indentation) << what;
-  EXPECT_EQ(a.normal_force, b.normal_force) << what;
-  EXPECT_EQ(a.contact_radius, b.contact_radius) << what;
-  EXPECT_EQ(a.tangential_displacement, b.tangential_displacement) << what;
-  EXPECT_EQ(a.tangential_force, b.tangential_force) << what;
-  EXPECT_EQ(a.springs_in_contact, b.springs_in_contact) << what;
-  EXPECT_EQ(a.springs_sliding, b.springs_sliding) << what;
-  EXPECT_EQ(a.stick_radius, b.stick_radius) << what;
-}
-
 /// Every reported state, work and count to the bit, and a run with friction events in it (a
 /// scene without any would show nothing of the bulk).
 void expect_same_run(const Pair& p) {
-  const RunResult& a = p.bulk;
-  const RunResult& b = p.one_by_one;
+  const RunResult& a = p.runs.bulk;
+  const RunResult& b = p.runs.one_by_one;
   EXPECT_GT(p.friction_events, 100);
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.sliding, b.sliding);

@@ -9,6 +9,7 @@
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
+#include "tests/support/observed_or_not.hpp"
 
 namespace mdrsim {
 namespace {
@@ -44,14 +45,7 @@ std::string program(const char* normal, double u, double rate, const std::string
              kDepth, normal, u, -rate, friction);
 }
 
-void expect_same_state(const ContactSnapshot& a, const ContactSnapshot& b, const char* what) {
-  EXPECT_EQ(a.normal_force, b.normal_force) << what;
-  EXPECT_EQ(a.tangential_force, b.tangential_force) << what;
-  EXPECT_EQ(a.indentation, b.indentation) << what;
-  EXPECT_EQ(a.contact_radius, b.contact_radius) << what;
-  EXPECT_EQ(a.springs_in_contact, b.springs_in_contact) << what;
-  EXPECT_EQ(a.springs_sliding, b.springs_sliding) << what;
-}
+using test::expect_same_state;
 
 // Below u_c (u = d0) and past it (u = 2 u_c: the glue breaks in the ramp and the pressed
 // springs then slide at mu f_z), under both normal controls: the shorthand with friction is its
