@@ -16,6 +16,7 @@
 #include "engine/run/criterion_contract.hpp"
 #include "engine/run/program_runner.hpp"
 #include "engine/run/stage_motion.hpp"
+#include "engine/scene/unresolved_shape.hpp"
 
 namespace mdrsim {
 namespace {
@@ -232,6 +233,7 @@ ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
 
 ProgramRowFrame program_row_frame(const Scene& scene) {
   ProgramRowFrame frame = located_frame(scene);
+  refuse_unresolved_shape(scene, frame.radius, "largest contact");
   // Once per run, at the radii it reaches: what the program's let-gos rely on.
   check_criterion_contract(*scene.criterion, scene.criterion_name, scene.material, frame.radius);
   frame.zero = program_zero_scale(scene, frame.radius, frame.image);

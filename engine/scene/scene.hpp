@@ -100,9 +100,12 @@ struct Scene {
   bool shorthand() const { return normal.controller != nullptr; }
   std::string profile_name;
   std::shared_ptr<const Profile> profile;  ///< shared by the scene's copies
-  double glued_radius = 0.0;               ///< radius of the contact glued at the preload [m]
-  double preload_depth = 0.0;              ///< indentation at the preload [m]
-  double preload_force = 0.0;              ///< normal force at the preload, without adhesion [N]
+  /// "file:line:col: profile.type: ", for a refusal of the shape that only the run finds (a
+  /// program's rows too coarse for a ripple: their radius is known once its pilot has run).
+  std::string profile_at;
+  double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
+  double preload_depth = 0.0;  ///< indentation at the preload [m]
+  double preload_force = 0.0;  ///< normal force at the preload, without adhesion [N]
   AxisLoading normal;
   std::optional<AxisLoading> tangential;
   std::string criterion_name;

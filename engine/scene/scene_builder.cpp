@@ -21,6 +21,7 @@
 #include "engine/scene/scene_error.hpp"
 #include "engine/scene/shorthand_program.hpp"
 #include "engine/scene/toml_reader.hpp"
+#include "engine/scene/unresolved_shape.hpp"
 
 namespace mdrsim {
 namespace {
@@ -286,25 +287,6 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
 /// 2e-9 m long in a contact of 5e-4 m on 2000 springs: its disk check alone took a minute, and
 /// its numbers would be the aliasing of the ripple): refused at the profile's type. The finest
 /// row: scene.springs (2 springs under Richardson), or max_row_springs under rtol.
-void refuse_unresolved_shape(const Scene& scene, const std::string& profile_at) {
-  const auto feature = scene.profile->shortest_feature();
-  if (!feature || !scene.shorthand() || scene.program ||
-      scene.solver.method == SolverMethod::continuum) {
-    return;
-  }
-  const std::int64_t finest = scene.discretization.rtol ? scene.discretization.max_row_springs
-                              : scene.discretization.richardson() ? 2 * scene.springs
-                                                                  : scene.springs;
-  const double spacing = scene.glued_radius / static_cast<double>(finest);
-  if (*feature >= 4.0 * spacing) return;
-  throw SceneError(fmt::format(
-      "{}the shape varies on {:.3g} m, less than 4 spacings of the finest row ({:.3g} m: the "
-      "glued radius {:.3g} m over {} springs): the springs cannot follow it; give at least {:.3g} "
-      "springs, or a longer wavelength",
-      profile_at, *feature, spacing, scene.glued_radius, finest,
-      std::ceil(4.0 * scene.glued_radius / *feature)));
-}
-
 void choose_continuum_route(Scene& scene, nlohmann::json& resolved, const std::string& rtol_at) {
   if (!scene.discretization.rtol ||
       scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::automatic ||
@@ -337,7 +319,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
 
   TomlReader profile = root.table("profile");
   scene.profile_name = profile.name("type", registries.profiles.names());
-  const std::string profile_at = profile.message_at("type", "");
+  scene.profile_at = profile.message_at("type", "");
   check_part_keys(profile, "type", scene.profile_name, registries.profiles);
   {
     const auto* entry = registries.profiles.find(scene.profile_name);
@@ -470,7 +452,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     scene.shorthand_stages = shorthand_program(scene, registries.controllers);
   }
   if (!method_given) choose_continuum_route(scene, *resolved, rtol_at);
-  refuse_unresolved_shape(scene, profile_at);
+  // A program's rows span the largest contact, known once its pilot has run (run_program.cpp).
+  if (scene.shorthand() && !scene.program && scene.solver.method != SolverMethod::continuum) {
+    refuse_unresolved_shape(scene, scene.glued_radius, "glued");
+  }
   if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
     TomlReader discretization = root.table("discretization");
     discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
