@@ -792,7 +792,7 @@ void ProgramRunner::run_stage(const Stage& stage) {
         continue;
       }
       if (press_in_bulk(t_end)) continue;
-      if (slide_in_bulk(t_end, look_at)) continue;
+      if (row_.friction() && slide_in_bulk(t_end, look_at)) continue;  // no call without friction
       const auto next = next_change(t_end);
       if (!next) {
         if (std::isfinite(t_end)) {
