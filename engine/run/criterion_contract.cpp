@@ -18,7 +18,9 @@ namespace {
 constexpr double kElongations[] = {0.0, 1.0 / 64, 1.0 / 16, 0.25, 0.5,  0.75,
                                    1.0, 1.5,      2.0,      4.0,  16.0, 64.0};
 constexpr double kTangentials[] = {-2.0, -1.0, -0.5, -0.25, 0.0, 0.25, 0.5, 1.0, 2.0};
-/// Rounding a margin may carry, relative to the margins compared (sums of a few products).
+/// Rounding a margin may carry, relative to the margins compared and to the margin at rest
+/// (a margin is a difference of terms of that size: zero on the holding boundary, to their
+/// rounding, whatever the scale).
 constexpr double kRounding = 1e-9;
 
 [[noreturn]] void broken(std::string_view name, const std::string& what) {
@@ -39,6 +41,8 @@ void check_at(const DetachmentCriterion& criterion, std::string_view name, const
     double e, u, margin;
   };
   std::vector<Point> holding;
+  // The criterion holds at rest (its contract): the size of the terms its margins subtract.
+  const double at_rest = std::max(criterion.margin({0.0, 0.0, a}), 0.0);
   for (const double ut : kTangentials) {
     const double u = ut * u_scale;
     double previous = 0.0;
@@ -47,7 +51,8 @@ void check_at(const DetachmentCriterion& criterion, std::string_view name, const
     for (const double et : kElongations) {
       const double e = et * e_scale;
       const double m = criterion.margin({e, u, a});
-      if (!first && m > previous + kRounding * std::max(std::abs(m), std::abs(previous))) {
+      if (!first &&
+          m > previous + kRounding * std::max({std::abs(m), std::abs(previous), at_rest})) {
         broken(name, fmt::format("its margin rises with the elongation at a = {:.6g} m, u_x = "
                                  "{:.6g} m: {:.6g} at {:.6g} m, {:.6g} at {:.6g} m",
                                  a, u, previous, previous_e, m, e));
@@ -65,7 +70,7 @@ void check_at(const DetachmentCriterion& criterion, std::string_view name, const
       const double e = 0.5 * (p.e + q.e);
       const double u = 0.5 * (p.u + q.u);
       const double m = criterion.margin({e, u, a});
-      if (m < -kRounding * std::max(p.margin, q.margin)) {
+      if (m < -kRounding * std::max({p.margin, q.margin, at_rest})) {
         broken(name, fmt::format("the states where a spring holds are not convex at a = {:.6g} "
                                  "m: it holds at (elongation, u_x) = ({:.6g}, {:.6g}) m and "
                                  "({:.6g}, {:.6g}) m but not half way, margin {:.6g}",

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "detachment/mode_dependent_criterion.hpp"
 #include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/part_examples.hpp"
 #include "engine/run/run_scene.hpp"
@@ -105,5 +106,20 @@ TEST(CriterionContract, RunStopsWithTheCriterionsName) {
     const std::string m = message([&] { mdrsim::run_scene(scene, mdrsim::ObserverList{}); });
     EXPECT_NE(m.find("detachment criterion 'relapsing' breaks the contract"), std::string::npos)
         << m;
+  }
+}
+
+// Mode-dependent with lambda = 0 holds where E* e^2 < 2 pi a dgamma whatever u_x: the grid's
+// elongation of one Hess elongation lies on its boundary, where the margin is a difference of
+// equal terms, zero to their rounding. Its sign there is rounding, not a broken contract, at
+// any scale: the check weighs rounding against the margin at rest, 2 pi a dgamma (the fuzzer's
+// input: R = 1.1e-302 m, a = 2e-103 m, margins of 1e-101 J/m and rounding of 1e-117).
+TEST(CriterionContract, RoundingOnTheHoldingBoundaryIsNoBreak) {
+  mdrsim::Material material = mdrsim::Material::from_youngs_modulus(1e6, 0.0, 5.05);
+  material.effective_shear_modulus = 1.5e6;  // the fuzzer's input gives E* and G* apart
+  const mdrsim::ModeDependentCriterion criterion(material, 0.0);
+  for (const double a : {2.02733e-103, 1e-60, 1e-20, 5e-4, 1e3}) {
+    SCOPED_TRACE(a);
+    EXPECT_NO_THROW(mdrsim::check_criterion_contract(criterion, "mode-dependent", material, a));
   }
 }
