@@ -1,7 +1,8 @@
 // The ripple integrals of the wavy profile's image, by power series or Bessel sums.
 #include "profiles/wavy_image.hpp"
 
-#include <boost/math/special_functions/bessel.hpp>
+#include <math.h>  // y0, y1 (POSIX)
+
 #include <cmath>
 #include <numbers>
 
@@ -12,8 +13,8 @@ namespace {
 constexpr double kSeriesBelow = 1.0;
 /// From this z on, Y_0, Y_1 and the asymptotic series (below): Miller's recurrence costs z steps
 /// per call, and a ripple of 2e-9 m in a contact of 5e-4 m (z = 1.6e6) made a preload's
-/// quadrature take minutes (a fuzzer's input).
-constexpr double kAsymptoticFrom = 100.0;
+/// quadrature take minutes (a fuzzer's input); a rippled contact's disk check asks millions.
+constexpr double kAsymptoticFrom = 32.0;
 
 RippleIntegrals by_series(double z) {
   // term_j = (-1)^j z^(2j+1) / ((2j+1)!!)^2; the slope's term is (2j+1) term_j / z.
@@ -64,19 +65,37 @@ RippleIntegrals by_bessel_sums(double z) {
   return {2.0 * odd_sum / norm, (at + 2.0 * even_sum) / norm};
 }
 
-/// Large z: I = (pi/2) H_0 and I' = 1 - (pi/2) H_1 with the Struve functions' expansions
-/// (Abramowitz and Stegun 12.1.31), H_0 - Y_0 ~ (2/pi) (1/z - 1/z^3 + 9/z^5 - 225/z^7 + ...) and
-/// H_1 - Y_1 ~ (2/pi) (1 + 1/z^2 - 3/z^4 + 45/z^6 - 1575/z^8 + ...):
-///   I = (pi/2) Y_0 + 1/z - 1/z^3 + 9/z^5 - 225/z^7 + 11025/z^9,
-///   I' = -(pi/2) Y_1 - 1/z^2 + 3/z^4 - 45/z^6 + 1575/z^8;
-/// at z = 100 the first terms left out are 893025/z^11 and 99225/z^10, below 1e-15.
+/// Large z: I = (pi/2) H_0 and I' = 1 - (pi/2) H_1 with the Struve functions' asymptotic
+/// expansions (Abramowitz and Stegun 12.1.31),
+///   H_0 - Y_0 ~ (2/pi) sum_k (-1)^k ((2k-1)!!)^2 / z^(2k+1)              (1/z - 1/z^3 + 9/z^5
+///   ...), H_1 - Y_1 ~ (2/pi) (1 + sum_k>=1 (-1)^(k+1) (2k-1)!! (2k-3)!! / z^(2k))  (1 + 1/z^2 -
+///   3/z^4 ...),
+/// so I = (pi/2) Y_0 + S_0 and I' = -(pi/2) Y_1 + S_1 with S_1 = -1/z^2 + 3/z^4 - 45/z^6 ...
+/// Each series is summed until its terms fall below 1e-17 or start to grow (they shrink while
+/// 2k < z): from z = 32 the smallest term is below 1e-15.
 RippleIntegrals asymptotic(double z) {
   const double w = 1.0 / (z * z);
-  const double tail = (1.0 / z) * (1.0 + w * (-1.0 + w * (9.0 + w * (-225.0 + w * 11025.0))));
-  const double tail_slope = w * (-1.0 + w * (3.0 + w * (-45.0 + w * 1575.0)));
+  double term = 1.0 / z;  // (-1)^k ((2k-1)!!)^2 / z^(2k+1)
+  double value_tail = term;
+  for (int k = 1; k < 64; ++k) {
+    const double odd = 2.0 * k - 1.0;
+    const double next = -term * odd * odd * w;
+    if (std::abs(next) >= std::abs(term) || std::abs(next) < 1e-17) break;
+    term = next;
+    value_tail += term;
+  }
+  term = -w;  // (-1)^k (2k-1)!! (2k-3)!! / z^(2k), from k = 1
+  double slope_tail = term;
+  for (int k = 1; k < 64; ++k) {
+    const double next = -term * (2.0 * k + 1.0) * (2.0 * k - 1.0) * w;
+    if (std::abs(next) >= std::abs(term) || std::abs(next) < 1e-17) break;
+    term = next;
+    slope_tail += term;
+  }
   const double half_pi = 0.5 * std::numbers::pi;
-  return {half_pi * boost::math::cyl_neumann(0, z) + tail,
-          -half_pi * boost::math::cyl_neumann(1, z) + tail_slope};
+  // The C library's Y_0 and Y_1 in double (POSIX y0, y1): Boost's, promoted to long double,
+  // cost ten times as much, and the disk check of a rippled contact asks millions of times.
+  return {half_pi * ::y0(z) + value_tail, -half_pi * ::y1(z) + slope_tail};
 }
 
 }  // namespace
