@@ -61,11 +61,11 @@ double FrictionRow::limit_glued_springs() {
     dissipated += slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
     const bool sliding = state.sliding != 0;
     if (was_sliding && !sliding) {
-      --own_sliding_;
-      add_sticking(i, false);
+      remove_sliding(i);
+      add_sticking(i);
     } else if (!was_sliding && sliding) {
-      remove_sticking(i, false);
-      ++own_sliding_;
+      remove_sticking(i);
+      add_sliding(i);
     }
   }
   return 2.0 * dissipated;
@@ -73,7 +73,7 @@ double FrictionRow::limit_glued_springs() {
 
 CoulombSpring FrictionRow::spring(std::int64_t i) const {
   CoulombSpring state = springs_[index(i)].state;
-  if (i > glued_ && state.sliding != 0 && !individual_)
+  if (keyed(i) && state.sliding != 0)
     state.offset = tangential_ - state.sliding * ratio_ * (indentation_ - springs_[index(i)].image);
   return state;
 }
@@ -84,11 +84,11 @@ double FrictionRow::limit_sum(std::size_t s, double indentation) const {
          (count * indentation - slider_images_[s].value());
 }
 
-void FrictionRow::add_sticking(std::int64_t i, bool keyed, int stuck_from) {
+void FrictionRow::add_sticking(std::int64_t i, int stuck_from) {
   const Spring& s = springs_[index(i)];
   ++sticking_;
   sticking_offsets_.add(s.state.offset);
-  if (!keyed) return;
+  if (!keyed(i)) return;
   double forward = s.state.offset - ratio_ * s.image;
   double backward = s.state.offset + ratio_ * s.image;
   // A slider sticks where its p reverses: that p is its key on the side it slid to, the same
@@ -99,20 +99,28 @@ void FrictionRow::add_sticking(std::int64_t i, bool keyed, int stuck_from) {
   keys_.insert(i, forward, backward);
 }
 
-void FrictionRow::remove_sticking(std::int64_t i, bool keyed) {
+void FrictionRow::remove_sticking(std::int64_t i) {
   const Spring& s = springs_[index(i)];
   --sticking_;
   sticking_offsets_.add(-s.state.offset);
-  if (keyed) keys_.erase(i);
+  if (keyed(i)) keys_.erase(i);
 }
 
 void FrictionRow::add_sliding(std::int64_t i) {
+  if (!keyed(i)) {
+    ++own_sliding_;
+    return;
+  }
   const Spring& s = springs_[index(i)];
   sliders_[side(s.state.sliding)].insert(i);
   slider_images_[side(s.state.sliding)].add(s.image);
 }
 
 void FrictionRow::remove_sliding(std::int64_t i) {
+  if (!keyed(i)) {
+    --own_sliding_;
+    return;
+  }
   const Spring& s = springs_[index(i)];
   sliders_[side(s.state.sliding)].erase(i);
   slider_images_[side(s.state.sliding)].add(-s.image);
@@ -131,20 +139,16 @@ void FrictionRow::touch(double image, double tangential) {
     const SlipLimit limit = settings_.law->limit_at(position(in_contact()), spacing_);
     laws_.push_back({limit.coefficient, limit.constant});
   }
-  add_sticking(in_contact(), !individual_);
+  add_sticking(in_contact());
 }
 
 void FrictionRow::lift_outer() {
   const std::int64_t i = in_contact();
   if (i <= glued_) throw std::logic_error("FrictionRow::lift_outer: spring m is glued");
   if (springs_[index(i)].state.sliding != 0) {
-    if (individual_) {
-      --own_sliding_;
-    } else {
-      remove_sliding(i);
-    }
+    remove_sliding(i);
   } else {
-    remove_sticking(i, !individual_);
+    remove_sticking(i);
   }
   springs_.pop_back();
   if (individual_) laws_.pop_back();
@@ -156,9 +160,9 @@ void FrictionRow::glue_next() {
   const std::int64_t i = glued_ + 1;
   if (springs_[index(i)].state.sliding != 0)
     throw std::logic_error("FrictionRow::glue_next: spring k+1 slides");
-  remove_sticking(i, !individual_);
+  remove_sticking(i);
   ++glued_;
-  add_sticking(i, false);
+  add_sticking(i);
   // Every glued spring's adhesive limit grows with a_g: nothing slips, sliders stick.
   if (own_sliding_ > 0) limit_glued_springs();
 }
@@ -172,21 +176,17 @@ double FrictionRow::let_go_boundary(double indentation, double tangential) {
   // A glued coulomb spring sliding at its glued limit sticks for the moment: its offset is
   // up to date (the glued springs are advanced spring by spring).
   if (s.state.sliding != 0) {
-    --own_sliding_;
+    remove_sliding(i);
     s.state.sliding = 0;
   } else {
-    remove_sticking(i, false);
+    remove_sticking(i);
   }
   --glued_;
   const double dissipated = slip_to_limit(s.state, *law(i), geometry(i), indentation, tangential);
   if (s.state.sliding != 0) {
-    if (individual_) {
-      ++own_sliding_;
-    } else {
-      add_sliding(i);
-    }
+    add_sliding(i);
   } else {
-    add_sticking(i, !individual_);
+    add_sticking(i);
   }
   // The glued springs' adhesive limits fall with a_g: those over theirs slip at once.
   return 2.0 * dissipated + limit_glued_springs();
@@ -300,21 +300,21 @@ void FrictionRow::apply(const RowFrictionEvent& event) {
   Spring& s = springs_[index(i)];
   const FrictionEventKind kind = event.event.kind;
   if (kind == FrictionEventKind::limit_kink) return;
-  if (i <= glued_ || individual_) {
+  if (!keyed(i)) {
     if (kind == FrictionEventKind::slip && s.state.sliding == 0) {
-      remove_sticking(i, false);
-      ++own_sliding_;
+      remove_sticking(i);
+      add_sliding(i);
     } else if (kind == FrictionEventKind::stick && s.state.sliding != 0) {
-      --own_sliding_;
+      remove_sliding(i);
       apply_friction_event(s.state, event.event);
-      add_sticking(i, false);
+      add_sticking(i);
       return;
     }
     apply_friction_event(s.state, event.event);
     return;
   }
   if (kind == FrictionEventKind::slip && s.state.sliding == 0) {
-    remove_sticking(i, true);
+    remove_sticking(i);
     s.state.sliding = event.event.direction;
     add_sliding(i);
   } else if (kind == FrictionEventKind::stick && s.state.sliding != 0) {
@@ -322,7 +322,7 @@ void FrictionRow::apply(const RowFrictionEvent& event) {
     s.state.offset = spring(i).offset;
     const int direction = s.state.sliding;
     s.state.sliding = 0;
-    add_sticking(i, true, direction);
+    add_sticking(i, direction);
   }
 }
 

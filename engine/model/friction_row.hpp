@@ -137,9 +137,14 @@ class FrictionRow {
   /// After a_g changed: every glued spring within its new limit sticks, one over it slips to it
   /// at once. Returns the work dissipated on both halves [J]; O(k), with tau_0 > 0 only.
   double limit_glued_springs();
-  /// `stuck_from`: the direction of the slide that just ended (0: none).
-  void add_sticking(std::int64_t i, bool keyed, int stuck_from = 0);
-  void remove_sticking(std::int64_t i, bool keyed);
+  /// Whether spring i is on the slip keys and sliders: not glued, under Coulomb's one
+  /// coefficient. The others (own_springs()) go one by one, counted in own_sliding_.
+  bool keyed(std::int64_t i) const { return i > glued_ && !individual_; }
+  /// Each keeps the sums, and the keys or sliders of a keyed spring, as spring i joins or leaves
+  /// the sticking (sliding) springs; `stuck_from`: the direction of the slide that just ended
+  /// (0: none).
+  void add_sticking(std::int64_t i, int stuck_from = 0);
+  void remove_sticking(std::int64_t i);
   void add_sliding(std::int64_t i);
   void remove_sliding(std::int64_t i);
   std::int64_t first_own_sliding() const;  ///< of own_springs(); 0 when none
