@@ -54,18 +54,21 @@ double FrictionRow::limit_glued_springs() {
   double dissipated = 0.0;
   for (std::int64_t i = 1; i <= glued_; ++i) {
     CoulombSpring& state = springs_[index(i)].state;
-    const bool was_sliding = state.sliding != 0;
+    // Every glued spring leaves its set and joins the one it ends in, so that the sticking
+    // offsets lose the offset they hold, before the slip moves it.
+    if (state.sliding != 0) {
+      remove_sliding(i);
+    } else {
+      remove_sticking(i);
+    }
     // Within its new limit a spring sticks where it is (a slide goes on only at the limit);
     // over it, it slips to the limit at once.
     state.sliding = 0;
     dissipated += slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
-    const bool sliding = state.sliding != 0;
-    if (was_sliding && !sliding) {
-      remove_sliding(i);
-      add_sticking(i);
-    } else if (!was_sliding && sliding) {
-      remove_sticking(i);
+    if (state.sliding != 0) {
       add_sliding(i);
+    } else {
+      add_sticking(i);
     }
   }
   return 2.0 * dissipated;

@@ -202,6 +202,36 @@ TEST(FrictionRow, ALetGoLowersEveryGluedSpringsShearStrength) {
   EXPECT_EQ(row.springs_sliding(), n);
 }
 
+// Part of a glued `coulomb` contact sticks (partial slip); each let-go lowers every glued
+// spring's strength, so sticking springs over their new limit slip at once. F_x from the row's
+// sums must stay the sum of each spring's own force, let-go after let-go (the sticking offsets
+// once lost the new offset of such a spring, not the one they held: 4e-5 of F_x after 3).
+TEST(FrictionRow, StickingGluedSpringsThatSlipAtALetGoLeaveTheSumsRight) {
+  const std::int64_t n = 200;
+  const double tau0 = 0.25 * kMu * kModulus * kD / kA;
+  FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedLaw::coulomb, tau0});
+  for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
+  const double u = 0.3 * (kMu * kModulus * kD + 2.0 * tau0 * kA) / kShearModulus;
+  double work = 0.0;
+  drive(row, shear(0.0, u), 1.0, work);
+  const double kx = kShearModulus * kA / static_cast<double>(n);
+  for (int go = 1; go <= 150; ++go) {
+    row.let_go_boundary(kD, u);
+    double each = 0.0;
+    for (std::int64_t i = 1; i <= n; ++i) {
+      if (i <= row.glued()) {
+        each += 2.0 * kx * row.glued_stretch(i, kD, u);
+        continue;
+      }
+      const mdrsim::CoulombSpring s = row.spring(i);
+      each +=
+          2.0 * (s.sliding != 0 ? s.sliding * mdrsim::slip_limit(*row.law(i), row.geometry(i), kD)
+                                : kx * (u - s.offset));
+    }
+    ASSERT_NEAR(row.tangential_force(kD, u), each, 1e-12 * std::abs(each)) << "let-go " << go;
+  }
+}
+
 TEST(FrictionRow, MindlinDeresiewiczBranchesAndLoopEnergy) {
   const std::int64_t n = 1000;
   const double dx = kA / static_cast<double>(n);
