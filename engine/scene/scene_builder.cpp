@@ -283,10 +283,6 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
 /// `discretization.rtol` with no `method`: the continuum route wherever it answers the scene
 /// (docs/continuum.md "Which route rtol takes"), else the row. The resolved scene then leaves
 /// `method` out, as the input did, so that rerunning it takes the same route.
-/// A shorthand on the row whose spacing cannot follow the profile's shortest feature (a ripple
-/// 2e-9 m long in a contact of 5e-4 m on 2000 springs: its disk check alone took a minute, and
-/// its numbers would be the aliasing of the ripple): refused at the profile's type. The finest
-/// row: scene.springs (2 springs under Richardson), or max_row_springs under rtol.
 void choose_continuum_route(Scene& scene, nlohmann::json& resolved, const std::string& rtol_at) {
   if (!scene.discretization.rtol ||
       scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::automatic ||

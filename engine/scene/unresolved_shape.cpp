@@ -4,16 +4,21 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
+namespace {
 
+/// The springs of a scene's finest row: rtol's largest row, Richardson's 2N, or N.
 std::int64_t finest_row_springs(const Scene& scene) {
   if (scene.discretization.rtol) return scene.discretization.max_row_springs;
   if (scene.discretization.richardson()) return 2 * scene.springs;
   return scene.springs;
 }
+
+}  // namespace
 
 void refuse_unresolved_shape(const Scene& scene, double radius, const char* radius_name) {
   const auto feature = scene.profile->shortest_feature();

@@ -1,15 +1,9 @@
 // A row too coarse for the profile's shortest feature (a wavy profile's ripple) is refused.
 #pragma once
 
-#include <cstdint>
-#include <string>
-
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {
-
-/// The springs of a scene's finest row: rtol's largest row, Richardson's 2N, or N.
-std::int64_t finest_row_springs(const Scene& scene);
 
 /// Throws SceneError at `scene.profile_at` (profile.type) where the finest row's spacing over
 /// `radius` [m] (the contact radius the rows span, named `radius_name` in the message) is more
