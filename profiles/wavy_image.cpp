@@ -65,33 +65,36 @@ RippleIntegrals by_bessel_sums(double z) {
   return {2.0 * odd_sum / norm, (at + 2.0 * even_sum) / norm};
 }
 
+/// The sum of an asymptotic series from its first term, each next term `next(term, k)` for
+/// k = 1, 2, ..., while the terms shrink and are above 1e-17.
+template <class Next>
+double asymptotic_sum(double first, Next next) {
+  double term = first;
+  double sum = first;
+  for (int k = 1; k < 64; ++k) {
+    const double following = next(term, k);
+    if (std::abs(following) >= std::abs(term) || std::abs(following) < 1e-17) break;
+    term = following;
+    sum += term;
+  }
+  return sum;
+}
+
 /// Large z: I = (pi/2) H_0 and I' = 1 - (pi/2) H_1 with the Struve functions' asymptotic
-/// expansions (Abramowitz and Stegun 12.1.31),
-///   H_0 - Y_0 ~ (2/pi) sum_k (-1)^k ((2k-1)!!)^2 / z^(2k+1)              (1/z - 1/z^3 + 9/z^5
-///   ...), H_1 - Y_1 ~ (2/pi) (1 + sum_k>=1 (-1)^(k+1) (2k-1)!! (2k-3)!! / z^(2k))  (1 + 1/z^2 -
-///   3/z^4 ...),
-/// so I = (pi/2) Y_0 + S_0 and I' = -(pi/2) Y_1 + S_1 with S_1 = -1/z^2 + 3/z^4 - 45/z^6 ...
-/// Each series is summed until its terms fall below 1e-17 or start to grow (they shrink while
-/// 2k < z): from z = 32 the smallest term is below 1e-15.
+/// expansions (Abramowitz and Stegun 12.1.31):
+///   H_0 - Y_0 ~ (2/pi) sum_k>=0 (-1)^k ((2k-1)!!)^2 / z^(2k+1),
+///   H_1 - Y_1 ~ (2/pi) (1 + sum_k>=1 (-1)^(k+1) (2k-1)!! (2k-3)!! / z^(2k)),
+/// so I = (pi/2) Y_0 + S_0 with S_0 = 1/z - 1/z^3 + 9/z^5 - ..., and I' = -(pi/2) Y_1 + S_1
+/// with S_1 = -1/z^2 + 3/z^4 - 45/z^6 + .... The terms shrink while 2k < z: from z = 32 the
+/// smallest is below 1e-15.
 RippleIntegrals asymptotic(double z) {
   const double w = 1.0 / (z * z);
-  double term = 1.0 / z;  // (-1)^k ((2k-1)!!)^2 / z^(2k+1)
-  double value_tail = term;
-  for (int k = 1; k < 64; ++k) {
+  const double value_tail = asymptotic_sum(1.0 / z, [w](double term, int k) {
     const double odd = 2.0 * k - 1.0;
-    const double next = -term * odd * odd * w;
-    if (std::abs(next) >= std::abs(term) || std::abs(next) < 1e-17) break;
-    term = next;
-    value_tail += term;
-  }
-  term = -w;  // (-1)^k (2k-1)!! (2k-3)!! / z^(2k), from k = 1
-  double slope_tail = term;
-  for (int k = 1; k < 64; ++k) {
-    const double next = -term * (2.0 * k + 1.0) * (2.0 * k - 1.0) * w;
-    if (std::abs(next) >= std::abs(term) || std::abs(next) < 1e-17) break;
-    term = next;
-    slope_tail += term;
-  }
+    return -term * odd * odd * w;
+  });
+  const double slope_tail = asymptotic_sum(
+      -w, [w](double term, int k) { return -term * (2.0 * k + 1.0) * (2.0 * k - 1.0) * w; });
   const double half_pi = 0.5 * std::numbers::pi;
   // The C library's Y_0 and Y_1 in double (POSIX y0, y1): Boost's, promoted to long double,
   // cost ten times as much, and the disk check of a rippled contact asks millions of times.

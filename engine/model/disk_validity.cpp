@@ -20,9 +20,10 @@ constexpr double kOuterFactor = 10.0;  ///< the gap is checked out to 10 a
 /// halves sum to its own value within its share of 1e-12 of `scale` (by width) is done, down
 /// to 1/1024 of the interval. That difference is the error of the panel itself: its halves,
 /// the value kept, are more accurate by far (the tests hold Hertz's, JKR's and power laws'
-/// displacement to 1e-12 of the depth, against a check whose threshold is 1e-9). Smooth integrands take a panel and its two halves; a kink (a
-/// table's knot, a profile's corner) or an oscillation (a wavy image) is refined where it is,
-/// not over the whole interval (halving every panel took a kinked table's check a second).
+/// displacement to 1e-12 of the depth, against a check whose threshold is 1e-9). Smooth
+/// integrands take a panel and its two halves; a kink (a table's knot, a profile's corner) or
+/// an oscillation (a wavy image) is refined where it is, not over the whole interval (halving
+/// every panel took a kinked table's check a second).
 template <class F>
 double integral(F f, double lo, double hi, double scale) {
   constexpr int kDeepest = 10;
