@@ -42,7 +42,7 @@ void check_at(const DetachmentCriterion& criterion, std::string_view name, const
   };
   std::vector<Point> holding;
   // The criterion holds at rest (its contract): the size of the terms its margins subtract.
-  const double at_rest = std::max(criterion.margin({0.0, 0.0, a}), 0.0);
+  const double at_rest = std::max(margin_at_rest(criterion, 0.0, a), 0.0);
   for (const double ut : kTangentials) {
     const double u = ut * u_scale;
     double previous = 0.0;
