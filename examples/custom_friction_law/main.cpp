@@ -24,7 +24,7 @@ class LubricatedCentre final : public mdrsim::FrictionLaw {
   LubricatedCentre(double inner, double outer, double radius)
       : inner_(inner), outer_(outer), radius_(radius) {}
   mdrsim::SlipLimit limit_at(double x, double /*spacing*/) const override {
-    return {x < radius_ ? inner_ : outer_, 0.0};
+    return {coefficient(x), 0.0};
   }
   double coefficient(double x) const { return x < radius_ ? inner_ : outer_; }
   double inner_radius() const { return radius_; }
