@@ -66,7 +66,7 @@ class ElongationScales {
 ///    let-go in between, and the spring is found to hold where it had let go.
 /// The engine samples both on a grid at the run's radii before a run (criterion_contract.hpp)
 /// and stops with an error naming the criterion where they fail. Every built-in criterion
-/// satisfies them (tests/engine/run/criterion_contract_test.cpp).
+/// satisfies them (tests/engine/model/criterion_contract_test.cpp).
 class DetachmentCriterion {
  public:
   virtual ~DetachmentCriterion() = default;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The layout rules, checked in CI (scripts/test.sh): the folders' #include "..." graph has no
-# circle; the parts (profiles/, detachment/, controllers/, friction/) include nothing of engine/ but its
+# circle; the engine's wings include no other wing (below); the parts (profiles/, detachment/, controllers/, friction/) include nothing of engine/ but its
 # vocabulary, engine/base/; nothing below the outputs includes engine/output/; only tests and
 # bench include engine/reference/; nothing but apps/ includes apps/; bench/ includes no tests/.
 set -euo pipefail
@@ -27,6 +27,22 @@ refuse "bench/ may not include tests/ (the shared oracles live in engine/referen
   "$(includes bench | grep '#include "tests/' || true)"
 refuse "the outputs sit above the engine: engine/ includes engine/output/ only from output/ itself:" \
   "$(includes engine | grep '#include "engine/output/' | grep -v '^engine/output/' || true)"
+
+# The engine's wings: pull_off/ (the shorthand's row), program/ (a program's row) and continuum/
+# (the branch with no springs) are three engines side by side; none includes another, nor the
+# accuracy drivers above them (accuracy/) or the entry (run/). accuracy/ may take any wing, not
+# run/; the folders below the wings (base, scene, model, events, result) include none of them.
+wings=(pull_off program continuum)
+for wing in "${wings[@]}"; do
+  others="$(printf '%s\n' "${wings[@]}" accuracy run | grep -vx "$wing" | paste -sd'|')"
+  refuse "engine/$wing/ is a wing: it may not include another wing, accuracy/ or run/:" \
+    "$(includes "engine/$wing" | grep -E "#include \"engine/($others)/" || true)"
+done
+refuse "engine/accuracy/ sits above the wings and below the entry: it may not include run/:" \
+  "$(includes engine/accuracy | grep '#include "engine/run/' || true)"
+refuse "the folders below the wings (base, scene, model, events, result) may not include a wing, accuracy/ or run/:" \
+  "$(includes engine/base engine/scene engine/model engine/events engine/result |
+     grep -E '#include "engine/(pull_off|program|continuum|accuracy|run)/' || true)"
 
 # The folder graph: each engine/ subfolder a node, and apps, python/src, controllers, detachment,
 # profiles, friction; an edge for every #include "..." from one node into another. A circle is refused
@@ -80,5 +96,5 @@ cycles="$(includes "${nodes[@]%/}" | awk '
 refuse "the folder include graph has a circle (a folder may not include one that includes it back):" \
   "$cycles"
 
-[ "$status" -eq 0 ] && echo "check_includes: no folder circle; parts include only engine/base/; outputs above the engine; engine/reference/ for tests and bench; apps/ for itself; bench/ no tests/"
+[ "$status" -eq 0 ] && echo "check_includes: no folder circle; no wing includes another; parts include only engine/base/; outputs above the engine; engine/reference/ for tests and bench; apps/ for itself; bench/ no tests/"
 exit "$status"

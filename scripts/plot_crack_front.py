@@ -19,7 +19,7 @@ Checks (exit 1 on a wrong number, 2 on missing input; never for timing):
     1e-6 relative at rtol 1e-6 and within 3/N on the trajectory's row of N springs;
   - every amplitude: the rtol run says rtol is met, and the row of N springs lies within 3/N of
     it (the row's O(1/N)). The rtol values for A = 0.1 and 0.2 are held to an independent front
-    tracker in tests/engine/run/radial_loop_test.cpp (within 1e-6, measured 4e-11..2e-8).
+    tracker in tests/engine/program/radial_loop_test.cpp (within 1e-6, measured 4e-11..2e-8).
 Draws DIR/crack_front.png and .svg: F against d for each amplitude, jumps dashed.
 """
 

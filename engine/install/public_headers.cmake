@@ -31,10 +31,10 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/scene/scene_error.hpp
     # the run and its result
     engine/run/run_scene.hpp
-    engine/run/pull_off.hpp
+    engine/pull_off/pull_off.hpp
     engine/result/run_result.hpp
     engine/result/program_records.hpp
-    engine/methods/run_counts.hpp
+    engine/result/run_counts.hpp
     engine/model/contact_snapshot.hpp
     engine/model/jkr_scales.hpp
     engine/model/dimensionless_scales.hpp

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "engine/base/material.hpp"
-#include "engine/run/pull_off.hpp"
+#include "engine/pull_off/pull_off.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "engine/events/event.hpp"
-#include "engine/methods/run_counts.hpp"
 #include "engine/model/contact_snapshot.hpp"
 #include "engine/result/program_records.hpp"
+#include "engine/result/run_counts.hpp"
 
 namespace mdrsim {
 

@@ -7,21 +7,21 @@
 #include <chrono>
 #include <cmath>
 
+#include "engine/accuracy/adaptive_resolution.hpp"
+#include "engine/accuracy/program_resolution.hpp"
+#include "engine/accuracy/resolution_warning.hpp"
+#include "engine/accuracy/row_sequence.hpp"
+#include "engine/accuracy/shorthand_accuracy.hpp"
 #include "engine/base/zero_scale.hpp"
+#include "engine/continuum/run_continuum.hpp"
+#include "engine/continuum/run_continuum_program.hpp"
 #include "engine/events/cascade_buffer.hpp"
-#include "engine/run/adaptive_resolution.hpp"
-#include "engine/run/criterion_contract.hpp"
+#include "engine/model/criterion_contract.hpp"
+#include "engine/program/run_program.hpp"
+#include "engine/pull_off/pull_off.hpp"
+#include "engine/result/status_margin.hpp"
 #include "engine/run/disk_states.hpp"
-#include "engine/run/program_resolution.hpp"
-#include "engine/run/pull_off.hpp"
-#include "engine/run/resolution_warning.hpp"
-#include "engine/run/row_sequence.hpp"
-#include "engine/run/run_continuum.hpp"
-#include "engine/run/run_continuum_program.hpp"
-#include "engine/run/run_program.hpp"
-#include "engine/run/shorthand_accuracy.hpp"
 #include "engine/run/shorthand_as_program.hpp"
-#include "engine/run/status_margin.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "engine/run/pull_off.hpp"
+#include "engine/pull_off/pull_off.hpp"
 
 namespace mdrsim {
 

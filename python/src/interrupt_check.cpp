@@ -3,7 +3,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "engine/run/progress_log.hpp"
+#include "engine/events/progress_log.hpp"
 
 namespace py = pybind11;
 

@@ -8,7 +8,7 @@ namespace mdrsim::python {
 void remember_main_thread();
 
 /// While alive, runs of this thread (the GIL released) look for a pending signal every few
-/// milliseconds (engine/run/progress_log.hpp) and stop with the exception its Python handler
+/// milliseconds (engine/events/progress_log.hpp) and stop with the exception its Python handler
 /// raises: KeyboardInterrupt for Ctrl-C. Nothing on any other thread. Made with the GIL held.
 class InterruptibleRun {
  public:

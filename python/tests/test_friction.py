@@ -96,7 +96,7 @@ def test_closed_forms_agree_with_the_scene_files_comment():
 def test_load_stage_ends_on_cattaneo_mindlin(fretting):
     # The row's d under the fixed load and its sums over springs (a monotone line load summed
     # at spacing dx = a/N) are each off by O(1/N): F_x within 4/N of mu F_z, as
-    # tests/engine/run/program_examples_test.cpp holds the command's run.
+    # tests/engine/program/program_examples_test.cpp holds the command's run.
     end = stage(fretting, "load").end
     assert end.tangential_force == pytest.approx(CLOSED.loading(AMPLITUDE),
                                                  abs=4 / SPRINGS * CLOSED.limit)

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "engine/output/trajectory_csv.hpp"
+#include "engine/pull_off/pull_off.hpp"
 #include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
-#include "engine/run/pull_off.hpp"
 
 namespace ref = mdrsim::parabolic_reference;
 using mdrsim::test::JkrScenario;

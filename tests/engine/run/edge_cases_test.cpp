@@ -18,10 +18,10 @@
 
 #include "detachment/mode_mixed_criterion.hpp"
 #include "engine/events/event_recorder.hpp"
+#include "engine/pull_off/pull_off.hpp"
 #include "engine/reference/jkr_scenario.hpp"
 #include "engine/reference/parabolic_reference.hpp"
 #include "engine/reference/part_examples.hpp"
-#include "engine/run/pull_off.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
 

@@ -1,0 +1,30 @@
+// The shorthand's stages, jumps and works estimated as a program's (path_estimates.hpp): from
+// its Richardson rows, or refined across the glued radius under rtol.
+#pragma once
+
+#include <vector>
+
+#include "engine/base/zero_scale.hpp"
+#include "engine/pull_off/pull_off.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace mdrsim {
+
+/// Richardson's rows of N/2, N and 2N springs across the glued radius, each with its path
+/// recorded (RowSpec::record_path), combined into `result` (the finest row, its critical
+/// point and peak already combined by RowSequence): every stage end, jump and work by the
+/// rule programs use, with its estimate, and `covers` listing them. Rows that end differently
+/// along the path leave the finest row's values without estimates, and a warning says so.
+void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result);
+
+/// Under rtol: rows of 512, 1024, ... springs across the glued radius with their paths
+/// recorded, doubled until every stage end's, jump's and work's estimate meets rtol (the
+/// critical point and peak stay as the zoom refined them); their values and estimates go into
+/// `result`. Where they do not meet it, a warning says which and `covers` leaves them out.
+void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result);
+
+/// What is zero on the shorthand's rows (zero_scale.hpp): its glued radius, its image there and
+/// its preload force, as program_zero_scale gives it for a program's frame.
+ZeroScale shorthand_zero_scale(const Scene& scene);
+
+}  // namespace mdrsim

@@ -1,0 +1,265 @@
+// The row of a program: N springs across the largest contact radius a_max it reaches. A pilot
+// row of 256 springs finds where the contact is largest; a_max is then the continuum front at
+// that depth, so that a program pressing to a depth d gets the row of the shorthand's preload.
+#include "engine/program/run_program.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "engine/base/bracketed_root.hpp"
+#include "engine/base/hess_scale.hpp"
+#include "engine/model/criterion_contract.hpp"
+#include "engine/program/program_row.hpp"
+#include "engine/program/program_runner.hpp"
+#include "engine/program/stage_motion.hpp"
+#include "engine/scene/unresolved_shape.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr std::int64_t kPilotSprings = 256;
+/// A pilot row ends at this many times its springs: a guess that far off is rescaled.
+constexpr std::int64_t kPilotReach = 64;
+
+/// A first guess of the largest contact radius [m]: the non-adhesive radius at the deepest
+/// depth or largest force the program names where the held value's unit is known statically.
+double guess_radius(const Scene& scene) {
+  const Profile& profile = *scene.profile;
+  const double e_star = scene.material.effective_modulus;
+  double radius = 0.0;
+  double held = 0.0;  // the normal held value, while its unit is known
+  bool known = true;
+  // A program starts under fixed grips (docs: loading programs); the held value keeps its
+  // meaning while the controller holds the same quantity, and the machine end of a spring is
+  // no depth.
+  bool holds_force = false;
+  bool through_spring = false;
+  for (const Stage& stage : scene.program->stages) {
+    if (!stage.normal) continue;
+    const StageAxis& axis = *stage.normal;
+    const bool now_force = axis.controller->holds_force();
+    const bool now_spring = axis.controller->drives_through_spring();
+    if (now_force != holds_force || now_spring != through_spring || now_spring) known = false;
+    holds_force = now_force;
+    through_spring = now_spring;
+    if (axis.motion == StageAxis::Motion::to) known = true;
+    held = held_after(axis, held, stage.until_separation);
+    if (!known || !(held > 0.0)) continue;
+    try {
+      const double a = holds_force ? contact_radius_at_force(profile, held, e_star)
+                                   : profile.contact_radius_at_depth(held);
+      if (std::isfinite(a)) radius = std::max(radius, a);
+    } catch (const std::exception&) {
+      // Out of the profile's reach: the pilot finds out.
+    }
+  }
+  if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
+  if (radius > 0.0) return radius;
+  if (const auto tip = profile.jkr_scale_radius(); tip && scene.material.work_of_adhesion > 0.0) {
+    return std::cbrt(9.0 * std::numbers::pi * *tip * *tip * scene.material.work_of_adhesion /
+                     (8.0 * e_star));
+  }
+  return std::isfinite(profile.outer_radius()) ? 0.5 * profile.outer_radius() : 1e-3;
+}
+
+/// The continuum front at depth d [m]: the x where g(x) - sqrt(2 pi x dgamma_a / E*) = d
+/// for a glued edge, g(x) = d for a pressed one, between the pilot's springs m and m + 1.
+double front_radius(const Scene& scene, const LargestContact& largest, double spacing) {
+  const Profile& profile = *scene.profile;
+  if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
+  if (!largest.glued_edge || scene.material.glues_on_touch()) {
+    return profile.contact_radius_at_depth(largest.indentation);
+  }
+  const auto excess = [&](double x) {
+    return profile.mdr_image(x) - scene.material.advancing_glue_gap(x) - largest.indentation;
+  };
+  const double lo = spacing * static_cast<double>(largest.springs);
+  double hi = lo + spacing;
+  if (!(excess(lo) <= 0.0) || !(excess(hi) > 0.0) || !std::isfinite(excess(hi))) return lo;
+  return bracketed_root(excess, lo, hi);
+}
+
+/// The frame of a front at radius a_max reached at depth d: g there, or the front value it
+/// equals up to rounding, taken down by ulps until the row's own test at d (glue: g_N - d <=
+/// limit, as ProgramRunner::due() has it; touch: g_N - d <= 0) holds, so that spring N is
+/// reached at the deepest point (docs).
+ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
+  const double g = scene.profile->mdr_image(a_max);
+  const double limit = glued_edge ? scene.material.advancing_glue_gap(a_max) : 0.0;
+  double front = indentation + limit;
+  if (!(std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)))) {
+    return {a_max, g};
+  }
+  // Just inside the gluing limit: a reversible front (dgamma_a = dgamma) lets spring N go
+  // again where its gap reaches the same limit, and a tie at the stage's end (the criterion's
+  // rounding against the limit's) must not undo it. 1e-12 of the limit moves g_N no more than
+  // the rounding accepted above.
+  if (glued_edge) front = indentation + limit * (1.0 - 1e-12);
+  for (int i = 0; i < 64 && front - indentation > limit; ++i) {
+    front = std::nextafter(front, -INFINITY);
+  }
+  return {a_max, front};
+}
+
+/// Where every normal stage holds the depth (fixed grips), the deepest depth d_max is known
+/// before the run, and the front there is advancing (a depth never reached before): a_max is
+/// its continuum radius, with no pilot. Nothing where a stage holds a force or pushes on
+/// without end, or the front is not bracketed.
+std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
+  double held = 0.0;
+  double deepest = 0.0;
+  for (const Stage& stage : scene.program->stages) {
+    if (!stage.normal) continue;
+    const StageAxis& axis = *stage.normal;
+    if (!axis.controller->is_fixed_grips()) return std::nullopt;
+    // Pushing on until separation has no deepest point.
+    if (axis.motion == StageAxis::Motion::by && stage.until_separation && axis.value > 0.0) {
+      return std::nullopt;
+    }
+    held = held_after(axis, held, stage.until_separation);
+    deepest = std::max(deepest, held);
+  }
+  const Profile& profile = *scene.profile;
+  if (!(deepest > 0.0) || profile.fixed_contact_radius()) return std::nullopt;
+  // The front glues where the gap reaches sqrt(2 pi x dgamma_a / E*) (0: glue or press on
+  // touch), as ProgramRow's front does.
+  const bool glued_edge = scene.material.adhesive();
+  const auto excess = [&](double x) {
+    return profile.mdr_image(x) - (glued_edge ? scene.material.advancing_glue_gap(x) : 0.0) -
+           deepest;
+  };
+  double hi = 0.0;
+  try {
+    hi = profile.contact_radius_at_depth(deepest);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  for (int i = 0;
+       i < 64 && std::isfinite(hi) && hi <= profile.outer_radius() && !(excess(hi) > 0.0); ++i) {
+    hi *= 2.0;
+  }
+  if (!std::isfinite(hi) || hi > profile.outer_radius() || !(excess(hi) > 0.0)) {
+    return std::nullopt;
+  }
+  const double a_max = bracketed_root(excess, 0.0, hi);
+  if (!(a_max > 0.0)) return std::nullopt;
+  return frame_at(scene, a_max, deepest, glued_edge && !scene.material.glues_on_touch());
+}
+
+/// The continuum front [m] at which the control a_u d + a_F F reaches the held value, with
+/// d = g(a) - l(a) and F = E* (2 int_0^a (g(a) - g) dx - 2 a l(a)) on the advancing branch,
+/// bracketed within a few of the pilot's spacings of its front; nullopt where it is not.
+std::optional<double> continuum_front_reaching_held(const Scene& scene, const HeldDeepest& held,
+                                                    double pilot_front, double pilot_spacing) {
+  const Profile& profile = *scene.profile;
+  const double e_star = scene.material.effective_modulus;
+  const auto excess = [&](double a) {
+    const double limit = held.glued_edge ? scene.material.advancing_glue_gap(a) : 0.0;
+    const double d = profile.mdr_image(a) - limit;
+    const double force = e_star * (profile.nonadhesive_force_per_modulus(a) - 2.0 * a * limit);
+    return held.constraint.displacement_coefficient * d +
+           held.constraint.force_coefficient * force - held.held;
+  };
+  const double lo = std::max(0.5 * pilot_front, pilot_front - 4.0 * pilot_spacing);
+  const double hi = std::min(profile.outer_radius(), pilot_front + 4.0 * pilot_spacing);
+  const double at_lo = excess(lo);
+  const double at_hi = excess(hi);
+  if (!(lo > 0.0) || !std::isfinite(at_lo) || !std::isfinite(at_hi) || !(at_lo < 0.0) ||
+      !(at_hi > 0.0)) {
+    return std::nullopt;
+  }
+  return bracketed_root(excess, lo, hi);
+}
+
+}  // namespace
+
+namespace {
+
+/// The frame's radius and image: without a pilot where the deepest depth is known, else from one.
+ProgramRowFrame located_frame(const Scene& scene) {
+  if (const auto frame = frame_without_pilot(scene)) return *frame;
+  double radius = guess_radius(scene);
+  double pilot_radius = radius;  // the radius of the pilot that found `largest`
+  LargestContact largest;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    largest = {};
+    pilot_radius = radius;
+    const ProgramRowSpec pilot{.reference_radius = radius,
+                               .reference_springs = kPilotSprings,
+                               .reference_image = scene.profile->mdr_image(radius),
+                               .max_springs = kPilotSprings * kPilotReach};
+    const RunResult r = run_program_row(scene, pilot, {}, &largest);
+    const bool outgrew =
+        r.status == RunStatus::step_limit && largest.most_springs >= pilot.max_springs;
+    if (outgrew) {
+      radius *= static_cast<double>(kPilotReach);
+      continue;
+    }
+    if (largest.most_springs == 0 || largest.most_springs >= kPilotSprings / 4) break;
+    radius *= static_cast<double>(largest.most_springs) / static_cast<double>(kPilotSprings);
+  }
+  if (largest.springs == 0) return {radius, scene.profile->mdr_image(radius)};
+  const double a_max = front_radius(scene, largest, pilot_radius / kPilotSprings);
+  ProgramRowFrame frame = frame_at(scene, a_max, largest.indentation, largest.glued_edge);
+  if (largest.normal_constraint.force_coefficient != 0.0 &&
+      !scene.profile->fixed_contact_radius()) {
+    const HeldDeepest held{largest.normal_constraint, largest.normal_held, largest.glued_edge};
+    if (const auto a =
+            continuum_front_reaching_held(scene, held, a_max, pilot_radius / kPilotSprings)) {
+      frame = {*a, scene.profile->mdr_image(*a)};
+      frame.held = held;
+    }
+  }
+  return frame;
+}
+
+}  // namespace
+
+ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
+  double held_force = 0.0;
+  for (const Stage& stage : scene.program->stages) {
+    if (stage.normal && stage.normal->controller->holds_force() &&
+        stage.normal->motion == StageAxis::Motion::to) {
+      held_force = std::max(held_force, std::abs(held_after(*stage.normal, 0.0, false)));
+    }
+  }
+  return zero_scale(scene.material.effective_modulus, radius, image,
+                    scene.material.largest_work_of_adhesion(), held_force);
+}
+
+ProgramRowFrame program_row_frame(const Scene& scene) {
+  ProgramRowFrame frame = located_frame(scene);
+  refuse_unresolved_shape(scene, frame.radius, "largest contact");
+  // Once per run, at the radii it reaches: what the program's let-gos rely on.
+  check_criterion_contract(*scene.criterion, scene.criterion_name, scene.material, frame.radius);
+  frame.zero = program_zero_scale(scene, frame.radius, frame.image);
+  return frame;
+}
+
+ProgramRowSpec program_row(const Scene& scene, const ProgramRowFrame& frame, std::int64_t springs) {
+  double radius = frame.radius;
+  double image = frame.image;
+  if (frame.held) {
+    if (const auto a = row_radius_reaching_held(*scene.profile, scene.material, *frame.held,
+                                                springs, frame.radius)) {
+      radius = *a;
+      image = scene.profile->mdr_image(radius);
+    }
+  }
+  return {.reference_radius = radius,
+          .reference_springs = springs,
+          .reference_image = image,
+          .max_springs = 2 * springs + 64,
+          .zero = frame.zero};
+}
+
+RunResult run_program(const Scene& scene, const ObserverList& observers) {
+  return run_program_row(scene, program_row(scene, program_row_frame(scene), scene.springs),
+                         observers);
+}
+
+}  // namespace mdrsim
