@@ -14,6 +14,7 @@ struct RunOptions {
   std::string trajectory;              ///< CSV path or empty
   std::int64_t trajectory_stride = 1;  ///< every K-th ordinary row (trajectory_stride.hpp)
   std::int64_t samples = 1000;         ///< continuum route: branch points of --trajectory
+  bool plan = false;                   ///< print the route plan and exit
 };
 
 struct SweepOptions {

@@ -145,6 +145,9 @@ int main(int argc, char** argv) {
                    "continuum route: points of the branch in --trajectory, evenly in the contact "
                    "radius (default 1000)")
       ->check(CLI::Range(std::int64_t{2}, std::int64_t{100'000'000}));
+  run_app->add_flag("--plan", run.plan,
+                    "print the route the scene takes (engine, accuracy driver and why) and exit "
+                    "without running");
   run_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 

@@ -1,4 +1,5 @@
 // mdrsim run: one pull-off, its JSON result, trajectory and a short summary.
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
@@ -32,6 +33,11 @@ int run_command(const RunOptions& options) {
   require_distinct_outputs({{"--json", options.json}, {"--trajectory", options.trajectory}},
                            options.scene == "-" ? std::string() : options.scene);
   const SceneDocument document = load_scene_document(options.scene, options.sets);
+  if (options.plan) {
+    const Scene scene = document.build(Registries::builtin());
+    std::fputs(fmt::format("route: {}\n", scene.plan.describe(scene)).c_str(), stdout);
+    return 0;
+  }
   // From here on a signal removes the outputs' temporaries (docs/cli.md "Exit codes").
   install_interrupt_cleanup();
   Scene scene = document.build(Registries::builtin());
@@ -56,6 +62,7 @@ int run_command(const RunOptions& options) {
     }
   }
 
+  spdlog::info("route: {}", scene.plan.describe(scene));
   const RunResult result = run_scene(scene, observers);
   require_finite(scene, result);
   if (stride) stride->finish();

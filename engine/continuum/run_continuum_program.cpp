@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,13 @@
 
 namespace mdrsim {
 namespace {
+
+/// Why the route cannot follow the program past a stage: thrown from deep in the walk, caught
+/// by run_continuum_program, which returns it.
+class CannotFollow : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 /// The glued disk: radius a (0: nothing in contact) at indentation d.
 struct Disk {
@@ -302,7 +310,7 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
       p.end == ContinuumPullOff::End::shear_off_at_application) {
     // The glue breaks unstretched where its springs are pressed in: they stay in contact
     // without glue, a disk the route does not follow.
-    throw ContinuumRouteStops(fmt::format(
+    throw CannotFollow(fmt::format(
         "stage '{}': the tangential load breaks the glue unstretched at a = {:.6g} m with "
         "springs still pressed in, and the continuum route does not follow pressed springs "
         "without glue",
@@ -379,10 +387,8 @@ void emit_samples(const std::vector<std::pair<const Stage*, ContinuumStage*>>& s
   }
 }
 
-}  // namespace
-
-RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t samples,
-                                const ObserverList& observers) {
+RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
+                       const ObserverList& observers) {
   ProgramWalk w;
   w.result.accuracy.route = Accuracy::Route::continuum;
   w.result.status = RunStatus::completed;
@@ -426,7 +432,7 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
       // holding set is convex in (elongation, u_x), and the start holds).
       if (a > 0.0 && scene.criterion->margin(
                          {std::max(s1.stretch, 0.0), s1.tangential_displacement, a}) <= 0.0) {
-        throw ContinuumRouteStops(fmt::format(
+        throw CannotFollow(fmt::format(
             "stage '{}': the tangential load lets the glue go as it is applied (at a = {:.6g} "
             "m), and the continuum route does not follow a front receding under a moving "
             "tangential load",
@@ -540,6 +546,17 @@ RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t sa
         rtol));
   }
   return w.result;
+}
+
+}  // namespace
+
+ContinuumProgramRun run_continuum_program(const Scene& scene, double rtol, std::int64_t samples,
+                                          const ObserverList& observers) {
+  try {
+    return {walk_program(scene, rtol, samples, observers), std::nullopt};
+  } catch (const CannotFollow& stop) {
+    return {RunResult{}, std::string(stop.what())};
+  }
 }
 
 }  // namespace mdrsim

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "engine/events/observer.hpp"
 #include "engine/result/run_result.hpp"
@@ -21,15 +23,15 @@ namespace mdrsim {
 /// moves u_x on the uniformly stretched glue, which the later stages hold. Scenes the route
 /// cannot answer are refused before the run (continuum_program_refusal); where the path
 /// leaves the one glued disk as it runs (the glue let go by a moving shear, or broken
-/// unstretched over pressed springs) it throws ContinuumRouteStops, before emitting any event
-/// (stage ends and samples are emitted once every stage stands).
-RunResult run_continuum_program(const Scene& scene, double rtol, std::int64_t samples,
-                                const ObserverList& observers);
-
-/// Why the continuum route cannot follow a program past a stage (one line, naming it).
-class ContinuumRouteStops : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
+/// unstretched over pressed springs) it says so in `cannot_follow`, before emitting any event
+/// (stage ends and samples are emitted once every stage stands): what to do then is the
+/// route's (engine/run/run_scene.cpp), not the engine's.
+struct ContinuumProgramRun {
+  RunResult result;
+  /// Why the route cannot follow the program past a stage (one line, naming it); empty: done.
+  std::optional<std::string> cannot_follow;
 };
+ContinuumProgramRun run_continuum_program(const Scene& scene, double rtol, std::int64_t samples,
+                                          const ObserverList& observers);
 
 }  // namespace mdrsim

@@ -115,62 +115,86 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (!status_resolved(result)) result.warnings.push_back(cannot_tell_status(result));
 }
 
-/// The run as the scene gives it, without the closing events.
-RunResult run_as_given(const Scene& scene, const ObserverList& observers, std::int64_t samples) {
-  using Extrapolation = DiscretizationOptions::Extrapolation;
+/// The continuum route: one answer to rtol from the branch. A program it finds it cannot follow
+/// as it runs is refused at the key that chose the route (SPEC "Continuum route").
+RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
+                           std::int64_t samples) {
+  const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
+  if (!scene.program) return run_continuum(scene, rtol, samples, observers);
+  ContinuumProgramRun run = run_continuum_program(scene, rtol, samples, observers);
+  if (run.cannot_follow) {
+    throw SceneError(scene.plan.continuum_chosen_at + *run.cannot_follow +
+                     "; use method = \"event\" (docs/continuum.md)");
+  }
+  return std::move(run.result);
+}
+
+RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
   RunResult result;
+  switch (scene.plan.driver) {
+    case RouteDriver::rtol:
+      result = run_program_rtol(scene, *scene.discretization.rtol, observers);
+      break;
+    case RouteDriver::richardson:
+      result = run_program_richardson(scene, observers);
+      break;
+    case RouteDriver::one_row:
+      result = run_program(scene, observers);
+      break;
+  }
+  if (scene.friction && scene.plan.driver != RouteDriver::one_row) {
+    // The stick/slip front is not located between springs (docs/friction.md).
+    result.warnings.push_back(fmt::format(
+        "friction: springs_sliding, stick_radius and dissipated_by_friction are the finest "
+        "row's ({} springs), not covered by {}'s estimates",
+        result.springs, to_string(scene.plan.driver)));
+  }
+  return result;
+}
+
+RunResult run_on_pull_off_row(const Scene& scene, const ObserverList& observers) {
+  using Extrapolation = DiscretizationOptions::Extrapolation;
+  switch (scene.plan.driver) {
+    case RouteDriver::rtol: {
+      std::optional<Accuracy::Route> route;
+      if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;
+      if (scene.discretization.richardson()) route = Accuracy::Route::richardson;
+      RunResult result = run_adaptive(scene, *scene.discretization.rtol, route, observers);
+      refine_shorthand_path(scene, *scene.discretization.rtol, result);
+      return result;
+    }
+    case RouteDriver::richardson:
+      return run_richardson(scene, observers);
+    case RouteDriver::one_row:
+      break;
+  }
+  return run_row(
+      scene, {.springs = scene.springs, .outer_radius = scene.glued_radius, .record_path = true},
+      observers);
+}
+
+/// The run as the scene's plan gives it, without the closing events.
+RunResult run_as_given(const Scene& scene, const ObserverList& observers, std::int64_t samples) {
   // Once per run, at the glued radius; a program checks at the radius its rows reach.
   if (!scene.program) {
     check_criterion_contract(*scene.criterion, scene.criterion_name, scene.material,
                              scene.glued_radius);
   }
-  const bool continuum = scene.solver.method == SolverMethod::continuum;
-  if (continuum) {
-    const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
-    // A program the route cannot follow to its end is refused (SPEC "Continuum route") at the
-    // key that chose the route; the route emits no event before it knows.
-    try {
-      result = scene.program ? run_continuum_program(scene, rtol, samples, observers)
-                             : run_continuum(scene, rtol, samples, observers);
-    } catch (const ContinuumRouteStops& stop) {
-      throw SceneError(scene.solver.continuum_chosen_at + stop.what() +
-                       "; use method = \"event\" (docs/continuum.md)");
-    }
-  } else if (scene.program) {
-    if (scene.discretization.rtol) {
-      result = run_program_rtol(scene, *scene.discretization.rtol, observers);
-    } else if (scene.discretization.richardson()) {
-      result = run_program_richardson(scene, observers);
-    } else {
-      result = run_program(scene, observers);
-    }
-    if (scene.friction && (scene.discretization.rtol || scene.discretization.richardson())) {
-      // The stick/slip front is not located between springs (docs/friction.md).
-      result.warnings.push_back(fmt::format(
-          "friction: springs_sliding, stick_radius and dissipated_by_friction are the finest "
-          "row's ({} springs), not covered by {}'s estimates",
-          result.springs, scene.discretization.rtol ? "rtol" : "richardson"));
-    }
-  } else if (scene.discretization.rtol) {
-    std::optional<Accuracy::Route> route;
-    if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;
-    if (scene.discretization.richardson()) route = Accuracy::Route::richardson;
-    result = run_adaptive(scene, *scene.discretization.rtol, route, observers);
-    refine_shorthand_path(scene, *scene.discretization.rtol, result);
-  } else if (scene.discretization.richardson()) {
-    result = run_richardson(scene, observers);
-  } else {
-    result = run_row(
-        scene, {.springs = scene.springs, .outer_radius = scene.glued_radius, .record_path = true},
-        observers);
-  }
-  if (continuum) {
-    drop_peak_that_never_pulls(scene, result);
-  } else if (scene.program) {
-    warn_program_resolution(scene, result);
-  } else {
-    drop_peak_that_never_pulls(scene, result);
-    warn_resolution(scene, result);
+  RunResult result;
+  switch (scene.plan.engine) {
+    case RouteEngine::continuum:
+      result = run_on_continuum(scene, observers, samples);
+      drop_peak_that_never_pulls(scene, result);
+      break;
+    case RouteEngine::program_row:
+      result = run_on_program_row(scene, observers);
+      warn_program_resolution(scene, result);
+      break;
+    case RouteEngine::pull_off_row:
+      result = run_on_pull_off_row(scene, observers);
+      drop_peak_that_never_pulls(scene, result);
+      warn_resolution(scene, result);
+      break;
   }
   check_disk_states(scene, result);
   result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());
@@ -188,12 +212,18 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers) {
 }
 
 RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int64_t samples) {
+  if (!scene.plan.made) {
+    // A scene built in code rather than read: its route from its fields, as the reader's.
+    Scene planned = scene;
+    plan_route(planned, {.method_given = true});
+    return run_scene(planned, observers, samples);
+  }
   const auto started = std::chrono::steady_clock::now();
   RunResult result;
   if (const std::optional<Scene> as_program = pressed_in_on_a_first_row(scene)) {
     spdlog::info(kAsItsProgram);
     result = run_as_given(*as_program, observers, samples);
-  } else if (scene.shorthand_stages && scene.solver.continuum_by_rtol) {
+  } else if (scene.plan.shorthand_stages && scene.plan.continuum_by_rtol) {
     // rtol alone chose the continuum route: its events wait until it is known to apply.
     CascadeBuffer buffer(observers);
     ObserverList buffered;

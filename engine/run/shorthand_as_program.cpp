@@ -13,18 +13,23 @@ bool ends_pressed_in(const RunResult& result) {
 
 Scene as_its_program(const Scene& scene) {
   Scene as_program = scene;
-  as_program.program = scene.shorthand_stages;
-  as_program.shorthand_stages.reset();
+  as_program.program = scene.plan.shorthand_stages;
   if (as_program.solver.method == SolverMethod::continuum) {
     as_program.solver.method = SolverMethod::event;
-    as_program.solver.continuum_chosen_at.clear();
-    as_program.solver.continuum_by_rtol = false;
   }
+  RoutePlan& plan = as_program.plan;
+  plan.engine = RouteEngine::program_row;
+  plan.reason =
+      "the shorthand's glue lets go with the indenter pressed in: its three stages "
+      "run as a program";
+  plan.continuum_chosen_at.clear();
+  plan.continuum_by_rtol = false;
+  plan.shorthand_stages.reset();
   return as_program;
 }
 
 std::optional<Scene> pressed_in_on_a_first_row(const Scene& scene) {
-  if (scene.program || !scene.shorthand_stages || scene.solver.method == SolverMethod::continuum) {
+  if (scene.plan.engine != RouteEngine::pull_off_row || !scene.plan.shorthand_stages) {
     return std::nullopt;
   }
   const RunResult first = run_row(scene,

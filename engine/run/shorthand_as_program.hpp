@@ -20,7 +20,8 @@ inline constexpr std::int64_t kPressedCheckSprings = 256;
 bool ends_pressed_in(const RunResult& result);
 
 /// The shorthand scene as the program of its three stages, on the event route (where rtol
-/// alone had chosen the continuum route). Needs scene.shorthand_stages.
+/// alone had chosen the continuum route), its plan the program row's. Needs
+/// scene.plan.shorthand_stages.
 Scene as_its_program(const Scene& scene);
 
 /// For a shorthand on the row routes (event or stepping) with its stages: the scene as its

@@ -1,4 +1,4 @@
-// Reads the scene's [friction] table and refuses what the friction engine does not run.
+// Reads the scene's [friction] table: the law, how glued springs slide, the shear strength.
 #include "engine/scene/friction_reader.hpp"
 
 #include <memory>
@@ -6,8 +6,7 @@
 
 namespace mdrsim {
 
-std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene,
-                                              const FrictionLawRegistry& laws) {
+std::optional<FrictionSettings> read_friction(TomlReader& t, const FrictionLawRegistry& laws) {
   const std::string name = t.name("law", laws.names(), std::string("coulomb"));
   check_part_keys(t, "law", name, laws, {"glued", "shear_strength"});
   const auto* entry = laws.find(name);
@@ -42,14 +41,11 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const Scene& scene,
       settings.law || settings.coefficient > 0.0 || settings.glued == GluedLaw::coulomb;
   if (!acts) return std::nullopt;
 
-  // What the friction engine does not run: refused with the reason, never ignored.
-  const std::string key = settings.glued == GluedLaw::coulomb ? "glued"
-                          : settings.law                      ? "law"
-                                                              : "coefficient";
-  if (scene.solver.method != SolverMethod::event) {
-    t.fail_at(key, "friction runs with solver.method = \"event\" only");
-  }
   return settings;
+}
+
+std::string friction_acting_key(const FrictionSettings& settings) {
+  return settings.glued == GluedLaw::coulomb ? "glued" : settings.law ? "law" : "coefficient";
 }
 
 }  // namespace mdrsim

@@ -13,6 +13,7 @@
 #include "engine/base/material.hpp"
 #include "engine/model/friction_settings.hpp"
 #include "engine/scene/program.hpp"
+#include "engine/scene/route_plan.hpp"
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -45,13 +46,6 @@ struct SolverOptions {
   /// radius (the command's --samples with --trajectory); 0: none. Not a scene key.
   std::int64_t samples = 0;
   std::int64_t max_steps = 100'000'000;
-  /// The key that chose the continuum route, "file:line:col: key: " (solver.method, or
-  /// discretization.rtol where rtol alone took the route), for a refusal that only the run
-  /// finds: a program the route cannot follow to its end.
-  std::string continuum_chosen_at;
-  /// discretization.rtol alone took the continuum route (no method given): a shorthand whose
-  /// glue lets go pressed in, which the route does not follow, takes the event route instead.
-  bool continuum_by_rtol = false;
 };
 
 /// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends
@@ -91,10 +85,6 @@ struct Scene {
   /// (preload, tangential, normal) but with friction, where it is the shorthand's three
   /// stages (engine/scene/shorthand_program.hpp).
   std::optional<Program> program;
-  /// The shorthand (without friction) as the same three stages, which the program engine
-  /// runs where the pull-off loop cannot follow the path: a glue that lets go with the
-  /// indenter pressed in (engine/run/shorthand_as_program.hpp).
-  std::optional<Program> shorthand_stages;
   /// Written with the shorthand keys: the preload and its controls are set. With friction
   /// such a scene runs as its three-stage program too (docs/friction.md).
   bool shorthand() const { return normal.controller != nullptr; }
@@ -115,6 +105,8 @@ struct Scene {
   std::int64_t springs = 0;  ///< springs across the glued radius (one half)
   DiscretizationOptions discretization;
   SolverOptions solver;
+  /// The engine and the driver that answer the scene, decided once as it is built.
+  RoutePlan plan;
   /// The scene as built: every key read with its value, defaults included and file paths
   /// absolute; valid scene input that builds this scene again (the JSON result's `scene`).
   std::shared_ptr<const nlohmann::json> resolved;

@@ -13,7 +13,6 @@
 #include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/preload.hpp"
 #include "engine/scene/adhesion_reader.hpp"
-#include "engine/scene/continuum_scope.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/friction_reader.hpp"
 #include "engine/scene/program_reader.hpp"
@@ -21,7 +20,6 @@
 #include "engine/scene/scene_error.hpp"
 #include "engine/scene/shorthand_program.hpp"
 #include "engine/scene/toml_reader.hpp"
-#include "engine/scene/unresolved_shape.hpp"
 
 namespace mdrsim {
 namespace {
@@ -280,24 +278,6 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
   t.finish();
 }
 
-/// `discretization.rtol` with no `method`: the continuum route wherever it answers the scene
-/// (docs/continuum.md "Which route rtol takes"), else the row. The resolved scene then leaves
-/// `method` out, as the input did, so that rerunning it takes the same route.
-void choose_continuum_route(Scene& scene, nlohmann::json& resolved, const std::string& rtol_at) {
-  if (!scene.discretization.rtol ||
-      scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::automatic ||
-      !continuum_answers(scene)) {
-    return;
-  }
-  scene.solver.method = SolverMethod::continuum;
-  scene.solver.continuum_chosen_at = rtol_at;
-  scene.solver.continuum_by_rtol = true;
-  if (auto solver = resolved.find("solver"); solver != resolved.end()) {
-    solver->erase("method");
-    if (solver->empty()) resolved.erase(solver);
-  }
-}
-
 }  // namespace
 
 Scene build_scene(const toml::table& root_table, const std::string& source_name,
@@ -354,37 +334,22 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     root.record("detachment", {{"criterion", scene.criterion_name}});
   }
 
-  bool method_given = false;
+  RouteKeys route_keys;
   if (auto solver = root.optional_table("solver")) {
-    method_given = solver->has("method");
+    route_keys.method_given = solver->has("method");
+    if (route_keys.method_given) route_keys.method_at = solver->message_at("method", "");
     read_solver(*solver, scene.solver);
-    if (scene.solver.method == SolverMethod::continuum) {
-      scene.solver.continuum_chosen_at = solver->message_at("method", "");
-      if (const auto why = continuum_program_refusal(scene)) {
-        solver->fail_at("method", *why + "; use method = \"event\" (docs/continuum.md)");
-      }
-    }
-    if (scene.solver.method == SolverMethod::continuum && scene.material.adhesion_varies()) {
-      solver->fail_at("method",
-                      "a work of adhesion that varies with the radius pins and releases the "
-                      "front at every change (several folds), and the continuum route follows "
-                      "one fold only; use method = \"event\" (docs/continuum.md)");
-    }
-    if (scene.solver.method == SolverMethod::continuum && scene.profile_name == "wavy" &&
-        !scene.profile->always_one_disk()) {
-      solver->fail_at("method",
-                      "a wavy profile's branch folds again at every crest, and the continuum "
-                      "route follows one fold only; use method = \"event\" (docs/continuum.md)");
-    }
   } else {
     root.record("solver", {{"method", "event"}});
   }
   const bool continuum = scene.solver.method == SolverMethod::continuum;
 
   scene.springs = kDefaultSprings;
-  std::string rtol_at;  // where rtol is given: it may choose the continuum route
   if (auto discretization = root.optional_table("discretization")) {
-    if (discretization->has("rtol")) rtol_at = discretization->message_at("rtol", "");
+    if (discretization->has("rtol")) route_keys.rtol_at = discretization->message_at("rtol", "");
+    if (discretization->has("extrapolation")) {
+      route_keys.extrapolation_at = discretization->message_at("extrapolation", "");
+    }
     if (continuum) {
       for (const char* key : {"springs", "extrapolation"}) {
         if (discretization->has(key)) {
@@ -437,7 +402,10 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
   // [friction] before the route: a scene with friction stays on the row.
   if (auto friction = root.optional_table("friction")) {
-    scene.friction = read_friction(*friction, scene, registries.friction_laws);
+    scene.friction = read_friction(*friction, registries.friction_laws);
+    if (scene.friction) {
+      route_keys.friction_at = friction->message_at(friction_acting_key(*scene.friction), "");
+    }
     friction->finish();
     // Friction runs on programs: the shorthand as its three stages (docs/friction.md).
     if (scene.friction && !scene.program) {
@@ -445,16 +413,16 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     }
   }
   if (scene.shorthand() && !scene.program) {
-    scene.shorthand_stages = shorthand_program(scene, registries.controllers);
+    scene.plan.shorthand_stages = shorthand_program(scene, registries.controllers);
   }
-  if (!method_given) choose_continuum_route(scene, *resolved, rtol_at);
-  // A program's rows span the largest contact, known once its pilot has run (run_program.cpp).
-  if (scene.shorthand() && !scene.program && scene.solver.method != SolverMethod::continuum) {
-    refuse_unresolved_shape(scene, scene.glued_radius, "glued");
-  }
-  if (scene.discretization.richardson() && scene.solver.method != SolverMethod::event) {
-    TomlReader discretization = root.table("discretization");
-    discretization.fail_at("extrapolation", "richardson needs solver.method = \"event\"");
+  plan_route(scene, route_keys);
+  // The resolved scene leaves `method` out where the input did and rtol alone chose the
+  // continuum route, so that rerunning it takes the same route.
+  if (scene.plan.continuum_by_rtol) {
+    if (auto solver = resolved->find("solver"); solver != resolved->end()) {
+      solver->erase("method");
+      if (solver->empty()) resolved->erase(solver);
+    }
   }
   root.finish();
   scene.resolved = std::move(resolved);

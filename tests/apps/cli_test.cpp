@@ -259,6 +259,26 @@ TEST_F(Cli, ContinuumRunsWithoutSprings) {
   EXPECT_NEAR(j["dimensionless"]["normal_force"].get<double>(), -1.0, 1e-10);
 }
 
+// --plan prints the route (engine, driver and why) on one line and runs nothing: no JSON is
+// written though one is asked for.
+TEST_F(Cli, PlanPrintsTheRouteAndRunsNothing) {
+  const std::string json = dir_ + "/plan.json";
+  const auto row =
+      run_mdrsim(fmt::format("run scenes/fig2_fixed_load.toml --plan --json {}", json));
+  ASSERT_EQ(row.exit_code, 0) << row.err;
+  EXPECT_EQ(row.out,
+            "route: pull-off row (event method), richardson over rows of 5000, 10000 and 20000 "
+            "springs: the shorthand (preload, tangential load, pull-off); where a first row "
+            "finds the glue let go with the indenter pressed in, the shorthand runs as its three "
+            "stages on the program row\n");
+  EXPECT_FALSE(std::filesystem::exists(json));
+  const std::string scene =
+      bad_scene("springs = 100\n", "rtol = 1e-10\n[solver]\nmethod = \"continuum\"\n");
+  const auto continuum = run_mdrsim(fmt::format("run {} --plan", scene));
+  ASSERT_EQ(continuum.exit_code, 0) << continuum.err;
+  EXPECT_EQ(continuum.out, "route: continuum route, rtol 1e-10: solver.method = \"continuum\"\n");
+}
+
 // The summary of a continuum run counts no springs: it has none (a row's says how many).
 TEST_F(Cli, ContinuumSummaryNamesTheRouteNotSprings) {
   const std::string scene =
