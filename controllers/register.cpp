@@ -1,4 +1,18 @@
 // Registration of the built-in controllers: one explicit call per part.
+// Adding a controller, in three steps:
+// 1. Write a class implementing AxisController (controllers/controller.hpp: constraint() and
+//    held_value_key() are required; holds_force() and the other questions follow from the
+//    constraint unless overridden) in controllers/builtin_controllers.hpp.
+// 2. Register it in register_builtin_controllers below with one call, its keys declared:
+//      registry.add({.name = "NAME", .summary = "...", .parameters = {{.key = "stiffness",
+//                    .help = "k [N/m]", .lower = Bound{0.0, false}, .example = 1000.0}},
+//                    .create = [](const ParameterValues& p)
+//                        -> std::unique_ptr<AxisController> {...}});
+// 3. `control = "NAME"` on an axis then works. Give each key an `example`: through
+//    engine/reference/part_examples.cpp the tests over every registered controller build it
+//    (tests/engine/pull_off/invariants_test.cpp, tests/engine/scene/registries_test.cpp;
+//    bench/pull_off_bench.cpp times each). Add its row to docs/scene.md's controller table and
+//    its name to tests/controllers/controller_test.cpp, which lists the registry's names.
 #include <memory>
 
 #include "controllers/builtin_controllers.hpp"

@@ -1,4 +1,18 @@
 // Registration of the built-in detachment criteria: one explicit call per part.
+// Adding a criterion, in three steps:
+// 1. Write a class implementing DetachmentCriterion (detachment/criterion.hpp: margin() is
+//    required, critical_elongation() optional) that keeps the contract written there (every
+//    run samples it), in detachment/NAME_criterion.{hpp,cpp}; list the .cpp in CMakeLists.txt.
+// 2. Register it in register_builtin_criteria below with one call: plain<NameCriterion>("NAME",
+//    "summary") for a criterion without keys, else as "mode-dependent" is, its keys declared:
+//      registry.add({.name = "NAME", .summary = "...", .parameters = {{.key = "lambda", ...,
+//                    .example = 0.5}}, .create = [](const ParameterValues& v,
+//                    const InterfaceProperties& p) -> std::unique_ptr<DetachmentCriterion> {...}});
+// 3. `[detachment] criterion = "NAME"` then works. Give each key an `example`: through
+//    engine/reference/part_examples.cpp the tests over every registered criterion build it
+//    (tests/engine/pull_off/invariants_test.cpp, tests/engine/model/criterion_contract_test.cpp,
+//    tests/engine/scene/registries_test.cpp). Add its row to docs/scene.md's [detachment] table
+//    and its closed forms to tests/detachment/criteria_test.cpp.
 #include <memory>
 
 #include "detachment/criterion_registry.hpp"

@@ -1,4 +1,17 @@
 // Registration of the built-in profiles: one explicit call, no static self-registration.
+// Adding a profile, in three steps:
+// 1. Write a class implementing Profile (profiles/profile.hpp: shape() and mdr_image() are
+//    required, the closed forms optional) in profiles/NAME_profile.{hpp,cpp}; list the .cpp in
+//    profiles/CMakeLists.txt.
+// 2. Register it in register_builtin_profiles below with one call, its keys declared:
+//      registry.add({.name = "NAME", .summary = "f = ...", .parameters = {{.key = "radius",
+//                    .help = "R [m]", .lower = kPositive, .example = 0.01}},
+//                    .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {...}});
+// 3. `[profile] type = "NAME"` then works. Give each number key an `example` (a working value
+//    in the tests' JKR scene, engine/reference/part_examples.cpp), a sample in
+//    tests/profiles/profile_registry_test.cpp (EveryProfile runs the image's invariants over
+//    every registered profile and fails for one without a sample), a row in docs/scene.md's
+//    [profile] table, and tests of its own in tests/profiles/NAME_profile_test.cpp.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -137,7 +150,7 @@ void register_builtin_profiles(ProfileRegistry& registry) {
                                 .lower = kPositive,
                                 .example = 1e-4}},
                 .create = [](const ParameterValues& p) -> std::unique_ptr<Profile> {
-                  // A = 0 is the parabola itself, so that the uniform case is today's bit for bit.
+                  // A = 0 is the parabola itself, so that its results are `parabolic`'s bit for bit.
                   if (p.number("amplitude") == 0.0) {
                     return std::make_unique<ParabolicProfile>(p.number("radius"));
                   }

@@ -21,7 +21,7 @@ namespace mdrsim {
 class WavyProfile final : public Profile {
  public:
   /// R > 0, A > 0 and lambda > 0 [m]; A = 0 is the parabola (register.cpp builds
-  /// ParabolicProfile for it, so that the uniform case is today's bit for bit).
+  /// ParabolicProfile for it, so that its results are `parabolic`'s bit for bit).
   WavyProfile(double radius, double amplitude, double wavelength);
 
   double shape(double radius) const override;

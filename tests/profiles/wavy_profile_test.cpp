@@ -98,7 +98,7 @@ TEST(WavyProfile, InverseTransformOfTheImageIsTheShape) {
   }
 }
 
-// Amplitude 0 is the parabola itself, so that every result is today's bit for bit.
+// Amplitude 0 is the parabola itself, so that every result is `parabolic`'s bit for bit.
 TEST(WavyProfile, RegistryBuildsTheParabolaForAmplitudeZero) {
   ProfileRegistry registry;
   register_builtin_profiles(registry);

@@ -54,8 +54,8 @@ TEST(FrictionScene, ReadsTheTable) {
 }
 
 TEST(FrictionScene, ZeroCoefficientIsTheFrictionlessScene) {
-  // mu = 0 under the unlimited glue changes nothing: no friction part, so that every run is
-  // today's bit for bit (the shorthand too).
+  // mu = 0 under the unlimited glue changes nothing: no friction part, so that every run is the
+  // frictionless scene's bit for bit (the shorthand too).
   EXPECT_FALSE(build(std::string(kProgram) + "coefficient = 0.0\n").friction.has_value());
 }
 
