@@ -154,7 +154,7 @@ struct CycleRun {
   std::size_t jumps;
 };
 
-/// A reversible-JKR approach-retract cycle under fixed grips (issue 9's speed case).
+/// A reversible-JKR approach-retract cycle under fixed grips (target 9's speed case).
 std::string cycle_text(std::int64_t springs) {
   return fmt::format(
       "[material]\neffective_modulus = 1e6\nwork_of_adhesion = 0.05\n"
@@ -367,7 +367,7 @@ int main(int argc, char** argv) {
                      fmt::format("4. Fig. 3a sweep, 41 points x 2 controls, 2 threads: {:.3f} s",
                                  sweep_seconds)};
   });
-  // Issue 11: a sweep scales with its threads (scenes built in the workers, rows streamed).
+  // Target 11: a sweep scales with its threads (scenes built in the workers, rows streamed).
   // Open: a target not met prints OPEN (a shared machine may not give two whole cores).
   {
     mdrsim::cli::SweepOptions options;
@@ -416,7 +416,7 @@ int main(int argc, char** argv) {
                            check.events, check.seconds));
     }
   }
-  // Issue 8: folds far below the glued radius in seconds, not with 1e9 uniform springs.
+  // Target 6: folds far below the glued radius in seconds, not with 1e9 uniform springs.
   const double e_star = 1e6, dgamma = 0.05;
   for (const double theta : {45.0, 55.0, 65.0, 75.0, 85.0}) {
     const double t3 = std::pow(std::tan(theta * std::numbers::pi / 180.0), 3);
@@ -505,8 +505,8 @@ int main(int argc, char** argv) {
                                  "ns, mode-mixed {:.1f} ns: {:.2f}x (<= 2x)",
                                  dependent, mixed, dependent / mixed)};
   });
-  // Issue 9: loading programs (run first, above), against the shorthand's pull-off. Issue 9
-  // is open: a speed target it has not met yet prints OPEN and does not fail the run.
+  // Target 9: loading programs (run first, above), against the shorthand's pull-off. Its speed
+  // lines print OPEN when missed and do not fail the run (a busy machine can miss them).
   const auto report_open = [&](bool met, const std::string& text) {
     fmt::print("{} {}\n", met ? "MET " : "OPEN", text);
   };
@@ -555,7 +555,7 @@ int main(int argc, char** argv) {
                             "64/128/256 springs): largest error {:.1e} F0, {:.0f} us (< 150 us)",
                             error, 1e6 * seconds));
   }
-  // Issue 22: the continuum route within rtol of the closed form on every paper case, and
+  // Target 12: the continuum route within rtol of the closed form on every paper case, and
   // the whole run at 1e-10 against the row route at rtol 1e-6 (the same scene with method =
   // "event"), each by its engine time (wall_time_s, best of three), as target 6 times it.
   for (const Row& r : rows) {

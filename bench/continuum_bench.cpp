@@ -1,5 +1,5 @@
 // Google Benchmark: the continuum route's critical point to 1e-10 per profile, its whole run,
-// and the row route at rtol 1e-6 on the same scene, for the ratio (issue 22's targets).
+// and the row route at rtol 1e-6 on the same scene, for the ratio (the bench's target 12).
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -97,7 +97,7 @@ void run(benchmark::State& state, const std::string& name, const std::string& ro
 }
 
 /// The reversible JKR approach-retract cycle of scenes/programs/jkr_cycle_reversible.toml as a
-/// 1000-point force curve (`sample` events into a vector), issue 22's target: <= 50 us.
+/// 1000-point force curve (`sample` events into a vector); the target: <= 50 us.
 void cycle_curve(benchmark::State& state) {
   const mdrsim::Scene s = mdrsim::test::build_scene_text(
       "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"

@@ -1,4 +1,4 @@
-// The two engines against each other (issue 20): each shorthand scene and its equal program.
+// The two engines against each other: each shorthand scene and its equal program.
 //
 //   build/bench/mdrsim_engines [--out PATH.csv] [--repeats N] [--part springs|rtol|all]
 //                              [--case fig2|tangential-u|tangential-F|cone|cone-u]
@@ -251,7 +251,7 @@ int main(int argc, char** argv) {
     if (out == stdout) return;
     // With --out, one line per row on standard output.
     const std::string what = tol > 0.0 ? "rtol " + rtol : springs + " springs";
-    // Issue 20's target: a program equal to a shorthand scene costs at most 2x the shorthand.
+    // The target: a program equal to a shorthand scene costs at most 2x the shorthand.
     const double ratio = p.seconds / s.seconds;
     fmt::print("{:4} {} {} {} {}: program/shorthand {:.2f}x in time ({} <= 2x)",
                same ? "SAME" : "DIFF", c.name, c.criterion, c.normal, what, ratio,

@@ -1,5 +1,5 @@
 // Google Benchmark: a fretting cycle of the example sphere under friction at 1e6 springs, and the
-// cost of a friction event against a detachment event (issue 21's speed targets).
+// cost of a friction event against a detachment event.
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -91,7 +91,7 @@ void run(benchmark::State& state, std::string text) {
       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-/// The console's lines, then the costs issue 21 asks about, derived from them (CPU time; with
+/// The console's lines, then the friction event's costs, derived from them (CPU time; with
 /// --benchmark_repetitions, of the medians).
 class EventCostReporter : public benchmark::ConsoleReporter {
  public:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The Python module's costs (issue 10), with MET/MISS lines for its targets:
+"""The Python module's costs, with MET/MISS lines for its targets:
 
 1. Python-side overhead of mdrsim.run on a 1000-spring scene, against the engine's own time
    (Result.wall_time_s): target < 20 %.

@@ -3,7 +3,7 @@
 # mdrsim_test_lists naming each executable's TEST_LIST variable).
 #
 # `slow`: the cases measured at more than about 1.5 s each (ctest -j2 --output-junit on 2 shared
-# cores, issue 20); everything else, a new test too, is `quick`. `ctest -L quick` then runs in
+# cores); everything else, a new test too, is `quick`. `ctest -L quick` then runs in
 # well under two minutes on 2 cores; plain ctest still runs everything. A name matches if one
 # of these regular expressions finds it (ctest's full name: Suite.Case, or
 # Instance/Suite.Case/Param  # GetParam() = ... for a parameterized case).

@@ -34,7 +34,7 @@ std::string first_difference(const std::vector<std::pair<std::int64_t, const Run
 /// Where the critical point is resolved on zoomed rows of its own (the shorthand's, a
 /// program's last stage), the path's rows stop here or at 4x the critical point's finest row,
 /// if larger: a held tangential force's stage work converges as a sawtooth, and refining it to
-/// rtol 1e-6 took rows of 2^24 springs (0.84 s against 0.01 s for the critical point); past
+/// rtol 1e-6 takes rows of 2^24 springs (0.84 s against 0.01 s for the critical point); past
 /// the cap the path's values carry their estimates and a warning instead.
 inline constexpr std::int64_t kPathRowCap = std::int64_t{1} << 17;
 

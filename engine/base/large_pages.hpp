@@ -9,7 +9,7 @@ namespace mdrsim {
 /// 2 MiB on, the block is 2 MiB-aligned and the kernel is advised to back it with 2 MiB pages
 /// (Linux, transparent huge pages in "madvise" or "always" mode): a row of 1e6 springs
 /// writes some 40 MB of fresh memory, and at one page fault per 4 KiB the faults cost more
-/// than its events (issue 21's speed). Where the advice is refused, 4 KiB pages as before.
+/// than its events. Where the advice is refused, the block has 4 KiB pages.
 void* allocate_large(std::size_t bytes);
 /// Frees a block of allocate_large of that many bytes.
 void free_large(void* block, std::size_t bytes) noexcept;

@@ -10,7 +10,7 @@
 namespace mdrsim {
 
 /// A run's sums (of up to 2^25 springs) round at 1e-16 to 1e-13 of their terms; the values
-/// rounding made appear on the paths (a "peak" of -1e-21 N, a critical point at
+/// rounding makes appear on real paths (a "peak" of -1e-21 N, a critical point at
 /// -2.2e-22 N, both on paths of 1e-3 N) lie at 1e-18 of the scale and below. A genuine fold
 /// 2.4e-6 of the glued radius of an 85 degree cone lies at 2e-11 of it: above this.
 inline constexpr double kRoundingShare = 1e-12;

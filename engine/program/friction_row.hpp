@@ -165,7 +165,7 @@ class FrictionRow {
   std::int64_t sticking_ = 0;        ///< springs that stick, glued ones included
   CompensatedSum sticking_offsets_;  ///< their offsets [m]
   /// o_i - r g_i and o_i + r g_i of the sticking springs not glued: flat, no allocation per
-  /// spring (issue 21's speed).
+  /// spring, since every stick and slip inserts or removes one.
   SlipKeys keys_;
   std::array<IndexSet, 2> sliders_;              ///< not glued, sliding along +x, -x
   std::array<CompensatedSum, 2> slider_images_;  ///< their sums of g_i [m]

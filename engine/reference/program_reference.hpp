@@ -1,5 +1,6 @@
-// Continuum (N -> infinity) references for loading programs on the parabola (issue 9, point 6),
-// derived apart from the engine: closed forms, TOMS 748 roots and Gauss-Kronrod quadrature.
+// Continuum (N -> infinity) references for the loading programs of scenes/programs/ on the
+// parabola, derived apart from the engine: closed forms, TOMS 748 roots and Gauss-Kronrod
+// quadrature.
 #pragma once
 
 #include <array>
@@ -63,7 +64,7 @@ struct GlueOnTouchCycle {
 GlueOnTouchCycle glue_on_touch_cycle(double max_indentation);
 /// F on the retract at depth d (0 once the contact is lost).
 double glue_on_touch_retract_force(double max_indentation, double indentation);
-/// The issue's claim (2/3) d_max + (4/45) |d_c|: equal to the dissipated work iff a_m >= a_c.
+/// The estimate (2/3) d_max + (4/45) |d_c|: equal to the dissipated work iff a_m >= a_c.
 double claimed_glue_on_touch_dissipation(double max_indentation);
 
 // ---- (c) Tangential ramp to failure from a contact glued at preload radius a_p ----

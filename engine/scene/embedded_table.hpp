@@ -22,7 +22,7 @@ nlohmann::json adhesion_table_record(const std::string& path, const TwoColumnFil
 
 /// Reads a resolved scene's embedded tables (`scene` is the `scene` of a result, or a scene
 /// object): the profile's (columns r, f) and each work of adhesion's given as a file (r,
-/// value). While `file` holds the very bytes hashed, the file is read as before (and the
+/// value). While `file` holds the very bytes hashed, the file itself is read (and the
 /// rerun's resolved scene is the same); when it is gone or changed, the columns come from
 /// `table` instead, with a warning naming `source_name` and the key. `table` is removed either
 /// way. A holder without a `table` object of both columns is left alone.

@@ -1,4 +1,4 @@
-// The three part registries a scene draws from, with the built-in parts registered.
+// The part registries a scene draws from, with the built-in parts registered.
 #pragma once
 
 #include "controllers/controller_registry.hpp"

@@ -1,4 +1,4 @@
-// What a new user meets (issue 13): --version, `list` from the registries, help naming the parts, a
+// What a new user meets: --version, `list` from the registries, help naming the parts, a
 // scene on standard input, --set that replaces siblings and names a split inline table, paths
 // relative to where they were typed, and the moduli warning.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The JSON result says what produced it (issue 13): the resolved scene, the version, the
+// The JSON result says what produced it: the resolved scene, the version, the
 // material, the preload, the scales and the rows; and its scene, run again, gives the same
 // numbers, for a shorthand scene and a program, from a result file or its scene alone.
 #include <gtest/gtest.h>
@@ -116,7 +116,7 @@ TEST_F(Provenance, ATabulatedResultRerunsAfterItsCsvIsGone) {
   EXPECT_EQ(again["peak_adhesion"], first["peak_adhesion"]);
 }
 
-// Acceptance 2: the scene of r.json run again gives identical numbers, from the result file
+// The scene of r.json run again gives identical numbers, from the result file
 // itself and from its scene alone, for shorthand scenes (one under --set, one with a table
 // file) and loading programs.
 TEST_F(Provenance, ItsSceneRunAgainGivesIdenticalNumbers) {

@@ -1,4 +1,4 @@
-// What a sweep row says about its run (issue 13): the springs it used (rtol picks them), its
+// What a sweep row says about its run: the springs it used (rtol picks them), its
 // preload state and its warning count, each equal to what `mdrsim run --json` says of the same
 // scene; and its log lines name the row they belong to.
 #include <gtest/gtest.h>

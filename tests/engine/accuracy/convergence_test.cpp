@@ -1,4 +1,4 @@
-// Convergence of the critical force with springs (issue 2, acceptance 4).
+// Convergence of the critical force with springs.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Richardson on programs (issue 9, point 3): the reported states located between springs and
+// Richardson on programs: the reported states located between springs and
 // extrapolated across rows of N/2, N and 2N springs, against the continuum
 // (engine/reference/program_reference), each estimate at least its error.
 #include <gtest/gtest.h>
@@ -39,7 +39,7 @@ double expect_within(const std::string& what, double value, std::optional<double
   return error;
 }
 
-// Issue 9's accuracy target on the smallest rows: the jump in, the end of the approach and the
+// The bench's target 9 on the smallest rows: the jump in, the end of the approach and the
 // fold within 1e-4 F0 from rows of 64, 128 and 256 springs.
 TEST(ProgramRichardson, ReversibleCycleWithin1e4FromRowsOf64To256Springs) {
   const RunResult r = run_scene(example("jkr_cycle_reversible.toml", 128, "richardson"), {});

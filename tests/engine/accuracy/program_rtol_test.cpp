@@ -1,4 +1,4 @@
-// rtol on programs (issue 9, point 3): every stage end's and jump's forces within rtol of the
+// rtol on programs: every stage end's and jump's forces within rtol of the
 // continuum (engine/reference/program_reference), and each error estimate at least the error.
 #include <gtest/gtest.h>
 
@@ -113,8 +113,8 @@ INSTANTIATE_TEST_SUITE_P(Tolerances, ProgramRtol, ::testing::Values(1e-3, 1e-4),
                          });
 
 // Without adhesion nothing carries tension: a Hertz approach-retract cycle has no peak and no
-// critical point, and its rows agree at once (issue 19: a "peak" of rounding in some rows and
-// not others sent rtol 1e-4 to rows of 2^25 springs, 26 s, rtol_met false). The approach ends
+// critical point, and its rows agree at once (a "peak" of rounding in some rows and not others
+// would send rtol 1e-4 to rows of 2^25 springs, 26 s, rtol_met false). The approach ends
 // on Hertz, F = (4/3) E* R^(1/2) d^(3/2), and the cycle's total work is zero.
 TEST(ProgramRtolZero, NonAdhesiveCycleMeetsRtolWithoutChasingRounding) {
   const std::string text = R"(

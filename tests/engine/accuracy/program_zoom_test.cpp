@@ -6,8 +6,8 @@
 // load -F0), the shear ramps of engine/reference/program_reference.hpp (continuum roots derived
 // apart from the engine), and the shorthand's own zoom, whose rows a program of the same path
 // repeats spring for spring: the two critical forces agree to the two engines' own arithmetic of
-// the fold between springs (8e-12 and 1.2e-11 relative measured, held to 1e-10; before the zoom
-// they differed by 1.7e-8 at rtol 1e-6, each within its own estimate). The peak adhesive force
+// the fold between springs (8e-12 and 1.2e-11 relative measured, held to 1e-10; without the
+// zoom they differ by 1.7e-8 at rtol 1e-6, each within its own estimate). The peak adhesive force
 // likewise (the fixed-grips -F0 of eqs. 18-19, reached before the fold in the last stage).
 #include <gtest/gtest.h>
 
@@ -166,8 +166,8 @@ std::string sheared_cone(bool program, const std::string& rtol) {
 
 TEST(ProgramZoom, AGlueShearedOffUnderCompressionIsZoomed) {
   // The springs the jump leaves pressed come after the critical point, which the zoomed rows
-  // reach exactly. Before, they made the whole stage unzoomable: full rows to their cap of
-  // 2^25 springs, 8.3 s against the shorthand's 2.4 ms (now 0.01 s).
+  // reach exactly: the stage is zoomed (refined on full rows instead, it would need their cap
+  // of 2^25 springs, 8.3 s against the shorthand's 2.4 ms).
   const RunResult p = run_scene(test::build_scene_text(sheared_cone(true, "1e-6")), {});
   const RunResult s = run_scene(test::build_scene_text(sheared_cone(false, "1e-8")), {});
   ASSERT_EQ(p.status, RunStatus::instability);
@@ -186,9 +186,9 @@ TEST(ProgramZoom, TheSpringsAShearedOffGlueLeavesPressedAreLocated) {
   // After the jump the springs pressed without glue are a frictionless cone at the held depth:
   // Sneddon's F = 2 E* d^2 / (pi tan(theta)) (the MDR image (pi/2) tan(theta) |x| pressed to
   // d: 2 E* int_0^a (d - g) dx with g(a) = d). Their front is located between springs where
-  // g(a) = d (program_front.cpp), so that rtol covers the jump's end: before, the row's own
-  // value with its plain estimate, 3.5e-5 off on rows of 2^18 springs, and the path's rows
-  // ran to their cap without meeting rtol 1e-6 (a warning). Now rows of 2^15 meet it.
+  // g(a) = d (program_front.cpp), so that rtol covers the jump's end on rows of 2^15 springs
+  // (the row's own value, with its plain estimate, is 3.5e-5 off on rows of 2^18 springs, and
+  // the path's rows would run to their cap without meeting rtol 1e-6).
   const RunResult p = run_scene(test::build_scene_text(sheared_cone(true, "1e-6")), {});
   ASSERT_EQ(p.jumps.size(), 1u);
   const ContactSnapshot& after = p.jumps[0].after;

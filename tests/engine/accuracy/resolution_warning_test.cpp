@@ -39,7 +39,7 @@ bool has_warning(const RunResult& r, const std::string& start) {
 }
 
 // The reversible cycle's fold is at 0.292 of a_max (a_c/a_max = 9^(-1/3)/1.6465): 3 springs
-// on 10, 1 on 2 and 3, with errors of 9 to 169 % (issue 19).
+// on 10, 1 on 2 and 3, with errors of 9 to 169 %.
 TEST(ResolutionWarning, ProgramsWarnAsTheShorthandDoes) {
   for (const int springs : {2, 3, 10}) {
     const RunResult r = run_scene(

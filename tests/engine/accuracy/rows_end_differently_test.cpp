@@ -13,8 +13,8 @@ namespace mdrsim {
 namespace {
 
 // A stick-slip program (207 jumps at 1000 springs) whose rows of 250, 500 and 1000 springs
-// end with different jumps: the warning was 6 KB, three lists of "pull:out" most of them
-// alike. A phrase naming the rows and the first item apart fits in 400 characters.
+// end with different jumps: listing them would take 6 KB, three lists of "pull:out" most of
+// them alike. A phrase naming the rows and the first item apart fits in 400 characters.
 TEST(RowsEndDifferently, WarningNamesWhereTheRowsPart) {
   std::ifstream in(
       std::string(MDRSIM_SOURCE_DIR) +

@@ -131,7 +131,7 @@ TEST_P(RtolGuarantee, WithinRtolOfTheContinuum) {
     }
   }
   std::printf("%zu scenes, %d reported rtol_met = false\n", last - first, unmet);
-  // At most 6 of the 120 (5 %; 2 when this was written), in each part its share.
+  // At most 6 of the 120 (5 %; 2 measured), in each part its share.
   EXPECT_LE(unmet, (6 + parts - 1) / parts);
 }
 

@@ -16,7 +16,7 @@ TEST(ZeroScale, IsTheFlatPunchScaleTimesTheRoundingShare) {
   EXPECT_DOUBLE_EQ(z.force, kRoundingShare * 1e-4);
   EXPECT_DOUBLE_EQ(z.displacement, kRoundingShare * 1e-6);
   EXPECT_DOUBLE_EQ(z.work, kRoundingShare * 1e-10);
-  EXPECT_TRUE(z.zero_force(-2.2e-22));   // the roundoff critical point
+  EXPECT_TRUE(z.zero_force(-2.2e-22));   // a critical point of rounding seen on a run
   EXPECT_FALSE(z.zero_force(-3.6e-12));  // far above the rounding share: a force
 }
 

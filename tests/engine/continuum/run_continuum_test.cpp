@@ -28,7 +28,7 @@ constexpr double kPi = std::numbers::pi;
 
 RunResult run(const Scene& scene) { return run_scene(scene, ObserverList{}); }
 
-// ---- the exact sphere (the values, from an implementation apart from this one) ----
+// ---- the exact sphere (independent values, from an implementation apart from this one) ----
 
 /// The exact sphere R = 1 cm, dgamma/(E* R) = 1e-2, glued at 0.5 R, G* = E*.
 std::string sphere(const std::string& normal, double ux) {
@@ -53,7 +53,7 @@ double sphere_critical(const std::string& normal, double ux) {
   return r.critical.value().normal_force / (1.5 * kPi * 100.0 * 0.01);
 }
 
-// The values carry 9 digits: 6e-10 covers their rounding; the route's own error is
+// The independent values carry 9 digits: 6e-10 covers their rounding; the route's own error is
 // below 1e-12 (its estimate).
 TEST(RunContinuum, ExactSphereAtOneInTenBillion) {
   EXPECT_NEAR(sphere_critical("fixed-load", 0.0), -0.958995362, 6e-10);

@@ -29,7 +29,7 @@ double hertz_outside(double r) {
          (kPi * kR);
 }
 
-// dgamma = 0: 12 digits, as the issue asks, from the edge (where w = a^2/(2R)) outwards.
+// dgamma = 0: 12 digits, from the edge (where w = a^2/(2R)) outwards.
 TEST(DiskValidity, HertzSurfaceDisplacementOutsideTheContact) {
   const ParabolicProfile parabola(kR);
   const double d = kA * kA / kR;

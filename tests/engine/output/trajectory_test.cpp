@@ -1,4 +1,4 @@
-// The event trajectory lies on the JKR curve of eqs. 18-19 (issue 2, acceptance 5, Fig. 2).
+// The event trajectory lies on the JKR curve of eqs. 18-19 (Fig. 2).
 #include <gtest/gtest.h>
 
 #include <boost/math/tools/minima.hpp>

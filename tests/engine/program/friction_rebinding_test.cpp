@@ -50,9 +50,9 @@ std::string sheared(double u, bool rebinding, bool pull, int springs) {
 // Sheared to 3.1 u_c, past u* = mu E* d / G* = 2.7e-5 m: when the glue breaks every spring keeps
 // the stretch u_c (glued at u = 0), and those that stick would hold a glue only if G* u_c^2 < 2 pi
 // x dgamma (the mode-mixed criterion at no elongation), that is outside a_g, where there are none.
-// So rebinding glues nothing, and the run equals the one without it, state for state. (Before the
-// rule, each sticking spring glued, let go at the next parameter and glued again, until the stage's
-// change limit stopped the program: step-limit.)
+// So rebinding glues nothing, and the run equals the one without it, state for state. (Without the
+// rule each sticking spring would glue, let go at the next parameter and glue again, until the
+// stage's change limit stopped the program: step-limit.)
 TEST(FrictionRebinding, AfterTheGlueBrokeNothingGluesThatCannotHold) {
   const RunResult with = run_scene(build(sheared(4e-5, true, false, 2000)), {});
   const RunResult without = run_scene(build(sheared(4e-5, false, false, 2000)), {});

@@ -116,7 +116,7 @@ TEST(FrictionRow, CattaneoMindlinLoadingAtTwoSpringCounts) {
 //   F_x = 2 [G* u c + mu E*/R (a^2 (a - c) - (a^3 - c^3)/3)
 //            + tau_0 (pi a^2/2 - c sqrt(a^2 - c^2) - a^2 asin(c/a))],
 // and at full slip mu F_z + tau_0 pi a^2: the shear strength times the contact's area (the
-// local tau_0 dx of an earlier reading would give 2 tau_0 a, not even a force). First order in
+// local tau_0 dx per spring would give 2 tau_0 a, not even a force). First order in
 // dx: doubling N halves the error (measured 1.5e-7 N at 400 springs, 7.6e-8 N at 800, order
 // 1.005; 1.4e-3 of mu F_z).
 TEST(FrictionRow, CattaneoMindlinWithAShearStrengthAtTwoSpringCounts) {
@@ -741,9 +741,9 @@ TEST(FrictionRow, RandomNonMonotoneMotionsMatchTheBruteForceRow) {
 }
 
 TEST(FrictionRow, WhereNothingCanSlipItSaysSo) {
-  // What the program loop skips on (issue 21's speed): with nothing sliding, F_x at a fixed
-  // u_x is the same number for every d (only a slider's mu f_z depends on d), and along a press
-  // at still u_x no spring can slip (every limit grows, no stretch moves), so next_event need
+  // What the program loop skips on, to keep a friction event cheap: with nothing sliding, F_x at a
+  // fixed u_x is the same number for every d (only a slider's mu f_z depends on d), and along a
+  // press at still u_x no spring can slip (every limit grows, no stretch moves), so next_event need
   // not be asked. Each "nothing" is checked against the force and the event search themselves.
   const double us = fr::full_slip_displacement(kMu, kModulus, kShearModulus, kD);
   FrictionRow row = pressed_row(50);

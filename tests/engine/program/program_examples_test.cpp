@@ -1,5 +1,5 @@
 // The example loading programs of scenes/programs/ run through the mdrsim binary and compared
-// with the continuum references of engine/reference/program_reference (issue 9, point 6).
+// with the continuum references of engine/reference/program_reference.
 //
 // Tolerances. Every scene runs N = 4000 springs over the largest radius a_max it reaches, at
 // spacing h = a_max/(N a0). The row's force is a right Riemann sum of (1/2) int (d - 3 x^2) dx,
@@ -8,8 +8,8 @@
 // displacements [d0] are held to 2 h (1 + a_max^2), radii [a0] to 2 h. A stage's work is held
 // to that force bound times the depth the stage travels [F0 d0]; the program's, a signed sum
 // whose errors largely cancel between loading and unloading over the same springs, to
-// 3 h sum |W_stage| with the reference's stage works. When written, the engine's errors were
-// at most a third of these bounds (several above a sixth), and one spring (h) in the radii.
+// 3 h sum |W_stage| with the reference's stage works. The engine's errors measure at most a
+// third of these bounds (several above a sixth), and one spring (h) in the radii.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -286,7 +286,7 @@ TEST(ProgramExamples, FrettingCycleDissipatesTheMindlinDeresiewiczLoopEnergy) {
   // docs/friction.md: F_z = 1 mN, mu = 0.5, u_m = 1 um on the sphere of every example. The
   // closed forms at the continuum's d for F_z; the row's d under the fixed load and its sums over
   // springs are each off by O(1/N): W within 4/N = 1e-3 of itself, F_x(u_m) within 4/N of mu F_z
-  // (observed when written: 9e-5 and 6e-5).
+  // (observed: 9e-5 and 6e-5).
   const json r = run_example("fretting_parabola");
   constexpr double kMu = 0.5;
   constexpr double kForce = 1e-3;
@@ -317,7 +317,7 @@ TEST(ProgramExamples, PullOffAfterShearLetsTheGlueGoWhereThePapersPathDoes) {
   // with u held: Fig. 3a's shorthand, answered here on the continuum route at rtol 1e-10. At
   // this u the glue lets go while the contact is still pressed (the critical force is
   // compressive) and nothing ever pulls: no peak adhesion. The row's critical force within
-  // 3/N of the unsheared pull-off force (observed when written: 1.3/N), its contact radius
+  // 3/N of the unsheared pull-off force (observed: 1.3/N), its contact radius
   // within one spacing.
   const json program = run_example("pull_off_after_shear");
   const auto path = mdrsim::test::run_mdrsim(

@@ -165,7 +165,7 @@ TEST(ProgramRunner, SteppingStopsAtMaxStepsWithAWarning) {
   EXPECT_NE(r.warnings[0].find("solver.max_steps = 100"), std::string::npos) << r.warnings[0];
 }
 
-// The impossible at run time (issue 9, acceptance 4): a fixed load that pulls before anything
+// The impossible at run time: a fixed load that pulls before anything
 // is in contact ends the program at once with a status and a warning, never a hang.
 TEST(ProgramRunner, AFixedLoadPullingOnNothingEndsTheProgramWithAWarning) {
   Scene scene = cycle_scene(kWork, 2e-5, 100);
@@ -231,7 +231,7 @@ TEST(ProgramRunner, TheApproachEndsWithEveryOneOfItsSprings) {
 // Pressed springs carry no tension: once a shear of 4 d0 has broken the glue of the parabola
 // glued at 2 a0 (the paper's Fig. 3a, fixed grips), the pull-off lifts them one by one and
 // no state is tensile; the last ones sit near the apex at forces of rounding (-2.6e-24 N on
-// 1e5 springs was reported as a peak before the zero scale). The glue's jump is the
+// 1e5 springs, which the zero scale tells from a peak). The glue's jump is the
 // instability, at a compressive force (Fig. 3a's positive branch, as the shorthand says),
 // not a state of rounding.
 TEST(ProgramRunner, NoPeakAndNoCriticalPointFromRounding) {

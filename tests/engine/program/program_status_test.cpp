@@ -70,9 +70,9 @@ TEST(ProgramStatus, AGlueJumpDoesNotDecideALaterContact) {
 
 // A rebinding program that pushes on "until separation" while shearing never separates. Its
 // 256-spring pilot row (which frames the run's rows) reaches t of about 8.5e8, where rounding
-// kept one parameter value's changes from settling and the run threw an internal error. Now
-// that row stops (step-limit, "without settling"), and the run reports the stick-slip stop of
-// its own row with the stages before it, never an internal error.
+// keeps one parameter value's changes from settling: that row stops (step-limit, "without
+// settling"), and the run reports the stick-slip stop of its own row with the stages before
+// it, never an internal error.
 TEST(ProgramStatus, AnUnsettlingCascadeStopsTheProgramWithAWarning) {
   const Scene scene = test::build_scene_text(
       "[material]\neffective_modulus = 2.0e6\nwork_of_adhesion = 0.05\n"

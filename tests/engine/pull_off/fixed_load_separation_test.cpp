@@ -12,9 +12,9 @@
 // the integral by composite Simpson in a (20000 intervals: relative error ~1e-14).
 //
 // Tolerance of the work. The row's forces are Riemann sums with an O(1/N) error (the preload
-// force at N = 1000 is 7e-4 below Hertz's): the work of the pull-off at N springs was within
-// 1.7/N relative of W when written (1.7e-3 at 1000, 1.6e-5 at 100000), so it is held to 2/N,
-// and rows of 2000 to 100000 springs to 1e-3 of each other. Before the fix the flight added
+// force at N = 1000 is 7e-4 below Hertz's): the work of the pull-off at N springs measures
+// within 1.7/N relative of W (1.7e-3 at 1000, 1.6e-5 at 100000), so it is held to 2/N, and
+// rows of 2000 to 100000 springs to 1e-3 of each other. Counting the flight would add
 // |F_c| F_c / (2 E* dx) per row, 5e-6 J at 1000 springs (30 |W|), growing as N.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -192,8 +192,8 @@ TEST(FixedLoadSeparation, ShorthandWorkIsTheJkrBranchToTheCriticalPoint) {
                 1e-12 * r.stages[0].work.normal);
     works.push_back(pull_off.work.normal);
   }
-  // Independent of N within 1e-3 between 1000 and 100,000 springs (issue 19's acceptance;
-  // the plain rows spread 1.6e-3 before the scene extrapolated).
+  // Independent of N within 1e-3 between 1000 and 100,000 springs (Richardson: the plain rows
+  // spread 1.6e-3).
   for (std::size_t i = 1; i < works.size(); ++i) {
     EXPECT_NEAR(works[i], works[0], 1e-3 * std::abs(works[0])) << kRows[i] << " against 1000";
   }
@@ -337,8 +337,8 @@ std::vector<Row> trajectory(const Scene& scene, RunResult& result) {
   return rows;
 }
 
-// The trajectory stops at the critical point: no cascade rows beyond it (before the fix they
-// ran to -1e3 d0 at 1000 springs, the last spring alone holding F_c), and the `instability`
+// The trajectory stops at the critical point: no cascade rows beyond it (the flight's would run
+// to -1e3 d0 at 1000 springs, the last spring alone holding F_c), and the `instability`
 // row names the stage it happened in.
 TEST(FixedLoadSeparation, TrajectoryEndsAtTheCriticalState) {
   struct Case {
@@ -387,9 +387,9 @@ Scene fig3a_fixed_load(double ux, std::int64_t n) {
 
 // Fig. 3a's positive branch (u = 4 d0): the fixed-load critical force is compressive, and once
 // the glue lets go the springs under the indenter still hold that force. The shorthand's row
-// once pushed its last spring in by F / (E* dx) (the stage ended 0.0014 m deep at 1000
-// springs, 0.014 m at 10000), then ended the jump `pressed` with a warning; it now runs as its
-// three-stage program, which follows the pressed springs: the jump ends in a frictionless
+// cannot follow them (it would push its last spring in by F / (E* dx): 0.0014 m deep at 1000
+// springs, 0.014 m at 10000), so the scene runs as its three-stage program, which follows the
+// pressed springs: the jump ends in a frictionless
 // Hertz contact at the held force, F = 4 E* a^3 / (3 R) with d = a^2 / R (the MDR image x^2 / R
 // pressed to d: 2 E* int_0^a (d - g) dx), and the stage goes on to separation. Richardson on
 // 1000 and 4000 springs: a within 1e-5 of Hertz's, the work within 2e-3 of each other.
@@ -449,10 +449,10 @@ std::string sheared_cone(bool program, const std::string& discretization) {
 }
 
 // Under fixed grips the machine holds the indenter where the glue let go; a glue sheared off
-// under compression leaves it pressed into springs that push. The shorthand's jump once said
-// `after` = no spring, F = 0 at d = 6e-7 m, where those springs carry Sneddon's 1.29e-6 N, and
-// then ended `pressed` with a warning. On the rows (and where rtol alone picks the route) it
-// now runs as its program, with the same numbers to the bit as the program written out; the
+// under compression leaves it pressed into springs that push. The shorthand's row cannot follow
+// them (its jump would end with no spring, F = 0 at d = 6e-7 m, where those springs carry
+// Sneddon's 1.29e-6 N). On the rows (and where rtol alone picks the route) the scene runs as
+// its program, with the same numbers to the bit as the program written out; the
 // continuum route, which does not follow pressed springs, still ends it `pressed` and says so.
 TEST(FixedLoadSeparation, AFixedGripsGlueShearedOffUnderCompressionRunsAsItsProgram) {
   const double tan_theta = std::tan(10.0 * std::numbers::pi / 180.0);
@@ -498,8 +498,8 @@ TEST(FixedLoadSeparation, AFixedGripsGlueShearedOffUnderCompressionRunsAsItsProg
 
 // A fixed normal load holding a compression and a tangential fixed load: once the glue lets go
 // nothing holds F_x (frictionless pressed springs), and the indenter slides away, as the
-// program of the same path says. The shorthand said `pressed` (the normal axis was asked
-// first); random scene 042 of engine/reference/random_scenes (seed 20240611).
+// program of the same path says, not `pressed` (which asking the normal axis first would say);
+// random scene 042 of engine/reference/random_scenes (seed 20240611).
 TEST(FixedLoadSeparation, AHeldTangentialForceWithoutGlueSlidesEvenPressedIn) {
   const std::string text =
       "[material]\nyoungs_modulus = 72647939.219615087\npoisson_ratio = 0.2047812055241307\n"

@@ -1,5 +1,5 @@
-// The example scenes of every new profile against independent critical forces (issue 3,
-// acceptance 1-3): closed forms (Kendall's punch, the cone), else the solved branch.
+// The example scenes of every profile beyond the parabola against independent critical forces:
+// closed forms (Kendall's punch, the cone), else the solved branch.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,7 +40,7 @@ double relative_error(double got, double want) { return std::abs(got / want - 1.
 
 }  // namespace
 
-// Acceptance 1 for the profiles without a classical closed form: sphere, power law and the
+// The profiles without a classical closed form: sphere, power law and the
 // tabulated ones, 10^5 springs, against the branch solved to 1e-10. The row's first-order
 // error is 1e-5 to 7e-5 here; the bound is the docs' 1e-3.
 class SceneAgainstBranch : public ::testing::TestWithParam<std::string> {};
@@ -72,7 +72,7 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
-// Acceptance 1, cone: the closed forms derived in branch_reference_test (fixed load
+// The cone: the closed forms derived in branch_reference_test (fixed load
 // F = -54 dgamma^2/(pi E* tan^3 theta), fixed grips -6 dgamma^2/(...)).
 TEST(ProfilesPullOff, ConeScenesMatchTheClosedForms) {
   for (const char* name : {"cone_fixed_load.toml", "cone_fixed_grips.toml"}) {
@@ -89,7 +89,7 @@ TEST(ProfilesPullOff, ConeScenesMatchTheClosedForms) {
   }
 }
 
-// Acceptance 1, flat punch: Kendall's F = -sqrt(8 pi A^3 E* dgamma), exact at any springs
+// The flat punch: Kendall's F = -sqrt(8 pi A^3 E* dgamma), exact at any springs
 // because every spring has g = 0: the edge spring lets go at d = -dl(A), F = 2 E* A d. The
 // pull-off is one cascade: one equilibrium, then every spring within the jump.
 TEST(ProfilesPullOff, FlatPunchIsKendallInOneCascade) {
@@ -123,7 +123,7 @@ TEST(ProfilesPullOff, FlatPunchIsKendallInOneCascade) {
   }
 }
 
-// Acceptance 3: a table of a parabola, a cone and a power law gives its analytic profile's
+// A table of a parabola, a cone and a power law gives its analytic profile's
 // critical force at the same springs, where the row's discretization cancels: within 1e-4
 // (measured: below 1e-15 for the parabola, 1e-14 for the cone and 2e-9 for the power law,
 // whose 201 points are not exact for r^1.5).
@@ -152,7 +152,7 @@ TEST(ProfilesPullOff, TablesReproduceTheirAnalyticProfiles) {
   }
 }
 
-// Acceptance 2: the sphere tends to its tip parabola as a0/R -> 0. Glued at 2 a0, the
+// The sphere tends to its tip parabola as a0/R -> 0. Glued at 2 a0, the
 // difference of F/F0 shrinks like (a0/R)^2 (the image's x^4/(3R^3)): with R eight times
 // larger a0/R halves, and the order from log2 of successive ratios is 2 within 0.2, on the
 // solved branch under both controls and in the simulation under fixed load. There the row's
@@ -197,7 +197,7 @@ TEST(ProfilesPullOff, SphereConvergesToTheParabolaForSmallContacts) {
   }
 }
 
-// Acceptance 2, the other side: at a0 = 0.41 R the sphere's pull-off departs from the
+// The other side: at a0 = 0.41 R the sphere's pull-off departs from the
 // parabola's by 0.063 F0 (fixed load) and 0.013 F0 (fixed grips), while it still follows its
 // own branch (SceneAgainstBranch above). The bounds are 80 % of those.
 TEST(ProfilesPullOff, SphereDepartsFromTheParabolaForLargeContacts) {

@@ -1,4 +1,4 @@
-// The simulated critical point against the paper's closed forms (issue 2, acceptance 1-3).
+// The simulated critical point against the paper's closed forms (Figs. 2 and 3a).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,7 +30,7 @@ double gamma_of(double nu) { return (2.0 - 2.0 * nu) / (2.0 - nu); }  // paper e
 
 }  // namespace
 
-// Acceptance 1: glued radius 2 a0, 10000 springs; the spring row's first-order error is
+// Fig. 2: glued radius 2 a0, 10000 springs; the spring row's first-order error is
 // about 1.5/springs here, so 1e-3 has a margin of 6.
 TEST(PullOffReference, JkrFixedLoadPullOffIsMinusOne) {
   JkrScenario s;
@@ -51,7 +51,7 @@ TEST(PullOffReference, JkrFixedGripsPullOffIsMinusFiveNinths) {
   EXPECT_NEAR(dimensionless(s, r).contact_radius, std::cbrt(1.0 / 9.0), 1e-3);
 }
 
-// Acceptance 2: u/d0 from 0 to 4 in 41 values; both coordinates of Fig. 3a within 2e-3.
+// Fig. 3a: u/d0 from 0 to 4 in 41 values; both coordinates within 2e-3.
 class TangentialSweep : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
 
 TEST_P(TangentialSweep, CriticalForcesFollowTheMasterCurves) {
@@ -94,7 +94,7 @@ TEST(PullOffReference, CompliantMachineFoldsBetweenTheLimits) {
   }
 }
 
-// Acceptance 3: the paper's stepping ends at the fold and agrees with the event method
+// The paper's stepping ends at the fold and agrees with the event method
 // within its finest increment: the last equilibrium it accepts lies at most one finest
 // step above the exact fold of the same spring row.
 class SteppingAgainstEvent : public ::testing::TestWithParam<std::tuple<std::string, int, double>> {

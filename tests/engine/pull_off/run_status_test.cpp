@@ -57,7 +57,7 @@ TEST(RunStatus, TangentialDisplacementBeyondTheGlueShearsOffAtThePreload) {
   EXPECT_FALSE(off.critical.has_value());
   ASSERT_TRUE(off.tangential_strength.has_value());
   EXPECT_NEAR(*off.tangential_strength / s.scales().force, std::sqrt(32.0), 1e-12);
-  // With no adhesion the glue has no strength at all (the 1 mN for dgamma = 0). Written
+  // With no adhesion (dgamma = 0) the glue has no strength at all: a strength of 0. Written
   // out: JkrScenario's lengths are in a0, which is 0 there.
   const auto none = run_quietly(mdrsim::test::build_scene_text(
       "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.0\n"

@@ -1,5 +1,5 @@
 // The tangential force held (fixed load tangentially): the derived master curves against finite
-// differences of the branch, and the simulated pull-off against them (issue 3, acceptance 4).
+// differences of the branch, and the simulated pull-off against them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -92,7 +92,7 @@ TEST(TangentialForceControl, CurvesStartAtJkrAndMeetAtLargeForce) {
   EXPECT_LT(gap, 0.02 * 4.0 / 9.0);
 }
 
-// Acceptance 4: the simulated pull-off (event method, glued at 2 a0, 10^4 springs) with F_x
+// The simulated pull-off (event method, glued at 2 a0, 10^4 springs) with F_x
 // held from 0 to 4 F0 (41 values; the glue shears off above sqrt(32 gamma) F0) follows the
 // derived master curves within 2e-3 F0, under both normal controls, at nu = 0 and 0.3. The
 // spring row's error measured here is at most 5.3e-4.

@@ -22,9 +22,9 @@ namespace {
 using test::ContinuumCritical;
 
 // Random scene 113 of engine/reference/random_scenes (seed 20240611) with its held u_x raised
-// from 4.37e-6 m to 8e-6 m: the continuum branch now folds 1.5e-7 m (6e-5 a_s) above the
-// radius a_s where the glue shears off unstretched. Before the status was resolved, rtol 1e-4
-// reported shear-off at F = 1.775463 N (off by 1.6e-4) and rtol 1e-6 instability.
+// from 4.37e-6 m to 8e-6 m: the continuum branch then folds 1.5e-7 m (6e-5 a_s) above the
+// radius a_s where the glue shears off unstretched. Unless the status is resolved first, rtol
+// 1e-4 reports shear-off at F = 1.775463 N (off by 1.6e-4) and rtol 1e-6 instability.
 constexpr double kYoungs = 3328120.2599937879;
 constexpr double kPoisson = 0.25307243525486056;
 constexpr double kWork = 0.012201932522354424;

@@ -291,8 +291,8 @@ TEST(EdgeCases, ForcePreloadAtAbsurdTipRadii) {
 namespace {
 
 /// mode-mixed's margin without its closed form, so that the engine root-finds the let-go
-/// (detachment/let_go.cpp: TOMS 748, and bisection where the margin overflows). mode-dependent
-/// has its own let-go now and no longer exercises that path.
+/// (detachment/let_go.cpp: TOMS 748, and bisection where the margin overflows); mode-dependent
+/// has a let-go of its own and does not exercise that path.
 class MarginOnlyModeMixed : public mdrsim::DetachmentCriterion {
  public:
   explicit MarginOnlyModeMixed(const mdrsim::InterfaceProperties& p) : inner_(p) {}

@@ -25,7 +25,7 @@ RunResult run_text(const std::string& text) {
 
 // 1e-8 relative, on the critical force and on the peak adhesive force: the row's rtol. Every
 // scene of the set must meet it on the row (a row that runs out of springs says so, and would
-// fail here: the set is within the row's reach at 1e-8, 120 of 120 when this was written).
+// fail here: the set is within the row's reach at 1e-8, 120 of 120 measured).
 TEST(RouteAgreement, ContinuumAndRowAtRtol1e8AgreeOnTheRandomSet) {
   const std::vector<test::RandomScene> scenes = test::random_scenes(20240611, 120);
   ASSERT_EQ(scenes.size(), 120u);

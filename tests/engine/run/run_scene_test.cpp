@@ -83,7 +83,7 @@ TEST(Richardson, SecondOrderForBothControls) {
   }
 }
 
-// Issue 4 target 3 as a correctness check (timing is bench/'s): 2000-spring rows give
+// The bench's target 3 as a correctness check (timing is bench/'s): 2000-spring rows give
 // the JKR pull-off to 1e-6 relative under both controls.
 TEST(Richardson, JkrPullOffToOnePartPerMillion) {
   for (const char* normal : {"fixed-load", "fixed-grips"}) {
@@ -130,7 +130,7 @@ TEST(Rtol, ExclusiveWithSpringsAndExtrapolationNeedsTheEventMethod) {
       "\"event\"");
 }
 
-// Folds far below the glued radius (issue 8): cones of 45-85 degrees glued at 0.1 mm fold at
+// Folds far below the glued radius: cones of 45-85 degrees glued at 0.1 mm fold at
 // 1e-3 to 4e-6 of it, the parabola glued at 1000 a0 at 1e-3 or 5e-4. rtol zooms onto them and
 // meets 1e-4 against the closed forms (cone: scenes/cone_fixed_load.toml's comment; the
 // fixed-grips peak is the fixed-load fold), with the peak adhesive force too.
@@ -178,7 +178,7 @@ TEST(Rtol, FoldsFarBelowTheGluedRadius) {
 }
 
 // rtol alone (no extrapolation key) meets 1e-6 on the Fig. 2 scenes by the cheaper route,
-// Richardson here (issue 8; its time, under 1 ms, is bench/'s).
+// Richardson here (its time, under 1 ms, is bench/'s).
 TEST(Rtol, AloneTakesTheCheaperRoute) {
   for (const char* normal : {"fixed-load", "fixed-grips"}) {
     JkrScenario s;
@@ -191,7 +191,7 @@ TEST(Rtol, AloneTakesTheCheaperRoute) {
 }
 
 // A fold hidden below the first spring of a fixed row is not resolved, and the run says so
-// (the issue's 60-degree cone glued at 0.1 mm with 2000 springs, +194 % off).
+// (a 60-degree cone glued at 0.1 mm with 2000 springs, +194 % off).
 TEST(Resolution, UnresolvedCriticalPointWarns) {
   const std::string text =
       "[material]\nyoungs_modulus = 1e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"

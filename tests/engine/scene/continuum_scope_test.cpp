@@ -1,5 +1,5 @@
 // Which route discretization.rtol takes with no method: the continuum route for the shorthand
-// (checked against the exact sphere's values of the issue), the row for what it cannot answer.
+// (checked against independent values for the exact sphere), the row for what it cannot answer.
 #include "engine/scene/continuum_scope.hpp"
 
 #include <fmt/format.h>
@@ -36,7 +36,7 @@ RunResult run(const Scene& scene) { return run_scene(scene, ObserverList{}); }
 /// F/F0 of the critical point, F0 = 1.5 pi dgamma R.
 double in_f0(const RunResult& r) { return r.critical.value().normal_force / (1.5 * kPi); }
 
-// The issue's values (an implementation apart from this one) carry 9 digits: 6e-10 covers
+// The independent values (an implementation apart from this one) carry 9 digits: 6e-10 covers
 // their rounding; the route's own estimate is below 1e-12. The row at rtol 1e-10 would need
 // millions of springs: only the continuum route gets there in a test's time.
 TEST(ContinuumScope, RtolWithoutMethodTakesTheContinuumRoute) {

@@ -1,4 +1,4 @@
-// Bad profile input exits 2 with one exact line (issue 3, acceptance 5): each way a profile's
+// Bad profile input exits 2 with one exact line: each way a profile's
 // keys, a table or its CSV file can be wrong, and the preload that a profile cannot carry.
 #include <fmt/format.h>
 #include <gtest/gtest.h>

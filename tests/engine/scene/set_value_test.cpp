@@ -141,7 +141,7 @@ TEST(SetPartSwitch, StillNamesWhatTheNewPartMisses) {
 }
 
 TEST(SetPartSwitch, OnlyFromTheCommandLine) {
-  // In the file itself a key of another part is a mistake, reported as before.
+  // In the file itself a key of another part is a mistake, reported as any unknown key is.
   const std::string text = std::string(kScene).replace(std::string(kScene).find("\"parabolic\""),
                                                        11, "\"cone\"\nslope_angle_deg = 30.0");
   EXPECT_THROW_MSG(build(document(text)), SceneError,

@@ -159,7 +159,7 @@ TEST(VarySpec, ControlCharactersAreEscaped) {
 }
 
 TEST(VarySpec, OneValueWithFromAndToApartIsRefused) {
-  // It used to run FROM only, silently.
+  // Else it would run FROM only, silently.
   EXPECT_THROW_MSG(parse_vary("a.b=0:1:1"), UsageError,
                    "--vary: a.b: COUNT 1 gives one value, but FROM 0 and TO 1 differ (give a "
                    "COUNT of 2 or more, or one value)");
