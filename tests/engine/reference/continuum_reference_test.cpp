@@ -128,7 +128,7 @@ TEST(ContinuumReference, PapersFoldsWithTangentialDisplacement) {
 }
 
 // The held-force master curves: F/F0 = q/4 - 1 (fixed load) and the cubic of
-// engine/parabolic_reference (fixed grips), q = (F_x/F0)^2 E*/G*. 1e-12 as above.
+// engine/reference/parabolic_reference (fixed grips), q = (F_x/F0)^2 E*/G*. 1e-12 as above.
 TEST(ContinuumReference, HeldTangentialForceMasterCurves) {
   const mdrsim::ParabolicProfile parabola(kRadius);
   for (const double nu : {0.0, 0.3}) {

@@ -635,10 +635,10 @@ INSTANTIATE_TEST_SUITE_P(EveryCriterion, ShearOffAtThePreload,
 // unstable under fixed grips (stable needs dd/da > 0), fixed load (dF/da > 0) and any
 // compliant machine (dF/da + k dd/da > 0). So the stable branch ends at a fold at some
 // a_c > a_s: the contact jumps off there, with springs that still hold the shear alone, before
-// the radius where shear alone would break them. The engine's status rule (engine/pull_off.cpp)
-// agrees: shear-off means that the final cascade starts with a spring broken at zero stretch;
-// the tangential displacement changes only when a spring lets go, so after the preload such a
-// spring can only appear inside a cascade that a stretched spring started.
+// the radius where shear alone would break them. The engine's status rule
+// (engine/result/loss_status) agrees: shear-off means that the final cascade starts with a spring
+// broken at zero stretch; the tangential displacement changes only when a spring lets go, so after
+// the preload such a spring can only appear inside a cascade that a stretched spring started.
 //
 // The test takes the tangential load up to 99.9 % of the shear limit at the preload and
 // checks: status instability; the boundary spring at the critical point holds the shear alone
