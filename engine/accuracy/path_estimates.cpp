@@ -1,6 +1,7 @@
 // Stage ends, jumps and works combined across rows: the states' and works' choices, written
 // back into the reported row, and whether they meet rtol.
 #include "engine/accuracy/path_estimates.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -323,13 +324,12 @@ bool within(const std::vector<StateChoice>& choices, const std::vector<WorkChoic
   double largest_work = 0.0;
   for (const WorkChoice& c : work_choices) largest_work = std::max(largest_work, std::abs(c.value));
   const auto ok = [&](double value, double error) {
-    return error <= rtol * std::max({std::abs(value), kForceFloor * largest, zero.force});
+    return meets_rtol(error, value, rtol, std::max(kForceFloor * largest, zero.force));
   };
   // No rtol asks a work for less than the rounding of the sums behind it (choose_works).
   const auto work_ok = [&](const WorkChoice& c) {
-    return c.error <=
-           std::max(rtol * std::max({std::abs(c.value), kForceFloor * largest_work, zero.work}),
-                    2.0 * kSumRounding * largest_work);
+    return meets_rtol(c.error, c.value, rtol, std::max(kForceFloor * largest_work, zero.work),
+                      2.0 * kSumRounding * largest_work);
   };
   return std::all_of(
              choices.begin(), choices.end(),

@@ -1,6 +1,7 @@
 // Accuracy on programs: rows in one frame (a_max), so that they differ only in their spacing;
 // each reported state from the plain finest row or from Richardson across the last three.
 #include "engine/accuracy/program_resolution.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -180,9 +181,8 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
       // rtol) stay covered; the path's other states and works carry their estimates.
       const auto& peak_estimate = result.accuracy.peak_error_estimate;
       const bool peak_met =
-          !result.peak ||
-          (peak_estimate && *peak_estimate <= rtol * std::max(std::abs(result.peak->normal_force),
-                                                              frame.zero.force));
+          !result.peak || (peak_estimate && meets_rtol(*peak_estimate, result.peak->normal_force,
+                                                       rtol, frame.zero.force));
       result.accuracy.covers = {"critical.normal_force"};
       if (result.peak && peak_met)
         result.accuracy.covers.emplace_back("peak_adhesion.normal_force");

@@ -1,5 +1,6 @@
 // Combination of a row sequence and its a posteriori error estimates.
 #include "engine/accuracy/row_sequence.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 #include "engine/model/snapshot_fields.hpp"
 
@@ -59,7 +60,7 @@ std::optional<double> RowSequence::estimate(Accuracy::Route route) const {
 bool meets(const RowSequence& seq, Accuracy::Route route, double rtol) {
   const auto value = seq.value(route);
   const auto estimate = seq.estimate(route);
-  return value && estimate && *estimate <= rtol * std::abs(value->normal_force);
+  return value && estimate && meets_rtol(*estimate, value->normal_force, rtol);
 }
 
 Accuracy::Route cheaper_route(const RowSequence& seq, double rtol) {

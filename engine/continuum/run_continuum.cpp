@@ -1,5 +1,6 @@
 // Status, states, stages, jumps and work of the shorthand from the continuum pull-off walk.
 #include "engine/continuum/run_continuum.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -51,10 +52,6 @@ void emit_samples(const ContinuumBranch& branch, const ContinuumPullOff& p, std:
       }
     }
   }
-}
-
-bool within(double error, double value, double rtol, double floor) {
-  return error <= rtol * std::max(std::abs(value), floor);
 }
 
 }  // namespace
@@ -177,10 +174,11 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   const double floor = 1e-300 + std::abs(preload.normal_force) * 1e-6;
   // The work relative to the path's scale, the preload's energy: a cycle's net work may
   // cancel to nothing (no adhesion) while its parts are of that size.
-  bool met = within(work_error, std::abs(total.normal) + std::abs(total.tangential), rtol,
-                    preload_energy.value);
-  if (result.critical) met = met && within(p.critical_error, p.critical.normal_force, rtol, floor);
-  if (result.peak) met = met && within(p.peak_error, p.peak->normal_force, rtol, floor);
+  bool met = meets_rtol(work_error, std::abs(total.normal) + std::abs(total.tangential), rtol,
+                        preload_energy.value);
+  if (result.critical)
+    met = met && meets_rtol(p.critical_error, p.critical.normal_force, rtol, floor);
+  if (result.peak) met = met && meets_rtol(p.peak_error, p.peak->normal_force, rtol, floor);
   result.accuracy.rtol_met = met;
   if (!met) {
     result.warnings.push_back(fmt::format(

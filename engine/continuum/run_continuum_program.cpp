@@ -1,5 +1,6 @@
 // Stages, jumps and work of a normal loading program from the continuum front, stage by stage.
 #include "engine/continuum/run_continuum_program.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -534,10 +535,9 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
   for (const StageRecord& stage : w.result.stages) {
     work_scale += std::abs(stage.work.normal) + std::abs(stage.work.tangential);
   }
-  bool met = w.work_error <= rtol * work_scale;
+  bool met = meets_rtol(w.work_error, work_scale, rtol);
   if (w.result.critical) {
-    met = met &&
-          w.critical_error <= rtol * std::max(std::abs(w.result.critical->normal_force), floor);
+    met = met && meets_rtol(w.critical_error, w.result.critical->normal_force, rtol, floor);
   }
   w.result.accuracy.rtol_met = met;
   if (!met) {
