@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/accuracy/row_refinement.hpp"
 #include "engine/accuracy/row_sequence.hpp"
 #include "engine/pull_off/pull_off.hpp"
 #include "engine/result/status_margin.hpp"
@@ -87,31 +88,20 @@ struct Refined {
 /// Adds rows of doubling springs across `outer` to `seq` until its estimate meets rtol.
 Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
                std::optional<Accuracy::Route> forced, RunCounts& counts) {
-  Refined out;
   const bool zoomed = outer < scene.glued_radius;
-  for (;;) {
-    if (!seq.usable()) {
-      // The rows disagree on how the contact ends (a resolution decides it): start over
-      // from the finest, which sees the most.
-      RowSequence restart(seq.target());
-      restart.add(seq.last());
-      seq = std::move(restart);
-    }
-    // Four rows before anything is accepted: each estimate then has its guard term, the
-    // difference one resolution back (a single lucky agreement of two rows is not enough).
-    if (seq.rows().size() >= 4) {
-      out.route = forced ? *forced : cheaper_route(seq, rtol);
-      if (meets(seq, out.route, rtol)) {
-        out.met = true;
-        break;
-      }
-    }
-    if (seq.next_springs() > scene.discretization.max_row_springs) break;
-    RunResult next = run_row(
-        scene, {.springs = seq.next_springs(), .outer_radius = outer, .zoomed = zoomed}, {});
+  const RowOfSprings row = [&](std::int64_t springs) -> std::optional<RunResult> {
+    RunResult next =
+        run_row(scene, {.springs = springs, .outer_radius = outer, .zoomed = zoomed}, {});
     counts += next.counts;
-    seq.add(std::move(next));
-  }
+    return next;
+  };
+  RowRefinement refined =
+      refine_rows(std::move(seq), row, rtol, forced, scene.discretization.max_row_springs,
+                  WhenRowsDisagree::restart_from_finest);
+  seq = std::move(refined.sequence);
+  Refined out;
+  out.route = refined.route;
+  out.met = refined.met;
   if (seq.rows().size() < 3 && !forced) out.route = Accuracy::Route::row;
   out.value = seq.value(out.route);
   if (!out.value) out.value = seq.value(Accuracy::Route::row);

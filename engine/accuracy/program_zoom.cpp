@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "engine/accuracy/row_refinement.hpp"
 #include "engine/program/stage_motion.hpp"
 #include "engine/pull_off/pull_off.hpp"
 
@@ -165,29 +166,21 @@ std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunRe
     index = std::min(top, 2 * index);
   }
   if (!first) return std::nullopt;
-  RowSequence seq(target, {std::move(*first)});
-  Accuracy::Route route = Accuracy::Route::richardson;
-  for (;;) {
-    if (!seq.usable()) return std::nullopt;
-    // Four rows before anything is accepted, as on the shorthand (adaptive_resolution.cpp).
-    if (seq.rows().size() >= 4) {
-      route = scene.discretization.extrapolation == DiscretizationOptions::Extrapolation::none
-                  ? Accuracy::Route::row
-              : scene.discretization.richardson() ? Accuracy::Route::richardson
-                                                  : cheaper_route(seq, rtol);
-      if (meets(seq, route, rtol)) {
-        out.met = true;
-        break;
-      }
-    }
-    if (seq.next_springs() > scene.discretization.max_row_springs) break;
-    ZoomRow z = zoomed_row(scene, start, zero, radius, seq.next_springs());
+  const RowOfSprings row = [&](std::int64_t springs) -> std::optional<RunResult> {
+    ZoomRow z = zoomed_row(scene, start, zero, radius, springs);
     out.counts += z.row.counts;
     if (!z.exact || (target == Target::peak && target_springs(z.row, target, true) == 0)) {
       return std::nullopt;
     }
-    seq.add(std::move(z.row));
-  }
+    return std::move(z.row);
+  };
+  RowRefinement refined = refine_rows(
+      RowSequence(target, {std::move(*first)}), row, rtol, forced_route(scene.discretization),
+      scene.discretization.max_row_springs, WhenRowsDisagree::give_up);
+  if (refined.gave_up) return std::nullopt;
+  out.met = refined.met;
+  const RowSequence& seq = refined.sequence;
+  const Accuracy::Route route = refined.route;
   const auto value = seq.value(route);
   const auto estimate = seq.estimate(route);
   if (!value || !estimate) return std::nullopt;

@@ -10,6 +10,7 @@
 #include "engine/accuracy/adaptive_resolution.hpp"
 #include "engine/accuracy/program_resolution.hpp"
 #include "engine/accuracy/resolution_warning.hpp"
+#include "engine/accuracy/row_refinement.hpp"
 #include "engine/accuracy/row_sequence.hpp"
 #include "engine/accuracy/shorthand_accuracy.hpp"
 #include "engine/base/zero_scale.hpp"
@@ -153,13 +154,10 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
 }
 
 RunResult run_on_pull_off_row(const Scene& scene, const ObserverList& observers) {
-  using Extrapolation = DiscretizationOptions::Extrapolation;
   switch (scene.plan.driver) {
     case RouteDriver::rtol: {
-      std::optional<Accuracy::Route> route;
-      if (scene.discretization.extrapolation == Extrapolation::none) route = Accuracy::Route::row;
-      if (scene.discretization.richardson()) route = Accuracy::Route::richardson;
-      RunResult result = run_adaptive(scene, *scene.discretization.rtol, route, observers);
+      RunResult result = run_adaptive(scene, *scene.discretization.rtol,
+                                      forced_route(scene.discretization), observers);
       refine_shorthand_path(scene, *scene.discretization.rtol, result);
       return result;
     }
