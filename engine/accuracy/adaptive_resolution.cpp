@@ -89,6 +89,7 @@ struct Refined {
 Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
                std::optional<Accuracy::Route> forced, RunCounts& counts) {
   const bool zoomed = outer < scene.glued_radius;
+  seq.with_rough_radii(rough_radii(scene.material));
   const RowOfSprings row = [&](std::int64_t springs) -> std::optional<RunResult> {
     RunResult next =
         run_row(scene, {.springs = springs, .outer_radius = outer, .zoomed = zoomed}, {});
@@ -102,7 +103,7 @@ Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
   Refined out;
   out.route = refined.route;
   out.met = refined.met;
-  if (seq.rows().size() < 3 && !forced) out.route = Accuracy::Route::row;
+  if ((seq.rows().size() < 3 && !forced) || seq.rough()) out.route = Accuracy::Route::row;
   out.value = seq.value(out.route);
   if (!out.value) out.value = seq.value(Accuracy::Route::row);
   out.estimate = seq.estimate(out.route);

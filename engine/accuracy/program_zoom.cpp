@@ -175,8 +175,9 @@ std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunRe
     return std::move(z.row);
   };
   RowRefinement refined = refine_rows(
-      RowSequence(target, {std::move(*first)}), row, rtol, forced_route(scene.discretization),
-      scene.discretization.max_row_springs, WhenRowsDisagree::give_up);
+      RowSequence(target, {std::move(*first)}).with_rough_radii(rough_radii(scene.material)), row,
+      rtol, forced_route(scene.discretization), scene.discretization.max_row_springs,
+      WhenRowsDisagree::give_up);
   if (refined.gave_up) return std::nullopt;
   out.met = refined.met;
   const RowSequence& seq = refined.sequence;

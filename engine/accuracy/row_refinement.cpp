@@ -15,19 +15,20 @@ std::optional<Accuracy::Route> forced_route(const DiscretizationOptions& discret
 RowRefinement refine_rows(RowSequence seq, const RowOfSprings& row, double rtol,
                           std::optional<Accuracy::Route> forced, std::int64_t max_springs,
                           WhenRowsDisagree when_disagree) {
-  RowRefinement out{.sequence = RowSequence(seq.target())};
+  RowRefinement out{.sequence = seq.emptied()};
   for (;;) {
     if (!seq.usable()) {
       if (when_disagree == WhenRowsDisagree::give_up) {
         out.gave_up = true;
         break;
       }
-      RowSequence restart(seq.target());
+      RowSequence restart = seq.emptied();
       restart.add(seq.last());
       seq = std::move(restart);
     }
     if (seq.rows().size() >= 4) {
-      out.route = forced ? *forced : cheaper_route(seq, rtol);
+      // A row ending at a step or kink of dgamma has no extrapolation (RowSequence::rough).
+      out.route = seq.rough() ? Accuracy::Route::row : forced ? *forced : cheaper_route(seq, rtol);
       if (meets(seq, out.route, rtol)) {
         out.met = true;
         break;
