@@ -32,6 +32,17 @@ struct Cascade {
   /// A shear-off cascade's fold of the let-go branch above a_s, in spacings, where one lies
   /// there (status_margin.hpp): the row cannot tell that shear-off from an instability.
   std::optional<double> fold_above_shear_off;
+
+  /// Counts a change of the springs in contact or glued (not a fall-in, not a slip or stick);
+  /// `by_shear`: a let-go broken at rest.
+  void count(Change change, bool by_shear) {
+    ++changes;
+    if (changes == 1) {
+      first_by_shear = by_shear;
+      first = change;
+    }
+    if (changes == 2) second_by_shear = by_shear;
+  }
 };
 
 }  // namespace mdrsim

@@ -8,6 +8,7 @@
 
 #include "detachment/criterion.hpp"
 #include "engine/model/contact_snapshot.hpp"
+#include "engine/program/program_cascade.hpp"
 #include "engine/program/program_row.hpp"
 #include "engine/program/stage_motion.hpp"
 
@@ -56,6 +57,17 @@ class ProgramFront {
   void other_change() {
     previous_let_go_.reset();
     branch_size_ = 0;
+  }
+  /// What a cascade of one change at t did to the front.
+  void track(const Cascade& cascade, double t) {
+    if (cascade.changes != 1) return;
+    if (cascade.first == Change::glue) {
+      glued_one(cascade.before);
+    } else if (cascade.first == Change::let_go) {
+      let_go_one(t, cascade.glued, cascade.before);
+    } else {
+      other_change();
+    }
   }
 
   /// A state located between springs (a stage end, a jump's): a candidate for the peak.

@@ -15,9 +15,10 @@ JumpRecord& ProgramRecord::add_jump(const Cascade& cascade, std::int64_t in_cont
   return result_->jumps.back();
 }
 
-StageRecord& ProgramRecord::end_stage(const std::string& name, const ContactSnapshot& end) {
-  result_->stages.push_back({name, end, stage_work});
-  total_work_ += stage_work;
+StageRecord& ProgramRecord::end_stage(const std::string& name, const ContactSnapshot& end,
+                                      const AxisWork& work) {
+  result_->stages.push_back({name, end, work});
+  total_work_ += work;
   return result_->stages.back();
 }
 

@@ -14,16 +14,12 @@ class ProgramRecord {
  public:
   explicit ProgramRecord(RunResult& result) : result_(&result) {}
 
-  /// The machine's work in the stage under way [J]: the loop adds each trapezoid to it.
-  AxisWork stage_work;
-
-  void start_stage() { stage_work = {}; }
   /// The jump of a cascade of two or more changes, with the row it left: springs in contact
   /// and glued after it; the caller adds where it lands (after, end, located states).
   JumpRecord& add_jump(const Cascade& cascade, std::int64_t in_contact_after,
                        std::int64_t glued_after);
-  /// Ends the stage under way at `end`, with its work, which joins the total.
-  StageRecord& end_stage(const std::string& name, const ContactSnapshot& end);
+  /// Ends the stage under way at `end`, with its work [J], which joins the total.
+  StageRecord& end_stage(const std::string& name, const ContactSnapshot& end, const AxisWork& work);
   /// The total work of the stages ended so far.
   const AxisWork& total_work() const { return total_work_; }
 

@@ -84,6 +84,15 @@ class ProgramRow {
   /// Springs 1..n glue, each at the present u_x, on a row with nothing in contact: a zoomed
   /// row's start (program_zoom.hpp).
   void glue_first(std::int64_t n) { glue_through(n); }
+  /// A zoomed row's start: every spring glued with the one tangential offset [m] (at zero
+  /// stretch: the tangential machine holds u_x there while they glue), then the machine as
+  /// the stage started on the full row.
+  void start_zoomed(const MachineAxis& normal, const MachineAxis& tangential, double offset) {
+    edit_tangential() = {{1.0, 0.0}, offset, offset};
+    glue_first(reference_springs_);
+    edit_normal() = normal;
+    edit_tangential() = tangential;
+  }
   bool adhesive() const { return material_.adhesive(); }
   /// Coulomb friction on every spring in contact from now on (a row with nothing in contact).
   void enable_friction(const FrictionSettings& settings) {
@@ -154,6 +163,17 @@ class ProgramRow {
   /// The held value that the present state satisfies under `constraint`.
   double held_value_of_normal(const AffineConstraint& constraint) const;
   double held_value_of_tangential(const AffineConstraint& constraint) const;
+  /// A new controller on an axis takes its held value from the present state: nothing jumps.
+  void hand_normal_to(const AffineConstraint& constraint) {
+    const double rest = indentation();
+    const double held = held_value_of_normal(constraint);
+    edit_normal() = {constraint, held, rest};
+  }
+  void hand_tangential_to(const AffineConstraint& constraint) {
+    const double rest = tangential_displacement();
+    const double held = held_value_of_tangential(constraint);
+    edit_tangential() = {constraint, held, rest};
+  }
 
   /// Spring k+1 glues at the present u_x; it was pressed (m > k) or becomes the new edge.
   void glue_next();

@@ -46,8 +46,7 @@ struct StepLine {
   std::int64_t row_end;      ///< the last spring that exists (a zoomed row's N)
 };
 
-/// Locates the row's changes. Defined inline: the event loop calls it once per event, and a
-/// call across files cost the loop a tenth of its time.
+/// Locates the row's changes. Defined inline: the event loop calls it once per event.
 class ChangeLocator {
  public:
   /// `root_iterations` counts the criterion's root searches (RunCounts).
@@ -63,8 +62,7 @@ class ChangeLocator {
   /// Where the boundary spring lets go at tangential stretch stretch_x [m] (ProgramRow::
   /// boundary_stretch).
   /// A reference into the locator's cache, valid until its next call: a LetGo returned by
-  /// value went through the stack on every event, and the loads that read it back waited on
-  /// its stores (a one-row program's pull-off 10 % slower).
+  /// value would go through the stack on every event.
   const LetGo& boundary_let_go(const ProgramRow& row, double stretch_x);
   /// Whether spring k+1 may glue at tangential displacement u [m] as far as its stretch goes.
   /// A spring not pressed glues at no stretch: yes. A pressed spring sticking under friction
@@ -74,22 +72,23 @@ class ChangeLocator {
   /// that the run glues out to its outermost such spring and no further (else glue and let-go
   /// would follow each other without end). The run is scanned once per parameter value.
   bool kept_stretch_holds(const ProgramRow& row, const StepLine& line, double u);
-  /// Stepping takes a trial step back  /// Stepping takes a trial step back: what was cached of it
-  /// goes too.
+  /// Stepping takes a trial step back: what was cached of it goes too.
   void forget() {
     let_go_cache_.reset();
     run_scan_.reset();
     holdless_.reset();
   }
-  /// The loop applied `change` to `spring` (the spring glued, let go, touched, lifted, or
-  /// that slipped or stuck): what kept_stretch_holds knows of the run stays
-  /// true where the change leaves it so.
-  void changed(Change change, std::int64_t spring) {
+  /// The loop applied `change` to a row with `in_contact` springs in contact before it: what
+  /// kept_stretch_holds knows of the run stays true where the change leaves it so.
+  void changed(Change change, std::int64_t in_contact) {
     if (change == Change::glue) return;  // the run glues outwards: both scans still hold
     run_scan_.reset();
     if (change != Change::let_go && change != Change::fall_in && holdless_) {
       // A slip ends the run there, a stick gives the spring a new offset, a touch or a lift
       // changes the springs in contact there: the springs inside it are as they were.
+      const std::int64_t spring = change == Change::friction ? friction_event_.spring
+                                  : change == Change::touch  ? in_contact + 1
+                                                             : in_contact;
       holdless_->checked_to = std::min(holdless_->checked_to, spring - 1);
     } else {
       holdless_.reset();  // a let-go changes k
@@ -99,14 +98,28 @@ class ChangeLocator {
   const RowFrictionEvent& friction_event() const { return friction_event_; }
   /// The motion of d and u_x along the line from its present parameter (affine while the
   /// springs stay as they are), as the friction row reads it.
-  static LinearMotion motion(const ProgramRow& row, const StepLine& line) {
-    const double vd = line.normal.rate != 0.0 ? row.indentation_per_held() * line.normal.rate : 0.0;
-    return {line.t, row.indentation(), row.tangential_displacement(), vd,
-            (line.tangential.rate != 0.0 ? row.tangential_per_held() * line.tangential.rate : 0.0) +
+  static LinearMotion motion(const ProgramRow& row, double t, const AxisMotion& normal,
+                             const AxisMotion& tangential) {
+    const double vd = normal.rate != 0.0 ? row.indentation_per_held() * normal.rate : 0.0;
+    return {t, row.indentation(), row.tangential_displacement(), vd,
+            (tangential.rate != 0.0 ? row.tangential_per_held() * tangential.rate : 0.0) +
                 (vd != 0.0 ? row.tangential_per_indentation() * vd : 0.0)};
+  }
+  static LinearMotion motion(const ProgramRow& row, const StepLine& line) {
+    return motion(row, line.t, line.normal, line.tangential);
   }
 
  private:
+  /// next_change's searches along the line up to `best`, for a row whose boundary or next
+  /// spring moves in u_x at rate vu (and d at vd): where pressed spring k+1, sticking with
+  /// more stretch than its glue holds, comes to hold as u_x moves back; where the boundary
+  /// spring lets go as its elongation and stretch both move. The parameter, or none before
+  /// `best`.
+  std::optional<double> glue_back(const ProgramRow& row, const StepLine& line, double vu,
+                                  double best);
+  std::optional<double> let_go_along(const ProgramRow& row, const StepLine& line, double vd,
+                                     double vu, double best);
+
   const DetachmentCriterion& criterion_;
   std::int64_t* root_iterations_;
   struct LetGoCache {
@@ -250,6 +263,61 @@ inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const Ste
   return std::nullopt;
 }
 
+inline std::optional<double> ChangeLocator::glue_back(const ProgramRow& row, const StepLine& line,
+                                                      double vu, double best) {
+  // Spring k+1 sticks, pressed, with more stretch than a glue there holds, and no spring of
+  // its run holds either: it glues where u_x, moving back towards its offset s, brings its
+  // margin above zero (the criterion holds at no stretch and its holding states are convex,
+  // so the margin rises once on the way to s). An outer spring of the run that comes to hold
+  // first glues the run at the next event (docs/friction.md).
+  const std::int64_t k = row.glued();
+  const double u = row.tangential_displacement();
+  const double s = row.friction()->spring(k + 1).offset;
+  const double a = row.position(k + 1);
+  const double towards = line.t + (s - u) / vu;
+  if (!(towards > line.t)) return std::nullopt;
+  const auto margin = [&](double t) {
+    return criterion_.margin({0.0, u + vu * (t - line.t) - s, a});
+  };
+  const double soonest = next_parameter(line.t);
+  const double hi = std::min(towards, best);
+  if (margin(soonest) > 0.0) return soonest;
+  if (!(hi > soonest && margin(hi) > 0.0)) return std::nullopt;
+  const RootBracket b = bracket_root(margin, soonest, hi);
+  *root_iterations_ += b.iterations;
+  return b.hi;
+}
+
+inline std::optional<double> ChangeLocator::let_go_along(const ProgramRow& row,
+                                                         const StepLine& line, double vd, double vu,
+                                                         double best) {
+  // Both displacements move: root-find the margin along the line. The criterion's holding
+  // states are convex in (stretch, u_x) (its contract, criterion.hpp, sampled before the
+  // run), so the margin along a line is positive on one interval and one sign change
+  // brackets the first let-go.
+  const std::int64_t k = row.glued();
+  const double d = row.indentation();
+  const double u = row.tangential_displacement();
+  const double a = row.position(k);
+  const double g = row.image(k);
+  const auto margin = [&](double t) {
+    const double d_t = d + vd * (t - line.t);
+    const double stretch = std::max(0.0, g - d_t);
+    return criterion_.margin({stretch, row.boundary_stretch(d_t, u + vu * (t - line.t)), a});
+  };
+  const double now = margin(line.t);
+  if (now <= 0.0) return line.t;
+  double hi = best;
+  if (!std::isfinite(hi)) {
+    hi = line.t + 1.0;
+    for (int i = 0; i < 1100 && margin(hi) > 0.0; ++i) hi = line.t + 2.0 * (hi - line.t);
+  }
+  if (!(margin(hi) <= 0.0)) return std::nullopt;
+  const RootBracket b = bracket_root([&](double t) { return margin(t) / now; }, line.t, hi);
+  *root_iterations_ += b.iterations;
+  return b.hi;
+}
+
 inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const ProgramRow& row,
                                                                            const StepLine& line,
                                                                            double t_end) {
@@ -294,27 +362,7 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
   }
   if (m > k && vd < 0.0) consider(when_indentation(row.image(m)), Change::lift);
   if (front_glues && k < m && vu != 0.0 && !kept_stretch_holds(row, line, u)) {
-    // Spring k+1 sticks, pressed, with more stretch than a glue there holds, and no spring of
-    // its run holds either: it glues where u_x, moving back towards its offset s, brings its
-    // margin above zero (the criterion holds at no stretch and its holding states are convex,
-    // so the margin rises once on the way to s). An outer spring of the run that comes to hold
-    // first glues the run at the next event (docs/friction.md).
-    const double s = row.friction()->spring(k + 1).offset;
-    const double a = row.position(k + 1);
-    const double towards = line.t + (s - u) / vu;
-    if (towards > line.t) {
-      const auto margin = [&](double t) {
-        return criterion_.margin({0.0, u + vu * (t - line.t) - s, a});
-      };
-      const double hi = std::min(towards, best);
-      if (margin(soonest) > 0.0) {
-        consider(soonest, Change::glue);
-      } else if (hi > soonest && margin(hi) > 0.0) {
-        const RootBracket b = bracket_root(margin, soonest, hi);
-        *root_iterations_ += b.iterations;
-        consider(b.hi, Change::glue);
-      }
-    }
+    if (const auto t = glue_back(row, line, vu, best)) consider(*t, Change::glue);
   }
   if (k > 0) {
     if (!row.boundary_stretch_moves(d, vd, vu)) {
@@ -328,33 +376,8 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
           consider(when_indentation(row.image(k) - go.elongation), Change::let_go);
         }
       }
-    } else {
-      // Both displacements move: root-find the margin along the line. The criterion's
-      // holding states are convex in (stretch, u_x) (its contract, criterion.hpp, sampled
-      // before the run), so the margin along a line is positive on one interval and one
-      // sign change brackets the first let-go.
-      const double a = row.position(k);
-      const double g = row.image(k);
-      const auto margin = [&](double t) {
-        const double d_t = d + vd * (t - line.t);
-        const double stretch = std::max(0.0, g - d_t);
-        return criterion_.margin({stretch, row.boundary_stretch(d_t, u + vu * (t - line.t)), a});
-      };
-      const double now = margin(line.t);
-      if (now <= 0.0) {
-        consider(soonest, Change::let_go);
-      } else {
-        double hi = best;
-        if (!std::isfinite(hi)) {
-          hi = line.t + 1.0;
-          for (int i = 0; i < 1100 && margin(hi) > 0.0; ++i) hi = line.t + 2.0 * (hi - line.t);
-        }
-        if (margin(hi) <= 0.0) {
-          const RootBracket b = bracket_root([&](double t) { return margin(t) / now; }, line.t, hi);
-          *root_iterations_ += b.iterations;
-          consider(b.hi, Change::let_go);
-        }
-      }
+    } else if (const auto t = let_go_along(row, line, vd, vu, best)) {
+      consider(*t, Change::let_go);
     }
   }
   if (const FrictionRow* friction = row.friction()) {

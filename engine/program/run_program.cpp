@@ -85,7 +85,7 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
 
 /// The frame of a front at radius a_max reached at depth d: g there, or the front value it
 /// equals up to rounding, taken down by ulps until the row's own test at d (glue: g_N - d <=
-/// limit, as ProgramRunner::due() has it; touch: g_N - d <= 0) holds, so that spring N is
+/// limit, as ChangeLocator::due() has it; touch: g_N - d <= 0) holds, so that spring N is
 /// reached at the deepest point (docs).
 ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
   const double g = scene.profile->mdr_image(a_max);
