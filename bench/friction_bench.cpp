@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("fretting_press/mu:0.5", run, fretting(kSprings, 0.5, true))
       ->Unit(benchmark::kMillisecond);
   // Detachment events: the JKR cycle glues each spring as it touches (the approach, taken in
-  // one pass: ProgramRunner::press_in_bulk, a few ns per spring) and lets each go (a
+  // one pass: press_in_bulk, a few ns per spring) and lets each go (a
   // spring-detachment event of the loop); the cycle's difference from its approach over the
   // let-gos is the cost of a detachment event.
   benchmark::RegisterBenchmark("jkr_cycle", run, jkr_cycle(kSprings))

@@ -1,4 +1,4 @@
-// The press taken in one pass (ProgramRunner::press_in_bulk, ProgramRow::glue_through): a
+// The press taken in one pass (press_in_bulk in bulk_paths.hpp, ProgramRow::glue_through): a
 // program gives the same result as when each spring's glue is an event of its own (which the
 // loop does wherever single springs are observed), and the preload's work meets Hertz's.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// A friction ramp taken in bulk (ProgramRunner::slide_in_bulk): where nobody observes single
+// A friction ramp taken in bulk (slide_in_bulk in bulk_paths.hpp): where nobody observes single
 // slips, a tangential ramp under fixed grips at a still normal load applies the friction row's
 // events without the rest of the loop. Its result must be the loop's to the bit (the loop
 // takes every event where slips are observed), and its events those the loop emits.
