@@ -226,6 +226,7 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
                  counts);
     }
     result.status = c.sequence.last().status;
+    result.stop_reason = c.sequence.last().stop_reason;
     result.critical = c.value ? c.value : c.sequence.last().critical;
     result.accuracy.route = c.route;
     result.accuracy.rows.clear();

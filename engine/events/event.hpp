@@ -12,8 +12,8 @@ enum class RunStatus {
   instability,     ///< the contact jumps off; the critical point is its last equilibrium
   shear_off,       ///< the tangential load alone breaks the glued contact
   no_instability,  ///< the contact peels off smoothly to zero force
-  step_limit,      ///< stepping reached solver.max_steps before the contact came off (or a
-                   ///< program stopped at a limit before the contact was lost)
+  step_limit,      ///< the run stopped at a limit before the contact came off
+                   ///< (RunResult::stop_reason says which)
   completed,       ///< a program's last stage ran to its end with the contact in place
 };
 

@@ -153,6 +153,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const bool friction = scene.friction.has_value();
   ordered_json j;
   j["status"] = to_string(result.status);
+  if (result.stop_reason) j["stop_reason"] = to_string(*result.stop_reason);
   if (result.sliding) j["sliding"] = true;
   j["disk_valid"] = result.disk_valid;
   const auto [normal_control, tangential_control] = final_controls(scene, result.stages.size());

@@ -127,7 +127,9 @@ void print_program(std::FILE* out, const RunResult& r, bool row) {
 void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
   const auto [normal_control, tangential_control] = final_controls(scene, r.stages.size());
   const bool row = scene.solver.method != SolverMethod::continuum;
-  fmt::print(out, "status: {} (normal {}, tangential {}, criterion {}, {})\n", to_string(r.status),
+  fmt::print(out, "status: {}{} (normal {}, tangential {}, criterion {}, {})\n",
+             to_string(r.status),
+             r.stop_reason ? fmt::format(", stop reason {}", to_string(*r.stop_reason)) : "",
              normal_control, tangential_control, scene.criterion_name,
              row ? fmt::format("{} springs", r.springs) : std::string("continuum route"));
   print_program(out, r, row);

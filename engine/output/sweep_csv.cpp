@@ -60,7 +60,7 @@ std::uint64_t scene_hash(std::string_view scene_bytes, const std::vector<std::st
 
 std::string csv_header(const SweepGrid& grid, SweepColumns columns) {
   const bool dimensionless = columns.dimensionless;
-  std::string out = "status";
+  std::string out = "status,stop_reason";
   for (const VarySpec& spec : grid.keys()) out += "," + spec.key;
   for (const SnapshotField& f : kSnapshotFields) out += std::string(",") + f.name;
   out += ",springs_in_contact";
@@ -77,14 +77,15 @@ std::string csv_header(const SweepGrid& grid, SweepColumns columns) {
   return out + "\n";
 }
 
-// The status leads each row, and a run without a critical point leaves the critical columns
-// empty, so that no plot mistakes it for one.
+// The status and its stop reason (empty but for step-limit) lead each row, and a run without a
+// critical point leaves the critical columns empty, so that no plot mistakes it for one.
 std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& values,
                     const Scene& scene, const RunResult& r, SweepColumns columns) {
   const bool dimensionless = columns.dimensionless;
   fmt::memory_buffer out;
   const auto s = dimensionless_scales(scene);
-  fmt::format_to(std::back_inserter(out), "{}", to_string(r.status));
+  fmt::format_to(std::back_inserter(out), "{},{}", to_string(r.status),
+                 r.stop_reason ? to_string(*r.stop_reason) : "");
   for (std::size_t k = 0; k < values.size(); ++k) {
     out.push_back(',');
     const std::string& text = grid.keys()[k].values[values[k]].text;

@@ -39,7 +39,7 @@ struct SweepColumns {
   bool friction = false;
 };
 
-/// The header line, with its newline: status, the varied keys, the run's fields.
+/// The header line, with its newline: status, stop_reason, the varied keys, the run's fields.
 std::string csv_header(const SweepGrid& grid, SweepColumns columns);
 /// One row, with its newline; `values` index each key's values as SweepGrid::indices does.
 std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& values,

@@ -5,8 +5,6 @@
 
 #include <string>
 
-#include "engine/program/program_limits.hpp"
-
 namespace mdrsim {
 
 std::string ProgramOutcome::skipped_stages(const ProgramEnd& end) {
@@ -29,61 +27,15 @@ void ProgramOutcome::decide(const ProgramEnd& end, RunResult& r) const {
     r.warnings.push_back(skipped_stages(end));
   }
   r.sliding = end.flight.end == JumpEnd::sliding;
-  const std::string& stage = end.stage.name;
-  const ProgramRow& row = end.row;
-  switch (stop_) {
-    case ProgramStop::outgrew_row:
-      r.status = RunStatus::step_limit;
-      r.warnings.push_back(fmt::format(
-          "stage '{}': the contact outgrew the row of {} springs (radius {:.6g} m): the program "
-          "stops here",
-          stage, end.max_springs, row.position(end.max_springs)));
-      break;
-    case ProgramStop::no_end:
-      r.status = RunStatus::step_limit;
-      r.warnings.push_back(fmt::format(
-          "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
-          "springs in contact): the program stops here",
-          stage, row.in_contact()));
-      break;
-    case ProgramStop::max_steps:
-      r.status = RunStatus::step_limit;
-      r.warnings.push_back(fmt::format(
-          "the stepping method reached solver.max_steps = {} in stage '{}' before the program's "
-          "end: there is no critical point",
-          end.scene.solver.max_steps, stage));
-      break;
-    case ProgramStop::overflow:
-      r.status = RunStatus::step_limit;
+  if (stop_ == Stop::limit) {
+    stop_at_limit(r, limit_);
+    // The stage under way did not end in an equilibrium: no critical point from it.
+    if (limit_ == StopReason::overflow || limit_ == StopReason::unending_cascade) {
       r.critical.reset();
-      r.warnings.push_back(fmt::format(
-          "stage '{}': the program's forces, displacements or work left the range of a double "
-          "(the scene's values are too extreme together): it stops there, and only the stages "
-          "before it are reported",
-          stage));
-      break;
-    case ProgramStop::unending_cascade:
-      r.status = RunStatus::step_limit;
-      r.critical.reset();
-      r.warnings.push_back(fmt::format(
-          "stage '{}': at parameter {:.6g} the spring row kept changing without settling "
-          "(rounding of values far beyond the scene's scales, {} springs in contact): it stops "
-          "there, and only the stages before it are reported",
-          stage, unending_at_, row.in_contact()));
-      break;
-    case ProgramStop::endless_stick_slip:
-      r.status = RunStatus::step_limit;
-      r.warnings.push_back(fmt::format(
-          "stage '{}' changed its spring row more than {} times per spring ({} changes; {} "
-          "springs in contact, {} glued): the contact slides by stick-slip without end; the "
-          "program stops here",
-          stage, kSweepsPerStage, r.counts.events, row.in_contact(), row.glued()));
-      break;
-    case ProgramStop::cannot_hold_tangential:
-    case ProgramStop::cannot_hold_normal:
-    case ProgramStop::none:
-      decide_by_losses(end, r);
-      break;
+    }
+    r.warnings.push_back(limit_warning(end, r));
+  } else {
+    decide_by_losses(end, r);
   }
   // The stage of the critical point, for the closing events.
   for (const auto* loss : {&losses_.last_contact_loss(), &losses_.last_glue_loss()}) {
@@ -96,6 +48,53 @@ void ProgramOutcome::decide(const ProgramEnd& end, RunResult& r) const {
   }
 }
 
+std::string ProgramOutcome::limit_warning(const ProgramEnd& end, const RunResult& r) const {
+  const std::string& stage = end.stage.name;
+  const ProgramRow& row = end.row;
+  switch (limit_) {
+    case StopReason::outgrew_row:
+      return fmt::format(
+          "stage '{}': the contact outgrew the row of {} springs (radius {:.6g} m): the program "
+          "stops here",
+          stage, end.max_springs, row.position(end.max_springs));
+    case StopReason::no_end:
+      return fmt::format(
+          "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
+          "springs in contact): the program stops here",
+          stage, row.in_contact());
+    case StopReason::max_steps:
+      return fmt::format(
+          "the stepping method reached solver.max_steps = {} in stage '{}' before the program's "
+          "end: there is no critical point",
+          end.scene.solver.max_steps, stage);
+    case StopReason::max_events:
+      return fmt::format(
+          "the row reached solver.max_events = {} in stage '{}' before the program's end: the "
+          "program stops here",
+          end.scene.solver.max_events, stage);
+    case StopReason::max_events_per_spring:
+      return fmt::format(
+          "stage '{}' changed its spring row more than solver.max_events_per_spring = {} times "
+          "per spring ({} events in the run; {} springs in contact, {} glued): the contact "
+          "slides by stick-slip without end; the program stops here",
+          stage, end.scene.solver.max_events_per_spring, r.counts.events, row.in_contact(),
+          row.glued());
+    case StopReason::overflow:
+      return fmt::format(
+          "stage '{}': the program's forces, displacements or work left the range of a double "
+          "(the scene's values are too extreme together): it stops there, and only the stages "
+          "before it are reported",
+          stage);
+    case StopReason::unending_cascade:
+      return fmt::format(
+          "stage '{}': at parameter {:.6g} the spring row kept changing without settling "
+          "(rounding of values far beyond the scene's scales, {} springs in contact): it stops "
+          "there, and only the stages before it are reported",
+          stage, unending_at_, row.in_contact());
+  }
+  return {};
+}
+
 void ProgramOutcome::decide_by_losses(const ProgramEnd& end, RunResult& r) const {
   const ProgramRow& row = end.row;
   const auto decide_loss = [&](const Cascade& c) {
@@ -103,7 +102,7 @@ void ProgramOutcome::decide_by_losses(const ProgramEnd& end, RunResult& r) const
   };
   const auto& glue_loss = losses_.last_glue_loss();
   const auto& contact_loss = losses_.last_contact_loss();
-  if (stop_ == ProgramStop::cannot_hold_tangential) {
+  if (stop_ == Stop::cannot_hold_tangential) {
     if (end.scene.friction && row.in_contact() > 0) {
       // Every spring in contact slides at its limit and the held F_x asks for more: gross
       // sliding, at the last equilibrium (docs/friction.md "Statuses"): where the last
@@ -132,7 +131,7 @@ void ProgramOutcome::decide_by_losses(const ProgramEnd& end, RunResult& r) const
     }
     return;
   }
-  if (stop_ == ProgramStop::cannot_hold_normal && !contact_loss) {
+  if (stop_ == Stop::cannot_hold_normal && !contact_loss) {
     r.status = RunStatus::no_instability;
     r.warnings.push_back(fmt::format(
         "stage '{}': a fixed load pulls (F = {:.6g} N, moving towards {:.6g} N) with no "
@@ -141,7 +140,7 @@ void ProgramOutcome::decide_by_losses(const ProgramEnd& end, RunResult& r) const
     return;
   }
   const bool lost = row.in_contact() == 0 && end.watch.ever_in_contact();
-  if (stop_ == ProgramStop::cannot_hold_normal || (lost && contact_loss)) {
+  if (stop_ == Stop::cannot_hold_normal || (lost && contact_loss)) {
     decide_loss(losses_.deciding());
     return;
   }

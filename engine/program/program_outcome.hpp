@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "engine/base/zero_scale.hpp"
 #include "engine/program/path_watch.hpp"
@@ -9,22 +10,10 @@
 #include "engine/program/program_losses.hpp"
 #include "engine/program/program_row.hpp"
 #include "engine/result/run_result.hpp"
+#include "engine/result/stop_reason.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace mdrsim {
-
-/// Why a program stopped before its last stage's end.
-enum class ProgramStop {
-  none,
-  cannot_hold_normal,      ///< a fixed normal load with nothing to hold it (program_flight.hpp)
-  cannot_hold_tangential,  ///< a fixed tangential load with nothing to hold it
-  outgrew_row,             ///< the contact needs a spring beyond the row's last
-  no_end,                  ///< a stage until separation with nothing on its path to part it
-  endless_stick_slip,      ///< a stage took more than kSweepsPerStage events per spring
-  max_steps,               ///< stepping reached solver.max_steps
-  overflow,                ///< forces, displacements or work left the range of a double
-  unending_cascade,        ///< the changes at one parameter value did not settle
-};
 
 /// What the outcome reads of the run where it stopped.
 struct ProgramEnd {
@@ -40,20 +29,23 @@ struct ProgramEnd {
 
 class ProgramOutcome {
  public:
-  bool stopped() const { return stop_ != ProgramStop::none; }
-  ProgramStop stop() const { return stop_; }
-  void stop(ProgramStop why) { stop_ = why; }
-  /// A fixed load lost its hold (cannot_hold): the normal one where nothing is in contact
-  /// and no machine spring holds it.
-  void stop_lost_hold(const ProgramRow& row) {
-    stop_ = row.in_contact() == 0 && !row.normal_has_stiffness()
-                ? ProgramStop::cannot_hold_normal
-                : ProgramStop::cannot_hold_tangential;
+  bool stopped() const { return stop_ != Stop::none; }
+  /// Whether the run stopped at a limit, for this reason.
+  bool stopped_by(StopReason why) const { return stop_ == Stop::limit && limit_ == why; }
+  void stop(StopReason why) {
+    stop_ = Stop::limit;
+    limit_ = why;
   }
   /// The changes at parameter t did not settle.
   void stop_unending(double t) {
-    stop_ = ProgramStop::unending_cascade;
+    stop(StopReason::unending_cascade);
     unending_at_ = t;
+  }
+  /// A fixed load lost its hold (cannot_hold): the normal one where nothing is in contact
+  /// and no machine spring holds it.
+  void stop_lost_hold(const ProgramRow& row) {
+    stop_ = row.in_contact() == 0 && !row.normal_has_stiffness() ? Stop::cannot_hold_normal
+                                                                 : Stop::cannot_hold_tangential;
   }
   /// The cascades that lost the glue or the contact.
   ProgramLosses& losses() { return losses_; }
@@ -65,10 +57,17 @@ class ProgramOutcome {
   static std::string skipped_stages(const ProgramEnd& end);
 
  private:
+  /// Why a program stopped before its last stage's end: a fixed load with nothing to hold it
+  /// (program_flight.hpp), or a limit (limit_).
+  enum class Stop { none, cannot_hold_normal, cannot_hold_tangential, limit };
+
+  /// The warning of a stop at a limit.
+  std::string limit_warning(const ProgramEnd& end, const RunResult& r) const;
   /// The status where nothing stopped the run early, or a fixed load lost its hold.
   void decide_by_losses(const ProgramEnd& end, RunResult& r) const;
 
-  ProgramStop stop_ = ProgramStop::none;
+  Stop stop_ = Stop::none;
+  StopReason limit_ = StopReason::overflow;
   double unending_at_ = 0.0;  ///< the parameter of an unending cascade
   ProgramLosses losses_;
 };

@@ -50,7 +50,7 @@ class ProgramRunner {
         zoomed_(spec.zoomed),
         events_(observers),
         watch_(scene, spec.zero.force, largest, last_stage),
-        limits_(spec.max_springs) {
+        limits_(scene.solver, spec.max_springs) {
     at_.row.record_edge_forces(spec.edge_forces);
     if (scene.friction) at_.row.enable_friction(*scene.friction);
     // The front located between springs knows no friction: friction rows report their own.
@@ -67,7 +67,7 @@ class ProgramRunner {
   void end_stage(const Stage& stage);
   /// Moves along the line to t, with no change on the way.
   void advance_to(double t) {
-    if (!at_.advance_to(t)) outcome_.stop(ProgramStop::overflow);
+    if (!at_.advance_to(t)) outcome_.stop(StopReason::overflow);
   }
   StepLine step_line() const {
     return {at_.t, at_.line.normal, at_.line.tangential, at_.guards, max_springs_, row_end_};
@@ -77,7 +77,7 @@ class ProgramRunner {
   bool due(Change& change) {
     bool outgrew = false;
     const auto due = locator_.due(at_.row, step_line(), outgrew);
-    if (outgrew) outcome_.stop(ProgramStop::outgrew_row);
+    if (outgrew) outcome_.stop(StopReason::outgrew_row);
     if (!due) return false;
     change = *due;
     return true;
@@ -209,7 +209,7 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
 
 void ProgramRunner::finish_cascade(const Cascade& cascade) {
   // An unending cascade is not an equilibrium: nothing is recorded.
-  if (outcome_.stop() == ProgramStop::unending_cascade) return;
+  if (outcome_.stopped_by(StopReason::unending_cascade)) return;
   if (const JumpEnd end = flight_of(cascade, at_.row, at_.line); end != JumpEnd::state) {
     end_in_flight(cascade, end);
     return;
@@ -218,7 +218,7 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
   const ContactSnapshot after = at_.row.snapshot();
   // `before` is within range: advance_to checked the work up to it.
   if (!within_double(after) || !at_.work_within_double()) {
-    outcome_.stop(ProgramStop::overflow);  // values beyond a double: nothing of it is recorded
+    outcome_.stop(StopReason::overflow);  // values beyond a double: nothing of it is recorded
     return;
   }
   observe(after, &cascade.before);
@@ -318,7 +318,7 @@ void ProgramRunner::take_step(double t_end) {
     advance_to(target);
     const bool more = run_changes(std::nullopt, cascade, last_try ? kNoLimit : 1);
     events_.hold(false);
-    if (outcome_.stop() == ProgramStop::unending_cascade) return;
+    if (outcome_.stopped_by(StopReason::unending_cascade)) return;
     if (more && !last_try) {
       at_ = saved;
       result_.counts = saved_counts;
@@ -341,7 +341,7 @@ void ProgramRunner::take_step(double t_end) {
 
 bool ProgramRunner::after_bulk(BulkEnd end) {
   if (end == BulkEnd::not_taken) return false;
-  if (end == BulkEnd::overflow) outcome_.stop(ProgramStop::overflow);
+  if (end == BulkEnd::overflow) outcome_.stop(StopReason::overflow);
   if (end == BulkEnd::unending) outcome_.stop_unending(at_.t);
   if (end != BulkEnd::taken) return true;
   // Slips and sticks applied outside the locator: what it knows of the runs goes.
@@ -376,14 +376,14 @@ void ProgramRunner::follow_stage(const Stage& stage) {
     return slide_in_bulk(at_, t_end, events_until, row_end_, cascade_cap(), result_.counts);
   };
   // The sticks a ramp's reversal makes due at its start are a friction row's own as well.
-  if (slides_in_bulk) after_bulk(slide(limits_.progress_at()));
+  if (slides_in_bulk) after_bulk(slide(limits_.before_stage()));
   if (!outcome_.stopped()) run_cascade(std::nullopt, hold_cascades);
   limits_.start_stage(result_.counts.events);
   while (!outcome_.stopped() && !flight_.flying()) {
     if (stage.until_separation && at_.row.in_contact() == 0) break;
     if (result_.counts.events > limits_.look_at()) [[unlikely]] {
-      if (limits_.stage_passed(result_.counts.events)) {
-        outcome_.stop(ProgramStop::endless_stick_slip);
+      if (const auto limit = limits_.passed(result_.counts.events)) {
+        outcome_.stop(*limit);
         break;
       }
       if (limits_.progress_due(result_.counts.events)) log_progress(stage);
@@ -395,7 +395,7 @@ void ProgramRunner::follow_stage(const Stage& stage) {
     if (step_) {
       if (at_.t >= t_end) break;
       if (result_.counts.steps >= scene_.solver.max_steps) {
-        outcome_.stop(ProgramStop::max_steps);
+        outcome_.stop(StopReason::max_steps);
         break;
       }
       take_step(t_end);
@@ -412,12 +412,12 @@ void ProgramRunner::follow_stage(const Stage& stage) {
         // What the end's exact held value makes due there (spring N reached at a_max).
         run_cascade(std::nullopt, false);
       } else {
-        outcome_.stop(ProgramStop::no_end);
+        outcome_.stop(StopReason::no_end);
       }
       break;
     }
     advance_to(next->first);
-    if (outcome_.stop() == ProgramStop::overflow) break;
+    if (outcome_.stopped()) break;  // overflow
     // Under a fixed load a cascade may end in a flight, whose springs are not reported.
     run_cascade(next->second, hold_cascades);
   }
@@ -425,11 +425,14 @@ void ProgramRunner::follow_stage(const Stage& stage) {
 
 void ProgramRunner::end_stage(const Stage& stage) {
   // The stage's numbers left the range of a double, or its changes did not settle.
-  const ProgramStop stop = outcome_.stop();
-  if (stop == ProgramStop::overflow || stop == ProgramStop::unending_cascade) return;
+  if (outcome_.stopped_by(StopReason::overflow) ||
+      outcome_.stopped_by(StopReason::unending_cascade)) {
+    return;
+  }
+  const bool stopped = outcome_.stopped();
   if (flight_.flying()) {
     // The stop the loop's next turn would have found (the outcome reads the status from it).
-    if (stop == ProgramStop::none && !(stage.until_separation && at_.row.in_contact() == 0)) {
+    if (!stopped && !(stage.until_separation && at_.row.in_contact() == 0)) {
       outcome_.stop_lost_hold(at_.row);
     }
     // The stage ends where the flight began: its critical point.
@@ -440,7 +443,7 @@ void ProgramRunner::end_stage(const Stage& stage) {
   }
   const ContactSnapshot end = at_.row.snapshot();
   StageRecord& record = record_.end_stage(stage.name, end, at_.work);
-  if (front_ && stop == ProgramStop::none) {
+  if (front_ && !stopped) {
     record.refined_end = front_->at_rest(at_.row);
     front_->candidate(record.refined_end);
   }

@@ -244,7 +244,11 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   const ObserverList& pull_off_observers = may_fly ? buffered : observers;
   while (contact.springs_in_contact() > 0) {
     if (result.counts.steps >= scene.solver.max_steps) {
-      result.status = RunStatus::step_limit;
+      stop_at_limit(result, StopReason::max_steps);
+      break;
+    }
+    if (result.counts.events >= scene.solver.max_events) {
+      stop_at_limit(result, StopReason::max_events);
       break;
     }
     const std::size_t before_advance = buffer.held();
@@ -296,11 +300,18 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
         "the work of the path left the range of a double (the scene's values are too extreme "
         "together): no stages, jumps or work are reported");
   }
-  if (result.status == RunStatus::step_limit) {
+  if (result.stop_reason == StopReason::max_steps) {
     result.warnings.push_back(fmt::format(
         "the stepping method reached solver.max_steps = {} before the contact was lost: there is "
         "no critical point",
         scene.solver.max_steps));
+    return result;
+  }
+  if (result.stop_reason == StopReason::max_events) {
+    result.warnings.push_back(fmt::format(
+        "the row reached solver.max_events = {} before the contact was lost: there is no "
+        "critical point",
+        scene.solver.max_events));
     return result;
   }
   if (track.empty()) {

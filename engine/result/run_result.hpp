@@ -10,6 +10,7 @@
 #include "engine/model/contact_snapshot.hpp"
 #include "engine/result/program_records.hpp"
 #include "engine/result/run_counts.hpp"
+#include "engine/result/stop_reason.hpp"
 
 namespace mdrsim {
 
@@ -45,6 +46,8 @@ struct Accuracy {
 
 struct RunResult {
   RunStatus status = RunStatus::instability;
+  /// Why the run stopped: present exactly when `status` is step_limit.
+  std::optional<StopReason> stop_reason;
   /// The last equilibrium before the loss of contact: present for `instability` and for a
   /// `shear-off` during the pull-off, absent where no such equilibrium exists (a shear-off
   /// as the tangential load is applied, a smooth peel, the step limit).
@@ -87,5 +90,11 @@ struct RunResult {
   double wall_time_s = 0.0;
   std::int64_t springs = 0;  ///< springs of the finest row run (one half)
 };
+
+/// Ends a run at a limit: status step_limit, and why.
+inline void stop_at_limit(RunResult& r, StopReason why) {
+  r.status = RunStatus::step_limit;
+  r.stop_reason = why;
+}
 
 }  // namespace mdrsim

@@ -46,6 +46,14 @@ struct SolverOptions {
   /// radius (the command's --samples with --trajectory); 0: none. Not a scene key.
   std::int64_t samples = 0;
   std::int64_t max_steps = 100'000'000;
+  /// The events (spring changes, slips and sticks) a spring row may take: at this many the
+  /// run stops with step-limit (StopReason::max_events). Both row methods.
+  std::int64_t max_events = 1'000'000'000'000'000;
+  /// The events a program stage may take per spring of its row: a stage sweeps its row a few
+  /// times at most, but stick-slip (rebinding under a shear ramp) changes the edge spring once
+  /// per slip, and a large ramp slips without end; past this the run stops with step-limit
+  /// (StopReason::max_events_per_spring). Both row methods.
+  std::int64_t max_events_per_spring = 64;
 };
 
 /// The fewest springs a row may have for Richardson extrapolation: below it the rows' ends

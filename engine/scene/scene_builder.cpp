@@ -248,7 +248,8 @@ void read_shorthand(TomlReader& loading, const ControllerRegistry& controllers, 
 }
 
 void read_solver(TomlReader& t, SolverOptions& solver) {
-  t.check_keys({"method", "step", "max_halvings", "max_steps"});
+  t.check_keys(
+      {"method", "step", "max_halvings", "max_steps", "max_events", "max_events_per_spring"});
   const std::string method = t.name("method", {"event", "stepping", "continuum"}, "event");
   solver.method = method == "event"       ? SolverMethod::event
                   : method == "continuum" ? SolverMethod::continuum
@@ -273,6 +274,24 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
           t.integer({.key = "max_steps", .lower = Bound{1, true}, .upper = Bound{1e15, true}});
     } else {
       t.record("max_steps", solver.max_steps);
+    }
+  }
+  if (solver.method == SolverMethod::continuum) {
+    for (const char* k : {"max_events", "max_events_per_spring"}) {
+      if (t.has(k)) t.fail_at(k, "applies to method = \"event\" or \"stepping\" only");
+    }
+  } else {
+    if (t.has("max_events")) {
+      solver.max_events =
+          t.integer({.key = "max_events", .lower = Bound{1, true}, .upper = Bound{1e15, true}});
+    } else {
+      t.record("max_events", solver.max_events);
+    }
+    if (t.has("max_events_per_spring")) {
+      solver.max_events_per_spring = t.integer(
+          {.key = "max_events_per_spring", .lower = Bound{1, true}, .upper = Bound{1e9, true}});
+    } else {
+      t.record("max_events_per_spring", solver.max_events_per_spring);
     }
   }
   t.finish();
@@ -340,7 +359,9 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     if (route_keys.method_given) route_keys.method_at = solver->message_at("method", "");
     read_solver(*solver, scene.solver);
   } else {
-    root.record("solver", {{"method", "event"}});
+    root.record("solver", {{"method", "event"},
+                           {"max_events", scene.solver.max_events},
+                           {"max_events_per_spring", scene.solver.max_events_per_spring}});
   }
   const bool continuum = scene.solver.method == SolverMethod::continuum;
 
@@ -420,7 +441,8 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   // continuum route, so that rerunning it takes the same route.
   if (scene.plan.continuum_by_rtol) {
     if (auto solver = resolved->find("solver"); solver != resolved->end()) {
-      solver->erase("method");
+      // The route has no events: the row's limits go with the method.
+      for (const char* key : {"method", "max_events", "max_events_per_spring"}) solver->erase(key);
       if (solver->empty()) resolved->erase(solver);
     }
   }

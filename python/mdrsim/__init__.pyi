@@ -16,6 +16,8 @@ SAMPLES: int
 SceneValue = Union[bool, int, float, str, Sequence[Any], npt.NDArray[Any], Mapping[str, Any]]
 ScenePath = Union[str, os.PathLike[str]]
 Status = Literal["instability", "shear-off", "no-instability", "step-limit", "completed"]
+StopReason = Literal["max-steps", "max-events", "max-events-per-spring", "outgrew-row", "no-end",
+                     "overflow", "unending-cascade"]
 Method = Literal["event", "stepping", "continuum"]
 
 class SceneError(ValueError): ...
@@ -119,6 +121,8 @@ class Trajectory(TypedDict):
 class Result:
     @property
     def status(self) -> Status: ...
+    @property
+    def stop_reason(self) -> StopReason | None: ...
     @property
     def title(self) -> str: ...
     @property

@@ -73,7 +73,7 @@ class Jump:
 
 
 # What a pickled Result keeps of the engine's result (the attributes of _core.RunResult).
-_RAW_FIELDS = ("status", "title", "critical", "peak", "tangential_strength", "stages", "jumps",
+_RAW_FIELDS = ("status", "stop_reason", "title", "critical", "peak", "tangential_strength", "stages", "jumps",
                "work", "sliding", "warnings", "has_warnings", "disk_valid", "counts", "springs",
                "wall_time_s", "scales", "trajectory_rows_seen", "trajectory_stride")
 
@@ -117,6 +117,13 @@ class Result:
     def status(self):
         """instability, shear-off, no-instability, step-limit or completed (docs)."""
         return self._raw.status
+
+    @property
+    def stop_reason(self):
+        """Why a step-limit run stopped (max-steps, max-events, max-events-per-spring,
+        outgrew-row, no-end, overflow, unending-cascade: docs/outputs.md); None for any other
+        status."""
+        return self._raw.stop_reason
 
     @property
     def title(self):

@@ -132,24 +132,24 @@ class SweepResult:
 
     @cached_property
     def columns(self):
-        """The CSV header: status, the varied keys, the run's fields."""
+        """The CSV header: status, stop_reason, the varied keys, the run's fields."""
         return self._header.rstrip("\n").split(",")
 
     @cached_property
     def rows(self):
-        """One dict per row, keyed by `columns`: the status and a varied name as str, a
-        varied number and the fields as float (the counts springs_in_contact, springs and
+        """One dict per row, keyed by `columns`: the status and a varied name as str, the
+        stop reason as str (None but for step-limit), a varied number and the fields as float (the counts springs_in_contact, springs and
         warnings, springs_sliding as int; disk_valid, sliding as bool), None where the CSV
         field is empty."""
         keys = [dict(values) for values in self._values]
-        names = self.columns[1 + len(keys):]
+        names = self.columns[2 + len(keys):]
         rows = []
         for line in self._lines:
             fields = line.rstrip("\n").split(",")
-            row = {"status": fields[0]}
-            for column, lookup, text in zip(self.columns[1:], keys, fields[1:]):
+            row = {"status": fields[0], "stop_reason": fields[1] or None}
+            for column, lookup, text in zip(self.columns[2:], keys, fields[2:]):
                 row[column] = lookup[text]
-            for name, text in zip(names, fields[1 + len(keys):]):
+            for name, text in zip(names, fields[2 + len(keys):]):
                 if text == "":
                     row[name] = None
                 elif name in _COUNT_COLUMNS:

@@ -213,6 +213,11 @@ void bind_results(py::module_& m) {
   py::class_<ResultHandle>(m, "RunResult", "The engine's result of one run (internal).")
       .def_property_readonly("status",
                              [](const ResultHandle& r) { return to_string(r.result.status); })
+      .def_property_readonly("stop_reason",
+                             [](const ResultHandle& r) -> std::optional<std::string> {
+                               if (!r.result.stop_reason) return std::nullopt;
+                               return to_string(*r.result.stop_reason);
+                             })
       .def_property_readonly("title", [](const ResultHandle& r) { return r.scene->title; })
       .def_property_readonly("critical",
                              [](const ResultHandle& r) {

@@ -85,7 +85,7 @@ def test_thread_pool_gives_the_command_csv(command_csv):
     for row, line in zip(result.rows, lines[2:]):
         fields = line.split(",")
         assert row["status"] == fields[0]
-        for name, text in zip(result.columns[3:], fields[3:]):
+        for name, text in zip(result.columns[4:], fields[4:]):
             if name == "disk_valid":
                 assert row[name] is (text == "true")
             else:

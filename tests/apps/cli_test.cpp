@@ -596,7 +596,18 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
        R"(--set: solver.max_steps: expected a whole number, got string "x")"},
       {"solver={ method = \"stepping\", max_steps = 0 }",
        "--set: solver.max_steps = 0 is outside [1, 1000000000000000]"},
-      {"solver.x=1", "--set: solver.x: unknown key (known: max_halvings, max_steps, method, step)"},
+      {"solver.max_events=\"x\"",
+       R"(--set: solver.max_events: expected a whole number, got string "x")"},
+      {"solver.max_events=0", "--set: solver.max_events = 0 is outside [1, 1000000000000000]"},
+      {"solver.max_events_per_spring=2.5",
+       "--set: solver.max_events_per_spring = 2.5 is not a whole number"},
+      {"solver.max_events_per_spring=2e9",
+       "--set: solver.max_events_per_spring = 2000000000 is outside [1, 1000000000]"},
+      {"solver={ method = \"continuum\", max_events = 10 }",
+       "--set: solver.max_events: applies to method = \"event\" or \"stepping\" only"},
+      {"solver.x=1",
+       "--set: solver.x: unknown key (known: max_events, max_events_per_spring, max_halvings, "
+       "max_steps, method, step)"},
   };
   const std::string json = path("out.json");
   for (const auto& [set, message] : cases) {

@@ -63,7 +63,8 @@ TEST_F(Provenance, TheJsonCarriesWhatProducedIt) {
     "loading": {"preload": {"contact_radius": 2e-05}, "normal": {"control": "fixed-load"}},
     "detachment": {"criterion": "mode-mixed"},
     "discretization": {"springs": 20000},
-    "solver": {"method": "event"}})");
+    "solver": {"method": "event", "max_events": 1000000000000000,
+               "max_events_per_spring": 64}})");
   EXPECT_EQ(j["scene"], scene) << j["scene"].dump(2);
   EXPECT_EQ(j["material"]["effective_modulus"], 1e6);
   EXPECT_EQ(j["material"]["effective_shear_modulus"], 1e6);

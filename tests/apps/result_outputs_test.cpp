@@ -142,7 +142,8 @@ TEST_F(ResultOutputs, SweepRowsWithoutCriticalPointLeaveItEmpty) {
   const auto rows = csv_rows(r.out);
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0][0], "status");
-  EXPECT_EQ(rows[0][1], "loading.tangential.displacement");
+  EXPECT_EQ(rows[0][1], "stop_reason");
+  EXPECT_EQ(rows[0][2], "loading.tangential.displacement");
   const std::size_t columns = rows[0].size();
   std::size_t strength = 0;
   for (std::size_t c = 0; c < columns; ++c) {
@@ -150,12 +151,13 @@ TEST_F(ResultOutputs, SweepRowsWithoutCriticalPointLeaveItEmpty) {
   }
   ASSERT_GT(strength, 0u);
   EXPECT_EQ(rows[1][0], "instability");
-  EXPECT_FALSE(rows[1][2].empty());
+  EXPECT_TRUE(rows[1][1].empty());  // a stop reason is step-limit's alone
+  EXPECT_FALSE(rows[1][3].empty());
   EXPECT_TRUE(rows[1][strength].empty());
   for (const std::size_t i : {2u, 3u}) {
     ASSERT_EQ(rows[i].size(), columns);
     EXPECT_EQ(rows[i][0], "shear-off");
-    for (std::size_t c = 2; c < strength; ++c) {
+    for (std::size_t c = 3; c < strength; ++c) {
       if (rows[0][c].find("peak") == std::string::npos) {
         EXPECT_TRUE(rows[i][c].empty()) << rows[0][c];
       }

@@ -164,8 +164,9 @@ TEST_F(Sweep, TwoKeysGiveTheirProductTheLastFastest) {
   ASSERT_EQ(lines.size(), 8u);
   EXPECT_EQ(lines[0].rfind("# mdrsim sweep: scene ", 0), 0u) << lines[0];
   EXPECT_NE(lines[0].find(", rows 6, shard 0/1"), std::string::npos) << lines[0];
-  EXPECT_EQ(lines[1],
-            fmt::format("status,material.poisson_ratio,detachment.criterion,{}", kColumns));
+  EXPECT_EQ(
+      lines[1],
+      fmt::format("status,stop_reason,material.poisson_ratio,detachment.criterion,{}", kColumns));
   const std::vector<std::pair<std::string, std::string>> expected{
       {"0", "mode-mixed"},   {"0", "stress"},   {"0", "deformation"},
       {"0.3", "mode-mixed"}, {"0.3", "stress"}, {"0.3", "deformation"}};
@@ -173,12 +174,13 @@ TEST_F(Sweep, TwoKeysGiveTheirProductTheLastFastest) {
     const auto fields = split(lines[i + 2]);
     ASSERT_EQ(fields.size(), split(lines[1]).size()) << lines[i + 2];
     EXPECT_EQ(fields[0], "instability") << lines[i + 2];
-    EXPECT_EQ(fields[1], expected[i].first) << lines[i + 2];
-    EXPECT_EQ(fields[2], expected[i].second) << lines[i + 2];
+    EXPECT_EQ(fields[1], "") << lines[i + 2];
+    EXPECT_EQ(fields[2], expected[i].first) << lines[i + 2];
+    EXPECT_EQ(fields[3], expected[i].second) << lines[i + 2];
   }
   // nu changes the critical point; without a tangential load the criteria agree.
-  EXPECT_NE(split(lines[2])[3], split(lines[5])[3]);
-  EXPECT_EQ(split(lines[2])[3], split(lines[3])[3]);
+  EXPECT_NE(split(lines[2])[4], split(lines[5])[4]);
+  EXPECT_EQ(split(lines[2])[4], split(lines[3])[4]);
 }
 
 TEST_F(Sweep, ListOfNamesAndOfNumbers) {
@@ -189,17 +191,18 @@ TEST_F(Sweep, ListOfNamesAndOfNumbers) {
       << err();
   const auto lines = lines_of(slurp(csv));
   ASSERT_EQ(lines.size(), 6u);
-  EXPECT_EQ(lines[1].rfind("status,loading.normal.control,discretization.springs,", 0), 0u);
+  EXPECT_EQ(lines[1].rfind("status,stop_reason,loading.normal.control,discretization.springs,", 0),
+            0u);
   const char* controls[] = {"fixed-load", "fixed-load", "fixed-grips", "fixed-grips"};
   const char* springs[] = {"100", "200", "100", "200"};
   for (int i = 0; i < 4; ++i) {
     const auto fields = split(lines[i + 2]);
-    EXPECT_EQ(fields[1], controls[i]);
-    EXPECT_EQ(fields[2], springs[i]);
+    EXPECT_EQ(fields[2], controls[i]);
+    EXPECT_EQ(fields[3], springs[i]);
   }
   // Fixed grips jump off at 5/9 of the fixed-load pull-off force (JKR): about -0.56 F0.
-  const double fixed_load = std::stod(split(lines[3])[9]);
-  const double fixed_grips = std::stod(split(lines[5])[9]);
+  const double fixed_load = std::stod(split(lines[3])[10]);
+  const double fixed_grips = std::stod(split(lines[5])[10]);
   EXPECT_NEAR(fixed_load, -1.0, 0.02);
   EXPECT_NEAR(fixed_grips, -5.0 / 9.0, 0.02);
 }
@@ -214,8 +217,8 @@ TEST_F(Sweep, LogSpacedValues) {
   ASSERT_EQ(lines.size(), 17u);
   std::vector<std::string> springs, radii;
   for (std::size_t i = 2; i < lines.size(); ++i) {
-    springs.push_back(split(lines[i])[1]);
-    radii.push_back(split(lines[i])[2]);
+    springs.push_back(split(lines[i])[2]);
+    radii.push_back(split(lines[i])[3]);
   }
   EXPECT_EQ(springs[0], "100");
   EXPECT_EQ(springs[5], "1000");
@@ -265,7 +268,7 @@ TEST_F(Sweep, ValueBadOnlyWithAnotherKeysValueFailsWhenItsRowRuns) {
                                scene_));
   const auto lines = lines_of(slurp(csv));
   ASSERT_EQ(lines.size(), 5u);
-  EXPECT_EQ(lines[4].rfind("instability,sphere,0.01,", 0), 0u) << lines[4];
+  EXPECT_EQ(lines[4].rfind("instability,,sphere,0.01,", 0), 0u) << lines[4];
 }
 
 TEST_F(Sweep, BadShardOrResumeFlags) {
@@ -581,7 +584,7 @@ TEST_F(Sweep, ResumeRefusesACsvOfAnotherSceneGridOrShard) {
   std::string text = slurp(csv);
   std::string same_values;  // the grid's values, as a list
   for (std::size_t i = 2; i < 6; ++i) {
-    same_values += (i == 2 ? "" : ",") + split(lines_of(text)[i])[1];
+    same_values += (i == 2 ? "" : ",") + split(lines_of(text)[i])[2];
   }
   text.resize(text.rfind('\n', text.size() - 2) + 1);  // one row short
   std::ofstream(csv, std::ios::binary) << text;

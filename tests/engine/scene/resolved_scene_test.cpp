@@ -61,7 +61,8 @@ TEST(ResolvedScene, HoldsEveryDefault) {
     "loading": {"preload": {"force": 0.001}, "normal": {"control": "fixed-load"}},
     "detachment": {"criterion": "mode-mixed"},
     "discretization": {"springs": 2000},
-    "solver": {"method": "event"}})");
+    "solver": {"method": "event", "max_events": 1000000000000000,
+               "max_events_per_spring": 64}})");
   EXPECT_EQ(*build(kShorthand).resolved, expected) << build(kShorthand).resolved->dump(2);
 }
 
@@ -78,7 +79,8 @@ TEST(ResolvedScene, OfAProgramKeepsWhatItsAbsenceMeans) {
   EXPECT_EQ(r["loading"]["rebinding"], false);
   EXPECT_EQ(r["solver"], nlohmann::json::parse(
                              R"({"method": "stepping", "max_halvings": 30,
-                                 "max_steps": 100000000})"));
+                                 "max_steps": 100000000, "max_events": 1000000000000000,
+                                 "max_events_per_spring": 64})"));
   EXPECT_EQ(r["material"]["poisson_ratio"], 0.3);
   EXPECT_FALSE(r["material"].contains("effective_modulus"));
 }

@@ -498,8 +498,8 @@ std::vector<BadScene> solver_cases() {
       {"MethodNumber", "method = \"event\"", "method = 1",
        "test.toml:18:10: solver.method: expected a string, got 1"},
       {"MethodTypo", "method = \"event\"", "mehtod = \"event\"",
-       "test.toml:18:1: solver.mehtod: unknown key; did you mean 'method'? (known: max_halvings, "
-       "max_steps, method, step)"},
+       "test.toml:18:1: solver.mehtod: unknown key; did you mean 'method'? (known: max_events, "
+       "max_events_per_spring, max_halvings, max_steps, method, step)"},
       {"StepWithEvent", "method = \"event\"", "method = \"event\"\nstep = 1e-6",
        "test.toml:19:8: solver.step: applies to method = \"stepping\" only"},
       {"StepWithDefaultMethod", "method = \"event\"", "step = 1e-6",
@@ -515,8 +515,8 @@ std::vector<BadScene> solver_cases() {
       {"StepString", "method = \"event\"", std::string(kStepping) + "\nstep = \"small\"",
        R"(test.toml:19:8: solver.step: expected a number, got string "small")"},
       {"StepTypo", "method = \"event\"", std::string(kStepping) + "\nsteps = 1e-6",
-       "test.toml:19:1: solver.steps: unknown key; did you mean 'step'? (known: max_halvings, "
-       "max_steps, method, step)"},
+       "test.toml:19:1: solver.steps: unknown key; did you mean 'step'? (known: max_events, "
+       "max_events_per_spring, max_halvings, max_steps, method, step)"},
       {"MaxHalvingsNegative", "method = \"event\"", std::string(kStepping) + "\nmax_halvings = -1",
        "test.toml:19:16: solver.max_halvings = -1 is outside [0, 60]"},
       {"MaxHalvingsTooMany", "method = \"event\"", std::string(kStepping) + "\nmax_halvings = 61",
@@ -535,6 +535,27 @@ std::vector<BadScene> solver_cases() {
        "test.toml:19:13: solver.max_steps = 1e+16 is outside [1, 1000000000000000]"},
       {"MaxStepsInf", "method = \"event\"", std::string(kStepping) + "\nmax_steps = inf",
        "test.toml:19:13: solver.max_steps = inf is not a finite number"},
+      // The event limits hold under either row method, and only there.
+      {"MaxEventsZero", "method = \"event\"", "method = \"event\"\nmax_events = 0",
+       "test.toml:19:14: solver.max_events = 0 is outside [1, 1000000000000000]"},
+      {"MaxEventsTooMany", "method = \"event\"", std::string(kStepping) + "\nmax_events = 1e16",
+       "test.toml:19:14: solver.max_events = 1e+16 is outside [1, 1000000000000000]"},
+      {"MaxEventsFraction", "method = \"event\"", "max_events = 10.5",
+       "test.toml:18:14: solver.max_events = 10.5 is not a whole number"},
+      {"MaxEventsString", "method = \"event\"", "max_events = \"many\"",
+       R"(test.toml:18:14: solver.max_events: expected a whole number, got string "many")"},
+      {"MaxEventsWithContinuum", "method = \"event\"", "method = \"continuum\"\nmax_events = 10",
+       "test.toml:19:14: solver.max_events: applies to method = \"event\" or \"stepping\" only"},
+      {"MaxEventsPerSpringZero", "method = \"event\"", "max_events_per_spring = 0",
+       "test.toml:18:25: solver.max_events_per_spring = 0 is outside [1, 1000000000]"},
+      {"MaxEventsPerSpringTooMany", "method = \"event\"", "max_events_per_spring = 2e9",
+       "test.toml:18:25: solver.max_events_per_spring = 2000000000 is outside [1, 1000000000]"},
+      {"MaxEventsPerSpringFraction", "method = \"event\"", "max_events_per_spring = 0.5",
+       "test.toml:18:25: solver.max_events_per_spring = 0.5 is outside [1, 1000000000]"},
+      {"MaxEventsPerSpringWithContinuum", "method = \"event\"",
+       "method = \"continuum\"\nmax_events_per_spring = 8",
+       "test.toml:19:25: solver.max_events_per_spring: applies to method = \"event\" or "
+       "\"stepping\" only"},
   };
 }
 INSTANTIATE_TEST_SUITE_P(Solver, BadSceneTest, ::testing::ValuesIn(solver_cases()), case_name);

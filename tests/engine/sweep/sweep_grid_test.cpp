@@ -109,7 +109,8 @@ TEST(SweepCsv, SceneHashCoversTheFileAndEverySet) {
 TEST(SweepCsv, HeaderNamesEveryVariedKey) {
   const SweepGrid grid = grid_of({"material.poisson_ratio=0:0.3:2", "detachment.criterion=stress"});
   const std::string header = csv_header(grid, {});
-  EXPECT_EQ(header.rfind("status,material.poisson_ratio,detachment.criterion,normal_force,", 0),
+  EXPECT_EQ(header.rfind(
+                "status,stop_reason,material.poisson_ratio,detachment.criterion,normal_force,", 0),
             0u);
   EXPECT_EQ(header.find("dimensionless"), std::string::npos);
   EXPECT_EQ(header.find("sliding"), std::string::npos);
