@@ -3,6 +3,7 @@
 import csv
 import json
 import math
+import pickle
 import subprocess
 
 import pytest
@@ -37,6 +38,19 @@ def test_critical_point_in_si_and_dimensionless():
         {"discretization.extrapolation": "none", "discretization.springs": 1000}), trajectory=False)
     assert plain.accuracy is None
     assert "instability" in repr(result)
+
+
+def test_stop_reason_is_a_step_limits_alone():
+    stopped = mdrsim.run(mdrsim.Scene.from_file(FIG2).with_values(
+        {"discretization.extrapolation": "none", "discretization.springs": 200,
+         "solver": {"method": "stepping", "max_steps": 5}}), trajectory=False)
+    assert stopped.status == "step-limit"
+    assert stopped.stop_reason == "max-steps"
+    assert stopped.to_dict()["stop_reason"] == "max-steps"
+    assert pickle.loads(pickle.dumps(stopped)).stop_reason == "max-steps"
+    plain = mdrsim.run(FIG2, trajectory=False)
+    assert plain.status == "instability" and plain.stop_reason is None
+    assert "stop_reason" not in plain.to_dict()
 
 
 def test_same_json_as_the_command(cli):

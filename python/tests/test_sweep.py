@@ -78,6 +78,7 @@ def test_thread_pool_gives_the_command_csv(command_csv):
     assert last["detachment.criterion"] == "deformation"
     assert last["loading.tangential.displacement"] == 2e-5
     assert {row["status"] for row in result.rows} == {"instability", "shear-off"}
+    assert {row["stop_reason"] for row in result.rows} == {None}
     assert last["normal_force"] is None and last["tangential_strength"] > 0
     assert first["springs_in_contact"] > 0 and isinstance(first["springs_in_contact"], int)
     assert isinstance(first["springs"], int) and isinstance(first["warnings"], int)
