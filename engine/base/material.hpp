@@ -15,7 +15,7 @@ struct Material {
   double effective_shear_modulus;  ///< G* = 4G/(2 - nu) [Pa]
   double work_of_adhesion;         ///< dgamma [J/m^2]
   /// dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma: the advancing front of a loading program glues
-  /// the spring just outside the contact at the gap sqrt(2 pi x dgamma_a / E*) (0: on touch).
+  /// the spring just outside the contact at the gap advancing_glue_gap(x) below.
   double approach_work_of_adhesion = 0.0;
   /// dgamma(r) and dgamma_a(r) where the scene gives a table or a sinusoid (null: the numbers
   /// above hold at every radius). The numbers above are then the scale values (the mean, or
@@ -33,7 +33,8 @@ struct Material {
                                                : approach_work_of_adhesion;
   }
   /// The gap g(x) - d [m] at which the advancing front glues the spring at radius x [m]:
-  /// sqrt(2 pi x dgamma_a(x) / E*) (0: on touch).
+  /// sqrt(2 pi x dgamma_a(x) / E*) (0: on touch). The depth it gives is gluing_depth()
+  /// (engine/model/gluing_depth.hpp).
   double advancing_glue_gap(double x) const {
     return std::sqrt(hess_scale(approach_work_of_adhesion_at(x), effective_modulus) * x);
   }

@@ -17,6 +17,7 @@
 #include "engine/base/hess_scale.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
+#include "engine/model/gluing_depth.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
@@ -58,7 +59,12 @@ class ContinuumStage {
         modulus_(scene.material.effective_modulus) {}
 
   ContinuumBranch& branch() { return branch_; }
-  double advancing_stretch(double a) const { return std::sqrt(advancing_per_radius_ * a); }
+  /// The advancing limit at radius a [m] and the depth at which the front reaches a
+  /// (engine/model/gluing_depth.hpp) [m].
+  double advancing_stretch(double a) const { return advancing_limit(branch_.material(), true, a); }
+  double advancing_depth(double a) const {
+    return gluing_depth(branch_.profile(), branch_.material(), true, a);
+  }
   double receding_stretch(double a) const { return branch_.stretch(a); }
 
   /// The equilibrium of the disk (the empty contact: F = 0 at d).
@@ -177,7 +183,7 @@ void press(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
     disk.indentation = 0.0;
     if (st.advancing_control(kTip) < 0.0) {
       const double a = st.advance_to(kTip, 0.0);
-      disk = {a, st.branch().profile().mdr_image(a) - st.advancing_stretch(a)};
+      disk = {a, st.advancing_depth(a)};
     }
     const BranchState after = st.state(disk);
     w.result.jumps.push_back({.stage = stage.name,
@@ -226,7 +232,7 @@ void press(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
     disk = start;
   }
   const double to = st.advance_to(std::max(a, 1e-300), c1);
-  const Disk end{to, st.branch().profile().mdr_image(to) - st.advancing_stretch(to)};
+  const Disk end{to, st.advancing_depth(to)};
   stage_work += st.work(disk, end, w.work_error);
   st.pieces.push_back({Piece::Kind::advancing, disk.radius, to, 0.0, 0.0});
   disk = end;

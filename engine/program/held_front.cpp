@@ -6,17 +6,9 @@
 
 #include "engine/base/bracketed_root.hpp"
 #include "engine/model/compensated_sum.hpp"
+#include "engine/model/gluing_depth.hpp"
 
 namespace mdrsim {
-namespace {
-
-/// The depth at which a spring at radius x [m] glues (or touches): g(x) minus the advancing
-/// limit.
-double gluing_depth(const Profile& profile, const Material& material, bool glued, double x) {
-  return profile.mdr_image(x) - (glued ? material.advancing_glue_gap(x) : 0.0);
-}
-
-}  // namespace
 
 std::optional<double> row_radius_reaching_held(const Profile& profile, const Material& material,
                                                const HeldDeepest& deepest, std::int64_t springs,

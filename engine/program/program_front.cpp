@@ -34,7 +34,7 @@ std::optional<ContactSnapshot> ProgramFront::at_rest(ProgramRow& row) {
   // Spring n glues once the gap g_n - d (with n - 1 glued) reaches its limit (advancing); the
   // boundary lets go once the criterion's margin reaches zero (receding).
   const auto glue_margin = [](const ProgramRow& r, std::int64_t n) {
-    return r.image(n) - r.indentation() - (n == 1 ? 0.0 : r.front_limit(n));
+    return r.image(n) - r.indentation() - r.front_limit(n);
   };
   struct Branch {
     ContactSnapshot state;

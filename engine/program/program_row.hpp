@@ -13,6 +13,7 @@
 #include "engine/base/material.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/contact_snapshot.hpp"
+#include "engine/model/gluing_depth.hpp"
 #include "engine/program/friction_row.hpp"
 #include "profiles/profile.hpp"
 
@@ -46,11 +47,17 @@ class ProgramRow {
     return i == reference_springs_ ? reference_radius_ : spacing_ * static_cast<double>(i);
   }
   double image(std::int64_t i) const { return values(i).image; }  ///< g(x_i) [m]
-  double front_limit(std::int64_t i) const {  ///< sqrt(2 pi x_i dgamma_a / E*) [m]
+  /// The gap g_i - d at which the front glues spring i [m]: the advancing limit at x_i
+  /// (engine/model/gluing_depth.hpp), 0 for spring 1 (nothing glued yet: it glues on touch).
+  double front_limit(std::int64_t i) const {
+    if (i == 1) return 0.0;
     SpringValues& v = values(i);
-    if (v.front_limit < 0.0) v.front_limit = material_.advancing_glue_gap(position(i));
+    if (v.front_limit < 0.0) v.front_limit = advancing_limit(material_, true, position(i));
     return v.front_limit;
   }
+  /// The indentation at which spring i glues, springs 1..i-1 glued: gluing_depth() on the
+  /// row's values, g_i - l_i [m].
+  double gluing_depth(std::int64_t i) const { return image(i) - front_limit(i); }
   double spacing() const { return spacing_; }
   std::int64_t reference_springs() const { return reference_springs_; }
 

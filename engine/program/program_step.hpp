@@ -226,7 +226,7 @@ inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const Ste
   // each other at the same parameter without end).
   if (front_glues && kept_stretch_holds(row, line, row.tangential_displacement())) {
     const double gap = row.image(k + 1) - d;
-    const double limit = k == 0 ? 0.0 : row.front_limit(k + 1);
+    const double limit = row.front_limit(k + 1);
     const bool released_now = k + 1 <= line.guards.released_to;
     if (released_now ? line.guards.released_with_stretch && gap < limit : gap <= limit) {
       if (k + 1 > line.max_springs) {
@@ -354,8 +354,7 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
   }
   const bool front_glues = row.adhesive() && row.can_glue(k + 1) && k < line.row_end;
   if (front_glues && vd > 0.0 && kept_stretch_holds(row, line, u)) {
-    consider(when_indentation(row.image(k + 1) - (k == 0 ? 0.0 : row.front_limit(k + 1))),
-             Change::glue);
+    consider(when_indentation(row.gluing_depth(k + 1)), Change::glue);
   }
   if (!(m == k && front_glues) && vd > 0.0 && m < line.row_end) {
     consider(when_indentation(row.image(m + 1)), Change::touch);

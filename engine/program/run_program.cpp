@@ -13,6 +13,7 @@
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
 #include "engine/model/criterion_contract.hpp"
+#include "engine/model/gluing_depth.hpp"
 #include "engine/program/program_row.hpp"
 #include "engine/program/program_runner.hpp"
 #include "engine/program/stage_motion.hpp"
@@ -66,8 +67,8 @@ double guess_radius(const Scene& scene) {
   return std::isfinite(profile.outer_radius()) ? 0.5 * profile.outer_radius() : 1e-3;
 }
 
-/// The continuum front at depth d [m]: the x where g(x) - sqrt(2 pi x dgamma_a / E*) = d
-/// for a glued edge, g(x) = d for a pressed one, between the pilot's springs m and m + 1.
+/// The continuum front at depth d [m]: the x where gluing_depth(x) = d for a glued edge,
+/// g(x) = d for a pressed one, between the pilot's springs m and m + 1.
 double front_radius(const Scene& scene, const LargestContact& largest, double spacing) {
   const Profile& profile = *scene.profile;
   if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
@@ -75,7 +76,7 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
     return profile.contact_radius_at_depth(largest.indentation);
   }
   const auto excess = [&](double x) {
-    return profile.mdr_image(x) - scene.material.advancing_glue_gap(x) - largest.indentation;
+    return gluing_depth(profile, scene.material, true, x) - largest.indentation;
   };
   const double lo = spacing * static_cast<double>(largest.springs);
   double hi = lo + spacing;
@@ -89,7 +90,7 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
 /// reached at the deepest point (docs).
 ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
   const double g = scene.profile->mdr_image(a_max);
-  const double limit = glued_edge ? scene.material.advancing_glue_gap(a_max) : 0.0;
+  const double limit = advancing_limit(scene.material, glued_edge, a_max);
   double front = indentation + limit;
   if (!(std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)))) {
     return {a_max, g};
@@ -125,12 +126,10 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   }
   const Profile& profile = *scene.profile;
   if (!(deepest > 0.0) || profile.fixed_contact_radius()) return std::nullopt;
-  // The front glues where the gap reaches sqrt(2 pi x dgamma_a / E*) (0: glue or press on
-  // touch), as ProgramRow's front does.
+  // The front glues at the advancing limit (or presses on touch), as ProgramRow's front does.
   const bool glued_edge = scene.material.adhesive();
   const auto excess = [&](double x) {
-    return profile.mdr_image(x) - (glued_edge ? scene.material.advancing_glue_gap(x) : 0.0) -
-           deepest;
+    return gluing_depth(profile, scene.material, glued_edge, x) - deepest;
   };
   double hi = 0.0;
   try {
@@ -158,7 +157,8 @@ std::optional<double> continuum_front_reaching_held(const Scene& scene, const He
   const Profile& profile = *scene.profile;
   const double e_star = scene.material.effective_modulus;
   const auto excess = [&](double a) {
-    const double limit = held.glued_edge ? scene.material.advancing_glue_gap(a) : 0.0;
+    // The gluing depth g - l (gluing_depth()), on the limit l that the force needs too.
+    const double limit = advancing_limit(scene.material, held.glued_edge, a);
     const double d = profile.mdr_image(a) - limit;
     const double force = e_star * (profile.nonadhesive_force_per_modulus(a) - 2.0 * a * limit);
     return held.constraint.displacement_coefficient * d +
