@@ -7,13 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
 #include "engine/model/criterion_contract.hpp"
 #include "engine/model/gluing_depth.hpp"
+#include "engine/model/jkr_scales.hpp"
 #include "engine/program/program_row.hpp"
 #include "engine/program/program_runner.hpp"
 #include "engine/program/stage_motion.hpp"
@@ -60,9 +60,10 @@ double guess_radius(const Scene& scene) {
   }
   if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
   if (radius > 0.0) return radius;
-  if (const auto tip = profile.jkr_scale_radius(); tip && scene.material.work_of_adhesion > 0.0) {
-    return std::cbrt(9.0 * std::numbers::pi * *tip * *tip * scene.material.work_of_adhesion /
-                     (8.0 * e_star));
+  if (const auto tip = profile.jkr_scale_radius()) {
+    if (const auto jkr = JkrScales::of(*tip, e_star, scene.material.work_of_adhesion)) {
+      return jkr->radius;
+    }
   }
   return std::isfinite(profile.outer_radius()) ? 0.5 * profile.outer_radius() : 1e-3;
 }
