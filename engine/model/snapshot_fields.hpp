@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <stdexcept>
 
 #include "engine/base/pull_off_scales.hpp"
 #include "engine/model/contact_snapshot.hpp"
@@ -26,6 +27,19 @@ inline double scale_of(const Scales& s, ScaleKind kind) {
   return s.depth;
 }
 
+/// The scale's key in the result's `scales` (the JSON's and Python's), as PullOffScales names it.
+inline const char* scale_key(ScaleKind kind) {
+  switch (kind) {
+    case ScaleKind::force:
+      return "force";
+    case ScaleKind::radius:
+      return "radius";
+    case ScaleKind::depth:
+      break;
+  }
+  return "depth";
+}
+
 inline const char* scale_symbol(ScaleKind kind) {
   switch (kind) {
     case ScaleKind::force:
@@ -47,7 +61,7 @@ struct SnapshotField {
 };
 
 /// The physical quantities of a snapshot, in the order of docs/outputs.md: the JSON's `critical`
-/// and `dimensionless`, the sweep's columns, the summary, the finiteness checks.
+/// and `dimensionless`, the sweep's columns, the summary, the finiteness checks, Python's states.
 inline constexpr std::array<SnapshotField, 5> kSnapshotFields{{
     {"normal_force", "F", "N", ScaleKind::force, &ContactSnapshot::normal_force},
     {"tangential_force", "Fx", "N", ScaleKind::force, &ContactSnapshot::tangential_force},
@@ -56,6 +70,22 @@ inline constexpr std::array<SnapshotField, 5> kSnapshotFields{{
     {"tangential_displacement", "ux", "m", ScaleKind::depth,
      &ContactSnapshot::tangential_displacement},
 }};
+
+/// The field of kSnapshotFields that reads `member` (a compile error where none does).
+constexpr const SnapshotField& snapshot_field(double ContactSnapshot::*member) {
+  for (const SnapshotField& f : kSnapshotFields) {
+    if (f.member == member) return f;
+  }
+  throw std::logic_error("snapshot_field: not a field of kSnapshotFields");
+}
+
+/// The fields in the order of a trajectory row (docs/outputs.md, "The trajectory CSV"): the
+/// CSV's columns and Python's trajectory arrays.
+inline constexpr std::array<SnapshotField, 5> kTrajectoryFields{
+    snapshot_field(&ContactSnapshot::indentation), snapshot_field(&ContactSnapshot::normal_force),
+    snapshot_field(&ContactSnapshot::contact_radius),
+    snapshot_field(&ContactSnapshot::tangential_displacement),
+    snapshot_field(&ContactSnapshot::tangential_force)};
 
 /// Every quantity that varies smoothly along the branch: the fields above and the normal
 /// control value. Interpolation between springs and extrapolation across rows use these.

@@ -3,26 +3,33 @@
 
 #include <fmt/ostream.h>
 
+#include <cstddef>
+
+#include "engine/model/snapshot_fields.hpp"
+
 namespace mdrsim {
 
 TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, bool friction)
     : out_(&out), friction_(friction) {
-  *out_ << "stage,event,in_cascade,indentation,normal_force,contact_radius,tangential_displacement,"
-           "tangential_force,springs_in_contact"
-        << (friction_ ? ",sliding\n" : "\n");
+  *out_ << "stage,event,in_cascade";
+  for (const SnapshotField& f : kTrajectoryFields) *out_ << ',' << f.name;
+  *out_ << ",springs_in_contact" << (friction_ ? ",sliding\n" : "\n");
 }
 
 void TrajectoryCsvWriter::on_event(const Event& e) {
   if (e.kind == EventKind::finished) return;
   const ContactSnapshot& s = e.state;
+  // One format string per row: a join or a call per field writes a long trajectory slower.
+  static_assert(kTrajectoryFields.size() == 5, "one {} per field in the rows below");
+  const auto field = [&s](std::size_t i) { return s.*kTrajectoryFields[i].member; };
   if (e.kind == EventKind::sample) {  // the continuum route counts no springs
-    fmt::print(*out_, "{},{},0,{},{},{},{},{},\n", stage_name(e), to_string(e.kind), s.indentation,
-               s.normal_force, s.contact_radius, s.tangential_displacement, s.tangential_force);
+    fmt::print(*out_, "{},{},0,{},{},{},{},{},\n", stage_name(e), to_string(e.kind), field(0),
+               field(1), field(2), field(3), field(4));
     return;
   }
   fmt::print(*out_, "{},{},{},{},{},{},{},{},{}", stage_name(e), to_string(e.kind),
-             e.in_cascade ? 1 : 0, s.indentation, s.normal_force, s.contact_radius,
-             s.tangential_displacement, s.tangential_force, s.springs_in_contact);
+             e.in_cascade ? 1 : 0, field(0), field(1), field(2), field(3), field(4),
+             s.springs_in_contact);
   if (friction_) fmt::print(*out_, ",{}", s.springs_sliding);
   *out_ << '\n';
 }

@@ -7,9 +7,9 @@
 
 namespace mdrsim {
 
-/// Columns: event, in_cascade, indentation, normal_force, contact_radius,
-/// tangential_displacement, tangential_force, springs_in_contact (SI units); with friction
-/// also `sliding`, the springs of one half sliding (docs/friction.md).
+/// Columns: stage, event, in_cascade, the state's fields (kTrajectoryFields, SI units),
+/// springs_in_contact; with friction also `sliding`, the springs of one half sliding
+/// (docs/friction.md).
 class TrajectoryCsvWriter final : public Observer {
  public:
   explicit TrajectoryCsvWriter(std::ostream& out, bool friction = false);

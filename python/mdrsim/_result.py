@@ -4,10 +4,11 @@ import json
 from dataclasses import dataclass
 from functools import cached_property
 
-# The dimensionless fields (docs, paper eq. 16) and the JKR scale each is divided by.
-_SCALED = (("normal_force", "force"), ("tangential_force", "force"),
-           ("contact_radius", "radius"), ("indentation", "depth"),
-           ("tangential_displacement", "depth"))
+from . import _core
+
+# The dimensionless fields (docs, paper eq. 16) and the JKR scale each is divided by: the
+# engine's list (engine/model/snapshot_fields.hpp), as the JSON's `dimensionless` has them.
+_SCALED = _core.SNAPSHOT_FIELDS
 
 
 @dataclass(frozen=True)

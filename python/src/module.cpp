@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/model/snapshot_fields.hpp"
 #include "engine/output/finite_check.hpp"
 #include "engine/output/result_json.hpp"
 #include "engine/run/run_scene.hpp"
@@ -130,11 +131,9 @@ py::dict take_trajectory(TrajectoryColumns& c, bool friction) {
   t["stage"] = stage;
   t["event"] = event;
   t["in_cascade"] = take_column(c.in_cascade, py::dtype::of<bool>());
-  t["indentation"] = take_column(c.indentation, f8);
-  t["normal_force"] = take_column(c.normal_force, f8);
-  t["contact_radius"] = take_column(c.contact_radius, f8);
-  t["tangential_displacement"] = take_column(c.tangential_displacement, f8);
-  t["tangential_force"] = take_column(c.tangential_force, f8);
+  for (std::size_t i = 0; i < kTrajectoryFields.size(); ++i) {
+    t[kTrajectoryFields[i].name] = take_column(c.state[i], f8);
+  }
   t["springs_in_contact"] = take_column(c.springs_in_contact, py::dtype::of<std::int64_t>());
   t["normal_control"] = take_column(c.normal_control, f8);
   if (friction) t["sliding"] = take_column(c.springs_sliding, py::dtype::of<std::int64_t>());
@@ -145,11 +144,7 @@ py::dict take_trajectory(TrajectoryColumns& c, bool friction) {
 py::dict snapshot(const ContactSnapshot& s, bool friction) {
   py::dict d;
   d["normal_control"] = s.normal_control;
-  d["indentation"] = s.indentation;
-  d["normal_force"] = s.normal_force;
-  d["contact_radius"] = s.contact_radius;
-  d["tangential_displacement"] = s.tangential_displacement;
-  d["tangential_force"] = s.tangential_force;
+  for (const SnapshotField& f : kSnapshotFields) d[f.name] = s.*f.member;
   d["springs_in_contact"] = s.springs_in_contact;
   d["disk_valid"] = s.disk_valid;
   if (friction) {
@@ -285,17 +280,18 @@ void bind_results(py::module_& m) {
       .def_property_readonly("springs", [](const ResultHandle& r) { return r.result.springs; })
       .def_property_readonly("wall_time_s",
                              [](const ResultHandle& r) { return r.result.wall_time_s; })
-      .def_property_readonly("scales",
-                             [](const ResultHandle& r) -> py::object {
-                               const auto s = dimensionless_scales(*r.scene);
-                               if (!s) return py::none();
-                               py::dict d;
-                               d["force"] = s->force;
-                               d["radius"] = s->radius;
-                               d["depth"] = s->depth;
-                               d["basis"] = s->basis;
-                               return d;
-                             })
+      .def_property_readonly(
+          "scales",
+          [](const ResultHandle& r) -> py::object {
+            const auto s = dimensionless_scales(*r.scene);
+            if (!s) return py::none();
+            py::dict d;
+            for (const ScaleKind kind : {ScaleKind::force, ScaleKind::radius, ScaleKind::depth}) {
+              d[scale_key(kind)] = scale_of(*s, kind);
+            }
+            d["basis"] = s->basis;
+            return d;
+          })
       .def_readonly("trajectory_rows_seen", &ResultHandle::trajectory_rows_seen)
       .def_readonly("trajectory_stride", &ResultHandle::trajectory_stride)
       .def("json", [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })
@@ -310,6 +306,12 @@ void bind_results(py::module_& m) {
       });
   m.def("run", &run, py::arg("scene"), py::arg("trajectory"), py::arg("samples") = 0,
         "Runs the scene with the GIL released; Python parts take it back for each call.");
+  // The states' fields and the scale each is divided by, so that the package names none.
+  py::tuple fields(kSnapshotFields.size());
+  for (std::size_t i = 0; i < kSnapshotFields.size(); ++i) {
+    fields[i] = py::make_tuple(kSnapshotFields[i].name, scale_key(kSnapshotFields[i].scale));
+  }
+  m.attr("SNAPSHOT_FIELDS") = fields;
 }
 
 }  // namespace

@@ -100,11 +100,7 @@ TrajectoryColumns TrajectoryRows::columns() const {
   c.event.resize(n);
   c.in_cascade.resize(n);
   c.normal_control.resize(n);
-  c.indentation.resize(n);
-  c.normal_force.resize(n);
-  c.contact_radius.resize(n);
-  c.tangential_displacement.resize(n);
-  c.tangential_force.resize(n);
+  for (std::vector<double>& column : c.state) column.resize(n);
   c.springs_in_contact.resize(n);
   c.springs_sliding.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -114,11 +110,9 @@ TrajectoryColumns TrajectoryRows::columns() const {
     c.event[i] = row.event;
     c.in_cascade[i] = row.in_cascade;
     c.normal_control[i] = s.normal_control;
-    c.indentation[i] = s.indentation;
-    c.normal_force[i] = s.normal_force;
-    c.contact_radius[i] = s.contact_radius;
-    c.tangential_displacement[i] = s.tangential_displacement;
-    c.tangential_force[i] = s.tangential_force;
+    for (std::size_t j = 0; j < kTrajectoryFields.size(); ++j) {
+      c.state[j][i] = s.*kTrajectoryFields[j].member;
+    }
     c.springs_in_contact[i] = s.springs_in_contact;
     c.springs_sliding[i] = s.springs_sliding;
   }

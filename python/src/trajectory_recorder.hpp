@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/events/observer.hpp"
+#include "engine/model/snapshot_fields.hpp"
 
 namespace mdrsim::python {
 
@@ -18,13 +19,10 @@ struct TrajectoryColumns {
   std::vector<std::string> stage_names;  ///< distinct stage names, in order of appearance
   std::vector<std::int32_t> stage;       ///< index into stage_names
   std::vector<EventKind> event;
-  std::vector<std::uint8_t> in_cascade;         ///< 1 inside a jump: NumPy reads it as bool
-  std::vector<double> normal_control;           ///< [m or N]
-  std::vector<double> indentation;              ///< [m]
-  std::vector<double> normal_force;             ///< [N]
-  std::vector<double> contact_radius;           ///< [m]
-  std::vector<double> tangential_displacement;  ///< [m]
-  std::vector<double> tangential_force;         ///< [N]
+  std::vector<std::uint8_t> in_cascade;  ///< 1 inside a jump: NumPy reads it as bool
+  std::vector<double> normal_control;    ///< [m or N]
+  /// The state's fields in kTrajectoryFields' order (engine/model/snapshot_fields.hpp) [SI].
+  std::array<std::vector<double>, kTrajectoryFields.size()> state;
   std::vector<std::int64_t> springs_in_contact;
   std::vector<std::int64_t> springs_sliding;  ///< the CSV's `sliding` (docs/friction.md)
 };
