@@ -18,6 +18,7 @@
 #include "apps/commands.hpp"
 #include "apps/write_error.hpp"
 #include "engine/base/available_cpus.hpp"
+#include "engine/base/text.hpp"
 #include "engine/events/program_version.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
@@ -27,6 +28,9 @@
 
 namespace {
 
+using mdrsim::join_names;
+using mdrsim::one_line;
+
 constexpr const char* kLevels[] = {"trace", "debug", "info", "warn", "error", "off"};
 
 void set_up_logging(const std::string& level) {
@@ -34,15 +38,6 @@ void set_up_logging(const std::string& level) {
   logger->set_formatter(mdrsim::cli::labelled_formatter("[%l] %*%v"));  // %*: a sweep's row
   spdlog::set_default_logger(logger);
   spdlog::set_level(spdlog::level::from_str(level));
-}
-
-/// Messages are one line: a stray newline would break the one-line-per-error contract.
-std::string one_line(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  return text;
 }
 
 /// CLI11's messages in our form: "--flag: what" where it names the flag, else "mdrsim: what";
@@ -67,27 +62,22 @@ std::string usage_message(const std::string& what) {
 
 /// The names of `app`'s subcommands, joined by ", ".
 std::string command_names(CLI::App& app) {
-  std::string names;
+  std::vector<std::string> names;
   for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
-    names += (names.empty() ? "" : ", ") + sub->get_name();
+    names.push_back(sub->get_name());
   }
-  return names;
+  return join_names(names);
 }
 
 /// The registered parts by name, for the help texts.
 std::string parts_footer() {
   const auto registries = mdrsim::Registries::builtin();
-  const auto join = [](const std::vector<std::string>& names) {
-    std::string out;
-    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out;
-  };
   return fmt::format(
       "Profiles: {}\nCriteria: {}\nControllers: {}\nFriction laws: {}\n`mdrsim list` gives each "
       "one's keys and units; docs/scene.md \"Changing values from the command line\" the keys a "
       "--set replaces.",
-      join(registries.profiles.names()), join(registries.criteria.names()),
-      join(registries.controllers.names()), join(registries.friction_laws.names()));
+      join_names(registries.profiles.names()), join_names(registries.criteria.names()),
+      join_names(registries.controllers.names()), join_names(registries.friction_laws.names()));
 }
 
 /// A --set value the shell has split (an unquoted inline table): CLI11 then complains about

@@ -3,25 +3,18 @@
 
 #include <fmt/format.h>
 
-#include <cctype>
 #include <cerrno>
-#include <cstring>
 #include <iostream>
 #include <stdexcept>
 
 #include "apps/interrupt_cleanup.hpp"
 #include "apps/write_error.hpp"
+#include "engine/base/text.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/sweep/usage_error.hpp"
 
 namespace mdrsim::cli {
 namespace {
-
-std::string system_reason(int error) {
-  std::string text = std::strerror(error);
-  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
-  return text;
-}
 
 /// Whether two paths name the same file, existing or not.
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {

@@ -16,7 +16,6 @@
 #include <condition_variable>
 #include <csignal>
 #include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <fstream>
 #include <functional>
@@ -33,6 +32,7 @@
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/write_error.hpp"
+#include "engine/base/text.hpp"
 #include "engine/output/sweep_csv.hpp"
 #include "engine/output/sweep_rows.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -43,12 +43,6 @@
 
 namespace mdrsim::cli {
 namespace {
-
-std::string system_reason(int error) {
-  std::string text = std::strerror(error);
-  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
-  return text;
-}
 
 /// SIGINT and SIGTERM, read by a thread of its own from a signalfd: `on_signal` runs there
 /// (and ends the process). Blocked from construction to destruction in this thread and in
@@ -335,8 +329,7 @@ int sweep_command(const SweepOptions& options) {
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
-  spdlog::info("sweep: {} rows on {} thread{} in {:.3g} s{}", shard_rows - done, threads,
-               threads == 1 ? "" : "s",
+  spdlog::info("sweep: {} rows on {} in {:.3g} s{}", shard_rows - done, counted(threads, "thread"),
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
                done > 0 ? fmt::format(" ({} were in the CSV already)", done) : std::string());
   return 0;

@@ -341,12 +341,6 @@ bool within(const std::vector<StateChoice>& choices, const std::vector<WorkChoic
                      [&](const WorkChoice& c) { return c.diverges || work_ok(c); });
 }
 
-std::string join_list(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& item : items) s += (s.empty() ? "" : ", ") + item;
-  return s;
-}
-
 std::vector<std::int64_t> PathRefinement::rows_used() const {
   return {springs.end() - std::min<std::ptrdiff_t>(kRowsKept, std::ssize(springs)), springs.end()};
 }

@@ -141,7 +141,4 @@ PathRefinement refine_path(std::int64_t first, std::int64_t max_springs,
                            DiscretizationOptions::Extrapolation extrapolation, PathStates which,
                            const ZeroScale& zero, double rtol);
 
-/// Items joined by ", ".
-std::string join_list(const std::vector<std::string>& items);
-
 }  // namespace mdrsim

@@ -12,6 +12,7 @@
 
 #include "engine/accuracy/path_estimates.hpp"
 #include "engine/accuracy/program_zoom.hpp"
+#include "engine/base/text.hpp"
 #include "engine/program/run_program.hpp"
 
 namespace mdrsim {
@@ -77,7 +78,7 @@ RunResult run_program_richardson(const Scene& scene, const ObserverList& observe
         "richardson: {} could not be located between springs (springs pressed outside the "
         "glued ones, a front pinned since a jump, a shear-off): the finest row's value is "
         "reported, with its plain estimate",
-        join_list(plain)));
+        join_names(plain)));
   }
   return result;
 }

@@ -15,6 +15,7 @@
 #include "controllers/builtin_controllers.hpp"
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
+#include "engine/base/text.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
 #include "engine/model/gluing_depth.hpp"
@@ -497,7 +498,7 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
   // any): the stage ends, then the samples.
   for (const Event& e : stage_ends) observers.emit(e);
   if (!not_run.empty()) {
-    const std::string stages_not_run = fmt::format("'{}'", fmt::join(not_run, "', '"));
+    const std::string stages_not_run = quoted_names(not_run);
     if (w.result.sliding) {
       w.result.warnings.push_back(fmt::format(
           "stage '{}': the tangential fixed load lost what held it and the indenter slides "

@@ -7,9 +7,9 @@
 #include <cerrno>
 #include <cinttypes>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 
+#include "engine/base/text.hpp"
 #include "engine/model/snapshot_fields.hpp"
 #include "engine/output/result_json.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -140,9 +140,8 @@ std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& value
 SweepFile read_sweep_file(const std::string& path, const std::string& who) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    std::string why = std::strerror(errno);
-    if (!why.empty()) why[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(why[0])));
-    throw UsageError(fmt::format("{}: cannot read '{}' ({})", who, printable(path), why));
+    throw UsageError(
+        fmt::format("{}: cannot read '{}' ({})", who, printable(path), system_reason(errno)));
   }
   SweepFile file;
   std::uint64_t lines = 0;

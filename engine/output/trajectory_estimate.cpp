@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "engine/base/text.hpp"
 #include "engine/output/trajectory_csv.hpp"
 
 namespace mdrsim::cli {
@@ -68,10 +69,9 @@ std::optional<std::string> large_trajectory_warning(const Scene& scene, std::int
                         static_cast<double>(std::max<std::int64_t>(stride, 1));
   return fmt::format(
       "--trajectory: the file will be about {} ({:.3g} rows of about {:.0f} bytes: {} springs, "
-      "{} stage{}, stride {}); --trajectory-stride {:.0f} writes about 100 MB",
+      "{}, stride {}); --trajectory-stride {:.0f} writes about 100 MB",
       bytes_text(e.bytes), e.rows, e.bytes_per_row, scene.springs,
-      scene.program ? scene.program->stages.size() : 1,
-      scene.program && scene.program->stages.size() != 1 ? "s" : "", stride, wanted);
+      counted(scene.program ? scene.program->stages.size() : 1, "stage"), stride, wanted);
 }
 
 }  // namespace mdrsim::cli

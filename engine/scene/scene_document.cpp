@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -19,6 +18,7 @@
 #include <system_error>
 #include <vector>
 
+#include "engine/base/text.hpp"
 #include "engine/scene/json_scene.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -28,18 +28,6 @@ namespace {
 
 /// Scene files are small; the cap keeps /dev/zero or a mistyped data file from eating memory.
 constexpr std::size_t kMaxSceneBytes = 16u << 20;
-
-std::string lowercase_first(std::string text) {
-  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
-  return text;
-}
-
-std::string_view trim(std::string_view text) {
-  const auto blank = [](char c) { return c == ' ' || c == '\t'; };
-  while (!text.empty() && blank(text.front())) text.remove_prefix(1);
-  while (!text.empty() && blank(text.back())) text.remove_suffix(1);
-  return text;
-}
 
 std::vector<std::string> split_key(std::string_view origin, std::string_view dotted) {
   std::vector<std::string> parts;
@@ -92,10 +80,10 @@ std::size_t element_index(const toml::array& array, const std::vector<std::strin
   };
   if (array.empty()) fail(fmt::format("the scene has no [[{}]]", array_key));
   const std::size_t count = array.size();
-  const std::string noun = printable(parts[i - 1]) + (count == 1 ? "" : "s");
   const std::string range = count == 1 ? fmt::format("{}.1", array_key)
                                        : fmt::format("{}.1 to {}.{}", array_key, array_key, count);
-  const std::string has = fmt::format("the scene has {} {} ({})", count, noun, range);
+  const std::string has =
+      fmt::format("the scene has {} ({})", counted(count, printable(parts[i - 1])), range);
   const std::string& part = parts[i];
   if (!is_element_number(part)) {
     fail(fmt::format("'{}' is not a {} number; {}", printable(part), printable(parts[i - 1]), has));
@@ -241,7 +229,7 @@ std::string read_capped(std::FILE* file, const Fail& fail) {
     if (text.size() > kMaxSceneBytes) fail("it is larger than 16 MiB");
     if (n < sizeof buffer) break;
   }
-  if (std::ferror(file)) fail(lowercase_first(std::strerror(errno)));
+  if (std::ferror(file)) fail(system_reason(errno));
   return text;
 }
 
@@ -268,7 +256,7 @@ bool starts_with_pair(std::string_view value) {
 
 std::optional<std::string> split_value_message(std::string_view dotted_key,
                                                std::string_view value_text) {
-  const std::string_view value = trim(value_text);
+  const std::string_view value = trim_blanks(value_text);
   if (value.empty() || is_toml_value(value, "--set")) return std::nullopt;
   std::string what;
   if (value.front() == '{' || value.front() == '[') {
@@ -278,7 +266,7 @@ std::optional<std::string> split_value_message(std::string_view dotted_key,
   } else {
     return std::nullopt;
   }
-  const std::string key = printable(trim(dotted_key));
+  const std::string key = printable(trim_blanks(dotted_key));
   return fmt::format(
       "--set: {}: '{}' {}: unquoted, the shell splits a value at spaces, expands {{a,b}} and "
       "drops quotes; quote the whole KEY=VALUE, as in --set '{}={{ ... }}'",
@@ -325,7 +313,7 @@ SceneDocument SceneDocument::from_file(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, ec)) fail("it is a directory");
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"),
                                                              &std::fclose);
-  if (!file) fail(lowercase_first(std::strerror(errno)));
+  if (!file) fail(system_reason(errno));
   const std::string text = read_capped(file.get(), fail);
   return from_scene_text(text, name, path.parent_path().empty() ? "." : path.parent_path());
 }
@@ -362,9 +350,9 @@ SceneDocument SceneDocument::from_text(std::string_view text, const std::string&
 
 void SceneDocument::set_value(std::string_view dotted_key, std::string_view value_text) {
   const std::string origin = "--set";
-  const auto parts = split_key(origin, trim(dotted_key));
+  const auto parts = split_key(origin, trim_blanks(dotted_key));
   const std::string key = printable(join_key(parts));
-  const std::string_view value = trim(value_text);
+  const std::string_view value = trim_blanks(value_text);
   if (value.empty()) throw SceneError(fmt::format("{}: {}: the value is empty", origin, key));
   if (std::any_of(value.begin(), value.end(), [](char c) {
         return (static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f;
@@ -403,7 +391,8 @@ void SceneDocument::set_number(std::string_view dotted_key, double value, std::s
     throw SceneError(
         fmt::format("{}: {} = {} is not a finite number", from, printable(dotted_key), value));
   }
-  const SceneOverride o{from, split_key(from, trim(dotted_key)), fmt::format("{:.17g}", value)};
+  const SceneOverride o{from, split_key(from, trim_blanks(dotted_key)),
+                        fmt::format("{:.17g}", value)};
   apply(impl_->root, o);
   remember(o);
 }

@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "engine/base/nearest_name.hpp"
+#include "engine/base/text.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
@@ -59,12 +60,6 @@ const char* expected(ParameterKind kind) {
       return "a file path string";
   }
   return "?";
-}
-
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
 }
 
 /// A file path as the resolved scene gives it: absolute, so that it reads the same from anywhere.
@@ -141,7 +136,7 @@ void TomlReader::fail_unknown(const toml::key& key, const toml::node& node) cons
   const std::vector<std::string> names(known.begin(), known.end());
   throw SceneError(fmt::format(
       "{} {}: unknown key{}{}", location, key_path(key.str()), did_you_mean(key.str(), names),
-      names.empty() ? std::string() : fmt::format(" (known: {})", join(names))));
+      names.empty() ? std::string() : fmt::format(" (known: {})", join_names(names))));
 }
 
 const toml::node* TomlReader::find(std::string_view key) {
@@ -286,7 +281,7 @@ std::string TomlReader::name(std::string_view key, const std::vector<std::string
                              std::optional<std::string> fallback) {
   const auto v = read({.key = std::string(key),
                        .kind = ParameterKind::text,
-                       .help = "one of: " + join(known),
+                       .help = "one of: " + join_names(known),
                        .required = !fallback.has_value()});
   if (!v) {
     record(key, *fallback);
@@ -295,7 +290,7 @@ std::string TomlReader::name(std::string_view key, const std::vector<std::string
   const std::string& given = std::get<std::string>(*v);
   if (std::find(known.begin(), known.end(), given) == known.end()) {
     fail_at(key, fmt::format("unknown '{}'{} (known: {})", printable(given),
-                             did_you_mean(given, known), join(known)));
+                             did_you_mean(given, known), join_names(known)));
   }
   return given;
 }

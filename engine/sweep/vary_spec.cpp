@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "engine/base/text.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/sweep/usage_error.hpp"
 
@@ -20,15 +21,9 @@ namespace {
 constexpr std::int64_t kMaxCount = 1'000'000;
 constexpr const char* kForms = "KEY=FROM:TO:COUNT, KEY=FROM:TO:COUNT:log or KEY=V1,V2,...";
 
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-  return text;
-}
-
 /// `text` without a '+' that from_chars does not take (a user may write one).
 std::string_view without_plus(std::string_view text) {
-  text = trim(text);
+  text = trim_blanks(text);
   if (text.size() > 1 && text.front() == '+' && text[1] != '-') text.remove_prefix(1);
   return text;
 }
@@ -103,10 +98,10 @@ std::vector<std::size_t> VarySpec::probes() const {
 
 VarySpec parse_vary(const std::string& text) {
   const auto eq = text.find('=');
-  const std::string_view key = trim(std::string_view(text).substr(0, eq));
+  const std::string_view key = trim_blanks(std::string_view(text).substr(0, eq));
   const std::string_view given =
       eq == std::string::npos ? std::string_view() : std::string_view(text).substr(eq + 1);
-  if (eq == std::string::npos || key.empty() || trim(given).empty()) {
+  if (eq == std::string::npos || key.empty() || trim_blanks(given).empty()) {
     throw UsageError(fmt::format("--vary: '{}' is not {}", printable(text), kForms));
   }
   const auto fail = [&](const std::string& why) {
@@ -120,7 +115,7 @@ VarySpec parse_vary(const std::string& text) {
       fail(fmt::format("{} values are more than {}", items.size(), kMaxCount));
     }
     for (std::size_t i = 0; i < items.size(); ++i) {
-      const std::string_view item = trim(items[i]);
+      const std::string_view item = trim_blanks(items[i]);
       if (item.empty()) fail(fmt::format("value {} of '{}' is empty", i + 1, printable(given)));
       if (looks_like_a_number(item)) {
         double value = 0.0;
@@ -147,11 +142,11 @@ VarySpec parse_vary(const std::string& text) {
     throw UsageError(fmt::format("--vary: '{}' is not {}", printable(text), kForms));
   }
   const bool log = parts.size() == 4;
-  if (log && trim(parts[3]) != "log") {
-    fail(fmt::format("'{}' is not log (FROM:TO:COUNT:log)", printable(trim(parts[3]))));
+  if (log && trim_blanks(parts[3]) != "log") {
+    fail(fmt::format("'{}' is not log (FROM:TO:COUNT:log)", printable(trim_blanks(parts[3]))));
   }
   const auto part_fail = [&](const char* part, std::string_view value, const char* expected) {
-    fail(fmt::format("{} '{}' is not {}", part, printable(trim(value)), expected));
+    fail(fmt::format("{} '{}' is not {}", part, printable(trim_blanks(value)), expected));
   };
   double from = 0.0, to = 0.0;
   std::int64_t count = 0;

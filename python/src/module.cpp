@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/base/text.hpp"
 #include "engine/model/snapshot_fields.hpp"
 #include "engine/output/finite_check.hpp"
 #include "engine/output/result_json.hpp"
@@ -56,15 +57,6 @@ struct ResultHandle {
   std::uint64_t trajectory_rows_seen = 0;  ///< rows the run gave, held or not
   std::uint64_t trajectory_stride = 1;     ///< 1, or the thinning of the ordinary rows
 };
-
-/// docs: messages are one line, as the command prints them.
-std::string one_line(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  return text;
-}
 
 /// `trajectory_rows`: the row budget of the trajectory (TrajectoryRecorder), none without one.
 /// `samples`: points of the continuum route's branch in the trajectory (`sample` rows).
@@ -327,7 +319,7 @@ PYBIND11_MODULE(_core, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const mdrsim::SceneError& e) {
-      PyErr_SetString(scene_error, mdrsim::python::one_line(e.what()).c_str());
+      PyErr_SetString(scene_error, mdrsim::one_line(e.what()).c_str());
     }
   });
 
