@@ -62,9 +62,9 @@ std::string held_value(const ControllerRegistry::Entry& entry) {
     if (const auto v = spec.example ? spec.example : spec.default_value) values.set(spec.key, *v);
   }
   try {
-    const std::string key(entry.create(values)->held_value_key());
-    const char* unit = key == "force" ? "N" : key == "displacement" ? "m" : "SI";
-    return fmt::format(" (holds its axis's {} [{}])", key, unit);
+    const auto controller = entry.create(values);
+    return fmt::format(" (holds its axis's {} [{}])", controller->held_value_key(),
+                       controller->held_value_unit());
   } catch (const std::exception&) {
     return {};
   }

@@ -61,6 +61,11 @@ class AxisController {
   /// Required: the scene key of the value it holds on the tangential axis
   /// ("displacement" [m] or "force" [N]).
   virtual std::string_view held_value_key() const = 0;
+  /// The unit of that value: "m" for a displacement, "N" for a force, "SI" for another key.
+  const char* held_value_unit() const {
+    const std::string_view key = held_value_key();
+    return key == "force" ? "N" : key == "displacement" ? "m" : "SI";
+  }
 
   /// Optional: whether the held value is the force (fixed load).
   virtual bool holds_force() const { return mdrsim::holds_force(constraint()); }

@@ -3,6 +3,7 @@
 
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "engine/base/pull_off_scales.hpp"
 
@@ -45,6 +46,15 @@ class Profile {
   /// non-adhesive solutions (Hertz, Sneddon) have a gap that opens outside the contact, and
   /// to which adhesion only adds the flat punch's lift dl (1 - (2/pi) asin(a/r)) >= 0.
   virtual bool always_one_disk() const { return false; }
+
+  /// Optional: whether the shape's branch folds again at every crest of a ripple, more folds
+  /// than the continuum route follows (it refuses the scene where it is named).
+  virtual bool folds_at_every_crest() const { return false; }
+
+  /// Optional: the CSV of points r,f (read_profile_table, profiles/tabulated_profile.hpp) the
+  /// shape was read from: the result carries its points and hash, so that the scene reruns
+  /// without the file. nullopt where no file was read.
+  virtual std::optional<std::string> source_table_file() const { return std::nullopt; }
 
   /// Optional: the shortest length the shape varies on (a ripple's wavelength) [m]. A row whose
   /// spacing is more than a quarter of it cannot follow the shape; the scene is refused.

@@ -75,7 +75,9 @@ std::unique_ptr<Profile> make_tabulated(const ParameterValues& p) {
                             problem->column, column[*problem->point], problem->message));
   }
   try {
-    return std::make_unique<TabulatedProfile>(*TabulatedProfile::shared(table));
+    const auto built = TabulatedProfile::shared(table);
+    if (p.has("file")) return std::make_unique<TabulatedProfile>(*built, p.text("file"));
+    return std::make_unique<TabulatedProfile>(*built);
   } catch (const std::invalid_argument& e) {
     throw ParameterError(source.empty() ? "r" : "file", e.what());
   }

@@ -48,6 +48,10 @@ class TabulatedProfile final : public Profile {
   /// A table without problems (find_table_problem). Its image may decrease (where r f'(r)
   /// does: a plateau after a rise, a dip): a front then jumps over the dip.
   explicit TabulatedProfile(const ProfileTable& table);
+  /// The profile `built`, read from the CSV `file` (source_table_file()).
+  TabulatedProfile(const TabulatedProfile& built, std::string file) : TabulatedProfile(built) {
+    file_ = std::move(file);
+  }
 
   /// The profile of a table, built once per process for the last few tables seen: a sweep
   /// builds one scene per value from the same table (thread-safe).
@@ -59,6 +63,7 @@ class TabulatedProfile final : public Profile {
   /// 2 (a g(a) - integral_0^a g), the integral exact on the Hermite pieces.
   double nonadhesive_force_per_modulus(double contact_radius) const override;
   double outer_radius() const override { return shape_.back(); }
+  std::optional<std::string> source_table_file() const override { return file_; }
 
   /// Eq. 4 and its x-derivative for the interpolated f at x [m], by Gauss-Legendre
   /// quadrature after r = x sin t: g(x) = x integral_0^{pi/2} f'(x sin t) dt, whose integrand
@@ -74,8 +79,9 @@ class TabulatedProfile final : public Profile {
   const ShapePreservingCubic& interpolated_shape() const { return shape_; }
 
  private:
-  ShapePreservingCubic shape_;  ///< f(r)
-  ShapePreservingCubic image_;  ///< g(x) on the grid
+  ShapePreservingCubic shape_;       ///< f(r)
+  ShapePreservingCubic image_;       ///< g(x) on the grid
+  std::optional<std::string> file_;  ///< the CSV read, as the scene gave it; none for arrays
 };
 
 }  // namespace mdrsim

@@ -28,6 +28,7 @@ class WavyProfile final : public Profile {
   double mdr_image(double x) const override;
   double mdr_image_slope(double x) const override;
   std::optional<double> jkr_scale_radius() const override { return radius_; }
+  bool folds_at_every_crest() const override { return true; }
 
   std::optional<double> shortest_feature() const override {
     return 2.0 * std::numbers::pi / wavenumber_;

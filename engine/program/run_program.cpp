@@ -206,8 +206,7 @@ ProgramRowFrame located_frame(const Scene& scene) {
   if (largest.springs == 0) return {radius, scene.profile->mdr_image(radius)};
   const double a_max = front_radius(scene, largest, pilot_radius / kPilotSprings);
   ProgramRowFrame frame = frame_at(scene, a_max, largest.indentation, largest.glued_edge);
-  if (largest.normal_constraint.force_coefficient != 0.0 &&
-      !scene.profile->fixed_contact_radius()) {
+  if (!is_fixed_grips(largest.normal_constraint) && !scene.profile->fixed_contact_radius()) {
     const HeldDeepest held{largest.normal_constraint, largest.normal_held, largest.glued_edge};
     if (const auto a =
             continuum_front_reaching_held(scene, held, a_max, pilot_radius / kPilotSprings)) {

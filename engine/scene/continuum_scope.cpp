@@ -31,7 +31,7 @@ std::optional<std::string> continuum_program_refusal(const Scene& scene) {
     return "a loading program with [friction] needs the spring row (stick and slip spring by "
            "spring)";
   }
-  if (!scene.profile->always_one_disk() || scene.profile_name == "flat_punch") {
+  if (!scene.profile->always_one_disk() || scene.profile->fixed_contact_radius()) {
     return fmt::format(
         "a loading program on profile \"{}\" is not on the continuum route (its front may "
         "fold more than once, or, for the flat punch, never moves)",

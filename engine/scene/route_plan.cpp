@@ -28,7 +28,7 @@ void refuse_continuum_pairs(const Scene& scene, const std::string& at) {
            "change (several folds), and the continuum route follows one fold only; use method "
            "= \"event\" (docs/continuum.md)");
   }
-  if (scene.profile_name == "wavy" && !scene.profile->always_one_disk()) {
+  if (scene.profile->folds_at_every_crest() && !scene.profile->always_one_disk()) {
     refuse(at,
            "a wavy profile's branch folds again at every crest, and the continuum route follows "
            "one fold only; use method = \"event\" (docs/continuum.md)");

@@ -121,7 +121,7 @@ AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool
                   fmt::format("control = \"{}\" holds {}, not {}", axis.control, key, other));
       }
     }
-    const char* unit = key == "force" ? "N" : key == "displacement" ? "m" : "SI";
+    const char* unit = axis.controller->held_value_unit();
     axis.held_value = t.number({.key = key, .help = fmt::format("the held {} [{}]", key, unit)});
   }
   t.finish();
@@ -202,11 +202,12 @@ void check_tangential_scale(TomlReader& t, const Scene& scene) {
   const AxisLoading& axis = *scene.tangential;
   const std::string key(axis.controller->held_value_key());
   const double stiffness = 2.0 * scene.material.effective_shear_modulus * scene.glued_radius;
-  const double other = key == "force" ? std::abs(axis.held_value) / stiffness
-                                      : std::abs(axis.held_value) * stiffness;
+  const double other = axis.controller->holds_force() ? std::abs(axis.held_value) / stiffness
+                                                      : std::abs(axis.held_value) * stiffness;
   if (!std::isfinite(other)) {
-    t.fail_range(key, fmt::format("= {} overflows the tangential {} of the glued contact",
-                                  axis.held_value, key == "force" ? "displacement" : "force"));
+    t.fail_range(
+        key, fmt::format("= {} overflows the tangential {} of the glued contact", axis.held_value,
+                         axis.controller->holds_force() ? "displacement" : "force"));
   }
   // The dimensionless output divides the held value by F0 or d0 (paper eq. 16).
   check_dimensionless_tangential(t, scene);
@@ -222,11 +223,11 @@ void check_dimensionless_tangential(TomlReader& t, const Scene& scene) {
   const std::string key(axis.controller->held_value_key());
   const auto scales = dimensionless_scales(*scene.profile, scene.material);
   if (!scales) return;
-  const double unit = key == "force" ? scales->force : scales->depth;
+  const double unit = axis.controller->holds_force() ? scales->force : scales->depth;
   if (!std::isfinite(axis.held_value / unit)) {
-    t.fail_range(key,
-                 fmt::format("= {} overflows {} (the JKR scale is {} {})", axis.held_value,
-                             key == "force" ? "F/F0" : "u/d0", unit, key == "force" ? "N" : "m"));
+    t.fail_range(key, fmt::format("= {} overflows {} (the JKR scale is {} {})", axis.held_value,
+                                  axis.controller->holds_force() ? "F/F0" : "u/d0", unit,
+                                  axis.controller->holds_force() ? "N" : "m"));
   }
 }
 
@@ -321,8 +322,8 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     const ParameterValues values = profile.read_all(entry->parameters);
     scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
     // The result's scene carries the table, so that it reruns after the CSV moved.
-    if (scene.profile_name == "tabulated" && values.has("file")) {
-      embed_profile_table((*resolved)["profile"], values.text("file"));
+    if (const auto file = scene.profile->source_table_file()) {
+      embed_profile_table((*resolved)["profile"], *file);
     }
   }
   profile.finish();

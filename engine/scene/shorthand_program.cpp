@@ -30,7 +30,7 @@ Program shorthand_program(const Scene& scene, const ControllerRegistry& controll
   program.stages.push_back(std::move(tangential));
 
   Stage pull_off{.name = "pull-off", .normal = normal, .until_separation = true};
-  const bool force = scene.normal.controller->held_value_key() == "force";
+  const bool force = scene.normal.controller->holds_force();
   pull_off.normal->motion = StageAxis::Motion::by;
   pull_off.normal->value = -(force ? std::abs(scene.preload_force) : scene.preload_depth);
   program.stages.push_back(std::move(pull_off));

@@ -96,3 +96,15 @@ TEST(Controllers, QuestionsAgreeWithTheConstraint) {
     }
   }
 }
+
+// The unit of the held value follows its key: m for a displacement, N for a force.
+TEST(Controllers, HeldValueUnitFollowsTheKey) {
+  EXPECT_STREQ(mdrsim::FixedGripsController().held_value_unit(), "m");
+  EXPECT_STREQ(mdrsim::FixedLoadController().held_value_unit(), "N");
+  EXPECT_STREQ(mdrsim::CompliantController(40.0).held_value_unit(), "m");
+  struct Outside final : mdrsim::AxisController {
+    AffineConstraint constraint() const override { return {1.0, 0.0}; }
+    std::string_view held_value_key() const override { return "angle"; }
+  };
+  EXPECT_STREQ(Outside().held_value_unit(), "SI");
+}

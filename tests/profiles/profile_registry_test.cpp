@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
 #include "profiles/mdr_transform.hpp"
 #include "profiles/profile_registry.hpp"
+#include "tests/support/run_command.hpp"
 
 namespace {
 
@@ -75,3 +78,22 @@ TEST_P(EveryProfile, ImageAndClosedFormsAreConsistent) {
 
 INSTANTIATE_TEST_SUITE_P(Registered, EveryProfile, ::testing::ValuesIn(registry().names()),
                          [](const auto& info) { return info.param; });
+
+// What the engine asks of a profile instead of its name: whether its branch folds at every
+// crest (the ripple only), and the file its points were read from (a table read from a CSV
+// only; the result carries it).
+TEST_P(EveryProfile, AnswersTheCapabilitiesTheEngineAsks) {
+  const auto profile = registry().find(GetParam())->create(samples().at(GetParam()));
+  EXPECT_EQ(profile->folds_at_every_crest(), GetParam() == "wavy");
+  EXPECT_FALSE(profile->source_table_file());
+}
+
+TEST(TabulatedProfile, ReadFromAFileNamesItsFile) {
+  const std::string dir = mdrsim::test::make_temp_dir();
+  const std::string path = dir + "/table.csv";
+  std::ofstream(path) << "r,f\n0,0\n1e-4,1e-6\n2e-4,4e-6\n3e-4,9e-6\n";
+  mdrsim::ParameterValues values;
+  values.set("file", path);
+  EXPECT_EQ(registry().find("tabulated")->create(values)->source_table_file(), path);
+  std::filesystem::remove_all(dir);
+}
