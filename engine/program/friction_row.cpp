@@ -1,4 +1,4 @@
-// The springs in contact under Coulomb friction: tangential force, slip events, frictional work.
+// The springs in contact under friction: tangential force, slip events, frictional work.
 #include "engine/program/friction_row.hpp"
 
 #include <algorithm>
@@ -29,10 +29,10 @@ SpringGeometry FrictionRow::geometry(std::int64_t i) const {
   return {normal_stiffness_, tangential_stiffness_, springs_[index(i)].image};
 }
 
-std::optional<CoulombLaw> FrictionRow::law(std::int64_t i) const {
-  if (i > glued_) return individual_ ? laws_[index(i)] : CoulombLaw{settings_.coefficient, 0.0};
-  if (settings_.glued == GluedLaw::unlimited) return std::nullopt;
-  return CoulombLaw{settings_.coefficient, glued_adhesive_limit(i)};
+std::optional<SlipLimit> FrictionRow::law(std::int64_t i) const {
+  if (i > glued_) return individual_ ? laws_[index(i)] : SlipLimit{settings_.coefficient, 0.0};
+  if (settings_.glued == GluedShear::unlimited) return std::nullopt;
+  return SlipLimit{settings_.coefficient, glued_adhesive_limit(i)};
 }
 
 double FrictionRow::glued_adhesive_limit(std::int64_t i) const {
@@ -44,16 +44,16 @@ double FrictionRow::glued_adhesive_limit(std::int64_t i) const {
 }
 
 double FrictionRow::glued_stretch(std::int64_t i, double indentation, double tangential) const {
-  const CoulombSpring& state = springs_[index(i)].state;
+  const StickSlipSpring& state = springs_[index(i)].state;
   if (state.sliding == 0) return tangential - state.offset;
   return state.sliding * slip_limit(*law(i), geometry(i), indentation) / tangential_stiffness_;
 }
 
 double FrictionRow::limit_glued_springs() {
-  if (settings_.glued != GluedLaw::coulomb || settings_.shear_strength == 0.0) return 0.0;
+  if (settings_.glued != GluedShear::limited || settings_.shear_strength == 0.0) return 0.0;
   double dissipated = 0.0;
   for (std::int64_t i = 1; i <= glued_; ++i) {
-    CoulombSpring& state = springs_[index(i)].state;
+    StickSlipSpring& state = springs_[index(i)].state;
     // Every glued spring leaves its set and joins the one it ends in, so that the sticking
     // offsets lose the offset they hold, before the slip moves it.
     if (state.sliding != 0) {
@@ -74,8 +74,8 @@ double FrictionRow::limit_glued_springs() {
   return 2.0 * dissipated;
 }
 
-CoulombSpring FrictionRow::spring(std::int64_t i) const {
-  CoulombSpring state = springs_[index(i)].state;
+StickSlipSpring FrictionRow::spring(std::int64_t i) const {
+  StickSlipSpring state = springs_[index(i)].state;
   if (keyed(i) && state.sliding != 0)
     state.offset = tangential_ - state.sliding * ratio_ * (indentation_ - springs_[index(i)].image);
   return state;
@@ -137,10 +137,9 @@ std::int64_t FrictionRow::first_own_sliding() const {
 }
 
 void FrictionRow::touch(double image, double tangential) {
-  springs_.push_back({CoulombSpring{tangential, 0}, image});
+  springs_.push_back({StickSlipSpring{tangential, 0}, image});
   if (individual_) {
-    const SlipLimit limit = settings_.law->limit_at(position(in_contact()), spacing_);
-    laws_.push_back({limit.coefficient, limit.constant});
+    laws_.push_back(settings_.law->limit_at(position(in_contact()), spacing_));
   }
   add_sticking(in_contact());
 }
@@ -176,8 +175,8 @@ double FrictionRow::let_go_boundary(double indentation, double tangential) {
   tangential_ = tangential;
   const std::int64_t i = glued_;
   Spring& s = springs_[index(i)];
-  // A glued coulomb spring sliding at its glued limit sticks for the moment: its offset is
-  // up to date (the glued springs are advanced spring by spring).
+  // A glued spring sliding at its glued limit (GluedShear::limited) sticks for the moment: its
+  // offset is up to date (the glued springs are advanced spring by spring).
   if (s.state.sliding != 0) {
     remove_sliding(i);
     s.state.sliding = 0;
@@ -201,7 +200,7 @@ double FrictionRow::tangential_force(double indentation, double tangential) cons
   sum += limit_sum(0, indentation) - limit_sum(1, indentation);
   if (own_sliding_ > 0) {
     for (std::int64_t i = 1; i <= own_springs(); ++i) {
-      const CoulombSpring& state = springs_[index(i)].state;
+      const StickSlipSpring& state = springs_[index(i)].state;
       if (state.sliding != 0)
         sum += spring_tangential_force(state, *law(i), geometry(i), indentation, tangential);
     }

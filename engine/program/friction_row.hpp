@@ -1,4 +1,4 @@
-// The springs in contact under Coulomb friction: tangential force, slip events, frictional work.
+// The springs in contact under friction: tangential force, slip events, frictional work.
 #pragma once
 
 #include <array>
@@ -11,9 +11,9 @@
 #include "engine/base/material.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/friction_settings.hpp"
-#include "engine/program/coulomb_spring.hpp"
 #include "engine/program/index_set.hpp"
 #include "engine/program/slip_keys.hpp"
+#include "engine/program/stick_slip_spring.hpp"
 
 namespace mdrsim {
 
@@ -35,10 +35,10 @@ struct RowFrictionEvent {
 /// slip is the smallest (largest) key, O(log m) per event in flat arrays. Every spring sliding
 /// along +x has the same slip velocity p+' (along -x, p-'), so they stick together when it
 /// reverses, and their force and dissipated work are sums of their count and images. Glued
-/// `coulomb` springs go spring by spring (O(k) per query, and per change of the glued radius,
-/// which moves every glued spring's adhesive limit); glued `unlimited` ones only stick. Under a
-/// law other than Coulomb's (FrictionSettings::law) every spring goes spring by spring, with
-/// the limit the law gave it as it touched (O(m) per query).
+/// springs under GluedShear::limited go spring by spring (O(k) per query, and per change of the
+/// glued radius, which moves every glued spring's adhesive limit); under GluedShear::unlimited they
+/// only stick. Under a law other than Coulomb's (FrictionSettings::law) every spring goes spring by
+/// spring, with the limit the law gave it as it touched (O(m) per query).
 class FrictionRow {
  public:
   FrictionRow(const Material& material, const FrictionSettings& settings, double spacing);
@@ -48,13 +48,17 @@ class FrictionRow {
   double position(std::int64_t i) const { return spacing_ * static_cast<double>(i); }  ///< x_i [m]
   /// Spring i's state; a sliding spring's offset is that of the present position (the last
   /// advance, touch or let_go_boundary).
-  CoulombSpring spring(std::int64_t i) const;
+  StickSlipSpring spring(std::int64_t i) const;
   SpringGeometry geometry(std::int64_t i) const;
-  /// The law of spring i; nullopt for a glued spring under GluedLaw::unlimited (it never slips).
-  std::optional<CoulombLaw> law(std::int64_t i) const;
+  /// The slip limit of spring i: the friction law's while it is not glued (Coulomb's at
+  /// `coefficient`, constant 0, unless FrictionSettings::law gives another); for a glued spring
+  /// under glued = "coulomb" (GluedShear::limited) Coulomb's plus the MDR image of the shear
+  /// strength over the glued disk, 2 tau_0 sqrt(a_g^2 - x^2) dx, so that it may carry tension;
+  /// nullopt for a glued spring under GluedShear::unlimited (it never slips).
+  std::optional<SlipLimit> law(std::int64_t i) const;
   /// Whether glued springs slip by their own law (glued = "coulomb"): each then carries its own
   /// stretch, not its glued run's u_x - s.
-  bool glued_springs_slip() const { return settings_.glued == GluedLaw::coulomb; }
+  bool glued_springs_slip() const { return settings_.glued == GluedShear::limited; }
   /// Glued spring i's tangential stretch f_x / kx at (d, u_x) in its present state (sticking or
   /// sliding, as between two events): u_x - offset while it sticks, +-limit / kx while it
   /// slides (0 at the glued edge in tension, where its limit is 0) [m].
@@ -97,11 +101,11 @@ class FrictionRow {
     return own_sliding_ > 0 || !sliders_[0].empty() || !sliders_[1].empty();
   }
   /// Whether next_event can find anything along `motion`: not when nothing slides, no glued
-  /// spring can slip (GluedLaw::unlimited) and p+ falls or stays (p- rises or stays) with u_x
+  /// spring can slip (GluedShear::unlimited) and p+ falls or stays (p- rises or stays) with u_x
   /// still and d rising or still (a press: every touch of it would ask). Inline, so that the
   /// program loop pays no call for it.
   bool may_change(const LinearMotion& motion) const {
-    return settings_.glued == GluedLaw::coulomb || individual_ || force_follows_indentation() ||
+    return settings_.glued == GluedShear::limited || individual_ || force_follows_indentation() ||
            !(motion.tangential_rate == 0.0 && motion.indentation_rate >= 0.0);
   }
   /// Whether every spring in contact is on the keys and sliders (nothing glued, no law of its
@@ -124,15 +128,16 @@ class FrictionRow {
 
  private:
   struct Spring {
-    CoulombSpring state;  ///< a sliding spring's offset is not kept up to date when it is not glued
-    double image;         ///< g(x_i) [m]
+    StickSlipSpring
+        state;     ///< a sliding spring's offset is not kept up to date when it is not glued
+    double image;  ///< g(x_i) [m]
   };
   std::size_t index(std::int64_t i) const { return static_cast<std::size_t>(i - 1); }
   static std::size_t side(int direction) { return direction > 0 ? 0 : 1; }
   double limit_sum(std::size_t s, double indentation) const;  ///< sum of mu f_z of a side [N]
-  /// The adhesive part of glued `coulomb` spring i's limit: the MDR image of a uniform shear
-  /// strength tau_0 over the glued disk, 2 tau_0 sqrt(a_g^2 - x_i^2) dx with a_g = x_k
-  /// (docs/friction.md) [N].
+  /// The adhesive part of glued spring i's limit under GluedShear::limited: the MDR image of a
+  /// uniform shear strength tau_0 over the glued disk, 2 tau_0 sqrt(a_g^2 - x_i^2) dx with a_g =
+  /// x_k (docs/friction.md) [N].
   double glued_adhesive_limit(std::int64_t i) const;
   /// After a_g changed: every glued spring within its new limit sticks, one over it slips to it
   /// at once. Returns the work dissipated on both halves [J]; O(k), with tau_0 > 0 only.
@@ -172,12 +177,12 @@ class FrictionRow {
   std::int64_t own_sliding_ = 0;  ///< springs sliding that go one by one (own_springs)
   /// Every spring in contact goes one by one, with its own law (a law other than Coulomb's).
   bool individual_;
-  std::vector<CoulombLaw> laws_;  ///< individual_: spring i's law while it is not glued
+  std::vector<SlipLimit> laws_;  ///< individual_: spring i's law while it is not glued
   /// The springs 1..own_springs() go one by one: every spring in contact under a law of its
   /// own, the glued ones under glued = "coulomb", none else (they are on the keys).
   std::int64_t own_springs() const {
     if (individual_) return in_contact();
-    return settings_.glued == GluedLaw::coulomb ? glued_ : 0;
+    return settings_.glued == GluedShear::limited ? glued_ : 0;
   }
 };
 

@@ -79,8 +79,8 @@ class ProgramRow {
     return tangential - boundary_offset();
   }
   /// Whether that stretch moves as d and u_x move at rates vd and vu: with u_x alone for a
-  /// spring that sticks; with d alone for a glued `coulomb` spring sliding while pressed (its
-  /// limit mu f_z over kx), not while it is in tension (limit 0 at the glued edge).
+  /// spring that sticks; with d alone for a glued spring sliding while pressed (glued = "coulomb")
+  /// (its limit mu f_z over kx), not while it is in tension (limit 0 at the glued edge).
   bool boundary_stretch_moves(double indentation, double vd, double vu) const {
     if (!boundary_slips() || friction_->spring(glued_).sliding == 0) return vu != 0.0;
     const double g = image(glued_);
@@ -101,7 +101,7 @@ class ProgramRow {
     edit_tangential() = tangential;
   }
   bool adhesive() const { return material_.adhesive(); }
-  /// Coulomb friction on every spring in contact from now on (a row with nothing in contact).
+  /// Friction on every spring in contact from now on (a row with nothing in contact).
   void enable_friction(const FrictionSettings& settings) {
     friction_.emplace(material_, settings, spacing_);
     friction_->reserve(reference_springs_);

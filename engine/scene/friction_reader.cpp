@@ -21,11 +21,11 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const FrictionLawRe
     settings.law = law;
   }
   const std::string glued = t.name("glued", {"unlimited", "coulomb"}, std::string("unlimited"));
-  settings.glued = glued == "coulomb" ? GluedLaw::coulomb : GluedLaw::unlimited;
-  if (t.has("shear_strength") && settings.glued != GluedLaw::coulomb) {
+  settings.glued = glued == "coulomb" ? GluedShear::limited : GluedShear::unlimited;
+  if (t.has("shear_strength") && settings.glued != GluedShear::limited) {
     t.fail_at("shear_strength", "applies only with glued = \"coulomb\"");
   }
-  if (settings.glued == GluedLaw::coulomb) {
+  if (settings.glued == GluedShear::limited) {
     if (settings.law) {
       t.fail_at("glued", fmt::format("glued = \"coulomb\" slides at mu f_z with one mu, which law "
                                      "= \"{}\" does not give: use a law with one coefficient",
@@ -38,14 +38,14 @@ std::optional<FrictionSettings> read_friction(TomlReader& t, const FrictionLawRe
                                   .value_or(0.0);
   }
   const bool acts =
-      settings.law || settings.coefficient > 0.0 || settings.glued == GluedLaw::coulomb;
+      settings.law || settings.coefficient > 0.0 || settings.glued == GluedShear::limited;
   if (!acts) return std::nullopt;
 
   return settings;
 }
 
 std::string friction_acting_key(const FrictionSettings& settings) {
-  return settings.glued == GluedLaw::coulomb ? "glued" : settings.law ? "law" : "coefficient";
+  return settings.glued == GluedShear::limited ? "glued" : settings.law ? "law" : "coefficient";
 }
 
 }  // namespace mdrsim

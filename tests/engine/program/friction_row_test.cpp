@@ -139,7 +139,7 @@ TEST(FrictionRow, CattaneoMindlinWithAShearStrengthAtTwoSpringCounts) {
               1e-12 * kMu * fz);
   std::vector<double> errors;
   for (const std::int64_t n : {400, 800}) {
-    FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedLaw::coulomb, tau0});
+    FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedShear::limited, tau0});
     for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
     const double dx = kA / static_cast<double>(n);
     // The line load min(G* u, mu E* (d - g) + 2 tau_0 sqrt(a^2 - x^2)) falls from at most its
@@ -170,7 +170,7 @@ TEST(FrictionRow, CattaneoMindlinWithAShearStrengthAtTwoSpringCounts) {
 TEST(FrictionRow, ALetGoLowersEveryGluedSpringsShearStrength) {
   const std::int64_t n = 200;
   const double tau0 = 0.25 * kMu * kModulus * kD / kA;
-  FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedLaw::coulomb, tau0});
+  FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedShear::limited, tau0});
   for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
   const double dx = kA / static_cast<double>(n);
   const double kz = kModulus * dx;
@@ -209,7 +209,7 @@ TEST(FrictionRow, ALetGoLowersEveryGluedSpringsShearStrength) {
 TEST(FrictionRow, StickingGluedSpringsThatSlipAtALetGoLeaveTheSumsRight) {
   const std::int64_t n = 200;
   const double tau0 = 0.25 * kMu * kModulus * kD / kA;
-  FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedLaw::coulomb, tau0});
+  FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedShear::limited, tau0});
   for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
   const double u = 0.3 * (kMu * kModulus * kD + 2.0 * tau0 * kA) / kShearModulus;
   double work = 0.0;
@@ -223,7 +223,7 @@ TEST(FrictionRow, StickingGluedSpringsThatSlipAtALetGoLeaveTheSumsRight) {
         each += 2.0 * kx * row.glued_stretch(i, kD, u);
         continue;
       }
-      const mdrsim::CoulombSpring s = row.spring(i);
+      const mdrsim::StickSlipSpring s = row.spring(i);
       each +=
           2.0 * (s.sliding != 0 ? s.sliding * mdrsim::slip_limit(*row.law(i), row.geometry(i), kD)
                                 : kx * (u - s.offset));
@@ -323,7 +323,7 @@ TEST(FrictionRow, MatchesTheBruteForceRowUnderAChangingNormalLoad) {
   EXPECT_GT(dissipated, 100.0 * brute_bound);
 }
 
-TEST(FrictionRow, GluedCoulombSpringsSlideInTensionLikeTheBruteForce) {
+TEST(FrictionRow, LimitedGluedSpringsSlideInTensionLikeTheBruteForce) {
   // glued = "coulomb", tau_0 = mu E* d / (4 a) (its image at the centre, 2 tau_0 a, half the
   // centre's friction limit): springs 1..k glued at u = 0 carry tension near the edge (d below
   // their g) and slide at 2 tau_0 sqrt(a^2 - x^2) dx there, at mu f_z plus that inside; pulled out
@@ -333,7 +333,7 @@ TEST(FrictionRow, GluedCoulombSpringsSlideInTensionLikeTheBruteForce) {
   const mdrsim::ParabolicProfile profile(kRadius);
   const double dx = kA / static_cast<double>(n);
   const double tau0 = 0.25 * kMu * kModulus * kD / kA;
-  FrictionRow row(kMaterial, {kMu, mdrsim::GluedLaw::coulomb, tau0}, dx);
+  FrictionRow row(kMaterial, {kMu, mdrsim::GluedShear::limited, tau0}, dx);
   std::vector<double> images;
   for (std::int64_t i = 1; i <= n; ++i) {
     images.push_back(profile.mdr_image(row.position(i)));
@@ -391,10 +391,10 @@ TEST(FrictionRow, ALawOfItsOwnMatchesTheBruteForceRow) {
   const double dx = kA / static_cast<double>(n);
   const double cohesion = 0.1 * kMu * kModulus * kD;  // [N/m]
   const auto law = std::make_shared<GradedLaw>(cohesion, false);
-  FrictionRow row(kMaterial, {kMu, mdrsim::GluedLaw::unlimited, 0.0, law}, dx);
+  FrictionRow row(kMaterial, {kMu, mdrsim::GluedShear::unlimited, 0.0, law}, dx);
   FrictionRow keyed(kMaterial, {kMu}, dx);
   FrictionRow coulomb_own(
-      kMaterial, {kMu, mdrsim::GluedLaw::unlimited, 0.0, std::make_shared<GradedLaw>(0.0, true)},
+      kMaterial, {kMu, mdrsim::GluedShear::unlimited, 0.0, std::make_shared<GradedLaw>(0.0, true)},
       dx);
   std::vector<double> images, coefficients, constants;
   for (std::int64_t i = 1; i <= n && profile.mdr_image(i * dx) < 0.7 * kD; ++i) {
@@ -508,21 +508,21 @@ TEST(FrictionRow, ItsSlopesAreThoseOfItsForce) {
 struct SpringBySpringRow {
   mdrsim::FrictionSettings settings;
   double dx;
-  std::vector<mdrsim::CoulombSpring> states;
+  std::vector<mdrsim::StickSlipSpring> states;
   std::vector<double> images;
   std::int64_t glued = 0;
 
   mdrsim::SpringGeometry geometry(std::size_t i) const {
     return {kModulus * dx, kShearModulus * dx, images[i]};
   }
-  std::optional<mdrsim::CoulombLaw> law(std::size_t i) const {
-    if (static_cast<std::int64_t>(i) >= glued) return mdrsim::CoulombLaw{settings.coefficient};
-    if (settings.glued == mdrsim::GluedLaw::unlimited) return std::nullopt;
+  std::optional<mdrsim::SlipLimit> law(std::size_t i) const {
+    if (static_cast<std::int64_t>(i) >= glued) return mdrsim::SlipLimit{settings.coefficient};
+    if (settings.glued == mdrsim::GluedShear::unlimited) return std::nullopt;
     // tau_0 over the glued disk r < a_g = x_glued, seen by the spring at x: 2 tau_0 sqrt(a_g^2 -
     // x^2) per unit length.
     const double a_g = dx * static_cast<double>(glued);
     const double x = dx * static_cast<double>(i + 1);
-    return mdrsim::CoulombLaw{
+    return mdrsim::SlipLimit{
         settings.coefficient,
         2.0 * settings.shear_strength * std::sqrt(std::max(a_g * a_g - x * x, 0.0)) * dx};
   }
@@ -577,7 +577,7 @@ TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
   // keys and sums must give what each spring's own law gives, event for event, to rounding.
   // Also with Coulomb's law given as a law of its own: every spring spring by spring.
   for (const bool own_law : {false, true})
-    for (const auto glued_law : {mdrsim::GluedLaw::unlimited, mdrsim::GluedLaw::coulomb}) {
+    for (const auto glued_law : {mdrsim::GluedShear::unlimited, mdrsim::GluedShear::limited}) {
       SCOPED_TRACE(own_law ? "a law of its own" : "the keys");
       mdrsim::FrictionSettings settings{kMu, glued_law, 0.1 * kMu * kModulus * kD / kA};
       if (own_law) settings.law = std::make_shared<GradedLaw>(0.0, true);
@@ -630,7 +630,7 @@ TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
           oracle.states[b].sliding = 0;
           dissipated_oracle += 2.0 * mdrsim::slip_to_limit(oracle.states[b], *oracle.law(b),
                                                            oracle.geometry(b), d, u);
-          if (glued_law == mdrsim::GluedLaw::coulomb) dissipated_oracle += oracle.relimit(d, u);
+          if (glued_law == mdrsim::GluedShear::limited) dissipated_oracle += oracle.relimit(d, u);
           dissipated_row += row.let_go_boundary(d, u);
         }
         lift_unpressed(leg.d);

@@ -47,7 +47,7 @@ TEST(FrictionScene, ReadsTheTable) {
   const Scene scene = build(std::string(kProgram) + "coefficient = 0.5\n");
   ASSERT_TRUE(scene.friction.has_value());
   EXPECT_EQ(scene.friction->coefficient, 0.5);
-  EXPECT_EQ(scene.friction->glued, GluedLaw::unlimited);
+  EXPECT_EQ(scene.friction->glued, GluedShear::unlimited);
   EXPECT_EQ(scene.friction->shear_strength, 0.0);
   // The result's scene names every key, the default included.
   EXPECT_EQ((*scene.resolved)["friction"]["glued"], "unlimited");
@@ -120,7 +120,7 @@ TEST(FrictionScene, RefusesWhatDoesNotRunYet) {
   const Scene coulomb =
       build(p + "coefficient = 0.5\nglued = \"coulomb\"\nshear_strength = 10.0\n");
   ASSERT_TRUE(coulomb.friction);
-  EXPECT_EQ(coulomb.friction->glued, GluedLaw::coulomb);
+  EXPECT_EQ(coulomb.friction->glued, GluedShear::limited);
   EXPECT_EQ(coulomb.friction->shear_strength, 10.0);
   EXPECT_THROW_MSG(build(p + "coefficient = 0.5\n[solver]\nmethod = \"stepping\"\n"), SceneError,
                    "scene.toml:16:15: friction.coefficient: friction runs with solver.method = "

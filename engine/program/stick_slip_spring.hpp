@@ -1,20 +1,12 @@
-// One spring under Coulomb friction: stick, slip and their events along a linear motion.
+// One spring that sticks and slips at its slip limit: its events along a linear motion.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 
-namespace mdrsim {
+#include "friction/friction_law.hpp"
 
-/// The slip limit of one spring, mu max(f_z, 0) + adhesive_limit (docs/friction.md). A spring in
-/// contact that is not glued has adhesive_limit 0 (and f_z >= 0 while it stays in contact); a
-/// spring glued under glued = "coulomb" has the MDR image of the shear strength tau_0 over the
-/// glued disk, 2 tau_0 sqrt(a_g^2 - x^2) dx, and may carry tension. A glued spring under
-/// glued = "unlimited" has no law: it never slips.
-struct CoulombLaw {
-  double coefficient = 0.0;     ///< mu [1]
-  double adhesive_limit = 0.0;  ///< 2 tau_0 sqrt(a_g^2 - x^2) dx [N]
-};
+namespace mdrsim {
 
 /// What the law needs of one spring (MDR: each spring independent, paper eq. 7).
 struct SpringGeometry {
@@ -41,15 +33,16 @@ struct LinearMotion {
 
 /// One spring's memory: the indenter's u_x at which it carries no tangential force (where it
 /// touched or glued, plus every slip since), and whether it slides now. f_x = kx (u_x - offset).
-struct CoulombSpring {
+struct StickSlipSpring {
   double offset = 0.0;      ///< [m]
   std::int8_t sliding = 0;  ///< 0: sticks; +1 / -1: slides along +x / -x, f_x = +limit / -limit
 };
 
 /// The trajectory's event kinds (docs/friction.md): `slip` (a sticking spring reaches its limit and
 /// starts to slide) and `stick` (a sliding spring's slip would reverse: it sticks again, keeping
-/// its offset). A `limit_kink` is no event of the trajectory: a sliding glued `coulomb` spring
-/// whose f_z changes sign, where its limit, and so the row's tangential response, changes slope.
+/// its offset). A `limit_kink` is no event of the trajectory: a sliding glued spring
+/// (GluedShear::limited) whose f_z changes sign, where its limit, and so the row's tangential
+/// response, changes slope.
 enum class FrictionEventKind { slip, stick, limit_kink };
 
 struct FrictionEvent {
@@ -62,19 +55,19 @@ struct FrictionEvent {
 inline double spring_normal_force(const SpringGeometry& spring, double indentation) {
   return spring.normal_stiffness * (indentation - spring.image);
 }
-/// mu max(f_z, 0) + adhesive_limit [N].
-double slip_limit(const CoulombLaw& law, const SpringGeometry& spring, double indentation);
+/// mu max(f_z, 0) + constant [N].
+double slip_limit(const SlipLimit& law, const SpringGeometry& spring, double indentation);
 /// kx (u_x - offset) of a sticking spring; +-limit of a sliding one [N].
-double spring_tangential_force(const CoulombSpring& state, const CoulombLaw& law,
+double spring_tangential_force(const StickSlipSpring& state, const SlipLimit& law,
                                const SpringGeometry& spring, double indentation, double tangential);
 
 /// The first event of the spring along `motion` in [motion.start, end]: a sticking spring's
 /// slip where |f_x| reaches the limit (both are linear in t, so a linear root on each side of
-/// the limit, and on each side of f_z = 0 for a glued `coulomb` spring), a sliding spring's
-/// stick where its slip velocity u_x' - sigma limit'/kx has the sign opposed to its slide.
+/// the limit, and on each side of f_z = 0 for a glued spring under GluedShear::limited), a sliding
+/// spring's stick where its slip velocity u_x' - sigma limit'/kx has the sign opposed to its slide.
 /// An event at motion.start itself means the spring must change at once (a sticking spring
 /// on its limit moving outwards, a sliding one whose motion reverses); nullopt: none up to end.
-std::optional<FrictionEvent> next_friction_event(const CoulombSpring& state, const CoulombLaw& law,
+std::optional<FrictionEvent> next_friction_event(const StickSlipSpring& state, const SlipLimit& law,
                                                  const SpringGeometry& spring,
                                                  const LinearMotion& motion, double end);
 
@@ -82,17 +75,17 @@ std::optional<FrictionEvent> next_friction_event(const CoulombSpring& state, con
 /// locator's answer): a sticking spring keeps its offset, a sliding one follows its limit,
 /// offset = u_x - sigma limit/kx. Returns the work the slip dissipated, the integral of the
 /// limit over the slip distance (exact: both are linear in t on each side of f_z = 0) [J].
-double advance_spring(CoulombSpring& state, const CoulombLaw& law, const SpringGeometry& spring,
+double advance_spring(StickSlipSpring& state, const SlipLimit& law, const SpringGeometry& spring,
                       const LinearMotion& motion, double t);
 
 /// Applies an event the locator found, after advance_spring to its time: slip starts the slide
 /// in its direction, stick ends it (the offset stays), a limit kink changes nothing.
-void apply_friction_event(CoulombSpring& state, const FrictionEvent& event);
+void apply_friction_event(StickSlipSpring& state, const FrictionEvent& event);
 
 /// A spring over its limit at once (its glue let go while it stays pressed, keeping its
 /// stretch): it slips to the limit within the jump and slides on. Returns the dissipated work,
 /// limit times slip distance [J]; 0 and no change for a spring within its limit.
-double slip_to_limit(CoulombSpring& state, const CoulombLaw& law, const SpringGeometry& spring,
+double slip_to_limit(StickSlipSpring& state, const SlipLimit& law, const SpringGeometry& spring,
                      double indentation, double tangential);
 
 }  // namespace mdrsim

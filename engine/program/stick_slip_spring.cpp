@@ -1,5 +1,5 @@
-// One spring under Coulomb friction: stick, slip and their events along a linear motion.
-#include "engine/program/coulomb_spring.hpp"
+// One spring that sticks and slips at its slip limit: its events along a linear motion.
+#include "engine/program/stick_slip_spring.hpp"
 
 #include <algorithm>
 #include <array>
@@ -25,19 +25,19 @@ struct LimitPieces {
   int count;
 };
 
-LimitPiece limit_on(const CoulombLaw& law, const SpringGeometry& spring, const LinearMotion& motion,
+LimitPiece limit_on(const SlipLimit& law, const SpringGeometry& spring, const LinearMotion& motion,
                     double start, double end) {
   // Pressed or not on the whole piece: decided at its middle, away from the crossing's rounding.
   const double middle = start + 0.5 * (end - start);
   const bool pressed = motion.indentation_at(middle) > spring.image ||
                        (end == start && motion.indentation_at(start) >= spring.image);
-  if (!pressed) return {start, end, law.adhesive_limit, 0.0};
+  if (!pressed) return {start, end, law.constant, 0.0};
   const double normal = spring_normal_force(spring, motion.indentation_at(start));
-  return {start, end, law.coefficient * std::max(normal, 0.0) + law.adhesive_limit,
+  return {start, end, law.coefficient * std::max(normal, 0.0) + law.constant,
           law.coefficient * spring.normal_stiffness * motion.indentation_rate};
 }
 
-LimitPieces limit_pieces(const CoulombLaw& law, const SpringGeometry& spring,
+LimitPieces limit_pieces(const SlipLimit& law, const SpringGeometry& spring,
                          const LinearMotion& motion, double end) {
   const double start = motion.start;
   if (motion.indentation_rate != 0.0) {
@@ -60,7 +60,7 @@ std::optional<double> linear_root(double margin, double slope, const LimitPiece&
 }
 
 /// The first slip of a sticking spring on one piece.
-std::optional<FrictionEvent> first_slip(const CoulombSpring& state, const SpringGeometry& spring,
+std::optional<FrictionEvent> first_slip(const StickSlipSpring& state, const SpringGeometry& spring,
                                         const LinearMotion& motion, const LimitPiece& piece) {
   const double force =
       spring.tangential_stiffness * (motion.tangential_at(piece.start) - state.offset);
@@ -74,7 +74,7 @@ std::optional<FrictionEvent> first_slip(const CoulombSpring& state, const Spring
 }
 
 /// The slip velocity d(offset)/dt of a sliding spring on one piece [m].
-double slip_rate(const CoulombSpring& state, const SpringGeometry& spring,
+double slip_rate(const StickSlipSpring& state, const SpringGeometry& spring,
                  const LinearMotion& motion, const LimitPiece& piece) {
   return motion.tangential_rate - state.sliding * piece.rate / spring.tangential_stiffness;
 }
@@ -85,19 +85,18 @@ double limit_at(const LimitPiece& piece, double t) {
 
 }  // namespace
 
-double slip_limit(const CoulombLaw& law, const SpringGeometry& spring, double indentation) {
-  return law.coefficient * std::max(spring_normal_force(spring, indentation), 0.0) +
-         law.adhesive_limit;
+double slip_limit(const SlipLimit& law, const SpringGeometry& spring, double indentation) {
+  return law.coefficient * std::max(spring_normal_force(spring, indentation), 0.0) + law.constant;
 }
 
-double spring_tangential_force(const CoulombSpring& state, const CoulombLaw& law,
+double spring_tangential_force(const StickSlipSpring& state, const SlipLimit& law,
                                const SpringGeometry& spring, double indentation,
                                double tangential) {
   if (state.sliding != 0) return state.sliding * slip_limit(law, spring, indentation);
   return spring.tangential_stiffness * (tangential - state.offset);
 }
 
-std::optional<FrictionEvent> next_friction_event(const CoulombSpring& state, const CoulombLaw& law,
+std::optional<FrictionEvent> next_friction_event(const StickSlipSpring& state, const SlipLimit& law,
                                                  const SpringGeometry& spring,
                                                  const LinearMotion& motion, double end) {
   if (end < motion.start) return std::nullopt;
@@ -112,13 +111,13 @@ std::optional<FrictionEvent> next_friction_event(const CoulombSpring& state, con
       return FrictionEvent{FrictionEventKind::stick, piece.start, state.sliding};
     // The next piece starts where f_z changes sign: a kink of a glued spring's limit. A spring
     // without glue lifts there (the row's event), so its limit's kink is none of the law's.
-    if (p + 1 < pieces.count && law.adhesive_limit > 0.0)
+    if (p + 1 < pieces.count && law.constant > 0.0)
       return FrictionEvent{FrictionEventKind::limit_kink, pieces.piece[1].start, state.sliding};
   }
   return std::nullopt;
 }
 
-double advance_spring(CoulombSpring& state, const CoulombLaw& law, const SpringGeometry& spring,
+double advance_spring(StickSlipSpring& state, const SlipLimit& law, const SpringGeometry& spring,
                       const LinearMotion& motion, double t) {
   if (state.sliding == 0 || t <= motion.start) return 0.0;
   const LimitPieces pieces = limit_pieces(law, spring, motion, t);
@@ -136,12 +135,12 @@ double advance_spring(CoulombSpring& state, const CoulombLaw& law, const SpringG
   return dissipated;
 }
 
-void apply_friction_event(CoulombSpring& state, const FrictionEvent& event) {
+void apply_friction_event(StickSlipSpring& state, const FrictionEvent& event) {
   if (event.kind == FrictionEventKind::slip) state.sliding = event.direction;
   if (event.kind == FrictionEventKind::stick) state.sliding = 0;
 }
 
-double slip_to_limit(CoulombSpring& state, const CoulombLaw& law, const SpringGeometry& spring,
+double slip_to_limit(StickSlipSpring& state, const SlipLimit& law, const SpringGeometry& spring,
                      double indentation, double tangential) {
   const double force = spring.tangential_stiffness * (tangential - state.offset);
   const double limit = slip_limit(law, spring, indentation);
