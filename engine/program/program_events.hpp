@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "engine/events/observer.hpp"
-#include "engine/program/coulomb_spring.hpp"
 #include "engine/program/program_row.hpp"
+#include "engine/program/stick_slip_spring.hpp"
 
 namespace mdrsim {
 
