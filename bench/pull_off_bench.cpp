@@ -3,8 +3,11 @@
 #include <benchmark/benchmark.h>
 #include <spdlog/spdlog.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "bench/bench_cases.hpp"
 #include "engine/reference/part_examples.hpp"
@@ -40,6 +43,43 @@ void pull_off(benchmark::State& state, std::string normal, std::string method, d
   state.SetItemsProcessed(state.iterations() * springs);
 }
 
+/// The work of adhesion of a program pull-off: "uniform" (0.05 J/m^2) or a table of `points`
+/// equal values out to 1 mm (the same numbers to the bit, so only the table's cost differs).
+std::string adhesion_of(int points) {
+  if (points == 0) return "0.05";
+  std::vector<double> r, value;
+  for (int i = 0; i < points; ++i) {
+    r.push_back(1e-3 * i / (points - 1));
+    value.push_back(0.05);
+  }
+  return fmt::format("{{ r = [{:.17g}], value = [{:.17g}] }}", fmt::join(r, ", "),
+                     fmt::join(value, ", "));
+}
+
+/// A program's pull-off (approach under fixed grips to 12 d0, retract until separation, 2000
+/// springs) per event, with dgamma uniform or tabulated: what a table costs at each event.
+void program_pull_off(benchmark::State& state, int points) {
+  const mdrsim::Scene scene = mdrsim::test::build_scene_text(
+      fmt::format("[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = {}\n"
+                  "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+                  "[[loading.stage]]\nname = \"approach\"\n"
+                  "normal = {{ control = \"fixed-grips\", to = 2.713781792333937e-05 }}\n"
+                  "[[loading.stage]]\nname = \"retract\"\n"
+                  "normal = {{ control = \"fixed-grips\", by = -2.713781792333937e-05 }}\n"
+                  "until = \"separation\"\n[discretization]\nsprings = 2000\n",
+                  adhesion_of(points)));
+  mdrsim::RunResult result;
+  for (auto _ : state) {
+    result = mdrsim::run_scene(scene, {});
+    benchmark::DoNotOptimize(result.work);
+  }
+  const auto events = static_cast<double>(result.counts.events);
+  state.counters["events"] = events;
+  state.counters["time_per_event"] =
+      benchmark::Counter(events * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,6 +99,10 @@ int main(int argc, char** argv) {
           ->Unit(benchmark::kMillisecond);
     }
   }
+  benchmark::RegisterBenchmark("program_pull_off/dgamma:uniform", program_pull_off, 0)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("program_pull_off/dgamma:table_20001", program_pull_off, 20001)
+      ->Unit(benchmark::kMillisecond);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   benchmark::RunSpecifiedBenchmarks();

@@ -52,6 +52,10 @@ RadialAdhesion::RadialAdhesion(Table table) {
   }
   breakpoints_ = table.radii;
   breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end()), breakpoints_.end());
+  largest_ = *std::max_element(table.values.begin(), table.values.end());
+  for (std::size_t i = 1; i < breakpoints_.size(); ++i) {
+    finest_length_ = std::min(finest_length_, breakpoints_[i] - breakpoints_[i - 1]);
+  }
   form_ = std::move(table);
 }
 
@@ -67,6 +71,8 @@ RadialAdhesion::RadialAdhesion(Sinusoid s) {
     throw std::invalid_argument(
         fmt::format("wavelength = {} is not a finite length > 0", s.wavelength));
   }
+  largest_ = s.mean * (1.0 + s.amplitude);
+  finest_length_ = s.wavelength;
   form_ = s;
 }
 

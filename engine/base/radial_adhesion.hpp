@@ -37,13 +37,15 @@ class RadialAdhesion {
   double at(double r) const;
   /// The value the scales (F0, a0, d0) use: the mean, or the value at r = 0 of a table.
   double scale_value() const;
-  /// The largest value anywhere [J/m^2].
-  double largest() const;
+  /// The largest value anywhere [J/m^2]: found once, at construction (a program asks for it at
+  /// every event, and a table may hold 10^4 points).
+  double largest() const { return largest_; }
   /// Radii [m] where dgamma(r) bends or jumps (a table's points; none for a sinusoid).
   const std::vector<double>& breakpoints() const;
   /// The shortest length over which dgamma(r) changes [m]: a sinusoid's wavelength, or the
-  /// smallest positive gap between a table's points (infinity for a one-point table).
-  double finest_length() const;
+  /// smallest positive gap between a table's points (infinity for a one-point table); found
+  /// once, at construction.
+  double finest_length() const { return finest_length_; }
 
   const Table* table() const { return std::get_if<Table>(&form_); }
   const Sinusoid* sinusoid() const { return std::get_if<Sinusoid>(&form_); }
@@ -54,6 +56,8 @@ class RadialAdhesion {
  private:
   std::variant<Table, Sinusoid> form_;
   std::vector<double> breakpoints_;
+  double largest_ = 0.0;                                            ///< [J/m^2]
+  double finest_length_ = std::numeric_limits<double>::infinity();  ///< [m]
 };
 
 // Inline: a criterion asks at every let-go, and the parts see only headers of the vocabulary.
@@ -77,22 +81,7 @@ inline double RadialAdhesion::scale_value() const {
   return at(0.0);
 }
 
-inline double RadialAdhesion::largest() const {
-  if (const Sinusoid* s = sinusoid()) return s->mean * (1.0 + s->amplitude);
-  const Table& t = std::get<Table>(form_);
-  return *std::max_element(t.values.begin(), t.values.end());
-}
-
 inline const std::vector<double>& RadialAdhesion::breakpoints() const { return breakpoints_; }
-
-inline double RadialAdhesion::finest_length() const {
-  if (const Sinusoid* s = sinusoid()) return s->wavelength;
-  double finest = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 1; i < breakpoints_.size(); ++i) {
-    finest = std::min(finest, breakpoints_[i] - breakpoints_[i - 1]);
-  }
-  return finest;
-}
 
 /// What is wrong with a table: the column it is about ("r" or "value"), the point where one
 /// is named, and the message ("r[3] = ... is below r[2] = ...", "value[1] = -0.2 at r = ...
