@@ -16,6 +16,9 @@ struct DiskValidity {
   /// (r < a, springs not glued) [m]; nothing where every value is positive.
   std::optional<double> worst_radius;
   double worst = 0.0;  ///< that gap [m] or pressure [Pa]; 0 where nothing was negative
+  /// What counted as zero at this state: a gap [m] or a pressure [Pa] below -zero is
+  /// negative; 0 where nothing was negative.
+  double zero = 0.0;
 };
 
 /// The MDR surface displacement outside a contact of radius a at indentation d,
@@ -35,8 +38,12 @@ double mdr_pressure(const Profile& profile, double effective_modulus, double con
 /// profile's outer radius), and the pressure >= 0 for `unglued_from` < r < a where springs
 /// in contact are not glued (a when all are glued: no pressure check). A value counts as
 /// negative below -1e-9 of the state's depth scale max(|d|, g(a)) (a gap) or of E* times it
-/// over a (a pressure): the quadrature's accuracy is far inside that. The gap is sampled at
-/// 200 radii crowded towards a and refined around the lowest by a bracketed minimum search.
+/// over a (a pressure), one zero scale per state: the quadrature's accuracy is far inside
+/// that. The gap is sampled at about 115 radii crowded towards a, filled in at 4 per shortest
+/// feature of the profile (Profile::shortest_feature) wherever a bound from the samples does
+/// not keep it positive, and every local minimum of the samples is refined by a bracketed
+/// minimum search: a dip narrower than the samples' spacing is found between samples that
+/// stand above it.
 DiskValidity check_disk(const Profile& profile, double effective_modulus, double contact_radius,
                         double indentation, double unglued_from);
 

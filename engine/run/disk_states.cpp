@@ -20,7 +20,6 @@ void check_disk_states(const Scene& scene, RunResult& result) {
   struct Worst {
     std::string state;
     DiskValidity check;
-    double depth_scale;
   };
   std::optional<Worst> worst;
   int invalid = 0;
@@ -35,11 +34,9 @@ void check_disk_states(const Scene& scene, RunResult& result) {
     s.disk_valid = c.valid;
     if (c.valid) return;
     ++invalid;
-    // The worst relative to its state's depth (a gap) or pressure scale.
-    const double depth = std::max(std::abs(s.indentation), std::abs(profile.mdr_image(a)));
-    const double scale = c.violation == DiskValidity::Violation::gap ? depth : modulus * depth / a;
-    if (!worst || c.worst / scale < worst->check.worst / worst->depth_scale) {
-      worst = Worst{name, c, scale};
+    // The worst relative to its state's zero (of a gap or a pressure).
+    if (!worst || c.worst / c.zero < worst->check.worst / worst->check.zero) {
+      worst = Worst{name, c};
     }
   };
   if (result.critical) check(*result.critical, "the critical point");
