@@ -25,6 +25,7 @@ struct SweepOptions {
   int threads = 1;
   std::string shard;    ///< I/N, or empty for all rows
   bool resume = false;  ///< finish the CSV at `csv` rather than start it again
+  bool force = false;   ///< replace a CSV already at `csv` (else a non-empty file is refused)
 };
 
 struct MergeOptions {

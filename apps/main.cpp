@@ -162,6 +162,9 @@ int main(int argc, char** argv) {
   sweep_app->add_option("--shard", sweep.shard, "I/N: run rows I, I+N, I+2N, ... of the sweep");
   sweep_app->add_flag("--resume", sweep.resume,
                       "finish the CSV at --csv PATH: keep its rows, run the missing ones");
+  sweep_app->add_flag("--force", sweep.force,
+                      "replace the file at --csv PATH (without it, or --resume, a sweep refuses "
+                      "a file that is there and not empty)");
   sweep_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 

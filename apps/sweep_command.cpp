@@ -210,6 +210,18 @@ std::uint64_t resume_from(const std::string& path, const SweepIdentity& identity
   return file.rows;
 }
 
+/// A sweep without --resume or --force never replaces a file's rows: a sweep run again with
+/// the --csv of an earlier, longer one would silently leave three rows where there were
+/// thousands. A device, a fifo or an empty file (one made by mktemp) holds no rows to lose.
+void refuse_existing_csv(const std::string& path) {
+  if (path == "-") return;
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size == 0) return;
+  throw UsageError(
+      fmt::format("--csv: '{}' exists (--resume finishes the sweep in it, --force replaces it)",
+                  printable(path)));
+}
+
 std::string read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -240,6 +252,10 @@ int sweep_command(const SweepOptions& options) {
   if (options.resume && options.csv == "-") {
     throw UsageError("--resume: needs --csv PATH (a sweep on standard output cannot resume)");
   }
+  if (options.resume && options.force) {
+    throw UsageError("--force: replaces the CSV that --resume finishes; give one of them");
+  }
+  if (!options.resume && !options.force) refuse_existing_csv(options.csv);
   const SceneDocument base = load_scene_document(options.scene, options.sets);
   const Registries registries = Registries::builtin();
   const SweepColumns columns = check_values(base, grid, registries);

@@ -40,11 +40,11 @@ done
 echo "== Fig. 3a: critical forces against the tangential displacement" >&2
 for control in fixed_grips fixed_load; do
   "$mdrsim" sweep "scenes/fig3a_$control.toml" --vary "$vary" \
-    --csv "$results/fig3a_$control.csv" --threads "$threads"
+    --csv "$results/fig3a_$control.csv" --force --threads "$threads"
 done
 # Eq. 34 at G* != E*: the fixed-grips sweep at nu = 0.3.
 "$mdrsim" sweep scenes/fig3a_fixed_grips.toml --vary "$vary" --set material.poisson_ratio=0.3 \
-  --csv "$results/fig3a_fixed_grips_nu03.csv" --threads "$threads"
+  --csv "$results/fig3a_fixed_grips_nu03.csv" --force --threads "$threads"
 
 # The same runs on the continuum route (docs/continuum.md): no springs, rtol 1e-10; the
 # comparison table's `continuum` column.
@@ -54,10 +54,11 @@ for control in fixed_grips fixed_load; do
   "$mdrsim" run "scenes/fig2_$control.toml" "${continuum[@]}" \
     --json "$results/fig2_${control}_continuum.json"
   "$mdrsim" sweep "scenes/fig3a_$control.toml" --vary "$vary" "${continuum[@]}" \
-    --csv "$results/fig3a_${control}_continuum.csv" --threads "$threads"
+    --csv "$results/fig3a_${control}_continuum.csv" --force --threads "$threads"
 done
 "$mdrsim" sweep scenes/fig3a_fixed_grips.toml --vary "$vary" --set material.poisson_ratio=0.3 \
-  "${continuum[@]}" --csv "$results/fig3a_fixed_grips_nu03_continuum.csv" --threads "$threads"
+  "${continuum[@]}" --csv "$results/fig3a_fixed_grips_nu03_continuum.csv" --force \
+  --threads "$threads"
 
 echo "== figures" >&2
 "$py" scripts/plot_paper_figures.py --results "$results" --scenes scenes
@@ -76,7 +77,7 @@ echo "== a loading program: the reversible JKR cycle" >&2
 # whose contact is not one disk shaded (docs/model.md "One contact disk"; about 3 s).
 echo "== a wavy sphere: pull-off against the ripple amplitude" >&2
 "$mdrsim" sweep scenes/wavy_sphere.toml --vary "profile.amplitude=0:1e-6:21" \
-  --csv "$results/wavy_amplitude.csv" --threads "$threads" --log-level error
+  --csv "$results/wavy_amplitude.csv" --force --threads "$threads" --log-level error
 "$py" scripts/plot_wavy.py --csv "$results/wavy_amplitude.csv" --out "$results"
 
 # Beyond the paper: a work of adhesion that varies with the radius, the crack-front codes'
@@ -124,12 +125,12 @@ shear="0:2.5585780106932e-5:33"  # 0 .. 2 u_c
 for n in 2000 8000; do
   "$mdrsim" sweep scenes/programs/pull_off_after_shear.toml \
     --vary "loading.stage.2.tangential.to=$shear" --vary "loading.rebinding=false,true" \
-    --set "discretization.springs=$n" --csv "$results/pull_off_after_shear_$n.csv" \
+    --set "discretization.springs=$n" --csv "$results/pull_off_after_shear_$n.csv" --force \
     --threads "$threads" --log-level error
 done
 "$mdrsim" sweep scenes/fig3a_fixed_grips.toml --vary "loading.tangential.displacement=$shear" \
-  "${continuum[@]}" --csv "$results/pull_off_after_shear_continuum.csv" --threads "$threads" \
-  --log-level error
+  "${continuum[@]}" --csv "$results/pull_off_after_shear_continuum.csv" --force \
+  --threads "$threads" --log-level error
 echo
 "$py" scripts/plot_pull_off_after_shear.py --results "$results" --springs 2000 8000
 

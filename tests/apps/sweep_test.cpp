@@ -285,6 +285,33 @@ TEST_F(Sweep, BadShardOrResumeFlags) {
   EXPECT_FALSE(fs::exists(csv));
 }
 
+TEST_F(Sweep, AnExistingCsvIsKeptUnlessResumeOrForce) {
+  // A sweep run again onto the CSV of a longer one must not leave its few rows in place of
+  // the thousands there were, with exit 0.
+  const std::string csv = path("grid.csv");
+  ASSERT_EQ(run(sweep_args({"--vary", "material.poisson_ratio=0:0.3:4", "--csv", csv})), 0)
+      << err();
+  const std::string before = slurp(csv);
+  ASSERT_EQ(lines_of(before).size(), 2u + 4u);
+  const std::vector<std::string> small{"--vary", "material.poisson_ratio=0,0.3"};
+  EXPECT_EQ(run(sweep_args(small, {"--csv", csv})), 2);
+  EXPECT_EQ(err(), fmt::format("--csv: '{}' exists (--resume finishes the sweep in it, --force "
+                               "replaces it)\n",
+                               csv));
+  EXPECT_EQ(slurp(csv), before);
+  EXPECT_EQ(run(sweep_args(small, {"--csv", csv, "--force", "--resume"})), 2);
+  EXPECT_EQ(err(), "--force: replaces the CSV that --resume finishes; give one of them\n");
+  EXPECT_EQ(slurp(csv), before);
+  ASSERT_EQ(run(sweep_args(small, {"--csv", csv, "--force"})), 0) << err();
+  EXPECT_EQ(lines_of(slurp(csv)).size(), 2u + 2u);
+  // An empty file (mktemp's) and a device hold no rows: written without --force.
+  const std::string empty = path("empty.csv");
+  std::ofstream{empty};
+  ASSERT_EQ(run(sweep_args(small, {"--csv", empty})), 0) << err();
+  EXPECT_EQ(lines_of(slurp(empty)).size(), 2u + 2u);
+  EXPECT_EQ(run(sweep_args(small, {"--csv", "/dev/null"})), 0) << err();
+}
+
 // ---- shards and merge ----
 
 TEST_F(Sweep, ShardsRunAsSeparateProcessesMergeIntoTheUnshardedCsv) {
