@@ -1,5 +1,5 @@
 // mdrsim: the command line. Parse, call the engine, print; exit 0 done, 1 internal, 2 bad input
-// (130/143: a sweep stopped by SIGINT/SIGTERM).
+// (130/143: a sweep stopped by SIGINT/SIGTERM; 141: standard output closed by its reader).
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -103,7 +103,8 @@ std::optional<std::string> split_set_value(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // A closed pipe on standard output is a write error reported below, not a signal.
+  // A closed pipe is an error of the write, handled below (standard output's reader gone: exit
+  // 141 quietly), not a signal that kills the process wherever it is.
   std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"mdrsim: adhesive contact under combined normal and tangential loading (MDR)"};
   app.require_subcommand(1);
@@ -235,6 +236,8 @@ int main(int argc, char** argv) {
   } catch (const mdrsim::cli::UsageError& e) {
     std::cerr << one_line(e.what()) << '\n';
     return 2;
+  } catch (const mdrsim::cli::StandardOutputClosed&) {
+    return 128 + SIGPIPE;
   } catch (const mdrsim::cli::WriteError& e) {
     std::cerr << "mdrsim: " << one_line(e.what()) << '\n';
     return 1;

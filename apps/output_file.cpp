@@ -94,6 +94,7 @@ void OutputFile::commit() {
   if (to_stdout_) {
     std::cout.flush();
     if (!std::cout) {
+      if (standard_output_reader_gone()) throw StandardOutputClosed();
       throw WriteError(fmt::format("{}: writing standard output failed", flag_));
     }
     return;

@@ -131,6 +131,7 @@ class CsvSink {
       const ssize_t n = write(fd_, text.data(), text.size());
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) {
+        if (n < 0 && errno == EPIPE && path_ == "-") throw StandardOutputClosed();
         throw WriteError(path_ == "-" ? fmt::format("--csv: writing standard output failed ({})",
                                                     system_reason(errno))
                                       : fmt::format("--csv: writing '{}' failed ({})",

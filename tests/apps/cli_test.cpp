@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -140,21 +141,46 @@ TEST_F(Cli, SceneFileBelowAFile) {
   EXPECT_TRUE(bad_input(r, scene_ + "/x.toml: cannot read the scene file (not a directory)"));
 }
 
-// An output that cannot be written (a full disk; a reader that closed the pipe, as `| head`
-// does) is a failure of the run's output, exit 1 with one line naming the flag: not an
-// "internal error".
+// An output that cannot be written (a full disk) is a failure of the run's output, exit 1 with
+// one line naming the flag: not an "internal error".
 TEST_F(Cli, AnOutputThatCannotBeWrittenNamesItsFlag) {
   const auto full = run_mdrsim(fmt::format("run {} --json /dev/full --log-level off", scene_));
   EXPECT_EQ(full.exit_code, 1);
   EXPECT_EQ(full.err, "mdrsim: --json: writing '/dev/full' failed\n");
-  const std::string err = path("err.txt");
-  run_mdrsim(fmt::format(
-      "sweep {} --vary material.poisson_ratio=0:0.4:200 --log-level off 2> {} | head -c 1", scene_,
-      err));
-  std::ifstream in(err);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "mdrsim: --csv: writing standard output failed (broken pipe)");
+  const auto sweep = run_mdrsim(fmt::format(
+      "sweep {} --vary material.poisson_ratio=0:0.4:3 --csv /dev/full --log-level off", scene_));
+  EXPECT_EQ(sweep.exit_code, 1);
+  EXPECT_EQ(sweep.err, "mdrsim: --csv: writing '/dev/full' failed (no space left on device)\n");
+}
+
+// A reader that closes standard output (`| head`) wants no more: mdrsim ends as `seq | head`
+// does, without a message, exit 141 (128 + SIGPIPE). Each output is far beyond a pipe's 64 KiB
+// (a sweep of 2000 rows, a trajectory of 4 MB), so that head closes it before it is written.
+TEST_F(Cli, StandardOutputClosedByItsReaderEndsQuietly) {
+  const auto read = [](const std::string& file) {
+    std::ifstream in(file);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string out = path("head.out");
+  const std::string err = path("mdrsim.err");
+  const std::string status = path("status.txt");
+  for (const std::string& command :
+       {fmt::format("sweep {} --vary material.poisson_ratio=0:0.4:2000 --log-level off", scene_),
+        fmt::format("sweep {} --vary material.poisson_ratio=0:0.4:2000 --threads 2 --csv -",
+                    scene_),
+        fmt::format("run {} --json {} --trajectory - --set discretization.springs=100000", scene_,
+                    path("out.json"))}) {
+    // bash for PIPESTATUS: mdrsim's own exit code, not head's.
+    const std::string pipeline =
+        fmt::format("cd '{}' && '{}' {} 2>'{}' | head -n 3 >'{}'; echo ${{PIPESTATUS[0]}} >'{}'",
+                    MDRSIM_SOURCE_DIR, MDRSIM_BINARY, command, err, out, status);
+    ASSERT_EQ(std::system(fmt::format("bash -c {}", shell_word(pipeline)).c_str()), 0);
+    const std::string head = read(out);
+    EXPECT_EQ(std::count(head.begin(), head.end(), '\n'), 3) << command << "\n" << head;
+    EXPECT_EQ(read(err).find("mdrsim:"), std::string::npos) << command << "\n" << read(err);
+    EXPECT_EQ(read(err).find("[error]"), std::string::npos) << command << "\n" << read(err);
+    EXPECT_EQ(read(status), "141\n") << command << "\n" << read(err);
+  }
 }
 
 TEST_F(Cli, EndlessSceneFile) {
