@@ -2,7 +2,6 @@
 #include "engine/accuracy/adaptive_resolution.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +11,7 @@
 
 #include "engine/accuracy/row_refinement.hpp"
 #include "engine/accuracy/row_sequence.hpp"
+#include "engine/base/engine_logger.hpp"
 #include "engine/pull_off/pull_off.hpp"
 #include "engine/result/status_margin.hpp"
 
@@ -59,8 +59,9 @@ std::vector<Zoom> zoom_onto(const Scene& scene, Zoom start, Target target, RunCo
           run_row(scene, {.springs = kRowSprings, .outer_radius = radius, .zoomed = true}, {});
       counts += candidate.counts;
       const std::int64_t found = target_springs(candidate, target);
-      spdlog::debug("rtol zoom: row of {} springs across {:.6g} m ({} -> {}): {} at spring {}",
-                    candidate.springs, radius, k, index, to_string(candidate.status), found);
+      engine_logger().debug(
+          "rtol zoom: row of {} springs across {:.6g} m ({} -> {}): {} at spring {}",
+          candidate.springs, radius, k, index, to_string(candidate.status), found);
       if (found <= 0) break;
       if (found < candidate.springs) {
         accepted = Zoom{std::move(candidate), radius};

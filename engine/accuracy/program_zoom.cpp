@@ -3,11 +3,10 @@
 // critical point, then doubled until the RowSequence estimate meets rtol.
 #include "engine/accuracy/program_zoom.hpp"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 
 #include "engine/accuracy/row_refinement.hpp"
+#include "engine/base/engine_logger.hpp"
 #include "engine/program/stage_motion.hpp"
 #include "engine/pull_off/pull_off.hpp"
 
@@ -152,8 +151,8 @@ std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunRe
     ZoomRow z = zoomed_row(scene, start, zero, radius, kZoomSprings);
     out.counts += z.row.counts;
     const std::int64_t found = target_springs(z.row, target, true);
-    spdlog::debug("program zoom: {} springs across {:.6g} m ({} -> {}): {} at spring {}",
-                  kZoomSprings, radius, k, index, to_string(z.row.status), found);
+    engine_logger().debug("program zoom: {} springs across {:.6g} m ({} -> {}): {} at spring {}",
+                          kZoomSprings, radius, k, index, to_string(z.row.status), found);
     if (!z.exact || z.row.status != coarse.status) return std::nullopt;
     if (target == Target::critical && found <= 0) return std::nullopt;
     if (found > 0 && found < kZoomSprings) {

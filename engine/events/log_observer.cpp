@@ -1,8 +1,9 @@
 // Levels chosen so that info shows the preload, the tangential load and the critical point.
 #include "engine/events/log_observer.hpp"
 
-#include <spdlog/spdlog.h>
+#include <spdlog/common.h>
 
+#include "engine/base/engine_logger.hpp"
 #include "engine/events/event_format.hpp"
 
 namespace mdrsim {
@@ -12,14 +13,14 @@ void LogObserver::on_event(const Event& event) {
     case EventKind::preload_reached:
     case EventKind::tangential_applied:
     case EventKind::instability:
-      spdlog::info("{}", event);
+      engine_logger().info("{}", event);
       break;
     case EventKind::finished:
-      if (event.status != RunStatus::instability) spdlog::info("{}", event);
+      if (event.status != RunStatus::instability) engine_logger().info("{}", event);
       break;
     case EventKind::stage_end:
     case EventKind::jump:
-      spdlog::info("{}", event);
+      engine_logger().info("{}", event);
       break;
     case EventKind::spring_detached:
     case EventKind::spring_glued:
@@ -27,12 +28,12 @@ void LogObserver::on_event(const Event& event) {
     case EventKind::spring_lifted:
     case EventKind::spring_slipped:
     case EventKind::spring_stuck:
-      spdlog::debug("{}", event);
+      engine_logger().debug("{}", event);
       break;
     case EventKind::step_accepted:
     case EventKind::step_halved:
     case EventKind::sample:
-      spdlog::trace("{}", event);
+      engine_logger().trace("{}", event);
       break;
   }
 }
@@ -45,15 +46,15 @@ bool LogObserver::wants(EventKind kind) const {
     case EventKind::spring_lifted:
     case EventKind::spring_slipped:
     case EventKind::spring_stuck:
-      return spdlog::should_log(spdlog::level::debug);
+      return engine_logger().should_log(spdlog::level::debug);
     case EventKind::step_accepted:
     case EventKind::step_halved:
     case EventKind::sample:
-      return spdlog::should_log(spdlog::level::trace);
+      return engine_logger().should_log(spdlog::level::trace);
     default:
       // At --log-level warn or above nothing is logged: a run under rtol then need not run
       // its finest row again only to give these events (program_resolution.cpp).
-      return spdlog::should_log(spdlog::level::info);
+      return engine_logger().should_log(spdlog::level::info);
   }
 }
 

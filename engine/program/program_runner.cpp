@@ -5,7 +5,6 @@
 #include "engine/program/program_runner.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +13,7 @@
 #include <optional>
 
 #include "detachment/let_go.hpp"
+#include "engine/base/engine_logger.hpp"
 #include "engine/model/machine_work.hpp"
 #include "engine/program/bulk_paths.hpp"
 #include "engine/program/let_go_trail.hpp"
@@ -352,7 +352,7 @@ bool ProgramRunner::after_bulk(BulkEnd end) {
 }
 
 void ProgramRunner::log_progress(const Stage& stage) {
-  spdlog::info(
+  engine_logger().info(
       "program running: stage '{}' at parameter {:.4g}, {} springs in contact, {} events, {} "
       "steps",
       stage.name, at_.t, at_.row.in_contact(), result_.counts.events, result_.counts.steps);

@@ -2,7 +2,6 @@
 #include "engine/pull_off/pull_off.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <array>
@@ -12,6 +11,7 @@
 #include <memory>
 
 #include "controllers/builtin_controllers.hpp"
+#include "engine/base/engine_logger.hpp"
 #include "engine/events/cascade_buffer.hpp"
 #include "engine/events/progress_log.hpp"
 #include "engine/model/boundary_let_go.hpp"
@@ -257,9 +257,9 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
     // An advance that starts at an equilibrium closes what came before it.
     if (may_fly && out.equilibrium_before) buffer.flush(before_advance);
     if (progress.due()) {
-      spdlog::info("pull-off running: {} of {} springs attached, {} steps, {} halvings",
-                   contact.springs_in_contact(), row.springs, result.counts.steps,
-                   result.counts.halvings);
+      engine_logger().info("pull-off running: {} of {} springs attached, {} steps, {} halvings",
+                           contact.springs_in_contact(), row.springs, result.counts.steps,
+                           result.counts.halvings);
     }
     if (out.detached == 0) continue;
     // Broken by the tangential load as it was applied: the state before is no equilibrium.

@@ -2,7 +2,6 @@
 #include "engine/run/run_scene.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <chrono>
 #include <cmath>
@@ -13,6 +12,7 @@
 #include "engine/accuracy/row_refinement.hpp"
 #include "engine/accuracy/row_sequence.hpp"
 #include "engine/accuracy/shorthand_accuracy.hpp"
+#include "engine/base/engine_logger.hpp"
 #include "engine/base/zero_scale.hpp"
 #include "engine/continuum/run_continuum.hpp"
 #include "engine/continuum/run_continuum_program.hpp"
@@ -219,7 +219,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
   const auto started = std::chrono::steady_clock::now();
   RunResult result;
   if (const std::optional<Scene> as_program = pressed_in_on_a_first_row(scene)) {
-    spdlog::info(kAsItsProgram);
+    engine_logger().info(kAsItsProgram);
     result = run_as_given(*as_program, observers, samples);
   } else if (scene.plan.shorthand_stages && scene.plan.continuum_by_rtol) {
     // rtol alone chose the continuum route: its events wait until it is known to apply.
@@ -228,7 +228,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
     buffered.add(buffer);
     result = run_as_given(scene, buffered, samples);
     if (ends_pressed_in(result)) {
-      spdlog::info(kAsItsProgram);
+      engine_logger().info(kAsItsProgram);
       result = run_as_given(as_its_program(scene), observers, samples);
     } else {
       buffer.flush();
@@ -236,7 +236,7 @@ RunResult run_scene(const Scene& scene, const ObserverList& observers, std::int6
   } else {
     result = run_as_given(scene, observers, samples);
   }
-  for (const std::string& warning : result.warnings) spdlog::warn("{}", warning);
+  for (const std::string& warning : result.warnings) engine_logger().warn("{}", warning);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   emit_closing_events(result, observers);

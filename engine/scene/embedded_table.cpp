@@ -3,13 +3,13 @@
 #include "engine/scene/embedded_table.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <optional>
 
+#include "engine/base/engine_logger.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "profiles/tabulated_profile.hpp"
 
@@ -62,9 +62,9 @@ void use_embedded(nlohmann::json& holder, const char* column, const std::string&
       holder.erase("table");
       return;
     }
-    spdlog::warn("{}: {}.file '{}' is {}; running the table embedded in the result", source_name,
-                 shown, printable(file->get<std::string>()),
-                 now ? "not the file it was (another hash)" : "gone");
+    engine_logger().warn("{}: {}.file '{}' is {}; running the table embedded in the result",
+                         source_name, shown, printable(file->get<std::string>()),
+                         now ? "not the file it was (another hash)" : "gone");
   }
   holder["r"] = *r;
   holder[column] = *values;
