@@ -14,6 +14,10 @@
 namespace mdrsim::cli {
 namespace {
 
+/// `v` with a negative zero as 0: a force that is zero because no spring holds reads
+/// "F = 0 N", not "F = -0 N".
+double plain_zero(double v) { return v == 0.0 ? 0.0 : v; }
+
 /// Why a run has no critical point, in the words of its status.
 const char* missing_critical(const RunResult& r) {
   // A program that never touched (e.g. a tensile fixed load from the start).
@@ -98,9 +102,10 @@ void print_program(std::FILE* out, const RunResult& r, bool row) {
     fmt::print(out,
                "stage {}: ends at d = {:.6g} m, F = {:.6g} N, ux = {:.6g} m, Fx = {:.6g} N{}; "
                "work {:.6g} J normal, {:.6g} J tangential\n",
-               stage.name, e.indentation, e.normal_force, e.tangential_displacement,
-               e.tangential_force, springs_of(e, row, false), stage.work.normal,
-               stage.work.tangential);
+               stage.name, plain_zero(e.indentation), plain_zero(e.normal_force),
+               plain_zero(e.tangential_displacement), plain_zero(e.tangential_force),
+               springs_of(e, row, false), plain_zero(stage.work.normal),
+               plain_zero(stage.work.tangential));
   }
   for (const JumpRecord& jump : r.jumps) {
     const std::string to =
@@ -109,16 +114,16 @@ void print_program(std::FILE* out, const RunResult& r, bool row) {
             ? "the indenter slides away (nothing holds the tangential fixed load)"
         : jump.end == JumpEnd::pressed
             ? "the indenter pressed in on springs without glue (not followed by the shorthand)"
-            : fmt::format("d = {:.6g} m, F = {:.6g} N{}", jump.after.indentation,
-                          jump.after.normal_force, springs_of(jump.after, row, true));
+            : fmt::format("d = {:.6g} m, F = {:.6g} N{}", plain_zero(jump.after.indentation),
+                          plain_zero(jump.after.normal_force), springs_of(jump.after, row, true));
     fmt::print(out, "jump {} in stage {}{}: from d = {:.6g} m, F = {:.6g} N{} to {}\n",
                jump.inward ? "in" : "out", jump.stage, jump.by_shear ? " (by shear)" : "",
-               jump.critical.indentation, jump.critical.normal_force,
+               plain_zero(jump.critical.indentation), plain_zero(jump.critical.normal_force),
                springs_of(jump.critical, row, true), to);
   }
   if (r.work) {
-    fmt::print(out, "work: {:.6g} J normal, {:.6g} J tangential\n", r.work->normal,
-               r.work->tangential);
+    fmt::print(out, "work: {:.6g} J normal, {:.6g} J tangential\n", plain_zero(r.work->normal),
+               plain_zero(r.work->tangential));
   }
 }
 
@@ -144,7 +149,7 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
     const ContactSnapshot& c = *r.critical;
     std::string line;
     for (const SnapshotField& f : kSnapshotFields) {
-      line += fmt::format("{} = {:.8g} {}, ", f.symbol, c.*f.member, f.unit);
+      line += fmt::format("{} = {:.8g} {}, ", f.symbol, plain_zero(c.*f.member), f.unit);
     }
     if (row) line += fmt::format("{} springs in contact", c.springs_in_contact);
     fmt::print(out, "critical: {}\n", row ? line : line.substr(0, line.size() - 2));
@@ -152,7 +157,7 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
       line.clear();
       for (const SnapshotField& f : kSnapshotFields) {
         line += fmt::format("{}{}/{} = {:.8g}", line.empty() ? "" : ", ", f.symbol,
-                            scale_symbol(f.scale), c.*f.member / scale_of(*s, f.scale));
+                            scale_symbol(f.scale), plain_zero(c.*f.member / scale_of(*s, f.scale)));
       }
       fmt::print(out, "dimensionless: {}\n", line);
       fmt::print(out, "scales: F0 = {:.8g} N, a0 = {:.8g} m, d0 = {:.8g} m; {}\n", s->force,
@@ -169,13 +174,16 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
     fmt::print(out, "critical: {}\n", missing_critical(r));
   }
   if (r.peak) {
-    fmt::print(out, "peak adhesion: F = {:.8g} N at a = {:.8g} m, d = {:.8g} m{}\n",
-               r.peak->normal_force, r.peak->contact_radius, r.peak->indentation,
-               s ? fmt::format(" (F/F0 = {:.8g})", r.peak->normal_force / s->force) : "");
+    fmt::print(
+        out, "peak adhesion: F = {:.8g} N at a = {:.8g} m, d = {:.8g} m{}\n",
+        plain_zero(r.peak->normal_force), plain_zero(r.peak->contact_radius),
+        plain_zero(r.peak->indentation),
+        s ? fmt::format(" (F/F0 = {:.8g})", plain_zero(r.peak->normal_force / s->force)) : "");
   }
   if (r.tangential_strength) {
-    fmt::print(out, "tangential strength: Fx = {:.8g} N{}\n", *r.tangential_strength,
-               s ? fmt::format(" (Fx/F0 = {:.8g})", *r.tangential_strength / s->force) : "");
+    fmt::print(
+        out, "tangential strength: Fx = {:.8g} N{}\n", plain_zero(*r.tangential_strength),
+        s ? fmt::format(" (Fx/F0 = {:.8g})", plain_zero(*r.tangential_strength / s->force)) : "");
   }
   fmt::print(out, "counts: {} events, {} steps, {} halvings; {:.3g} s\n", r.counts.events,
              r.counts.steps, r.counts.halvings, r.wall_time_s);

@@ -217,6 +217,20 @@ springs = 500
       << r.out;
 }
 
+// A force that is zero because no spring holds is computed as -0 (a sum of negative terms
+// over no springs); the summary prints 0, never "F = -0 N".
+TEST_F(ResultOutputs, TheSummaryPrintsNoNegativeZero) {
+  const auto r = run_mdrsim("run scenes/programs/jkr_cycle_reversible.toml --log-level off");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("stage retract: ends at d = -4.70408e-06 m, F = 0 N, ux = 0 m, Fx = 0 N"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("to d = -4.70408e-06 m, F = 0 N (0 springs)"), std::string::npos) << r.out;
+  for (const char* negative_zero : {"-0 ", "-0,", "-0)", "-0\n"}) {
+    EXPECT_EQ(r.out.find(negative_zero), std::string::npos) << negative_zero << "\n" << r.out;
+  }
+}
+
 // A plain row says that its O(1/N) error is not estimated; the shipped Fig. 2 scene
 // extrapolates and prints its estimate instead.
 TEST_F(ResultOutputs, APlainRowSaysItsErrorIsNotEstimated) {
