@@ -277,8 +277,8 @@ def draw(paths, closed, out):
     ax.legend(fontsize=7, ncol=2, loc="lower right")
     ax.grid(alpha=0.3, which="both")
 
-    fig.suptitle("Fretting of a sphere under Coulomb friction (scenes/programs/"
-                 f"fretting_parabola.toml): {closed.values}, "
+    fig.suptitle("Fretting of a sphere under Coulomb friction (fretting_parabola.toml): "
+                 f"{closed.values}, "
                  f"u_m = {closed.amplitude * um:g} um = {closed.amplitude / closed.u_star:.3f} u*",
                  fontsize=10.5)
     fig.tight_layout()

@@ -134,7 +134,7 @@ def draw(path_rows, by_springs, out):
     ax.text(1.02, 0.9, "u_c: the glue breaks", color="0.4", fontsize=8)
     ax.set_xlabel("prior shear displacement u / u_c")
     ax.set_ylabel("pull-off force / pull-off force without shear")
-    ax.set_title("pull-off after shear (scenes/programs/pull_off_after_shear.toml)", fontsize=9)
+    ax.set_title("pull-off after shear (pull_off_after_shear.toml)", fontsize=9)
     ax.legend(fontsize=7, loc="center right")  # the empty region past the critical shear
     ax.grid(alpha=0.3)
     fig.tight_layout()

@@ -174,7 +174,7 @@ def draw(paths, closed_of, out):
     ax.set_xlabel(r"tangential displacement $u_x / u_c$,  $u_c = \sqrt{2\pi a_g \Delta\gamma/G^*}$")
     ax.set_ylabel(r"tangential force $F_x / F_{x,peak}$")
     ax.set_title("From adhesion to sliding friction: a glued sphere sheared under fixed grips\n"
-                 r"(scenes/programs/adhesion_to_friction_chi_*.toml; $\chi = \mu F_z / "
+                 r"(adhesion_to_friction_chi_*.toml; $\chi = \mu F_z / "
                  r"F_{x,peak}$; lines engine, markers closed forms)", fontsize=9.5)
     ax.set_ylim(0, 1.25 * max(1.0, max(c.chi for c in closed_of.values())))
     ax.legend(fontsize=7.5, loc="lower right")

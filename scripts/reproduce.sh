@@ -71,7 +71,7 @@ echo "== a loading program: the reversible JKR cycle" >&2
 "$mdrsim" run scenes/programs/jkr_cycle_reversible.toml --set discretization.springs=128 \
   --set 'discretization.extrapolation="richardson"' --json "$results/program_jkr_cycle_richardson.json"
 "$py" scripts/plot_program.py "$results/program_jkr_cycle.csv" \
-  --title "reversible JKR approach-retract cycle (scenes/programs/jkr_cycle_reversible.toml)"
+  --json "$results/program_jkr_cycle.json"
 
 # Beyond the paper: a wavy sphere's pull-off against its ripple amplitude, the amplitudes
 # whose contact is not one disk shaded (docs/model.md "One contact disk"; about 3 s).
