@@ -9,7 +9,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -201,10 +204,116 @@ void apply(toml::table& root, const SceneOverride& o) {
   }
 }
 
+/// " = 1e400 is beyond the range of a double (...)" where `literal` is a TOML number too large
+/// for a double or a whole number too large for 64 bits, which toml++ refuses without naming the
+/// key ("could not be interpreted as a value"); else nullopt.
+std::optional<std::string> beyond_range(std::string_view literal) {
+  std::string digits;
+  for (const char c : literal) {
+    if (c != '_') digits += c;
+  }
+  if (digits.empty() || digits.find_first_not_of("0123456789+-.eE") != std::string::npos) {
+    return std::nullopt;
+  }
+  const std::string shown = printable(literal);
+  if (digits.find_first_not_of("0123456789+-") == std::string::npos) {
+    std::int64_t whole = 0;
+    const char* first = digits.c_str() + (digits.front() == '+' ? 1 : 0);
+    const auto [end, error] = std::from_chars(first, digits.c_str() + digits.size(), whole);
+    if (error != std::errc::result_out_of_range) return std::nullopt;
+    return fmt::format(" = {} is beyond the range of a 64-bit whole number", shown);
+  }
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(digits.c_str(), &end);
+  if (end != digits.c_str() + digits.size() || errno != ERANGE || std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return fmt::format(" = {} is beyond the range of a double (largest 1.8e308)", shown);
+}
+
+/// The dotted key of the value that begins at `at` under `node` (at `path`), as the reader
+/// names it: tables of an array of tables .N from 1, other array elements [i] from 0.
+std::optional<std::string> key_at(const toml::node& node, const toml::source_position& at,
+                                  const std::string& path) {
+  if (node.source().begin == at && !node.is_table() && !node.is_array()) return path;
+  const auto join = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
+  if (const auto* table = node.as_table()) {
+    for (const auto& [key, value] : *table) {
+      if (auto found = key_at(value, at, join(std::string(key.str())))) return found;
+    }
+  } else if (const auto* array = node.as_array()) {
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      const toml::node& element = *array->get(i);
+      const std::string shown =
+          element.is_table() ? fmt::format("{}.{}", path, i + 1) : fmt::format("{}[{}]", path, i);
+      if (auto found = key_at(element, at, shown)) return found;
+    }
+  }
+  return std::nullopt;
+}
+
+/// A number TOML refused for its size alone: where it begins, its key and what is wrong.
+struct NumberBeyondRange {
+  toml::source_position at;
+  std::string key;
+  std::string message;  ///< " = 1e400 is beyond ..."
+};
+
+/// For a parse error at a number beyond range (beyond_range): its key, found by parsing the
+/// text again with such numbers read as inf. nullopt for any other parse error.
+std::optional<NumberBeyondRange> number_beyond_range(std::string text,
+                                                     const std::string& source_name,
+                                                     toml::source_position error) {
+  const auto number_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.' || c == '+' ||
+           c == '-';
+  };
+  std::optional<NumberBeyondRange> first;
+  // Each number beyond range becomes inf (a later one in the same text too), until TOML reads it.
+  for (int replaced = 0; replaced < 64 && error.line != 0; ++replaced) {
+    std::size_t line_start = 0;
+    for (std::size_t line = 1; line < error.line && line_start != std::string::npos; ++line) {
+      line_start = text.find('\n', line_start);
+      if (line_start != std::string::npos) ++line_start;
+    }
+    if (line_start == std::string::npos) return std::nullopt;
+    const std::size_t line_end = std::min(text.find('\n', line_start), text.size());
+    std::size_t begin = std::min(line_start + error.column - 1, line_end);
+    while (begin > line_start && number_char(text[begin - 1])) --begin;
+    std::size_t end = begin;
+    while (end < line_end && number_char(text[end])) ++end;
+    const std::string literal = text.substr(begin, end - begin);
+    std::optional<std::string> message = beyond_range(literal);
+    if (!message) return std::nullopt;
+    if (!first) {
+      first =
+          NumberBeyondRange{{error.line, static_cast<toml::source_index>(begin - line_start + 1)},
+                            "",
+                            std::move(*message)};
+    }
+    text.replace(begin, end - begin, literal.front() == '-' ? "-inf" : "inf");
+    try {
+      const toml::table root = toml::parse(text, source_name);
+      std::optional<std::string> key = key_at(root, first->at, "");
+      if (!key) return std::nullopt;
+      first->key = std::move(*key);
+      return first;
+    } catch (const toml::parse_error& e) {
+      error = e.source().begin;
+    }
+  }
+  return std::nullopt;
+}
+
 toml::table parse_scene(const std::string& text, const std::string& source_name) {
   try {
     return toml::parse(text, source_name);
   } catch (const toml::parse_error& e) {
+    if (const auto beyond = number_beyond_range(text, source_name, e.source().begin)) {
+      throw SceneError(fmt::format("{}:{}:{}: {}{}", source_name, beyond->at.line,
+                                   beyond->at.column, printable(beyond->key), beyond->message));
+    }
     const auto& begin = e.source().begin;
     const std::string where = begin.line == 0
                                   ? source_name + ":"
@@ -359,8 +468,17 @@ void SceneDocument::set_value(std::string_view dotted_key, std::string_view valu
       })) {
     throw SceneError(fmt::format("{}: {}: the value must be one line of text", origin, key));
   }
-  if (const auto split = split_value_message(key, value)) throw SceneError(*split);
   std::string value_toml(value);
+  try {
+    parse_value(value_toml, origin);
+  } catch (const toml::parse_error& e) {
+    // A number too large, also inside an inline table: "v" is the key.
+    if (const auto beyond = number_beyond_range("v = " + value_toml, origin, e.source().begin)) {
+      throw SceneError(fmt::format("{}: {}{}{}", origin, key, printable(beyond->key.substr(1)),
+                                   beyond->message));
+    }
+  }
+  if (const auto split = split_value_message(key, value)) throw SceneError(*split);
   try {
     const toml::table parsed = parse_value(value_toml, origin);
     if (parsed.size() != 1) throw SceneError(fmt::format("{}: {}: not one value", origin, key));

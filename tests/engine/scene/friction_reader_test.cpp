@@ -43,6 +43,21 @@ Scene build(const std::string& text) {
   return SceneDocument::from_text(text, "scene.toml").build(registries);
 }
 
+TEST(FrictionScene, ACoefficientBeyondADoubleNamesItsKey) {
+  EXPECT_THROW_MSG(build(std::string(kProgram) + "coefficient = 1e400\n"), SceneError,
+                   "scene.toml:16:15: friction.coefficient = 1e400 is beyond the range of a double "
+                   "(largest 1.8e308)");
+  SceneDocument d =
+      SceneDocument::from_text(std::string(kProgram) + "coefficient = 0.5\n", "scene.toml");
+  EXPECT_THROW_MSG(d.set_value("friction.coefficient", "1e400"), SceneError,
+                   "--set: friction.coefficient = 1e400 is beyond the range of a double (largest "
+                   "1.8e308)");
+  EXPECT_THROW_MSG(d.set_value("friction", "{ coefficient = -2e308, glued = \"coulomb\" }"),
+                   SceneError,
+                   "--set: friction.coefficient = -2e308 is beyond the range of a double (largest "
+                   "1.8e308)");
+}
+
 TEST(FrictionScene, ReadsTheTable) {
   const Scene scene = build(std::string(kProgram) + "coefficient = 0.5\n");
   ASSERT_TRUE(scene.friction.has_value());

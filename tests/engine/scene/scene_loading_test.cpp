@@ -584,6 +584,55 @@ std::vector<BadScene> malformed_cases() {
        R"(test.toml:12:34: malformed TOML: error while parsing inline table: expected key or closing '}', saw '\n')"},
   };
 }
+
+// ---- numbers TOML reads but a double (or a 64-bit whole number) cannot hold ----
+// toml++ refuses them as "could not be interpreted as a value"; they name their key as every
+// other bad value does, at the column where the number begins.
+
+std::vector<BadScene> beyond_range_cases() {
+  return {
+      {"Float", "radius = 0.01", "radius = 1e400",
+       "test.toml:8:10: profile.radius = 1e400 is beyond the range of a double (largest 1.8e308)"},
+      {"NegativeWithUnderscores", "radius = 0.01", "radius = -1_0e4_00",
+       "test.toml:8:10: profile.radius = -1_0e4_00 is beyond the range of a double (largest "
+       "1.8e308)"},
+      {"MalformedStaysMalformed", kPreload, "preload = { contact_radius = 5e-4e0 }",
+       "test.toml:10:34: malformed TOML: error while parsing floating-point: expected "
+       "decimal digit, saw 'e'"},
+      {"InInlineTableValue", kPreload, "preload = { contact_radius = 2e308 }",
+       "test.toml:10:30: loading.preload.contact_radius = 2e308 is beyond the range of a double "
+       "(largest 1.8e308)"},
+      {"InArray", "work_of_adhesion = 0.05",
+       "work_of_adhesion = { r = [0.0, 1e500, 2e-3], value = [0.05, 0.05, 0.06] }",
+       "test.toml:5:32: material.work_of_adhesion.r[1] = 1e500 is beyond the range of a double "
+       "(largest 1.8e308)"},
+      {"TheFirstOfTwo", "springs = 100", "springs = 100\nrtol = 1e999\nx = 2e999",
+       "test.toml:17:8: discretization.rtol = 1e999 is beyond the range of a double (largest "
+       "1.8e308)"},
+      {"WholeNumber", "springs = 100", "springs = 99999999999999999999",
+       "test.toml:16:11: discretization.springs = 99999999999999999999 is beyond the range of a "
+       "64-bit whole number"},
+  };
+}
+INSTANTIATE_TEST_SUITE_P(BeyondRange, BadSceneTest, ::testing::ValuesIn(beyond_range_cases()),
+                         case_name);
+
+TEST(BadScene, ANumberBeyondADoubleInAnArrayOfTablesNamesTheStage) {
+  const std::string program = R"([material]
+effective_modulus = 1.0e6
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[[loading.stage]]
+normal = { control = "fixed-grips", to = 2.0e-5 }
+[[loading.stage]]
+normal = { by = -1e400 }
+)";
+  EXPECT_THROW_MSG(SceneDocument::from_text(program, "test.toml"), SceneError,
+                   "test.toml:10:17: loading.stage.2.normal.by = -1e400 is beyond the range of a "
+                   "double (largest 1.8e308)");
+}
 INSTANTIATE_TEST_SUITE_P(Malformed, BadSceneTest, ::testing::ValuesIn(malformed_cases()),
                          case_name);
 
