@@ -165,7 +165,8 @@ class Result:
     def trajectory_stride(self) -> int: ...
     def to_dict(self) -> dict[str, Any]: ...
     def to_dataframe(self) -> Any: ...  # pandas.DataFrame
-    def plot(self, ax: Any = ...) -> Any: ...  # matplotlib Axes
+    # Returns the matplotlib Axes.
+    def plot(self, ax: Any = ..., view: Literal["normal", "tangential"] = ...) -> Any: ...
 
 class SweepResult:
     @property

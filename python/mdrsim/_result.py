@@ -257,12 +257,12 @@ class Result:
             raise ValueError("the run kept no trajectory: use mdrsim.run(scene, trajectory=True)")
         return pandas.DataFrame(trajectory)
 
-    def plot(self, ax=None):
-        """The force-displacement path (F against d; F/F0 against d/d0 where the JKR scales
-        exist) with its jumps dashed and the critical point marked. Needs matplotlib;
-        returns the Axes."""
+    def plot(self, ax=None, view="normal"):
+        """The force-displacement path with its jumps dashed and the critical point marked:
+        view "normal" draws F against d, "tangential" F_x against u_x (F/F0 against d/d0 where
+        the scene has scales). Needs matplotlib; returns the Axes."""
         from ._plot import plot_result
-        return plot_result(self, ax)
+        return plot_result(self, ax, view)
 
     def __repr__(self):
         critical = "" if self.critical is None else f", F={self.critical.normal_force:.6g} N"

@@ -150,6 +150,31 @@ def test_plot_draws_the_path_jumps_and_critical_point(tmp_path):
     plt.close(ax.figure)
 
 
+def test_plot_tangential_view_draws_fx_against_ux():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    result = mdrsim.run(mdrsim.Scene.from_file("scenes/programs/shear_ramp_fixed_grips.toml"))
+    scales = result.scales
+    ax = result.plot(view="tangential")
+    assert ax.get_xlabel() == "tangential displacement u_x / d0"
+    assert ax.get_ylabel() == "tangential force F_x / F0"
+    path = ax.get_lines()[0]
+    t = result.trajectory
+    keep = ~t["in_cascade"]
+    assert list(path.get_xdata()) == list(t["tangential_displacement"][keep] / scales["depth"])
+    assert list(path.get_ydata()) == list(t["tangential_force"][keep] / scales["force"])
+    c = result.critical
+    marker = [line for line in ax.get_lines() if line.get_label().startswith("critical")][0]
+    assert marker.get_label() == f"critical: F_x = {c.tangential_force / scales['force']:.4g} F0"
+    assert list(marker.get_xdata()) == [c.tangential_displacement / scales["depth"]]
+    plt.close(ax.figure)
+    with pytest.raises(ValueError, match="unknown view 'shear' \\(known: normal, tangential\\)"):
+        result.plot(view="shear")
+    plt.close("all")
+
+
 def test_set_log_level():
     mdrsim.set_log_level("warn")
     mdrsim.set_log_level("off")
