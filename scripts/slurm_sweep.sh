@@ -8,7 +8,9 @@
 #       16 OUT.csv SCENE.toml --vary KEY=... [sweep flags]...
 # which runs
 #   jobid=$(sbatch --parsable [options] --array=0-15 slurm_sweep.sh shard OUT.csv SCENE.toml ...)
-#   sbatch [options] --dependency=afterany:$jobid slurm_sweep.sh merge OUT.csv 16
+#   sbatch [options] --dependency=afterany:$jobid --output=mdrsim-sweep-${jobid}_merge.log \
+#       slurm_sweep.sh merge OUT.csv 16
+# (the tasks log to mdrsim-sweep-JOB_I.log, the merge to mdrsim-sweep-JOB_merge.log).
 # sbatch's own variables (SBATCH_ACCOUNT, SBATCH_PARTITION, SBATCH_TIMELIMIT) work too.
 # The mdrsim run is $MDRSIM if set, else the `mdrsim` on PATH (an installed one), else the
 # build next to this script (build/apps/mdrsim); submit passes it to the jobs by its
@@ -69,9 +71,10 @@ case "$mode" in
     export MDRSIM
     jobid=$(sbatch --parsable "${options[@]}" --array=0-$((count - 1)) "$0" shard "$@")
     # afterany: the merge runs however the tasks ended (a timed-out task must not leave it
-    # pending for ever); it checks the shards itself.
+    # pending for ever); it checks the shards itself. Its log sits beside the tasks' logs
+    # (mdrsim-sweep-JOB_I.log): the directive's %a is no index for a job outside an array.
     sbatch "${options[@]}" --dependency=afterany:"${jobid%%;*}" --job-name=mdrsim-merge \
-      --cpus-per-task=1 "$0" merge "$1" "$count"
+      --output="mdrsim-sweep-${jobid%%;*}_merge.log" --cpus-per-task=1 "$0" merge "$1" "$count"
     ;;
   shard)
     out=$1

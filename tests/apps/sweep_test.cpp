@@ -387,6 +387,8 @@ TEST_F(Sweep, SlurmScriptRunsOneShardPerArrayTaskAndMerges) {
 TEST_F(Sweep, SlurmScriptFromAnyFolderWithJobOptionsNeverWaitsOnAMissingShard) {
   // From a folder other than the repository, with the installed mdrsim (on PATH, no MDRSIM)
   // and sbatch stubbed: it logs its arguments and the MDRSIM the jobs get, and says job 4242.
+  // The merge job logs to mdrsim-sweep-4242_merge.log, beside its array's tasks: for a job
+  // outside an array the directive's %a is SLURM's "no index", 4294967294.
   const std::string bin = path("bin");
   fs::create_directories(bin);
   fs::create_symlink(MDRSIM_BINARY, bin + "/mdrsim");
@@ -412,7 +414,8 @@ TEST_F(Sweep, SlurmScriptFromAnyFolderWithJobOptionsNeverWaitsOnAMissingShard) {
                             "shard out.csv {} {}",
                             mdrsim, MDRSIM_SOURCE_DIR "/scripts/slurm_sweep.sh", scene_, grid),
                 fmt::format("MDRSIM={} --account=acct --time=4:00:00 --dependency=afterany:4242 "
-                            "--job-name=mdrsim-merge --cpus-per-task=1 {} merge out.csv 2",
+                            "--job-name=mdrsim-merge --output=mdrsim-sweep-4242_merge.log "
+                            "--cpus-per-task=1 {} merge out.csv 2",
                             mdrsim, MDRSIM_SOURCE_DIR "/scripts/slurm_sweep.sh")}));
   // Task 1 of 2 ran out of time before it wrote anything: the merge names it and stops.
   ASSERT_EQ(script("SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=2",
