@@ -137,7 +137,7 @@ echo
 echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
 
-# Speed against accuracy (issue 4): one CSV row per method, springs and increment, the
+# Speed against accuracy: one CSV row per method, springs and increment, the
 # chart, and the targets checked on this machine (MET/MISS lines). An accuracy MISS (a wrong
 # number) fails the job; a speed MISS, declared only after the target was measured three
 # times, is reported and does not: a busy machine must not fail the main job. The chart is
@@ -148,7 +148,7 @@ bench_status=0
 "$build_dir/bench/mdrsim_accuracy" --out "$results/speed_accuracy.csv" || bench_status=$?
 "$py" scripts/plot_speed_accuracy.py --csv "$results/speed_accuracy.csv" --out "$results"
 
-# The shorthand against its equal three-stage program on Fig. 2 (issue 20): the ratios are
+# The shorthand against its equal three-stage program on Fig. 2: the ratios are
 # reported, a disagreement of the two engines (a DIFF line) fails the job. All the cases:
 # build/bench/mdrsim_engines --repeats 5 --out engines.csv (a few minutes).
 echo "== the shorthand against its equal program (bench/engines_bench.cpp, Fig. 2, a few s)" >&2
