@@ -38,13 +38,18 @@ for control in fixed_grips fixed_load; do
 done
 
 echo "== Fig. 3a: critical forces against the tangential displacement" >&2
+# Each sweep with the JSON of one run of its scene (the same --set values): the figures take
+# the run's scales and moduli from it.
 for control in fixed_grips fixed_load; do
   "$mdrsim" sweep "scenes/fig3a_$control.toml" --vary "$vary" \
     --csv "$results/fig3a_$control.csv" --force --threads "$threads"
+  "$mdrsim" run "scenes/fig3a_$control.toml" --json "$results/fig3a_$control.json" --log-level warn
 done
 # Eq. 34 at G* != E*: the fixed-grips sweep at nu = 0.3.
 "$mdrsim" sweep scenes/fig3a_fixed_grips.toml --vary "$vary" --set material.poisson_ratio=0.3 \
   --csv "$results/fig3a_fixed_grips_nu03.csv" --force --threads "$threads"
+"$mdrsim" run scenes/fig3a_fixed_grips.toml --set material.poisson_ratio=0.3 \
+  --json "$results/fig3a_fixed_grips_nu03.json" --log-level warn
 
 # The same runs on the continuum route (docs/continuum.md): no springs, rtol 1e-10; the
 # comparison table's `continuum` column.
@@ -61,7 +66,7 @@ done
   --threads "$threads"
 
 echo "== figures" >&2
-"$py" scripts/plot_paper_figures.py --results "$results" --scenes scenes
+"$py" scripts/plot_paper_figures.py --results "$results"
 
 # Beyond the paper's path: a reversible-JKR approach-retract cycle (loading programs), its
 # force-displacement loop with the jump-in and the jump-out.
