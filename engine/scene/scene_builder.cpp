@@ -298,45 +298,25 @@ void read_solver(TomlReader& t, SolverOptions& solver) {
   t.finish();
 }
 
-}  // namespace
-
-Scene build_scene(const toml::table& root_table, const std::string& source_name,
-                  const std::filesystem::path& base_dir, const Registries& registries) {
-  auto resolved = std::make_shared<nlohmann::json>(nlohmann::json::object());
-  TomlReader root(root_table, "", source_name, base_dir, resolved.get());
-  root.check_keys({"title", "material", "profile", "loading", "detachment", "discretization",
-                   "solver", "friction"});
-  Scene scene;
-  scene.title = root.optional_text("title").value_or("");
-
-  TomlReader material = root.table("material");
-  scene.material = read_material(material, scene.warnings);
-  material.finish();
-
+/// [profile]: the part by its type, with the table a tabulated profile read embedded in the
+/// result's scene, so that it reruns after the CSV moved.
+void read_profile(TomlReader& root, const Registries& registries, nlohmann::json& resolved,
+                  Scene& scene) {
   TomlReader profile = root.table("profile");
   scene.profile_name = profile.name("type", registries.profiles.names());
   scene.profile_at = profile.message_at("type", "");
   check_part_keys(profile, "type", scene.profile_name, registries.profiles);
-  {
-    const auto* entry = registries.profiles.find(scene.profile_name);
-    const ParameterValues values = profile.read_all(entry->parameters);
-    scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
-    // The result's scene carries the table, so that it reruns after the CSV moved.
-    if (const auto file = scene.profile->source_table_file()) {
-      embed_profile_table((*resolved)["profile"], *file);
-    }
+  const auto* entry = registries.profiles.find(scene.profile_name);
+  const ParameterValues values = profile.read_all(entry->parameters);
+  scene.profile = create_part(profile, "type", [&] { return entry->create(values); });
+  if (const auto file = scene.profile->source_table_file()) {
+    embed_profile_table(resolved["profile"], *file);
   }
   profile.finish();
+}
 
-  TomlReader loading = root.table("loading");
-  if (is_program(loading)) {
-    scene.program = read_program(loading, registries.controllers);
-  } else {
-    check_shorthand_keys(loading, material, scene.material);
-    read_shorthand(loading, registries.controllers, scene);
-  }
-  loading.finish();
-
+/// [detachment]: the criterion by name (mode-mixed where the table is not given).
+void read_criterion(TomlReader& root, const Registries& registries, Scene& scene) {
   const InterfaceProperties interface = scene.material.interface_properties();
   scene.criterion_name = "mode-mixed";
   if (auto detachment = root.optional_table("detachment")) {
@@ -353,19 +333,12 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     scene.criterion = entry->create(ParameterValues{}, interface);
     root.record("detachment", {{"criterion", scene.criterion_name}});
   }
+}
 
-  RouteKeys route_keys;
-  if (auto solver = root.optional_table("solver")) {
-    route_keys.method_given = solver->has("method");
-    if (route_keys.method_given) route_keys.method_at = solver->message_at("method", "");
-    read_solver(*solver, scene.solver);
-  } else {
-    root.record("solver", {{"method", "event"},
-                           {"max_events", scene.solver.max_events},
-                           {"max_events_per_spring", scene.solver.max_events_per_spring}});
-  }
+/// [discretization]: springs or rtol, and the extrapolation; the continuum route (named by
+/// solver.method, read before) has no springs and defaults rtol.
+void read_discretization(TomlReader& root, RouteKeys& route_keys, Scene& scene) {
   const bool continuum = scene.solver.method == SolverMethod::continuum;
-
   scene.springs = kDefaultSprings;
   if (auto discretization = root.optional_table("discretization")) {
     if (discretization->has("rtol")) route_keys.rtol_at = discretization->message_at("rtol", "");
@@ -422,6 +395,13 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   } else {
     root.record("discretization", {{"springs", scene.springs}});
   }
+}
+
+/// [friction], then the route: the plan of route_plan.hpp, with the resolved scene leaving
+/// `method` out where the input did and rtol alone chose the continuum route, so that rerunning
+/// it takes the same route.
+void read_friction_and_plan(TomlReader& root, const Registries& registries, RouteKeys& route_keys,
+                            nlohmann::json& resolved, Scene& scene) {
   // [friction] before the route: a scene with friction stays on the row.
   if (auto friction = root.optional_table("friction")) {
     scene.friction = read_friction(*friction, registries.friction_laws);
@@ -438,15 +418,55 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     scene.plan.shorthand_stages = shorthand_program(scene, registries.controllers);
   }
   plan_route(scene, route_keys);
-  // The resolved scene leaves `method` out where the input did and rtol alone chose the
-  // continuum route, so that rerunning it takes the same route.
   if (scene.plan.continuum_by_rtol) {
-    if (auto solver = resolved->find("solver"); solver != resolved->end()) {
+    if (auto solver = resolved.find("solver"); solver != resolved.end()) {
       // The route has no events: the row's limits go with the method.
       for (const char* key : {"method", "max_events", "max_events_per_spring"}) solver->erase(key);
-      if (solver->empty()) resolved->erase(solver);
+      if (solver->empty()) resolved.erase(solver);
     }
   }
+}
+
+}  // namespace
+
+Scene build_scene(const toml::table& root_table, const std::string& source_name,
+                  const std::filesystem::path& base_dir, const Registries& registries) {
+  auto resolved = std::make_shared<nlohmann::json>(nlohmann::json::object());
+  TomlReader root(root_table, "", source_name, base_dir, resolved.get());
+  root.check_keys({"title", "material", "profile", "loading", "detachment", "discretization",
+                   "solver", "friction"});
+  Scene scene;
+  scene.title = root.optional_text("title").value_or("");
+
+  TomlReader material = root.table("material");
+  scene.material = read_material(material, scene.warnings);
+  material.finish();
+
+  read_profile(root, registries, *resolved, scene);
+
+  TomlReader loading = root.table("loading");
+  if (is_program(loading)) {
+    scene.program = read_program(loading, registries.controllers);
+  } else {
+    check_shorthand_keys(loading, material, scene.material);
+    read_shorthand(loading, registries.controllers, scene);
+  }
+  loading.finish();
+
+  read_criterion(root, registries, scene);
+
+  RouteKeys route_keys;
+  if (auto solver = root.optional_table("solver")) {
+    route_keys.method_given = solver->has("method");
+    if (route_keys.method_given) route_keys.method_at = solver->message_at("method", "");
+    read_solver(*solver, scene.solver);
+  } else {
+    root.record("solver", {{"method", "event"},
+                           {"max_events", scene.solver.max_events},
+                           {"max_events_per_spring", scene.solver.max_events_per_spring}});
+  }
+  read_discretization(root, route_keys, scene);
+  read_friction_and_plan(root, registries, route_keys, *resolved, scene);
   root.finish();
   scene.resolved = std::move(resolved);
   return scene;
