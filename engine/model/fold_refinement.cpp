@@ -72,7 +72,9 @@ std::optional<ContactSnapshot> refine_shear_off(const Contact& contact,
   const double hi = row.position(n);
   const double lo = row.position(n - 1);
   const double at_hi = margin_at_rest(hi);
-  const double at_lo = lo > 0.0 ? margin_at_rest(lo) : -1.0;
+  // At the centre a criterion holding there at rest (a user's constant strength) has no a_s
+  // below hi; the built-ins' margin at rest is <= 0 at a = 0, which breaks the glue there.
+  const double at_lo = lo > 0.0 || margin_at_rest(0.0) > 0.0 ? margin_at_rest(lo) : -1.0;
   if (!(at_hi >= 0.0) || !(at_lo < 0.0)) return std::nullopt;
   const double a_s = at_hi == 0.0 ? hi : bracketed_root(margin_at_rest, std::max(lo, 0.0), hi);
   // Springs n + 2, n + 1, n sit at s = 1, 0, -1 of the parabola; a_s at s in [-2, -1].
