@@ -23,6 +23,16 @@ struct BranchState {
   ContactSnapshot snapshot() const;
 };
 
+/// What a continuum estimate reports for a value summed from terms whose magnitudes add up to
+/// `magnitude` (the value's own included) [its unit]: the search's or quadrature's `error` plus
+/// the sum's rounding, 4 eps of `magnitude`. A search that lands on the exact place still
+/// rounds there: no estimate claims exactness.
+double with_rounding(double error, double magnitude);
+
+/// |F| plus the magnitudes of its two terms, E* nf(a) and 2 E* a e, at state s on E* [Pa] [N]:
+/// what F's rounding is a few ulps of.
+double force_magnitude(const BranchState& s, double effective_modulus);
+
 /// The glued contact of the shorthand after the tangential load is applied: every glued
 /// spring carries the same u_x, which the tangential machine sets from the contact's
 /// tangential stiffness 2 G* a (a_u u_x + a_F 2 G* a u_x = held value). On the receding
@@ -47,8 +57,26 @@ class ContinuumBranch {
   double control_slope(double a, double* error = nullptr) const;
   /// The same for F: dF/da [N/m].
   double force_slope(double a) const;
+  /// de/da [1] at a > shear_off_radius() to about the rounding of e: Ridders' extrapolation of
+  /// central differences of e^2 from a step of 0.4 (a - a_s) down (or a quarter, a sixteenth,
+  /// ... of it where e bends on a shorter scale), stopped where rounding takes over; `error`
+  /// [1] gets the extrapolation's own estimate and the spread of those from first steps a
+  /// half and a quarter as long, which the let-go's roughness moves.
+  double stretch_slope(double a, double* error = nullptr) const;
+  /// The let-go elongation's own error at radius a [m]: its residual in the criterion's margin
+  /// over the margin's slope in the elongation (a tabulated let-go is off by up to 1e-13 of e
+  /// where the margin barely moves with it). 0 where e = 0.
+  double stretch_error(double a) const;
+  /// dF/da [N/m] = E* (2 a g'(a) - 2 e - 2 a e') (nf' = 2 a g'), from the profile's g' and
+  /// stretch_slope: where F turns, its terms cancel no worse than e's rounding, so a root of it
+  /// places the turn to a few ulps (the difference quotients above, to about 1e-12).
+  double precise_force_slope(double a, double* error = nullptr) const;
+  /// d(control)/da [1] the same way: a_u (g' - e') + a_F dF/da.
+  double precise_control_slope(double a, double* error = nullptr) const;
   /// a_s [m]: below it the tangential load alone breaks the unstretched boundary (0: never).
   double shear_off_radius() const { return shear_off_radius_; }
+  /// The width of the bracket a_s was found in [m] (0 where a_s is 0 or a_g).
+  double shear_off_bracket() const { return shear_off_bracket_; }
   /// Finds a_s below `glued_radius` [m]; returns false if the glue breaks at the glued radius.
   bool locate_shear_off(double glued_radius);
   /// The largest |u_x| [m] the unstretched boundary holds at radius a (infinite: any).
@@ -73,6 +101,7 @@ class ContinuumBranch {
   double tangential_held_;
   double hess_per_radius_;  ///< 2 pi dgamma / E* [m]: dl(a)^2 = that times a
   double shear_off_radius_ = 0.0;
+  double shear_off_bracket_ = 0.0;  ///< [m]
   mutable long long iterations_ = 0;
 };
 

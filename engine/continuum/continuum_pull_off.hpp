@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/base/zero_scale.hpp"
 #include "engine/continuum/continuum_branch.hpp"
 
 namespace mdrsim {
@@ -40,8 +41,10 @@ struct ContinuumPullOff {
 
 /// Scans the branch from a_g down (geometric in a - a_s over 14 decades, `per_decade`
 /// samples a decade), refines each fold as a root of the control slope, each landing as a
-/// root of the control value and the peak by Brent's minimization of the force.
+/// root of the control value and each stretch's peak as a root of dF/da. What `zero` calls
+/// zero (the run's zero_scale.hpp) tells a smooth peel from a fold: a control flat to within
+/// it has not turned, and a fold whose jump empties a contact carrying zero force is none.
 ContinuumPullOff continuum_pull_off(ContinuumBranch& branch, double glued_radius,
-                                    int per_decade = 4);
+                                    const ZeroScale& zero = {}, int per_decade = 4);
 
 }  // namespace mdrsim

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "controllers/builtin_controllers.hpp"
+#include "engine/base/zero_scale.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
 #include "engine/result/lost_contact.hpp"
@@ -99,7 +100,12 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   }
   result.stages.push_back(tangential_stage);
 
-  const ContinuumPullOff p = continuum_pull_off(branch, ag);
+  // What is zero on this shorthand, as its rows draw the line (the glued radius, the image
+  // there, the preload force): a smooth peel is told from a fold by it.
+  const ZeroScale zero =
+      zero_scale(scene.material.effective_modulus, ag, scene.profile->mdr_image(ag),
+                 scene.material.largest_work_of_adhesion(), scene.preload_force);
+  const ContinuumPullOff p = continuum_pull_off(branch, ag, zero);
   using End = ContinuumPullOff::End;
   if (p.end == End::shear_off_at_application) {
     result.status = RunStatus::shear_off;
@@ -134,7 +140,8 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
     } else {
       result.status = p.end == End::shear_off ? RunStatus::shear_off : RunStatus::instability;
       result.critical = p.critical.snapshot();
-      result.accuracy.critical_error_estimate = p.critical_error;
+      result.accuracy.critical_error_estimate = with_rounding(
+          p.critical_error, force_magnitude(p.critical, scene.material.effective_modulus));
       JumpRecord last{.stage = "pull-off",
                       .inward = false,
                       .critical = p.critical.snapshot(),
@@ -158,15 +165,22 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
     if (p.peak) {
       result.peak = p.peak->snapshot();
       // A peak at the critical point carries the fold's error too.
-      result.accuracy.peak_error_estimate = p.peak->contact_radius == p.critical.contact_radius
-                                                ? std::max(p.peak_error, p.critical_error)
-                                                : p.peak_error;
+      const double search = p.peak->contact_radius == p.critical.contact_radius
+                                ? std::max(p.peak_error, p.critical_error)
+                                : p.peak_error;
+      result.accuracy.peak_error_estimate =
+          with_rounding(search, force_magnitude(*p.peak, scene.material.effective_modulus));
     }
   }
   AxisWork total;
-  for (const StageRecord& stage : result.stages) total += stage.work;
+  AxisWork magnitude;  // of the stages' works, which the total rounds a few ulps of
+  for (const StageRecord& stage : result.stages) {
+    total += stage.work;
+    magnitude += AxisWork{std::abs(stage.work.normal), std::abs(stage.work.tangential)};
+  }
   result.work = total;
-  result.accuracy.work_error_estimate = AxisWork{work_error, work_error};
+  result.accuracy.work_error_estimate = AxisWork{with_rounding(work_error, magnitude.normal),
+                                                 with_rounding(work_error, magnitude.tangential)};
   result.accuracy.covers = {"critical.normal_force", "peak_adhesion.normal_force", "work"};
   result.counts.root_iterations = branch.iterations();
 
@@ -176,9 +190,14 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   // cancel to nothing (no adhesion) while its parts are of that size.
   bool met = meets_rtol(work_error, std::abs(total.normal) + std::abs(total.tangential), rtol,
                         preload_energy.value);
-  if (result.critical)
-    met = met && meets_rtol(p.critical_error, p.critical.normal_force, rtol, floor);
-  if (result.peak) met = met && meets_rtol(p.peak_error, p.peak->normal_force, rtol, floor);
+  if (result.critical) {
+    met = met && meets_rtol(*result.accuracy.critical_error_estimate, p.critical.normal_force, rtol,
+                            floor);
+  }
+  if (result.peak) {
+    met =
+        met && meets_rtol(*result.accuracy.peak_error_estimate, p.peak->normal_force, rtol, floor);
+  }
   result.accuracy.rtol_met = met;
   if (!met) {
     result.warnings.push_back(fmt::format(

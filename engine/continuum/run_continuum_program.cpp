@@ -16,6 +16,7 @@
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
 #include "engine/base/text.hpp"
+#include "engine/base/zero_scale.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
 #include "engine/model/gluing_depth.hpp"
@@ -160,6 +161,8 @@ struct ProgramWalk {
   double work_error = 0.0;
   double critical_error = 0.0;
   double peak_error = 0.0;
+  BranchState critical;      ///< result.critical's state
+  BranchState peak;          ///< result.peak's state
   double force_scale = 0.0;  ///< the largest |F| met [N]
   long long iterations = 0;
 };
@@ -168,6 +171,7 @@ void note_state(ProgramWalk& w, const BranchState& s) {
   w.force_scale = std::max(w.force_scale, std::abs(s.normal_force));
   if (s.normal_force < 0.0 && (!w.result.peak || s.normal_force < w.result.peak->normal_force)) {
     w.result.peak = s.snapshot();
+    w.peak = s;
   }
 }
 
@@ -273,7 +277,13 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
   note_state(w, st.state(disk));
   w.retracted = true;
 
-  const ContinuumPullOff p = continuum_pull_off(st.branch(), a);
+  // What is zero on the contact this stage peels (zero_scale.hpp): a smooth peel is told from a
+  // fold by it.
+  const Material& material = st.branch().material();
+  const ContinuumPullOff p = continuum_pull_off(
+      st.branch(), a,
+      zero_scale(material.effective_modulus, a, st.branch().profile().mdr_image(a),
+                 material.largest_work_of_adhesion()));
   const auto note_peak = [&](double top, double bottom) {
     // The branch's most tensile state, where the stage passes it.
     if (p.peak && p.peak->contact_radius <= top && p.peak->contact_radius >= bottom) {
@@ -330,6 +340,7 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
   } else {
     w.result.status = RunStatus::instability;
     w.result.critical = last.snapshot();
+    w.critical = last;
     w.critical_error = p.critical_error;
     w.peak_error = std::max(w.peak_error, p.critical_error);
   }
@@ -519,15 +530,28 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
   emit_samples(walked, samples, observers);
 
   AxisWork total;
-  for (const StageRecord& stage : w.result.stages) total += stage.work;
+  AxisWork magnitude;  // of the stages' works, which the total rounds a few ulps of
+  for (const StageRecord& stage : w.result.stages) {
+    total += stage.work;
+    magnitude += AxisWork{std::abs(stage.work.normal), std::abs(stage.work.tangential)};
+  }
   w.result.work = total;
   long long iterations = 0;
   for (const ContinuumStage& st : stages) iterations += st.iterations();
   w.result.counts.root_iterations = iterations;
   w.result.accuracy.outer_radius = largest_radius;
-  w.result.accuracy.work_error_estimate = AxisWork{w.work_error, w.work_error};
-  if (w.result.critical) w.result.accuracy.critical_error_estimate = w.critical_error;
-  if (w.result.peak) w.result.accuracy.peak_error_estimate = w.peak_error;
+  w.result.accuracy.work_error_estimate =
+      AxisWork{with_rounding(w.work_error, magnitude.normal),
+               with_rounding(w.work_error, magnitude.tangential)};
+  const double modulus = scene.material.effective_modulus;
+  if (w.result.critical) {
+    w.result.accuracy.critical_error_estimate =
+        with_rounding(w.critical_error, force_magnitude(w.critical, modulus));
+  }
+  if (w.result.peak) {
+    w.result.accuracy.peak_error_estimate =
+        with_rounding(w.peak_error, force_magnitude(w.peak, modulus));
+  }
   w.result.accuracy.covers = {"critical.normal_force",
                               "peak_adhesion.normal_force",
                               "stages.end.normal_force",
@@ -544,7 +568,8 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
   }
   bool met = meets_rtol(w.work_error, work_scale, rtol);
   if (w.result.critical) {
-    met = met && meets_rtol(w.critical_error, w.result.critical->normal_force, rtol, floor);
+    met = met && meets_rtol(*w.result.accuracy.critical_error_estimate,
+                            w.result.critical->normal_force, rtol, floor);
   }
   w.result.accuracy.rtol_met = met;
   if (!met) {
