@@ -19,6 +19,10 @@ class PowerLawProfile final : public Profile {
   double shape(double radius) const override;
   double mdr_image(double x) const override;
   bool always_one_disk() const override { return exponent_ >= 1.0; }  ///< convex
+  /// sqrt(x) g'(x) = n k x^(n - 1/2): s = n - 1/2 at every x.
+  std::optional<LogSlopeRange> image_slope_growth() const override {
+    return LogSlopeRange{exponent_ - 0.5, exponent_ - 0.5};
+  }
   double mdr_image_slope(double x) const override;
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;

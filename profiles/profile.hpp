@@ -9,6 +9,12 @@
 
 namespace mdrsim {
 
+/// Bounds on a logarithmic slope over x > 0 [1].
+struct LogSlopeRange {
+  double low;
+  double high;
+};
+
 /// Required operations: shape() and mdr_image(). The others have numerical defaults that
 /// a profile overrides where it knows a closed form.
 class Profile {
@@ -55,6 +61,13 @@ class Profile {
   /// shape was read from: the result carries its points and hash, so that the scene reruns
   /// without the file. nullopt where no file was read.
   virtual std::optional<std::string> source_table_file() const { return std::nullopt; }
+
+  /// Optional: bounds on s(x) = d ln(sqrt(x) g'(x)) / d ln x over x > 0, where the shape proves
+  /// them (a power law c r^n: n - 1/2 everywhere); nullopt where unknown. sqrt(a) g'(a) is
+  /// what the JKR branch's fold condition weighs against Hess's length, so its growth counts
+  /// the branch's folds for every E*, dgamma and machine (docs/continuum.md "Which route rtol
+  /// takes").
+  virtual std::optional<LogSlopeRange> image_slope_growth() const { return std::nullopt; }
 
   /// Optional: the shortest length the shape varies on (a ripple's wavelength) [m]. A row whose
   /// spacing is more than a quarter of it cannot follow the shape; the scene is refused.

@@ -1,12 +1,59 @@
-// The continuum route's reach: shorthand scenes on the convex classic profiles, and normal
-// loading programs on them when asked; else the row.
+// The continuum route's reach: shorthand scenes whose branch folds once (the convex classic
+// profiles, power laws by their proof), and normal loading programs on the convex classics;
+// else the row.
 #include "engine/scene/continuum_scope.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <optional>
+
+#include "detachment/criterion_registry.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
+namespace {
+
+/// Whether the criterion lets go at Hess's e = sqrt(w a), w = 2 pi dgamma / E*, with no
+/// tangential load: every built-in does (docs/scene.md's criterion table at u_x = 0); a user's
+/// own criterion may not.
+bool lets_go_at_hess(const Scene& scene) {
+  static const CriterionRegistry builtin = [] {
+    CriterionRegistry r;
+    register_builtin_criteria(r);
+    return r;
+  }();
+  return builtin.find(scene.criterion_name) != nullptr;
+}
+
+/// Whether the shorthand's branch is the JKR one (Hess's let-go, u_x = 0) and folds at most
+/// once, from how sqrt(a) g'(a) grows (Profile::image_slope_growth). With e = sqrt(w a),
+/// nf' = 2 a g', F' = E* (2 a g' - 3 sqrt(w a)) and beta = a_F E*, the control
+/// c = a_u (g - e) + a_F E* (nf - 2 a e) has
+///   c'(a) = a^(-1/2) [ sqrt(a) g'(a) (a_u + 2 beta a) - (sqrt(w)/2) (a_u + 6 beta a) ],
+/// zero where P(a) = sqrt(a) g'(a) (a_u + 2 beta a) / (a_u + 6 beta a) meets sqrt(w)/2. A fold
+/// (c' turning from > 0 to < 0 as a falls) is P crossing that level upwards; if ln P is
+/// monotone it crosses once: rising, one fold; falling, a maximum of c (only a_g itself may
+/// be unstable, and below a jump from it the branch is stable down to a -> 0). With
+/// y = beta a / a_u, d ln P / d ln a = s(a) - 4 y / ((1 + 2 y)(1 + 6 y)), whose second term is
+/// 0 under fixed grips (beta = 0) and a fixed load (a_u = 0) and at most 2 - sqrt 3 = 0.268 (at
+/// y = 1/sqrt 12) under a compliant machine. Hence at most one fold for every E*, dgamma and
+/// stiffness where s >= 0 (fixed grips, fixed load), s >= 2 - sqrt 3 (compliant) or s <= 0:
+/// a power law with n <= 1/2 or n >= 1/2 (2.5 - sqrt 3 = 0.768 compliant). Between, a compliant
+/// machine can fold the branch twice (tests/engine/scene/continuum_scope_test.cpp).
+bool jkr_branch_folds_once(const Scene& scene) {
+  if (scene.tangential && scene.tangential->held_value != 0.0) return false;
+  if (!lets_go_at_hess(scene)) return false;
+  const std::optional<LogSlopeRange> s = scene.profile->image_slope_growth();
+  if (!s) return false;
+  if (s->high <= 0.0) return true;
+  const AffineConstraint normal = scene.normal.controller->constraint();
+  const bool compliant = normal.displacement_coefficient != 0.0 && normal.force_coefficient != 0.0;
+  const double most_the_machine_takes = compliant ? 2.0 - std::sqrt(3.0) : 0.0;
+  return s->low >= most_the_machine_takes;
+}
+
+}  // namespace
 
 bool continuum_answers(const Scene& scene) {
   // dgamma(r) pins the front and lets it jump at every change: several folds.
@@ -22,7 +69,7 @@ bool continuum_answers(const Scene& scene) {
     }
     return !continuum_program_refusal(scene);
   }
-  return scene.profile->always_one_disk();
+  return scene.profile->always_one_disk() || jkr_branch_folds_once(scene);
 }
 
 std::optional<std::string> continuum_program_refusal(const Scene& scene) {

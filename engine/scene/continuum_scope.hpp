@@ -8,9 +8,11 @@
 
 namespace mdrsim {
 
-/// Whether rtol alone takes the continuum route (docs/continuum.md): the shorthand (any
-/// criterion and controller) on a profile whose branch folds once, the convex classics
-/// (Profile::always_one_disk), and the normal loading programs it answers. Tabulated and wavy
+/// Whether rtol alone takes the continuum route (docs/continuum.md): the shorthand on a
+/// profile whose branch folds once, the convex classics (Profile::always_one_disk) with any
+/// criterion and controller, a shape whose JKR branch is proven to fold once
+/// (Profile::image_slope_growth: power laws with n < 1 under a built-in criterion and no
+/// tangential load), and the normal loading programs it answers. Tabulated and wavy
 /// profiles may fold several times, and a program with a tangential stage may stop on the
 /// route: those stay on the spring row unless the route is named (method = "continuum").
 bool continuum_answers(const Scene& scene);

@@ -175,3 +175,23 @@ TEST(PowerLawProfile, ContainsTheParabolaAndTheCone) {
   EXPECT_THROW(mdrsim::PowerLawProfile(1.0, 0.0), std::invalid_argument);
   EXPECT_THROW(mdrsim::PowerLawProfile(0.0, 2.0), std::invalid_argument);
 }
+
+// The growth the route plan counts a JKR branch's folds with: s(x) = d ln(sqrt(x) g'(x)) / d ln x
+// is n - 1/2 for c r^n, checked on the image's own slope by a central difference in ln x over
+// 1e-4 (its error ~1e-8, the slope's closed form rounding at 1e-16 / 1e-4).
+TEST(PowerLawProfile, ImageSlopeGrowthIsTheExponentLessAHalf) {
+  for (const double exponent : {0.3, 0.5, 0.8, 2.5}) {
+    const mdrsim::PowerLawProfile p(0.8, exponent);
+    const auto growth = p.image_slope_growth();
+    ASSERT_TRUE(growth);
+    EXPECT_EQ(growth->low, exponent - 0.5);
+    EXPECT_EQ(growth->high, exponent - 0.5);
+    const auto log_of = [&](double x) { return std::log(std::sqrt(x) * p.mdr_image_slope(x)); };
+    for (const double x : {1e-6, 1e-3, 1.0}) {
+      const double h = 1e-4;
+      const double s = (log_of(x * std::exp(h)) - log_of(x * std::exp(-h))) / (2.0 * h);
+      EXPECT_NEAR(s, exponent - 0.5, 1e-8) << "n = " << exponent << ", x = " << x;
+    }
+  }
+  EXPECT_FALSE(mdrsim::ParabolicProfile(0.01).image_slope_growth());
+}

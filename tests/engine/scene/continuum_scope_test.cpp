@@ -142,6 +142,73 @@ TEST(ContinuumScope, BranchesThatMayFoldAgainStayOnTheRow) {
   EXPECT_EQ(test::build_scene_text(table).solver.method, SolverMethod::event);
 }
 
+/// A power law c r^n glued at `glued` [m] under `normal` (with its extra keys), rtol 1e-8 and
+/// the given [solver] (none when empty).
+std::string power_law(double coefficient, double exponent, double glued, const std::string& normal,
+                      const std::string& solver) {
+  return fmt::format(
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\n[profile]\n"
+      "type = \"power_law\"\ncoefficient = {:.17g}\nexponent = {:.17g}\n[loading]\n"
+      "preload = {{ contact_radius = {:.17g} }}\nnormal = {{ control = {} }}\n"
+      "[discretization]\nrtol = 1e-8\n{}",
+      coefficient, exponent, glued, normal, solver);
+}
+
+// A power law's JKR branch folds at most once under fixed grips and a fixed load for every n
+// (sqrt(a) g'(a) = n k a^(n - 1/2) crosses Hess's level once: continuum_scope.cpp derives it):
+// rtol alone takes the continuum route for n = 0.5 and 0.8, and answers with the numbers of
+// method = "continuum" to the bit. They stayed on the row, which at rtol 1e-8 ran rows of
+// 131072 springs and warned that it had not met rtol.
+TEST(ContinuumScope, PowerLawsBelowOneTakeTheRouteWhereTheirBranchFoldsOnce) {
+  for (const double n : {0.5, 0.8}) {
+    for (const std::string normal : {"\"fixed-grips\"", "\"fixed-load\""}) {
+      SCOPED_TRACE(fmt::format("n = {}, {}", n, normal));
+      const double coefficient = n == 0.5 ? 1e-3 : 1e-2;
+      const Scene alone = test::build_scene_text(power_law(coefficient, n, 1e-3, normal, ""));
+      EXPECT_TRUE(continuum_answers(alone));
+      ASSERT_EQ(alone.solver.method, SolverMethod::continuum);
+      const Scene named = test::build_scene_text(
+          power_law(coefficient, n, 1e-3, normal, "[solver]\nmethod = \"continuum\"\n"));
+      const auto a = result_to_json(alone, run(alone));
+      const auto b = result_to_json(named, run(named));
+      EXPECT_EQ(a["accuracy"]["route"], "continuum");
+      for (const char* key : {"status", "critical", "peak_adhesion", "stages", "jumps", "work",
+                              "accuracy", "warnings"}) {
+        EXPECT_EQ(a.contains(key), b.contains(key)) << key;
+        if (a.contains(key)) {
+          EXPECT_EQ(a[key], b[key]) << key;
+        }
+      }
+    }
+  }
+}
+
+// Under a compliant machine of stiffness k the fold condition weighs sqrt(a) g'(a) by
+// (1 + 2 beta a) / (1 + 6 beta a), beta = E*/k, whose log-slope reaches -(2 - sqrt 3): one
+// fold for every k where n - 1/2 >= 2 - sqrt 3 (n = 0.8), possibly two below it. At n = 0.7,
+// c = 4.12118e-3, k = 100 N/m the control has minima at a = 2.3e-6 and 1.35e-4 m and a
+// maximum between: the route (named) jumps at the outer fold onto the branch below and off at
+// the inner one. rtol alone keeps that scene on the row, and a tangential load (another
+// let-go) keeps n = 0.8 there too.
+TEST(ContinuumScope, APowerLawBranchThatMayFoldTwiceStaysOnTheRow) {
+  const std::string compliant = "\"compliant\", stiffness = 100.0";
+  EXPECT_EQ(test::build_scene_text(power_law(1e-2, 0.8, 3e-4, compliant, "")).solver.method,
+            SolverMethod::continuum);
+  const Scene twice = test::build_scene_text(power_law(4.12118e-3, 0.7, 3e-4, compliant, ""));
+  EXPECT_FALSE(continuum_answers(twice));
+  EXPECT_EQ(twice.solver.method, SolverMethod::event);
+  const RunResult r = run(test::build_scene_text(
+      power_law(4.12118e-3, 0.7, 3e-4, compliant, "[solver]\nmethod = \"continuum\"\n")));
+  ASSERT_EQ(r.jumps.size(), 2u);
+  EXPECT_NEAR(r.jumps[0].critical.contact_radius, 1.347e-4, 1e-7);
+  EXPECT_GT(r.jumps[0].after.contact_radius, 0.0);  // a partial jump: the contact stays
+  EXPECT_NEAR(r.jumps[1].critical.contact_radius, 2.277e-6, 1e-9);
+  std::string sheared = power_law(1e-2, 0.8, 1e-3, "\"fixed-grips\"", "");
+  sheared.insert(sheared.find("normal = {"),
+                 "tangential = { control = \"fixed-grips\", displacement = 1e-7 }\n");
+  EXPECT_EQ(test::build_scene_text(sheared).solver.method, SolverMethod::event);
+}
+
 }  // namespace
 }  // namespace mdrsim
 
