@@ -59,6 +59,19 @@ springs = {}
                      mu, springs);
 }
 
+/// The same fretting cycle, adhesive (w = 0.05 J/m^2 on approach and on let-go) with its glued
+/// springs under Coulomb's law (glued = "coulomb"): the glued springs go spring by spring.
+std::string glued_fretting(std::int64_t springs) {
+  const std::string text = fretting(springs, 0.5);
+  const std::string dry = "work_of_adhesion = 0\n";
+  const std::string friction = "[friction]\n";
+  std::string wet = text;
+  wet.replace(wet.find(dry), dry.size(),
+              "work_of_adhesion = 0.05\napproach_work_of_adhesion = 0.05\n");
+  wet.replace(wet.find(friction), friction.size(), friction + "glued = \"coulomb\"\n");
+  return wet;
+}
+
 /// A JKR cycle of the same sphere, glued on touch and retracted until separation: one
 /// detachment event per spring; with `approach_only`, its approach alone (the touches).
 std::string jkr_cycle(std::int64_t springs, bool approach_only = false) {
@@ -172,6 +185,12 @@ int main(int argc, char** argv) {
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("jkr_approach", run, jkr_cycle(kSprings, true))
       ->Unit(benchmark::kMillisecond);
+  // The adhesive fretting cycle with glued = "coulomb" at a few thousand springs: the cost of its
+  // glued springs, which go one by one, against N.
+  for (const std::int64_t springs : {4000, 16000})
+    benchmark::RegisterBenchmark(fmt::format("glued_fretting/springs:{}", springs).c_str(), run,
+                                 glued_fretting(springs))
+        ->Unit(benchmark::kMillisecond);
   benchmark::Initialize(&argc, argv);
   EventCostReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
