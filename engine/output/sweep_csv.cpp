@@ -74,6 +74,9 @@ std::string csv_header(const SweepGrid& grid, SweepColumns columns) {
   // Friction (docs/friction.md): the critical state's sliding springs and stick radius,
   // whether the contact slid away, and the frictional work of the whole run.
   if (columns.friction) out += ",springs_sliding,stick_radius,sliding,dissipated_by_friction";
+  // A program's total work per axis (the JSON's `work`), last so that the columns before keep
+  // their places.
+  if (columns.work) out += ",work_normal,work_tangential";
   return out + "\n";
 }
 
@@ -132,6 +135,11 @@ std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& value
     out.append(sliding.data(), sliding.data() + sliding.size());
     append_field(
         out, rubs && r.work ? std::optional<double>(r.work->friction) : std::optional<double>(0.0));
+  }
+  if (columns.work) {
+    // A run without work (a scene without a program in a varied grid) leaves them empty.
+    append_field(out, r.work ? std::optional<double>(r.work->normal) : std::nullopt);
+    append_field(out, r.work ? std::optional<double>(r.work->tangential) : std::nullopt);
   }
   out.push_back('\n');
   return fmt::to_string(out);

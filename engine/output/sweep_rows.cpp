@@ -78,6 +78,7 @@ SweepColumns check_values(const SceneDocument& base, const SweepGrid& grid,
       const Scene scene = build_row(document, grid, values, registries);
       columns.dimensionless = columns.dimensionless || dimensionless_scales(scene).has_value();
       columns.friction = columns.friction || scene.friction.has_value();
+      columns.work = columns.work || scene.program.has_value();
     }
   }
   return columns;

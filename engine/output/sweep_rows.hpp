@@ -22,7 +22,7 @@ Scene build_row(SceneDocument& document, const SweepGrid& grid,
 
 /// Builds every probe of every key (VarySpec::probes) with the other keys at their first
 /// value, so that a bad value fails before any run; returns the columns any of these scenes
-/// has: JKR scales (the dimensionless columns), friction.
+/// has: JKR scales (the dimensionless columns), friction, a program (the work columns).
 SweepColumns check_values(const SceneDocument& base, const SweepGrid& grid,
                           const Registries& registries);
 

@@ -72,7 +72,7 @@ def _vary_text(key, values):
 
 class _Job:
     """What a task needs to run rows in any process: the scene's text and overrides, the
-    --vary texts and the CSV's optional columns (dimensionless, friction). Pickled without
+    --vary texts and the CSV's optional columns (dimensionless, friction, work). Pickled without
     its plan, which each process makes once (_plan_for)."""
 
     __slots__ = ("token", "scene", "vary", "columns", "plan")
@@ -226,7 +226,8 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None):
     vary = [_vary_text(key, values) for key, values in grid.items()]
     state = scene._state()
     plan = _core.SweepPlan(*state, vary)  # every value checked, as the command does
-    job = _Job(uuid.uuid4().hex, state, vary, (plan.dimensionless, plan.friction), plan)
+    job = _Job(uuid.uuid4().hex, state, vary, (plan.dimensionless, plan.friction, plan.work),
+               plan)
 
     started = time.perf_counter()
     lines = plan.run_rows(0, 1)

@@ -51,13 +51,14 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 
 /// A sweep of one scene (its text and with_values overrides, as mdrsim.Scene keeps them) over
 /// the --vary texts. Made once by the caller, which checks the values, and again wherever
-/// rows run (a Dask worker), told the columns (dimensionless, friction) so that it checks
+/// rows run (a Dask worker), told the columns (dimensionless, friction, work) so that it checks
 /// nothing.
 class SweepPlan {
  public:
   SweepPlan(const std::string& text, const std::string& source_name, const std::string& base_dir,
             const Overrides& overrides, const std::vector<std::string>& vary,
-            std::optional<bool> dimensionless, std::optional<bool> friction)
+            std::optional<bool> dimensionless, std::optional<bool> friction,
+            std::optional<bool> work)
       : grid_(parse_grid(vary)), registries_(current_registries()) {
     std::vector<std::string> sets;
     for (const auto& [key, value] : overrides) sets.push_back(key + "=" + value);
@@ -65,8 +66,8 @@ class SweepPlan {
     py::gil_scoped_release release;  // Python parts take the GIL back in their factories
     base_.emplace(SceneDocument::from_scene_text(text, source_name, base_dir));
     for (const auto& [key, value] : overrides) base_->set_value(key, value);
-    if (dimensionless && friction) {
-      columns_ = {*dimensionless, *friction};
+    if (dimensionless && friction && work) {
+      columns_ = {*dimensionless, *friction, *work};
     } else {
       columns_ = check_values(*base_, grid_, *registries_);
     }
@@ -75,6 +76,7 @@ class SweepPlan {
   std::uint64_t rows() const { return grid_.rows(); }
   bool dimensionless() const { return columns_.dimensionless; }
   bool friction() const { return columns_.friction; }
+  bool work() const { return columns_.work; }
   std::string header() const { return cli::csv_header(grid_, columns_); }
   std::string identity() const {
     return cli::identity_line({scene_hash_, grid_.hash(), grid_.rows(), cli::Shard{}});
@@ -128,12 +130,15 @@ void bind_sweep(py::module_& m) {
   py::class_<SweepPlan>(m, "SweepPlan",
                         "The rows of a sweep, as `mdrsim sweep` makes them (internal).")
       .def(py::init<const std::string&, const std::string&, const std::string&, const Overrides&,
-                    const std::vector<std::string>&, std::optional<bool>, std::optional<bool>>(),
+                    const std::vector<std::string>&, std::optional<bool>, std::optional<bool>,
+                    std::optional<bool>>(),
            py::arg("text"), py::arg("source_name"), py::arg("base_dir"), py::arg("overrides"),
-           py::arg("vary"), py::arg("dimensionless") = py::none(), py::arg("friction") = py::none())
+           py::arg("vary"), py::arg("dimensionless") = py::none(), py::arg("friction") = py::none(),
+           py::arg("work") = py::none())
       .def_property_readonly("rows", &SweepPlan::rows)
       .def_property_readonly("dimensionless", &SweepPlan::dimensionless)
       .def_property_readonly("friction", &SweepPlan::friction)
+      .def_property_readonly("work", &SweepPlan::work)
       .def_property_readonly("header", &SweepPlan::header)
       .def_property_readonly("identity", &SweepPlan::identity)
       .def("values", &SweepPlan::values)

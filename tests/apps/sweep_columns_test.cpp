@@ -1,6 +1,6 @@
 // What a sweep row says about its run: the springs it used (rtol picks them), its
-// preload state and its warning count, each equal to what `mdrsim run --json` says of the same
-// scene; and its log lines name the row they belong to.
+// preload state, its warning count and its work, each equal to what `mdrsim run --json` says of the
+// same scene; and its log lines name the row they belong to.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -147,6 +147,40 @@ TEST(SweepColumns, FrictionColumnsAreTheRunsAndZeroWithoutFriction) {
       "sweep scenes/fig2_fixed_grips.toml --vary discretization.springs=100,200 --log-level off");
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   EXPECT_EQ(plain.out.find("sliding"), std::string::npos);
+}
+
+TEST(SweepColumns, WorkColumnsAreTheRunsJsonWork) {
+  // A fretting cycle at two friction coefficients on 400 springs: each row's total work per
+  // axis and its frictional part are the JSON's of the same run, to the bit (both print the
+  // shortest text that reads back as the same double).
+  const std::string scene = "scenes/programs/fretting_parabola.toml";
+  const auto r = run_mdrsim(
+      fmt::format("sweep {} --vary friction.coefficient=0.3,0.5 --set discretization.springs=400 "
+                  "--log-level off",
+                  scene));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto header = fields_of(lines_of(r.out).at(1));
+  ASSERT_GE(header.size(), 2u);
+  EXPECT_EQ(header[header.size() - 2], "work_normal");
+  EXPECT_EQ(header.back(), "work_tangential");
+  const auto rows = csv_rows(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    const std::string sets = "friction.coefficient=" + row.at("friction.coefficient") +
+                             " --set discretization.springs=400";
+    const auto work = run_json(scene, sets).at("work");
+    EXPECT_EQ(number(row.at("work_normal")), work.at("normal").get<double>()) << sets;
+    EXPECT_EQ(number(row.at("work_tangential")), work.at("tangential").get<double>()) << sets;
+    EXPECT_EQ(number(row.at("dissipated_by_friction")),
+              work.at("dissipated_by_friction").get<double>())
+        << sets;
+    EXPECT_GT(number(row.at("dissipated_by_friction")), 0.0) << sets;
+  }
+  // The shorthand without friction has no program and no work: no work columns.
+  const auto plain = run_mdrsim(
+      "sweep scenes/fig2_fixed_grips.toml --vary discretization.springs=100,200 --log-level off");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("work_normal"), std::string::npos);
 }
 
 TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
