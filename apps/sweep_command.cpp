@@ -36,6 +36,7 @@
 #include "engine/output/sweep_csv.hpp"
 #include "engine/output/sweep_rows.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/run_label.hpp"
 #include "engine/sweep/sweep_grid.hpp"
 #include "engine/sweep/sweep_progress.hpp"
 #include "engine/sweep/usage_error.hpp"
@@ -342,9 +343,15 @@ int sweep_command(const SweepOptions& options) {
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  {
+    // The runs' own lines (each warning, its route) go at debug; the CSV keeps each row's
+    // warning count and one line counts them by kind.
+    const QuietRuns quiet(*spdlog::default_logger_raw());
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    if (const auto summary = quiet.summary()) spdlog::warn("{}", *summary);
+  }
   if (failure) std::rethrow_exception(failure);
   spdlog::info("sweep: {} rows on {} in {:.3g} s{}", shard_rows - done, counted(threads, "thread"),
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),

@@ -184,11 +184,11 @@ TEST(SweepColumns, WorkColumnsAreTheRunsJsonWork) {
 }
 
 TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
-  // 20 springs do not resolve the critical point: every row warns once.
+  // 20 springs do not resolve the critical point: every row warns once, at debug in a sweep.
   const auto r = run_mdrsim(
       "sweep scenes/fig3a_fixed_grips.toml --vary loading.tangential.displacement=0,4e-6 "
       "--vary detachment.criterion=mode-mixed,stress --set 'discretization={springs=20}' "
-      "--threads 2 --log-level warn");
+      "--threads 2 --log-level debug");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = csv_rows(r.out);
   ASSERT_EQ(rows.size(), 4u);
@@ -201,23 +201,42 @@ TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     std::size_t labelled = 0;
     for (const std::string& line : err) {
-      if (line.rfind("[warning] " + labels[i], 0) == 0) ++labelled;
+      if (line.rfind("[debug] " + labels[i], 0) == 0) ++labelled;
     }
     EXPECT_EQ(std::to_string(labelled), rows[i].at("warnings")) << labels[i] << "\n" << r.err;
     EXPECT_EQ(rows[i].at("warnings"), "1") << r.err;
   }
   for (const std::string& line : err) {
-    EXPECT_TRUE(line.rfind("[warning] row ", 0) == 0 || line.rfind("[info] sweep: ", 0) == 0)
+    EXPECT_TRUE(line.rfind("[debug] row ", 0) == 0 || line.rfind("[info] sweep: ", 0) == 0 ||
+                line.rfind("[warning] sweep: 4 runs warned: 4 x 'the critical point has only "
+                           "...'",
+                           0) == 0)
         << line;
   }
+}
+
+TEST(SweepLogs, AtTheDefaultLevelOneLineCountsTheRunsWarnings) {
+  // 20 rows that each warn: no line of a run at the default level (info), one line counting
+  // their warnings by kind, and the CSV keeps each row's count.
+  const auto r = run_mdrsim(
+      "sweep scenes/fig3a_fixed_grips.toml --vary loading.tangential.displacement=0:4e-6:20 "
+      "--set 'discretization={springs=20}' --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(r.out);
+  ASSERT_EQ(rows.size(), 20u);
+  for (const auto& row : rows) EXPECT_EQ(row.at("warnings"), "1");
+  const auto err = lines_of(r.err);
+  ASSERT_EQ(err.size(), 2u) << r.err;
+  EXPECT_EQ(err[0], "[warning] sweep: 20 runs warned: 20 x 'the critical point has only ...'");
+  EXPECT_EQ(err[1].rfind("[info] sweep: 20 rows on 2 threads in ", 0), 0u) << err[1];
 }
 
 TEST(SweepLogs, ShardRowsKeepTheirIndexInTheWholeGrid) {
   const auto r = run_mdrsim(
       "sweep scenes/fig3a_fixed_grips.toml --vary loading.tangential.displacement=0,2e-6,4e-6 "
-      "--set 'discretization={springs=20}' --shard 1/2 --log-level warn");
+      "--set 'discretization={springs=20}' --shard 1/2 --log-level debug");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("[warning] row 1 of 3 (loading.tangential.displacement=2e-06): "),
+  EXPECT_NE(r.err.find("[debug] row 1 of 3 (loading.tangential.displacement=2e-06): "),
             std::string::npos)
       << r.err;
   EXPECT_EQ(r.err.find("row 0 of 3"), std::string::npos) << r.err;
