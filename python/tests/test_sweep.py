@@ -221,3 +221,28 @@ def test_progress_lines_go_to_the_mdrsim_logger(monkeypatch, caplog):
         assert message.startswith(f"sweep: {written} of 15 rows in "), message
         assert message.endswith(" to go"), message
     assert len(result) == 15
+
+
+def test_quiet_by_default_with_warnings_on_the_result(capfd):
+    # Without set_log_level nothing reaches standard error; each row's warnings are counted in
+    # its row and a run's are on its result.
+    scene = mdrsim.Scene.from_file("scenes/fig3a_fixed_grips.toml").with_values(
+        {"discretization": {"springs": 20}})
+    result = mdrsim.sweep(scene, {"loading.tangential.displacement": [0, 4e-6]})
+    run = mdrsim.run(scene)
+    assert capfd.readouterr().err == ""
+    assert [row["warnings"] for row in result.rows] == [1, 1]
+    assert len(run.warnings) == 1
+
+
+def test_work_columns_are_the_runs_work():
+    # A program's sweep has the run's total work per axis last, as the command's CSV.
+    scene = mdrsim.Scene.from_file("scenes/programs/fretting_parabola.toml").with_values(
+        {"discretization.springs": 400})
+    result = mdrsim.sweep(scene, {"friction.coefficient": [0.3, 0.5]})
+    assert result.columns[-2:] == ["work_normal", "work_tangential"]
+    for row, mu in zip(result.rows, [0.3, 0.5]):
+        work = mdrsim.run(scene.with_values({"friction.coefficient": mu})).work
+        assert row["work_normal"] == work.normal
+        assert row["work_tangential"] == work.tangential
+        assert row["dissipated_by_friction"] == work.dissipated_by_friction
