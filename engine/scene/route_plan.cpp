@@ -52,7 +52,9 @@ std::string engine_reason(const Scene& scene, const RoutePlan& plan, bool method
       scene.discretization.extrapolation == DiscretizationOptions::Extrapolation::automatic) {
     reason +=
         "; rtol stays on the row, as the continuum route may not answer it exactly "
-        "(several folds: a table, a ripple or a work of adhesion that varies)";
+        "(a branch that may fold more than once: a table, a ripple, a work of adhesion that "
+        "varies, or a power law with n < 1 under a tangential load, a criterion of one's own or "
+        "a compliant machine with 1/2 < n < 0.768)";
   }
   return reason;
 }
