@@ -174,12 +174,8 @@ struct Walk {
   }
 };
 
-ContinuumPullOff walk_down(ContinuumBranch& branch, double glued_radius, const ZeroScale& zero,
-                           int per_decade) {
+ContinuumPullOff walk_down(ContinuumBranch& branch, double glued_radius, int per_decade) {
   Walk w{branch, {}, {}};
-  const AffineConstraint& normal = branch.normal();
-  const double zero_control = std::abs(normal.displacement_coefficient) * zero.displacement +
-                              std::abs(normal.force_coefficient) * zero.force;
   ContinuumPullOff& out = w.out;
   const double ag = glued_radius;
   if (!branch.locate_shear_off(ag)) {
@@ -222,16 +218,19 @@ ContinuumPullOff walk_down(ContinuumBranch& branch, double glued_radius, const Z
       const BranchState* above2 = &top;
       for (std::size_t j = next; j < w.samples.size(); ++j) {
         const BranchState& s = w.samples[j];
-        if (!(s.control <= above->control + zero_control)) {
+        // A control that stops falling by no more than the rounding of its own value has not
+        // turned (flat to the bit where g(a) sinks below the rounding of e, d = g - e at
+        // a ~ 1e-12 m): the peel goes on to a -> 0. Any real rise is a turn, however small the
+        // force it carries (a power law's fold at 1e-13 of its preload is its closed-form F0).
+        const double flat = 4.0 * std::numeric_limits<double>::epsilon() *
+                            std::max(std::abs(s.control), std::abs(above->control));
+        if (!(s.control <= above->control + flat)) {
           fold = w.fold_between(s.contact_radius, above->contact_radius, above2->contact_radius,
                                 fold_error);
           next = j;
           break;
         }
-        // A control that stops falling by no more than what is zero has not turned: where
-        // g(a) sinks below the rounding of e (d = g - e at a ~ 1e-12 m) it is flat to the
-        // bit, and the peel goes on to a -> 0. Compared with the lowest sample since, so
-        // that a rise is seen once it adds up to more than zero.
+        // Compared with the lowest sample since, so that a rise is seen once it adds up.
         if (!(s.control < above->control)) continue;
         above2 = above;
         above = &s;
@@ -261,14 +260,6 @@ ContinuumPullOff walk_down(ContinuumBranch& branch, double glued_radius, const Z
     }
     const auto land = w.landing(*fold, next);
     if (!land) {
-      if (zero.zero_force(fold->normal_force)) {
-        // The jump that empties the contact carries no force: nothing jumps, the contact has
-        // peeled off to zero force.
-        out.end = ContinuumPullOff::End::smooth_peel;
-        out.critical = *fold;
-        if (out.peak && out.peak->contact_radius == fold->contact_radius) out.peak.reset();
-        return out;
-      }
       out.end = first && fold->contact_radius == ag ? ContinuumPullOff::End::first_detachment
                                                     : ContinuumPullOff::End::fold;
       out.critical = *fold;
@@ -285,9 +276,8 @@ ContinuumPullOff walk_down(ContinuumBranch& branch, double glued_radius, const Z
 
 }  // namespace
 
-ContinuumPullOff continuum_pull_off(ContinuumBranch& branch, double glued_radius,
-                                    const ZeroScale& zero, int per_decade) {
-  ContinuumPullOff out = walk_down(branch, glued_radius, zero, per_decade);
+ContinuumPullOff continuum_pull_off(ContinuumBranch& branch, double glued_radius, int per_decade) {
+  ContinuumPullOff out = walk_down(branch, glued_radius, per_decade);
   // The let-go's own error moves F = E* (nf - 2 a e) by 2 E* a de wherever e is the let-go's.
   // de is its residual in the criterion's margin, taken twice: the margin itself rounds about
   // as much where the let-go is tabulated. On the 2027 mode-dependent scenes of five random

@@ -41,10 +41,9 @@ struct ContinuumPullOff {
 
 /// Scans the branch from a_g down (geometric in a - a_s over 14 decades, `per_decade`
 /// samples a decade), refines each fold as a root of the control slope, each landing as a
-/// root of the control value and each stretch's peak as a root of dF/da. What `zero` calls
-/// zero (the run's zero_scale.hpp) tells a smooth peel from a fold: a control flat to within
-/// it has not turned, and a fold whose jump empties a contact carrying zero force is none.
+/// root of the control value and each stretch's peak as a root of dF/da. A control flat to the
+/// rounding of its own value has not turned (a smooth peel goes on); any real rise is a fold.
 ContinuumPullOff continuum_pull_off(ContinuumBranch& branch, double glued_radius,
-                                    const ZeroScale& zero = {}, int per_decade = 4);
+                                    int per_decade = 4);
 
 }  // namespace mdrsim

@@ -100,12 +100,7 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   }
   result.stages.push_back(tangential_stage);
 
-  // What is zero on this shorthand, as its rows draw the line (the glued radius, the image
-  // there, the preload force): a smooth peel is told from a fold by it.
-  const ZeroScale zero =
-      zero_scale(scene.material.effective_modulus, ag, scene.profile->mdr_image(ag),
-                 scene.material.largest_work_of_adhesion(), scene.preload_force);
-  const ContinuumPullOff p = continuum_pull_off(branch, ag, zero);
+  const ContinuumPullOff p = continuum_pull_off(branch, ag);
   using End = ContinuumPullOff::End;
   if (p.end == End::shear_off_at_application) {
     result.status = RunStatus::shear_off;

@@ -277,13 +277,7 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
   note_state(w, st.state(disk));
   w.retracted = true;
 
-  // What is zero on the contact this stage peels (zero_scale.hpp): a smooth peel is told from a
-  // fold by it.
-  const Material& material = st.branch().material();
-  const ContinuumPullOff p = continuum_pull_off(
-      st.branch(), a,
-      zero_scale(material.effective_modulus, a, st.branch().profile().mdr_image(a),
-                 material.largest_work_of_adhesion()));
+  const ContinuumPullOff p = continuum_pull_off(st.branch(), a);
   const auto note_peak = [&](double top, double bottom) {
     // The branch's most tensile state, where the stage passes it.
     if (p.peak && p.peak->contact_radius <= top && p.peak->contact_radius >= bottom) {

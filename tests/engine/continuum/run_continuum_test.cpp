@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "engine/model/dimensionless_scales.hpp"
 #include "engine/output/result_json.hpp"
 #include "engine/reference/continuum_reference.hpp"
 #include "engine/reference/jkr_scenario.hpp"
@@ -596,6 +597,34 @@ TEST(RunContinuum, JsonHasNoSpringsAndNamesTheRoute) {
   EXPECT_FALSE(j["jumps"][0].contains("springs"));
   EXPECT_GT(j["counts"]["root_iterations"].get<std::int64_t>(), 0);
   EXPECT_EQ(j["scene"]["discretization"]["rtol"], 1e-10);
+}
+
+}  // namespace
+}  // namespace mdrsim
+
+namespace mdrsim {
+namespace {
+
+// A power law 0.8 r^0.8 glued at 0.5 mm under a fixed load folds at its closed-form pull-off,
+// F = -F0 = -1.06e-13 N at a0 = 6.8e-11 m (the scales' power-law formula), 1e-13 of the 1.2 N
+// preload: below the run's zero scale (1e-12 of the preload), yet a fold, not a smooth peel. A
+// fold told by that scale rather than by the control's own rounding called it no-instability
+// with no critical point, where the row and the closed form say instability at -F0.
+TEST(RunContinuum, AFoldFarBelowThePreloadIsStillAFold) {
+  const Scene scene = test::build_scene_text(
+      "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"power_law\"\ncoefficient = 0.8\nexponent = 0.8\n"
+      "[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = \"fixed-load\" }\n"
+      "[discretization]\nrtol = 1e-8\n");
+  ASSERT_EQ(scene.plan.engine, RouteEngine::continuum);
+  const RunResult r = run_scene(scene, ObserverList{});
+  ASSERT_EQ(r.status, RunStatus::instability);
+  ASSERT_TRUE(r.critical);
+  const auto scales = dimensionless_scales(*scene.profile, scene.material);
+  ASSERT_TRUE(scales);
+  // rtol 1e-8 of the route, and the closed form's own rounding.
+  EXPECT_NEAR(r.critical->normal_force / scales->force, -1.0, 1e-8);
+  EXPECT_NEAR(r.critical->contact_radius / scales->radius, 1.0, 1e-8);
 }
 
 }  // namespace
