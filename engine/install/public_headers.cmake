@@ -27,6 +27,7 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/scene/scene_document.hpp
     engine/scene/scene.hpp
     engine/scene/program.hpp
+    engine/scene/route_plan.hpp
     engine/model/friction_settings.hpp
     engine/scene/scene_error.hpp
     # the run and its result
@@ -34,6 +35,7 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/pull_off/pull_off.hpp
     engine/result/run_result.hpp
     engine/result/program_records.hpp
+    engine/result/stop_reason.hpp
     engine/result/run_counts.hpp
     engine/model/contact_snapshot.hpp
     engine/model/jkr_scales.hpp
