@@ -293,15 +293,15 @@ def test_bad_friction_by_set_raises_scene_error():
 def test_sweep_of_friction_scenes_has_the_friction_columns(cli):
     """A sweep of friction scenes (docs/outputs.md "The sweep CSV") ends each row with the
     critical state's springs_sliding and stick_radius, sliding and dissipated_by_friction, read
-    as int, float, bool and float; its CSV is the command's byte for byte, and a process pool
+    as int, float, bool and float, then a program's work per axis; its CSV is the command's byte for byte, and a process pool
     (whose workers rebuild the plan from the job) writes the same."""
     import concurrent.futures
 
     scene = mdrsim.Scene.from_file("scenes/programs/pull_off_after_shear.toml")
     grid = {"loading.stage.2.tangential.to": [5e-6, 2e-5], "friction.coefficient": [0.0, 1.0]}
     result = mdrsim.sweep(scene, grid)
-    assert result.columns[-4:] == ["springs_sliding", "stick_radius", "sliding",
-                                   "dissipated_by_friction"]
+    assert result.columns[-6:] == ["springs_sliding", "stick_radius", "sliding",
+                                   "dissipated_by_friction", "work_normal", "work_tangential"]
     rows = result.rows
     assert [type(rows[0][k]) for k in ("springs_sliding", "sliding")] == [int, bool]
     # Sheared past the glue's break under mu = 1: the pressed springs slid and dissipated.
