@@ -1,7 +1,6 @@
 // Stage ends, jumps and works combined across rows: the states' and works' choices, written
 // back into the reported row, and whether they meet rtol.
 #include "engine/accuracy/path_estimates.hpp"
-#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -12,6 +11,7 @@
 
 #include "engine/accuracy/error_estimate.hpp"
 #include "engine/accuracy/row_sequence.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 namespace mdrsim {
 namespace {

@@ -1,7 +1,6 @@
 // Accuracy on programs: rows in one frame (a_max), so that they differ only in their spacing;
 // each reported state from the plain finest row or from Richardson across the last three.
 #include "engine/accuracy/program_resolution.hpp"
-#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -14,6 +13,7 @@
 #include "engine/accuracy/program_zoom.hpp"
 #include "engine/base/text.hpp"
 #include "engine/program/run_program.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 namespace mdrsim {
 namespace {

@@ -1,13 +1,12 @@
 // Combination of a row sequence and its a posteriori error estimates.
 #include "engine/accuracy/row_sequence.hpp"
-#include "engine/result/rtol_rule.hpp"
-
-#include "engine/model/snapshot_fields.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "engine/accuracy/error_estimate.hpp"
+#include "engine/model/snapshot_fields.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 namespace mdrsim {
 
@@ -46,8 +45,10 @@ bool RowSequence::ends_near_rough_radius(std::size_t j) const {
   if (rough_radii_.empty() || !end || end->springs_in_contact <= 0) return false;
   const double a = end->contact_radius;
   const double dx = a / static_cast<double>(end->springs_in_contact);
-  return std::any_of(rough_radii_.begin(), rough_radii_.end(),
-                     [&](double r) { return r > 0.0 && std::abs(r - a) <= kReach * dx; });
+  // The radii are sorted: the first positive one from a - 4 dx on, in O(log) of a long table.
+  auto r = std::lower_bound(rough_radii_.begin(), rough_radii_.end(), a - kReach * dx);
+  while (r != rough_radii_.end() && !(*r > 0.0)) ++r;
+  return r != rough_radii_.end() && std::abs(*r - a) <= kReach * dx;
 }
 
 bool RowSequence::rough() const {

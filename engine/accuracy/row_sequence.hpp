@@ -37,7 +37,7 @@ class RowSequence {
   RowSequence(Target target, std::vector<RunResult> rows)
       : target_(target), rows_(std::move(rows)) {}
 
-  /// The radii [m] where the rows' dgamma is not smooth (rough_radii(material)).
+  /// The radii [m] where the rows' dgamma is not smooth, sorted (rough_radii(material)).
   RowSequence& with_rough_radii(std::vector<double> radii) {
     rough_radii_ = std::move(radii);
     return *this;

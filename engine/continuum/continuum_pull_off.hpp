@@ -5,7 +5,6 @@
 #include <utility>
 #include <vector>
 
-#include "engine/base/zero_scale.hpp"
 #include "engine/continuum/continuum_branch.hpp"
 
 namespace mdrsim {

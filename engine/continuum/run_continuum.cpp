@@ -1,6 +1,5 @@
 // Status, states, stages, jumps and work of the shorthand from the continuum pull-off walk.
 #include "engine/continuum/run_continuum.hpp"
-#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -8,10 +7,10 @@
 #include <cmath>
 
 #include "controllers/builtin_controllers.hpp"
-#include "engine/base/zero_scale.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
 #include "engine/result/lost_contact.hpp"
+#include "engine/result/rtol_rule.hpp"
 
 namespace mdrsim {
 namespace {

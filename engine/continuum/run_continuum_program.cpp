@@ -1,6 +1,5 @@
 // Stages, jumps and work of a normal loading program from the continuum front, stage by stage.
 #include "engine/continuum/run_continuum_program.hpp"
-#include "engine/result/rtol_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -16,10 +15,10 @@
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
 #include "engine/base/text.hpp"
-#include "engine/base/zero_scale.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
 #include "engine/model/gluing_depth.hpp"
+#include "engine/result/rtol_rule.hpp"
 #include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
