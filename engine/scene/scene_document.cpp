@@ -23,6 +23,7 @@
 
 #include "engine/base/text.hpp"
 #include "engine/scene/json_scene.hpp"
+#include "engine/scene/number_underflow.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
 
@@ -308,7 +309,12 @@ std::optional<NumberBeyondRange> number_beyond_range(std::string text,
 
 toml::table parse_scene(const std::string& text, const std::string& source_name) {
   try {
-    return toml::parse(text, source_name);
+    toml::table root = toml::parse(text, source_name);
+    if (const auto under = find_number_underflow(root, text)) {
+      throw SceneError(fmt::format("{}:{}:{}: {}{}", source_name, under->at.line, under->at.column,
+                                   printable(under->key), under->message));
+    }
+    return root;
   } catch (const toml::parse_error& e) {
     if (const auto beyond = number_beyond_range(text, source_name, e.source().begin)) {
       throw SceneError(fmt::format("{}:{}:{}: {}{}", source_name, beyond->at.line,
@@ -482,6 +488,10 @@ void SceneDocument::set_value(std::string_view dotted_key, std::string_view valu
   try {
     const toml::table parsed = parse_value(value_toml, origin);
     if (parsed.size() != 1) throw SceneError(fmt::format("{}: {}: not one value", origin, key));
+    if (const auto under = find_number_underflow(parsed, "v = " + value_toml)) {
+      throw SceneError(
+          fmt::format("{}: {}{}{}", origin, key, printable(under->key.substr(1)), under->message));
+    }
   } catch (const toml::parse_error&) {
     // A bare word such as fixed-load: read it as a TOML string.
     std::string quoted(1, '"');

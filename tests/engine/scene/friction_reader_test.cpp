@@ -58,6 +58,19 @@ TEST(FrictionScene, ACoefficientBeyondADoubleNamesItsKey) {
                    "1.8e308)");
 }
 
+TEST(FrictionScene, ANumberTooSmallForADoubleNamesItsKey) {
+  SceneDocument d =
+      SceneDocument::from_text(std::string(kProgram) + "coefficient = 0.5\n", "scene.toml");
+  EXPECT_THROW_MSG(d.set_value("friction.shear_strength", "1e-400"), SceneError,
+                   "--set: friction.shear_strength = 1e-400 is too small for a double (it would "
+                   "read as 0; the smallest is 4.9e-324)");
+  EXPECT_THROW_MSG(d.set_value("friction", "{ coefficient = 0.5, shear_strength = 2e-999 }"),
+                   SceneError,
+                   "--set: friction.shear_strength = 2e-999 is too small for a double (it would "
+                   "read as 0; the smallest is 4.9e-324)");
+  EXPECT_NO_THROW(d.set_value("friction.shear_strength", "0e-999"));
+}
+
 TEST(FrictionScene, ReadsTheTable) {
   const Scene scene = build(std::string(kProgram) + "coefficient = 0.5\n");
   ASSERT_TRUE(scene.friction.has_value());

@@ -617,6 +617,32 @@ std::vector<BadScene> beyond_range_cases() {
 INSTANTIATE_TEST_SUITE_P(BeyondRange, BadSceneTest, ::testing::ValuesIn(beyond_range_cases()),
                          case_name);
 
+// ---- numbers written nonzero that a double reads as zero ----
+// toml++ reads 1e-400 as 0 without a word; a work of adhesion typed with one digit too many in
+// its exponent would silently turn the adhesion off. Written zeros (0.0e-500) stay zeros.
+
+std::vector<BadScene> underflow_cases() {
+  return {
+      {"Float", "work_of_adhesion = 0.05", "work_of_adhesion = 1e-400",
+       "test.toml:5:20: material.work_of_adhesion = 1e-400 is too small for a double (it would "
+       "read as 0; the smallest is 4.9e-324)"},
+      {"InArray", "work_of_adhesion = 0.05",
+       "work_of_adhesion = { r = [0.0, 1e-3, 2e-3], value = [0.05, -5_0e-4_00, 0.06] }",
+       "test.toml:5:60: material.work_of_adhesion.value[1] = -5_0e-4_00 is too small for a "
+       "double (it would read as 0; the smallest is 4.9e-324)"},
+  };
+}
+INSTANTIATE_TEST_SUITE_P(Underflow, BadSceneTest, ::testing::ValuesIn(underflow_cases()),
+                         case_name);
+
+TEST(GoodScene, AWrittenZeroWithAHugeNegativeExponentIsZero) {
+  EXPECT_EQ(build_scene_text(scene_with("work_of_adhesion = 0.05",
+                                        "work_of_adhesion = 0.05\n"
+                                        "approach_work_of_adhesion = 0.0e-500"))
+                .material.approach_work_of_adhesion_at(0.0),
+            0.0);
+}
+
 TEST(BadScene, ANumberBeyondADoubleInAnArrayOfTablesNamesTheStage) {
   const std::string program = R"([material]
 effective_modulus = 1.0e6
