@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Two mdrsim binaries side by side on the same scenes, interleaved: the JSON's wall_time_s of
-the rtol pull-offs and the reversible JKR cycle, and the wall time of a sweep at 1 and 2 threads.
+the rtol pull-offs and the reversible JKR cycle, and the wall time of a sweep at 1 and 2 threads;
+each run's CPU time beside them (on a loaded machine the wall times measure the load as well).
 
 A shared machine's load drifts over minutes: each repeat runs every case once per binary,
 alternating which binary goes first, so that a load from elsewhere hits both alike; the medians
@@ -15,6 +16,7 @@ import argparse
 import csv
 import json
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -64,8 +66,13 @@ def cases(scenes, scratch):
     return out
 
 
+def children_cpu():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def run_once(binary, kind, args, scratch):
-    """(JSON wall_time_s or None, the process's wall time) of one run."""
+    """(JSON wall_time_s or None, the process's wall time, its CPU time) of one run."""
     if kind == "run":
         out = os.path.join(scratch, "result.json")
         command = [binary, "run", *args, "--json", out, "--log-level", "error"]
@@ -74,15 +81,17 @@ def run_once(binary, kind, args, scratch):
         command = [binary, "sweep", *args, "--csv", out, "--log-level", "error"]
         if os.path.exists(out):
             os.remove(out)
+    cpu = children_cpu()
     start = time.perf_counter()
     done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     process = time.perf_counter() - start
+    cpu = children_cpu() - cpu
     if done.returncode != 0:
         sys.exit(f"{' '.join(command)} failed ({done.returncode}):\n{done.stderr}")
     if kind != "run":
-        return None, process
+        return None, process, cpu
     with open(out) as f:
-        return json.load(f)["wall_time_s"], process
+        return json.load(f)["wall_time_s"], process, cpu
 
 
 def main():
@@ -106,16 +115,16 @@ def compare(a, all_cases, scratch):
     binaries = {"old": os.path.abspath(a.old), "new": os.path.abspath(a.new)}
     sink = sys.stdout if a.out == "-" else open(a.out, "w", newline="")
     writer = csv.writer(sink)
-    writer.writerow(["case", "binary", "repeat", "json_wall_s", "process_wall_s"])
+    writer.writerow(["case", "binary", "repeat", "json_wall_s", "process_wall_s", "process_cpu_s"])
     times = {(n, b): [] for n in names for b in binaries}
     for repeat in range(a.repeats):
         for i, name in enumerate(names):
             kind, args = all_cases[name]
             order = ["old", "new"] if (repeat + i) % 2 == 0 else ["new", "old"]
             for b in order:
-                json_wall, process = run_once(binaries[b], kind, args, scratch)
+                json_wall, process, cpu = run_once(binaries[b], kind, args, scratch)
                 writer.writerow([name, b, repeat, "" if json_wall is None else f"{json_wall:.6g}",
-                                 f"{process:.6g}"])
+                                 f"{process:.6g}", f"{cpu:.6g}"])
                 sink.flush()
                 times[(name, b)].append(json_wall if json_wall is not None else process)
     if sink is not sys.stdout:
