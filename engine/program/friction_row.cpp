@@ -13,6 +13,7 @@ FrictionRow::FrictionRow(const Material& material, const FrictionSettings& setti
       tangential_stiffness_(material.effective_shear_modulus * spacing),
       ratio_(settings.coefficient * material.effective_modulus / material.effective_shear_modulus),
       spacing_(spacing),
+      glued_keyed_(settings.glued == GluedShear::limited && settings.law == nullptr),
       individual_(settings.law != nullptr) {}
 
 void FrictionRow::reserve(std::int64_t springs) {
@@ -22,6 +23,10 @@ void FrictionRow::reserve(std::int64_t springs) {
     laws_.reserve(static_cast<std::size_t>(springs));
   } else {
     keys_.reserve(springs);
+  }
+  if (glued_keyed_) {
+    tension_keys_.reserve(springs);
+    glued_images_.reserve(springs);
   }
 }
 
@@ -74,26 +79,133 @@ double FrictionRow::limit_glued_springs() {
   return 2.0 * dissipated;
 }
 
+void FrictionRow::detach_glued(std::int64_t n) {
+  for (std::int64_t i = 1; i <= n; ++i) {
+    Spring& s = springs_[index(i)];
+    if (s.state.sliding != 0) {
+      s.state.offset = spring(i).offset;
+      remove_sliding(i);
+    } else {
+      remove_sticking(i);
+    }
+  }
+  // Only glued sliders add to these: what is left is rounding.
+  if (glued_keyed_) slider_adhesion_ = tension_limits_ = {};
+}
+
+double FrictionRow::attach_glued(std::int64_t n, bool relimit_sticking) {
+  double dissipated = 0.0;
+  for (std::int64_t i = 1; i <= n; ++i) {
+    StickSlipSpring& state = springs_[index(i)].state;
+    if (state.sliding == 0 && !relimit_sticking) {
+      add_sticking(i);
+      continue;
+    }
+    state.sliding = 0;
+    dissipated += slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
+    if (state.sliding != 0) {
+      add_sliding(i);
+    } else {
+      add_sticking(i);
+    }
+  }
+  return 2.0 * dissipated;
+}
+
+void FrictionRow::classify(std::int64_t i, bool tension) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double g = springs_[index(i)].image;
+  glued_images_.erase(i);
+  glued_images_.insert(i, tension ? g : kInf, tension ? -kInf : g);
+}
+
+void FrictionRow::change_class(std::int64_t i) {
+  const Spring& s = springs_[index(i)];
+  const bool tension = !in_tension(i);
+  if (s.state.sliding != 0) {
+    remove_sliding(i);
+    classify(i, tension);
+    add_sliding(i);
+    return;
+  }
+  // A sticking spring keeps its offset: only its keys move.
+  keys_.erase(i);
+  tension_keys_.erase(i);
+  classify(i, tension);
+  insert_keys(i, 0);
+}
+
+bool FrictionRow::classes_hold(double indentation) const {
+  if (glued_images_.empty()) return true;
+  return glued_images_.backward_last().value <= indentation &&
+         glued_images_.forward_first().value >= indentation;
+}
+
+double FrictionRow::misclassed_force(double indentation) const {
+  double sum = 0.0;
+  for (std::int64_t i = 1; i <= glued_; ++i) {
+    const Spring& s = springs_[index(i)];
+    if (s.state.sliding == 0) continue;
+    const double c = glued_adhesive_limit(i);
+    const double keyed_limit =
+        in_tension(i) ? c : settings_.coefficient * normal_stiffness_ * (indentation - s.image) + c;
+    sum += s.state.sliding * (slip_limit(*law(i), geometry(i), indentation) - keyed_limit);
+  }
+  return sum;
+}
+
+double FrictionRow::misclassed_slope(double indentation) const {
+  double slope = 0.0;
+  for (std::int64_t i = 1; i <= glued_; ++i) {
+    const Spring& s = springs_[index(i)];
+    if (s.state.sliding == 0) continue;
+    const double exact = indentation > s.image ? 1.0 : 0.0;
+    const double keyed_slope = in_tension(i) ? 0.0 : 1.0;
+    slope += s.state.sliding * (exact - keyed_slope) * settings_.coefficient * normal_stiffness_;
+  }
+  return slope;
+}
+
 StickSlipSpring FrictionRow::spring(std::int64_t i) const {
   StickSlipSpring state = springs_[index(i)].state;
-  if (keyed(i) && state.sliding != 0)
+  if (!keyed(i) || state.sliding == 0) return state;
+  if (keyed_glued(i)) {
+    state.offset = tangential_ - state.sliding * slip_limit(*law(i), geometry(i), indentation_) /
+                                     tangential_stiffness_;
+  } else {
     state.offset = tangential_ - state.sliding * ratio_ * (indentation_ - springs_[index(i)].image);
+  }
   return state;
 }
 
 double FrictionRow::limit_sum(std::size_t s, double indentation) const {
   const auto count = static_cast<double>(sliders_[s].size());
-  return settings_.coefficient * normal_stiffness_ *
-         (count * indentation - slider_images_[s].value());
+  const double coulomb =
+      settings_.coefficient * normal_stiffness_ * (count * indentation - slider_images_[s].value());
+  return glued_keys_move() ? coulomb + slider_adhesion_[s].value() : coulomb;
 }
 
 void FrictionRow::add_sticking(std::int64_t i, int stuck_from) {
-  const Spring& s = springs_[index(i)];
   ++sticking_;
-  sticking_offsets_.add(s.state.offset);
-  if (!keyed(i)) return;
+  sticking_offsets_.add(springs_[index(i)].state.offset);
+  if (keyed(i)) insert_keys(i, stuck_from);
+}
+
+void FrictionRow::insert_keys(std::int64_t i, int stuck_from) {
+  const Spring& s = springs_[index(i)];
+  if (keyed_glued(i) && in_tension(i)) {
+    const double reach = glued_adhesive_limit(i) / tangential_stiffness_;
+    tension_keys_.insert(i, stuck_from > 0 ? tangential_ : s.state.offset + reach,
+                         stuck_from < 0 ? tangential_ : s.state.offset - reach);
+    return;
+  }
   double forward = s.state.offset - ratio_ * s.image;
   double backward = s.state.offset + ratio_ * s.image;
+  if (keyed_glued(i) && glued_keys_move()) {
+    const double reach = glued_adhesive_limit(i) / tangential_stiffness_;
+    forward += reach;
+    backward -= reach;
+  }
   // A slider sticks where its p reverses: that p is its key on the side it slid to, the same
   // bits for every slider that sticks with it (o -+ r g would scatter them by rounding, and the
   // runs of neighbours SlipKeys keeps would break into pieces), the same value to rounding.
@@ -106,7 +218,9 @@ void FrictionRow::remove_sticking(std::int64_t i) {
   const Spring& s = springs_[index(i)];
   --sticking_;
   sticking_offsets_.add(-s.state.offset);
-  if (keyed(i)) keys_.erase(i);
+  if (!keyed(i)) return;
+  keys_.erase(i);
+  if (keyed_glued(i)) tension_keys_.erase(i);
 }
 
 void FrictionRow::add_sliding(std::int64_t i) {
@@ -115,8 +229,18 @@ void FrictionRow::add_sliding(std::int64_t i) {
     return;
   }
   const Spring& s = springs_[index(i)];
-  sliders_[side(s.state.sliding)].insert(i);
-  slider_images_[side(s.state.sliding)].add(s.image);
+  const std::size_t at = side(s.state.sliding);
+  if (keyed_glued(i)) {
+    const double c = glued_keys_move() ? glued_adhesive_limit(i) : 0.0;
+    if (in_tension(i)) {
+      tension_sliders_[at].insert(i);
+      if (c != 0.0) tension_limits_[at].add(c);
+      return;
+    }
+    if (c != 0.0) slider_adhesion_[at].add(c);
+  }
+  sliders_[at].insert(i);
+  slider_images_[at].add(s.image);
 }
 
 void FrictionRow::remove_sliding(std::int64_t i) {
@@ -125,8 +249,18 @@ void FrictionRow::remove_sliding(std::int64_t i) {
     return;
   }
   const Spring& s = springs_[index(i)];
-  sliders_[side(s.state.sliding)].erase(i);
-  slider_images_[side(s.state.sliding)].add(-s.image);
+  const std::size_t at = side(s.state.sliding);
+  if (keyed_glued(i)) {
+    const double c = glued_keys_move() ? glued_adhesive_limit(i) : 0.0;
+    if (in_tension(i)) {
+      tension_sliders_[at].erase(i);
+      if (c != 0.0) tension_limits_[at].add(-c);
+      return;
+    }
+    if (c != 0.0) slider_adhesion_[at].add(-c);
+  }
+  sliders_[at].erase(i);
+  slider_images_[at].add(-s.image);
 }
 
 std::int64_t FrictionRow::first_own_sliding() const {
@@ -156,17 +290,25 @@ void FrictionRow::lift_outer() {
   if (individual_) laws_.pop_back();
 }
 
-void FrictionRow::glue_next() {
+void FrictionRow::glue_next(double indentation) {
   if (glued_ >= in_contact()) throw std::logic_error("FrictionRow::glue_next: no spring k+1");
   // A sliding spring glues only once it sticks (docs/friction.md).
   const std::int64_t i = glued_ + 1;
   if (springs_[index(i)].state.sliding != 0)
     throw std::logic_error("FrictionRow::glue_next: spring k+1 slides");
+  // Every glued spring's adhesive limit grows with a_g: nothing slips, sliders stick, and the
+  // keys of the keyed ones move.
+  const std::int64_t before = glued_;
+  if (glued_keys_move()) detach_glued(before);
   remove_sticking(i);
   ++glued_;
+  if (keyed_glued(i)) classify(i, !(indentation > springs_[index(i)].image));
   add_sticking(i);
-  // Every glued spring's adhesive limit grows with a_g: nothing slips, sliders stick.
-  if (own_sliding_ > 0) limit_glued_springs();
+  if (glued_keys_move()) {
+    attach_glued(before, false);
+  } else if (own_sliding_ > 0) {
+    limit_glued_springs();
+  }
 }
 
 double FrictionRow::let_go_boundary(double indentation, double tangential) {
@@ -175,14 +317,19 @@ double FrictionRow::let_go_boundary(double indentation, double tangential) {
   tangential_ = tangential;
   const std::int64_t i = glued_;
   Spring& s = springs_[index(i)];
-  // A glued spring sliding at its glued limit (GluedShear::limited) sticks for the moment: its
-  // offset is up to date (the glued springs are advanced spring by spring).
-  if (s.state.sliding != 0) {
+  // A glued spring sliding at its glued limit (GluedShear::limited) sticks for the moment, at
+  // its offset of now. With tau_0 > 0 every glued spring's limit falls with a_g: all leave
+  // their sets before it changes.
+  if (glued_keys_move()) {
+    detach_glued(glued_);
+  } else if (s.state.sliding != 0) {
+    s.state.offset = spring(i).offset;
     remove_sliding(i);
-    s.state.sliding = 0;
   } else {
     remove_sticking(i);
   }
+  s.state.sliding = 0;
+  if (keyed_glued(i)) glued_images_.erase(i);
   --glued_;
   const double dissipated = slip_to_limit(s.state, *law(i), geometry(i), indentation, tangential);
   if (s.state.sliding != 0) {
@@ -191,6 +338,7 @@ double FrictionRow::let_go_boundary(double indentation, double tangential) {
     add_sticking(i);
   }
   // The glued springs' adhesive limits fall with a_g: those over theirs slip at once.
+  if (glued_keys_move()) return 2.0 * dissipated + attach_glued(glued_, true);
   return 2.0 * dissipated + limit_glued_springs();
 }
 
@@ -198,6 +346,10 @@ double FrictionRow::tangential_force(double indentation, double tangential) cons
   double sum = tangential_stiffness_ *
                (static_cast<double>(sticking_) * tangential - sticking_offsets_.value());
   sum += limit_sum(0, indentation) - limit_sum(1, indentation);
+  if (glued_keyed_) {
+    if (glued_keys_move()) sum += tension_limits_[0].value() - tension_limits_[1].value();
+    if (!classes_hold(indentation)) sum += misclassed_force(indentation);
+  }
   if (own_sliding_ > 0) {
     for (std::int64_t i = 1; i <= own_springs(); ++i) {
       const StickSlipSpring& state = springs_[index(i)].state;
@@ -215,6 +367,7 @@ double FrictionRow::tangential_stiffness() const {
 double FrictionRow::tangential_force_per_indentation(double indentation) const {
   const double per_spring = settings_.coefficient * normal_stiffness_;
   double slope = per_spring * static_cast<double>(sliders_[0].size() - sliders_[1].size());
+  if (glued_keyed_ && !classes_hold(indentation)) slope += misclassed_slope(indentation);
   if (own_sliding_ > 0) {
     for (std::int64_t i = 1; i <= own_springs(); ++i) {
       const Spring& s = springs_[index(i)];
@@ -227,8 +380,9 @@ double FrictionRow::tangential_force_per_indentation(double indentation) const {
 
 double FrictionRow::sliding_stick_radius() const {
   std::int64_t first = first_own_sliding();
-  for (const auto& side : sliders_)
-    if (!side.empty() && (first == 0 || side.first() < first)) first = side.first();
+  for (const auto* sets : {&sliders_, &tension_sliders_})
+    for (const auto& side : *sets)
+      if (!side.empty() && (first == 0 || side.first() < first)) first = side.first();
   return first == 0 ? position(in_contact()) : position(first - 1);
 }
 
@@ -268,7 +422,65 @@ std::optional<RowFrictionEvent> FrictionRow::next_event(const LinearMotion& moti
     consider(key.spring,
              {FrictionEventKind::slip, t0 + std::max(p - key.value, 0.0) / (-backward_rate), -1});
   }
+  if (glued_keyed_) glued_events(motion, end, first);
   return first;
+}
+
+void FrictionRow::glued_events(const LinearMotion& motion, double end,
+                               std::optional<RowFrictionEvent>& first) const {
+  const double t0 = motion.start;
+  const double rate = motion.tangential_rate;
+  const auto consider = [&](std::int64_t i, const FrictionEvent& event) {
+    if (event.at > end) return;
+    if (!first || event.at < first->event.at || (event.at == first->event.at && i < first->spring))
+      first = RowFrictionEvent{i, event};
+  };
+  // In tension the limit is c_i alone: the slip velocity is u_x' and the slip where u_x
+  // reaches o +- c/kx.
+  if (!tension_sliders_[0].empty() && rate < 0.0)
+    consider(tension_sliders_[0].first(), {FrictionEventKind::stick, t0, 1});
+  if (!tension_sliders_[1].empty() && rate > 0.0)
+    consider(tension_sliders_[1].first(), {FrictionEventKind::stick, t0, -1});
+  if (!tension_keys_.empty() && rate > 0.0) {
+    const SlipKey key = tension_keys_.forward_first();
+    consider(key.spring, {FrictionEventKind::slip,
+                          t0 + std::max(key.value - motion.tangential, 0.0) / rate, 1});
+  }
+  if (!tension_keys_.empty() && rate < 0.0) {
+    const SlipKey key = tension_keys_.backward_last();
+    consider(key.spring, {FrictionEventKind::slip,
+                          t0 + std::max(motion.tangential - key.value, 0.0) / (-rate), -1});
+  }
+  if (glued_images_.empty()) return;
+  // A class change goes before any slip or stick at its t: they are found in the new class.
+  const double d = motion.indentation;
+  const double vd = motion.indentation_rate;
+  std::optional<RowFrictionEvent> crossing;
+  const auto cross = [&](std::int64_t i, double at) {
+    if (at <= end && (!crossing || at < crossing->event.at))
+      crossing = RowFrictionEvent{
+          i, {FrictionEventKind::limit_kink, at, springs_[index(i)].state.sliding}};
+  };
+  // A spring on the wrong side of d changes class at once, unless d's motion brings it back
+  // within the rounding of t (it is at its crossing: changing it there would go back and
+  // forth at one t).
+  const SlipKey deepest = glued_images_.backward_last();  // pressed, of the largest image
+  if (std::isfinite(deepest.value)) {
+    if (vd < 0.0) {
+      cross(deepest.spring, t0 + std::max(d - deepest.value, 0.0) / (-vd));
+    } else if (deepest.value > d && !(vd > 0.0 && t0 + (deepest.value - d) / vd == t0)) {
+      cross(deepest.spring, t0);
+    }
+  }
+  const SlipKey shallowest = glued_images_.forward_first();  // in tension, of the smallest
+  if (std::isfinite(shallowest.value)) {
+    if (vd > 0.0) {
+      cross(shallowest.spring, t0 + std::max(shallowest.value - d, 0.0) / vd);
+    } else if (shallowest.value < d && !(vd < 0.0 && t0 + (d - shallowest.value) / (-vd) == t0)) {
+      cross(shallowest.spring, t0);
+    }
+  }
+  if (crossing && (!first || crossing->event.at <= first->event.at)) first = crossing;
 }
 
 double FrictionRow::advance_sliding(const LinearMotion& motion, double t) {
@@ -291,6 +503,11 @@ double FrictionRow::advance_sliding(const LinearMotion& motion, double t) {
           std::abs((motion.tangential_rate - direction * ratio_ * motion.indentation_rate) * span);
       dissipated += slip * 0.5 * (limit_sum(s, motion.indentation) + limit_sum(s, d1));
     }
+    // Glued springs in tension slide at their constant c_i by |u_x(t) - u_x(t0)| each.
+    if (glued_keys_move()) {
+      const double slip = std::abs(motion.tangential_rate * span);
+      dissipated += slip * (tension_limits_[0].value() + tension_limits_[1].value());
+    }
   }
   indentation_ = motion.indentation_at(t);
   tangential_ = motion.tangential_at(t);
@@ -301,7 +518,10 @@ void FrictionRow::apply(const RowFrictionEvent& event) {
   const std::int64_t i = event.spring;
   Spring& s = springs_[index(i)];
   const FrictionEventKind kind = event.event.kind;
-  if (kind == FrictionEventKind::limit_kink) return;
+  if (kind == FrictionEventKind::limit_kink) {
+    if (keyed_glued(i)) change_class(i);
+    return;
+  }
   if (!keyed(i)) {
     if (kind == FrictionEventKind::slip && s.state.sliding == 0) {
       remove_sticking(i);

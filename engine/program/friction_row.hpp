@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -34,10 +35,17 @@ struct RowFrictionEvent {
 /// falls to o_i + r g_i: keys that do not change while it sticks, kept in order, so the next
 /// slip is the smallest (largest) key, O(log m) per event in flat arrays. Every spring sliding
 /// along +x has the same slip velocity p+' (along -x, p-'), so they stick together when it
-/// reverses, and their force and dissipated work are sums of their count and images. Glued
-/// springs under GluedShear::limited go spring by spring (O(k) per query, and per change of the
-/// glued radius, which moves every glued spring's adhesive limit); under GluedShear::unlimited they
-/// only stick. Under a law other than Coulomb's (FrictionSettings::law) every spring goes spring by
+/// reverses, and their force and dissipated work are sums of their count and images.
+///
+/// Glued springs under GluedShear::limited are on keys too. Their limit mu max(f_z, 0) + c_i
+/// (c_i the adhesive part) is mu f_z + c_i while pressed (d >= g_i) and c_i in tension: a
+/// pressed one is keyed against p+- as an unglued spring is, with its key moved by -+ c_i / kx;
+/// one in tension against u_x alone, o_i +- c_i / kx. Each glued spring is in one of the two
+/// classes; where d crosses its image it changes class, a `limit_kink` event found from the
+/// largest image of the pressed ones and the smallest of those in tension (O(log k)). So every
+/// event costs O(log m) with glue too; a change of the glued radius moves every c_i (tau_0 > 0
+/// only), re-keying the glued springs, O(k) then. Under GluedShear::unlimited glued springs only
+/// stick. Under a law other than Coulomb's (FrictionSettings::law) every spring goes spring by
 /// spring, with the limit the law gave it as it touched (O(m) per query).
 class FrictionRow {
  public:
@@ -71,8 +79,8 @@ class FrictionRow {
   void touch(double image, double tangential);
   /// Spring m (not glued) leaves the indenter and forgets its slip.
   void lift_outer();
-  /// Spring k+1 (in contact, sticking) glues, keeping its present stretch.
-  void glue_next();
+  /// Spring k+1 (in contact, sticking) glues at indentation d [m], keeping its present stretch.
+  void glue_next(double indentation);
   /// The boundary spring k lets go and stays pressed at (d, u_x): it keeps its stretch and
   /// slips to its limit at once where the stretch exceeds it. Returns the dissipated work [J].
   double let_go_boundary(double indentation, double tangential);
@@ -86,7 +94,8 @@ class FrictionRow {
   double tangential_force_per_indentation(double indentation) const;
   /// Springs i <= m sliding now (one half of the row, like ProgramRow's counts).
   std::int64_t springs_sliding() const {
-    return sliders_[0].size() + sliders_[1].size() + own_sliding_;
+    return sliders_[0].size() + sliders_[1].size() + tension_sliders_[0].size() +
+           tension_sliders_[1].size() + own_sliding_;
   }
   /// The radius inside which every spring in contact sticks: x_{j-1}, j the innermost
   /// sliding spring; the contact radius x_m when none slides [m]. Inline where none does:
@@ -98,7 +107,8 @@ class FrictionRow {
   /// Whether F_x depends on d at a fixed u_x: only through a sliding spring's limit mu f_z.
   /// Without one, F_x(d, u_x) is the same number for every finite d.
   bool force_follows_indentation() const {
-    return own_sliding_ > 0 || !sliders_[0].empty() || !sliders_[1].empty();
+    return own_sliding_ > 0 || !sliders_[0].empty() || !sliders_[1].empty() ||
+           !tension_sliders_[0].empty() || !tension_sliders_[1].empty();
   }
   /// Whether next_event can find anything along `motion`: not when nothing slides, no glued
   /// spring can slip (GluedShear::unlimited) and p+ falls or stays (p- rises or stays) with u_x
@@ -140,11 +150,46 @@ class FrictionRow {
   /// x_k (docs/friction.md) [N].
   double glued_adhesive_limit(std::int64_t i) const;
   /// After a_g changed: every glued spring within its new limit sticks, one over it slips to it
-  /// at once. Returns the work dissipated on both halves [J]; O(k), with tau_0 > 0 only.
+  /// at once. Returns the work dissipated on both halves [J]; O(k), with tau_0 > 0 only. For
+  /// springs that go one by one (own_springs()); keyed ones go through detach_glued and
+  /// attach_glued around the change.
   double limit_glued_springs();
-  /// Whether spring i is on the slip keys and sliders: not glued, under Coulomb's one
-  /// coefficient. The others (own_springs()) go one by one, counted in own_sliding_.
-  bool keyed(std::int64_t i) const { return i > glued_ && !individual_; }
+  /// Whether a change of a_g moves the keyed glued springs' limits (tau_0 > 0).
+  bool glued_keys_move() const { return glued_keyed_ && settings_.shear_strength > 0.0; }
+  /// Springs 1..n out of every set and sum, each sliding one's offset brought up to date first
+  /// (before a_g changes: their c_i goes with it).
+  void detach_glued(std::int64_t n);
+  /// Springs 1..n back in under the present a_g: within its limit a spring sticks where it is,
+  /// over it it slips to it at once (`relimit_sticking`: a sticking one too, else only a
+  /// sliding one, where every limit grew). Returns the work dissipated on both halves [J].
+  double attach_glued(std::int64_t n, bool relimit_sticking);
+  /// Whether spring i is on the slip keys and sliders: under Coulomb's one coefficient, not
+  /// glued or glued under GluedShear::limited. The others (own_springs()) go one by one,
+  /// counted in own_sliding_; glued ones under GluedShear::unlimited only stick.
+  bool keyed(std::int64_t i) const {
+    return !individual_ && (i > glued_ || settings_.glued == GluedShear::limited);
+  }
+  /// A glued spring on the keys (GluedShear::limited).
+  bool keyed_glued(std::int64_t i) const { return glued_keyed_ && i <= glued_; }
+  /// Whether keyed glued spring i is in the class of those in tension.
+  bool in_tension(std::int64_t i) const {
+    return glued_images_.forward_key(i) != std::numeric_limits<double>::infinity();
+  }
+  /// Puts keyed glued spring i in its class (glued_images_).
+  void classify(std::int64_t i, bool tension);
+  /// Moves keyed glued spring i to the other class, where d crossed its image.
+  void change_class(std::int64_t i);
+  /// Whether every keyed glued spring's class is right at d (pressed: g <= d; in tension: g >=
+  /// d). Between events it is (each crossing is an event); at a d away from the present
+  /// position (an equilibrium's search, a jump) the sums are corrected spring by spring.
+  bool classes_hold(double indentation) const;
+  /// sum over the keyed glued sliders of their exact f_x less what their class's sums give at
+  /// d [N]: O(k), where classes_hold(d) is false.
+  double misclassed_force(double indentation) const;
+  double misclassed_slope(double indentation) const;  ///< the same for dF_x/dd / 2 [N/m]
+  /// The glued spring's keys against p+- (pressed) or u_x (in tension): o -+ r g -+ c/kx, or the
+  /// p at which it stuck on the side it slid to (`stuck_from`).
+  void insert_keys(std::int64_t i, int stuck_from);
   /// Each keeps the sums, and the keys or sliders of a keyed spring, as spring i joins or leaves
   /// the sticking (sliding) springs; `stuck_from`: the direction of the slide that just ended
   /// (0: none).
@@ -155,6 +200,10 @@ class FrictionRow {
   std::int64_t first_own_sliding() const;  ///< of own_springs(); 0 when none
   double sliding_stick_radius() const;     ///< stick_radius with a spring sliding
   double advance_sliding(const LinearMotion& motion, double t);  ///< advance, some sliding
+  /// next_event's part for the keyed glued springs: the slips and sticks of those in tension,
+  /// and the next class change, which goes first at its t.
+  void glued_events(const LinearMotion& motion, double end,
+                    std::optional<RowFrictionEvent>& first) const;
 
   FrictionSettings settings_;
   double normal_stiffness_;      ///< E* dx [N/m]
@@ -175,15 +224,25 @@ class FrictionRow {
   std::array<IndexSet, 2> sliders_;              ///< not glued, sliding along +x, -x
   std::array<CompensatedSum, 2> slider_images_;  ///< their sums of g_i [m]
   std::int64_t own_sliding_ = 0;  ///< springs sliding that go one by one (own_springs)
+  /// Glued springs are on the keys (GluedShear::limited under Coulomb's law).
+  bool glued_keyed_;
+  /// The sticking glued springs in tension: o + c/kx and o - c/kx, against u_x.
+  SlipKeys tension_keys_;
+  std::array<IndexSet, 2> tension_sliders_;  ///< glued, in tension, sliding along +x, -x
+  /// Their sums of c_i (their whole limit) [N]; with tau_0 > 0 only.
+  std::array<CompensatedSum, 2> tension_limits_;
+  /// The sums of c_i of the glued sliders of sliders_ (pressed) [N]; with tau_0 > 0 only.
+  std::array<CompensatedSum, 2> slider_adhesion_;
+  /// The keyed glued springs by class: a pressed one with keys (+inf, g_i), one in tension with
+  /// (g_i, -inf), so that backward_last is the pressed one of the largest image and
+  /// forward_first the one in tension of the smallest: the next to cross as d falls (rises).
+  SlipKeys glued_images_;
   /// Every spring in contact goes one by one, with its own law (a law other than Coulomb's).
   bool individual_;
   std::vector<SlipLimit> laws_;  ///< individual_: spring i's law while it is not glued
   /// The springs 1..own_springs() go one by one: every spring in contact under a law of its
-  /// own, the glued ones under glued = "coulomb", none else (they are on the keys).
-  std::int64_t own_springs() const {
-    if (individual_) return in_contact();
-    return settings_.glued == GluedShear::limited ? glued_ : 0;
-  }
+  /// own, none else (they are on the keys).
+  std::int64_t own_springs() const { return individual_ ? in_contact() : 0; }
 };
 
 }  // namespace mdrsim

@@ -207,7 +207,7 @@ void ProgramRow::glue_at(double u) {
     contact_images_.add(image(glued_));
     if (friction_) friction_->touch(image(glued_), u);
   }
-  if (friction_) friction_->glue_next();
+  if (friction_) friction_->glue_next(normal_.rest);
   if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_, u});
   glued_offsets_.add(u);
 }

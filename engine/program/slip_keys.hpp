@@ -47,6 +47,8 @@ class SlipKeys {
   SlipKey forward_first() const;
   /// The largest backward key (value -inf, spring 0 when empty).
   SlipKey backward_last() const;
+  /// Member i's forward key.
+  double forward_key(std::int64_t i) const { return forward_.key(i); }
 
  private:
   /// One side: the least (key, tie i) of its members.

@@ -140,7 +140,7 @@ TEST(FrictionRow, CattaneoMindlinWithAShearStrengthAtTwoSpringCounts) {
   std::vector<double> errors;
   for (const std::int64_t n : {400, 800}) {
     FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedShear::limited, tau0});
-    for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
+    for (std::int64_t i = 1; i <= n; ++i) row.glue_next(kD);
     const double dx = kA / static_cast<double>(n);
     // The line load min(G* u, mu E* (d - g) + 2 tau_0 sqrt(a^2 - x^2)) falls from at most its
     // centre's value to 0.
@@ -171,7 +171,7 @@ TEST(FrictionRow, ALetGoLowersEveryGluedSpringsShearStrength) {
   const std::int64_t n = 200;
   const double tau0 = 0.25 * kMu * kModulus * kD / kA;
   FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedShear::limited, tau0});
-  for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
+  for (std::int64_t i = 1; i <= n; ++i) row.glue_next(kD);
   const double dx = kA / static_cast<double>(n);
   const double kz = kModulus * dx;
   const double kx = kShearModulus * dx;
@@ -210,7 +210,7 @@ TEST(FrictionRow, StickingGluedSpringsThatSlipAtALetGoLeaveTheSumsRight) {
   const std::int64_t n = 200;
   const double tau0 = 0.25 * kMu * kModulus * kD / kA;
   FrictionRow row = pressed_row(n, {kMu, mdrsim::GluedShear::limited, tau0});
-  for (std::int64_t i = 1; i <= n; ++i) row.glue_next();
+  for (std::int64_t i = 1; i <= n; ++i) row.glue_next(kD);
   const double u = 0.3 * (kMu * kModulus * kD + 2.0 * tau0 * kA) / kShearModulus;
   double work = 0.0;
   drive(row, shear(0.0, u), 1.0, work);
@@ -338,7 +338,7 @@ TEST(FrictionRow, LimitedGluedSpringsSlideInTensionLikeTheBruteForce) {
   for (std::int64_t i = 1; i <= n; ++i) {
     images.push_back(profile.mdr_image(row.position(i)));
     row.touch(images.back(), 0.0);
-    row.glue_next();
+    row.glue_next(kD);
   }
   fr::BruteForceRow brute(images, dx, kModulus, kShearModulus, kMu, n, tau0);
   brute.move_to(kD, 0.0, 10);
@@ -359,7 +359,7 @@ TEST(FrictionRow, LimitedGluedSpringsSlideInTensionLikeTheBruteForce) {
   FrictionRow unlimited(kMaterial, {kMu}, dx);
   for (std::int64_t i = 1; i <= n; ++i) {
     unlimited.touch(images[static_cast<std::size_t>(i - 1)], 0.0);
-    unlimited.glue_next();
+    unlimited.glue_next(kD);
   }
   EXPECT_FALSE(unlimited.next_event({0.0, kD, 0.0, -0.4 * kD, 1.5 * us}, 1.0));
   const double stretched = 2.0 * n * kShearModulus * dx * 1.5 * us;  // 2 N kx u: all stuck
@@ -451,7 +451,7 @@ TEST(FrictionRow, ASpringWhoseGlueLetsGoSlipsToItsLimit) {
   const double dx = 1e-6;
   FrictionRow row(kMaterial, {kMu}, dx);
   row.touch(0.0, 0.0);
-  row.glue_next();
+  row.glue_next(kD);
   const double limit = kMu * kModulus * dx * kD;
   const double u = 2.0 * limit / (kShearModulus * dx);
   EXPECT_DOUBLE_EQ(row.let_go_boundary(kD, u), 2.0 * limit * (u / 2.0));
@@ -606,7 +606,7 @@ TEST(FrictionRow, IndexedEventsEqualTheSpringBySpringLaw) {
       };
       touch_pressed();
       for (int k = 0; k < 12; ++k) {
-        row.glue_next();
+        row.glue_next(d);
         ++oracle.glued;
       }
       struct Leg {
