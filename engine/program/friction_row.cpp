@@ -136,7 +136,8 @@ void FrictionRow::change_class(std::int64_t i) {
 }
 
 bool FrictionRow::classes_hold(double indentation) const {
-  if (glued_images_.empty()) return true;
+  // A sticking spring's force does not depend on its class: only sliders' classes count.
+  if (glued_sliding_ == 0) return true;
   return glued_images_.backward_last().value <= indentation &&
          glued_images_.forward_first().value >= indentation;
 }
@@ -231,6 +232,7 @@ void FrictionRow::add_sliding(std::int64_t i) {
   const Spring& s = springs_[index(i)];
   const std::size_t at = side(s.state.sliding);
   if (keyed_glued(i)) {
+    ++glued_sliding_;
     const double c = glued_keys_move() ? glued_adhesive_limit(i) : 0.0;
     if (in_tension(i)) {
       tension_sliders_[at].insert(i);
@@ -251,6 +253,7 @@ void FrictionRow::remove_sliding(std::int64_t i) {
   const Spring& s = springs_[index(i)];
   const std::size_t at = side(s.state.sliding);
   if (keyed_glued(i)) {
+    --glued_sliding_;
     const double c = glued_keys_move() ? glued_adhesive_limit(i) : 0.0;
     if (in_tension(i)) {
       tension_sliders_[at].erase(i);

@@ -179,9 +179,10 @@ class FrictionRow {
   void classify(std::int64_t i, bool tension);
   /// Moves keyed glued spring i to the other class, where d crossed its image.
   void change_class(std::int64_t i);
-  /// Whether every keyed glued spring's class is right at d (pressed: g <= d; in tension: g >=
-  /// d). Between events it is (each crossing is an event); at a d away from the present
-  /// position (an equilibrium's search, a jump) the sums are corrected spring by spring.
+  /// Whether every keyed glued slider's class is right at d (pressed: g <= d; in tension: g >=
+  /// d; a sticking spring's force knows no class). Between events it is (each crossing is an
+  /// event); at a d away from the present position (an equilibrium's search, a jump) the sums are
+  /// corrected spring by spring.
   bool classes_hold(double indentation) const;
   /// sum over the keyed glued sliders of their exact f_x less what their class's sums give at
   /// d [N]: O(k), where classes_hold(d) is false.
@@ -237,6 +238,7 @@ class FrictionRow {
   /// (g_i, -inf), so that backward_last is the pressed one of the largest image and
   /// forward_first the one in tension of the smallest: the next to cross as d falls (rises).
   SlipKeys glued_images_;
+  std::int64_t glued_sliding_ = 0;  ///< keyed glued springs sliding
   /// Every spring in contact goes one by one, with its own law (a law other than Coulomb's).
   bool individual_;
   std::vector<SlipLimit> laws_;  ///< individual_: spring i's law while it is not glued
