@@ -107,6 +107,28 @@ ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, b
   return {a_max, front};
 }
 
+/// Samples between the touch and a root of the gluing depth that first_crossing checks.
+constexpr int kCrossingSamples = 1024;
+
+/// The first radius in (0, root] where `excess` (the gluing depth less the deepest depth,
+/// negative at the centre) turns positive. Where dgamma or the profile varies with the radius
+/// the gluing depth may cross d_max more than once, and a root found anywhere in the bracket
+/// may be a later crossing: the approach's front stops at the first (it glues spring by spring
+/// from the centre), so a row framed at a later one never reaches spring N and its front sits
+/// at a different fraction of a spacing in every row (the work of the pinned turn then jumps
+/// by a sawtooth that Richardson cannot remove). Samples at kCrossingSamples points of
+/// [0, root]; a crossing narrower than their spacing stays unseen.
+template <class Excess>
+double first_crossing(const Excess& excess, double root) {
+  double lo = 0.0;
+  for (int i = 1; i < kCrossingSamples; ++i) {
+    const double x = root * static_cast<double>(i) / kCrossingSamples;
+    if (excess(x) > 0.0) return bracketed_root(excess, lo, x);
+    lo = x;
+  }
+  return root;
+}
+
 /// Where every normal stage holds the depth (fixed grips), the deepest depth d_max is known
 /// before the run, and the front there is advancing (a depth never reached before): a_max is
 /// its continuum radius, with no pilot. Nothing where a stage holds a force or pushes on
@@ -145,7 +167,7 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   if (!std::isfinite(hi) || hi > profile.outer_radius() || !(excess(hi) > 0.0)) {
     return std::nullopt;
   }
-  const double a_max = bracketed_root(excess, 0.0, hi);
+  const double a_max = first_crossing(excess, bracketed_root(excess, 0.0, hi));
   if (!(a_max > 0.0)) return std::nullopt;
   return frame_at(scene, a_max, deepest, glued_edge && !scene.material.glues_on_touch());
 }
