@@ -242,6 +242,16 @@ class Tracker {
     }
   }
 
+  /// The front pinned at `from`'s radius while d runs to `to`'s (F linear in d).
+  void pinned(const RadialFrontState& from, const RadialFrontState& to,
+              std::vector<RadialFrontSegment>& path) {
+    path.push_back({from, to});
+    energy_ += 0.5 * (from.normal_force + to.normal_force) * (to.indentation - from.indentation);
+    for (const RadialFrontState& end : {from, to}) {
+      if (end.normal_force < peak_tension_.normal_force) peak_tension_ = end;
+    }
+  }
+
   /// Starts the record of the most negative F at the turn of the path.
   void start_retract(const RadialFrontState& turn) { peak_tension_ = turn; }
 
@@ -344,23 +354,60 @@ std::size_t RadialLoopReference::jumps_out() const { return jumps.size() - jumps
 RadialLoopReference radial_fixed_grips_loop(double effective_modulus, double tip_radius,
                                             const RadialWorkOfAdhesion& work_of_adhesion,
                                             double deepest_indentation, int samples_per_scale) {
+  return radial_fixed_grips_loop(effective_modulus, tip_radius, work_of_adhesion, work_of_adhesion,
+                                 deepest_indentation, samples_per_scale);
+}
+
+RadialLoopReference radial_fixed_grips_loop(double effective_modulus, double tip_radius,
+                                            const RadialWorkOfAdhesion& work_of_adhesion,
+                                            const RadialWorkOfAdhesion& approach,
+                                            double deepest_indentation, int samples_per_scale) {
   check_arguments(effective_modulus, tip_radius, work_of_adhesion, deepest_indentation,
                   samples_per_scale);
+  check_arguments(effective_modulus, tip_radius, approach, deepest_indentation, samples_per_scale);
+  const double finest = std::min(work_of_adhesion.finest_scale, approach.finest_scale);
+  RadialLoopReference loop;
+
+  // Approach: the touch at d = 0 from a = 0, then up the advancing curve's branches to d_max.
+  const EquilibriumCurve advancing(effective_modulus, tip_radius, approach, deepest_indentation,
+                                   samples_per_scale);
+  Tracker approach_tracker(advancing, finest);
+  double a_max = 0.0;
+  {
+    const std::vector<Branch>& branches = advancing.branches();
+    const std::size_t last = branches.size() - 1;  // rising: it reaches d_max
+    // The first rising branch from `from` on that d(a) passes through d upward: where a
+    // jump-in at d lands (the first passage of d(a) through d beyond the jump).
+    const auto landing_in = [&](std::size_t from, double d) {
+      for (std::size_t j = from; j < last; ++j) {
+        if (branches[j].rising && advancing.end_depth(branches[j]) > d) return j;
+      }
+      return last;
+    };
+    std::size_t k = landing_in(0, 0.0);
+    double d = 0.0;
+    if (const double a = advancing.radius_on(branches[k], 0.0); a > 0.0) {
+      loop.jumps.push_back({0.0, 0.0, a, true});
+    }
+    while (k != last && advancing.end_depth(branches[k]) < deepest_indentation) {
+      const double top = advancing.end_depth(branches[k]);
+      approach_tracker.follow(branches[k], d, top, loop.approach, false);
+      const std::size_t j = landing_in(k + 1, top);
+      loop.jumps.push_back(
+          {top, advancing.hi(branches[k]), advancing.radius_on(branches[j], top), true});
+      k = j;
+      d = top;
+    }
+    approach_tracker.follow(branches[k], d, deepest_indentation, loop.approach, false);
+    a_max = advancing.radius_on(branches[k], deepest_indentation);
+  }
+
+  // Retract on the receding curve, which lies below the advancing one and so reaches d_max
+  // beyond a_max.
   const EquilibriumCurve curve(effective_modulus, tip_radius, work_of_adhesion, deepest_indentation,
                                samples_per_scale);
   const std::vector<Branch>& branches = curve.branches();
-  const std::size_t last = branches.size() - 1;  // rising: it reaches d_max
-  Tracker tracker(curve, work_of_adhesion.finest_scale);
-  RadialLoopReference loop;
-
-  // The first rising branch from `from` on that d(a) passes through d upward: where a jump-in
-  // at d lands (the first passage of d(a) through d beyond the jump).
-  const auto landing_in = [&](std::size_t from, double d) {
-    for (std::size_t j = from; j < last; ++j) {
-      if (branches[j].rising && curve.end_depth(branches[j]) > d) return j;
-    }
-    return last;
-  };
+  Tracker tracker(curve, finest);
   // The nearest rising branch below `from` whose bottom lies under d: where a jump-out at d
   // lands; none, the contact separates.
   const auto landing_out = [&](std::size_t from, double d) -> std::optional<std::size_t> {
@@ -369,26 +416,38 @@ RadialLoopReference radial_fixed_grips_loop(double effective_modulus, double tip
     }
     return std::nullopt;
   };
-
-  // Approach: the touch at d = 0 from a = 0, then up the branches to d_max.
-  std::size_t k = landing_in(0, 0.0);
-  double d = 0.0;
-  if (const double a = curve.radius_on(branches[k], 0.0); a > 0.0) {
-    loop.jumps.push_back({0.0, 0.0, a, true});
+  // The branch and piece of the receding curve that hold a_max, and d there.
+  std::size_t k = branches.size() - 1;
+  std::size_t piece = 0;
+  for (std::size_t b = 0; b < branches.size(); ++b) {
+    if (curve.hi(branches[b]) >= a_max) {
+      k = b;
+      break;
+    }
   }
-  while (k != last && curve.end_depth(branches[k]) < deepest_indentation) {
-    const double top = curve.end_depth(branches[k]);
-    tracker.follow(branches[k], d, top, loop.approach, false);
-    const std::size_t j = landing_in(k + 1, top);
-    loop.jumps.push_back({top, curve.hi(branches[k]), curve.radius_on(branches[j], top), true});
-    k = j;
-    d = top;
+  for (std::size_t i = branches[k].first; i <= branches[k].last; ++i) {
+    piece = i;
+    if (curve.pieces()[i].hi >= a_max) break;
   }
-  tracker.follow(branches[k], d, deepest_indentation, loop.approach, false);
-
-  // Retract: down the branches from d_max until no rising branch is left below.
-  d = deepest_indentation;
-  tracker.start_retract(curve.state(curve.radius_on(branches[k], d), d));
+  // One w both ways: the front turns on its branch at d_max itself.
+  const bool reversible = &approach == &work_of_adhesion;
+  double d = reversible ? deepest_indentation : curve.depth(a_max, curve.pieces()[piece].interval);
+  const RadialFrontState turn = curve.state(a_max, deepest_indentation);
+  tracker.start_retract(turn);
+  if (d < deepest_indentation) tracker.pinned(turn, curve.state(a_max, d), loop.retract);
+  if (!branches[k].rising) {
+    // A falling branch: the front cannot recede at a_max, it jumps back at once.
+    const std::optional<std::size_t> j = landing_out(k, d);
+    if (!j) {
+      loop.separation = curve.state(a_max, d);
+      loop.jumps.push_back({d, a_max, 0.0, false});
+      loop.peak_tension = tracker.peak_tension();
+      loop.loop_energy = approach_tracker.energy() + tracker.energy();
+      return loop;
+    }
+    loop.jumps.push_back({d, a_max, curve.radius_on(branches[*j], d), false});
+    k = *j;
+  }
   for (;;) {
     const double bottom = curve.start_depth(branches[k]);
     tracker.follow(branches[k], d, bottom, loop.retract, true);
@@ -404,7 +463,7 @@ RadialLoopReference radial_fixed_grips_loop(double effective_modulus, double tip
     d = bottom;
   }
   loop.peak_tension = tracker.peak_tension();
-  loop.loop_energy = tracker.energy();
+  loop.loop_energy = approach_tracker.energy() + tracker.energy();
   return loop;
 }
 

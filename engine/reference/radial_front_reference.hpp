@@ -94,4 +94,16 @@ RadialLoopReference radial_fixed_grips_loop(double effective_modulus, double tip
                                             double deepest_indentation,
                                             int samples_per_scale = 200);
 
+/// The same loop where the front advances on its own w_a(r) <= w(r) (`approach`) and recedes on
+/// w(r): the approach follows d_a(a) = g(a) - sqrt(2 pi a w_a(a)/E*) to d_max, where the front
+/// sits at the first passage a_max of d_a(a) through d_max; the retract holds it pinned there
+/// (F linear in d) until d falls to d(a_max), then follows d(a) as above: along its branch
+/// where d'(a_max) > 0, else at once jumping back to the nearest rising branch below (none:
+/// separation).
+RadialLoopReference radial_fixed_grips_loop(double effective_modulus, double tip_radius,
+                                            const RadialWorkOfAdhesion& work_of_adhesion,
+                                            const RadialWorkOfAdhesion& approach,
+                                            double deepest_indentation,
+                                            int samples_per_scale = 200);
+
 }  // namespace mdrsim::radial_front_reference
