@@ -22,6 +22,7 @@ set(mdrsim_slow_tests
     "^StatusMargin\\.TheStatusDoesNotDependOnRtol$"  # 1.5 s
     "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$"  # 1.4 s
     "^RoughAdhesion\\.FrontPinnedAtAStepFarOutside$"  # 4.9 s: rows of 2^19 springs
+    "^ProgramRtolPinned\\.RebindingReloadWorkMeetsRtolAgainstItsClosedForm$"  # 3 s: rows of 2^24
     "^RouteAgreement\\.")  # 120 scenes on both routes, the row at rtol 1e-8: 5 s
 
 # Also labelled `unsanitized`: cases that run the paths other cases cover, on bigger rows or
@@ -29,6 +30,7 @@ set(mdrsim_slow_tests
 # out of its sanitizer stage (ctest -LE unsanitized) and runs them in its first stage only.
 set(mdrsim_unsanitized_tests
     "^RoughAdhesion\\.FrontPinnedAtAStepFarOutside$"
+    "^ProgramRtolPinned\\."
     "^RandomSet/RtolGuarantee\\.WithinRtolOfTheContinuum/rtol1e[46]_none"
     "^RandomSet/RtolGuarantee\\.WithinRtolOfTheContinuum/rtol1e6_"
     "^RandomScenes\\.PlainRowAgreesWithTheReference$"

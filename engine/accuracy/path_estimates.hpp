@@ -97,8 +97,10 @@ struct WorkChoice {
 /// where `extrapolation` allows it (automatic: where its estimate is the smaller). The work
 /// is a sum of exact trapezoids between the rows' changes, so its error is that of the
 /// changes' places: O(dx), smooth where the states are (the reversible cycle: -1.73e-3,
-/// -8.82e-4, -4.43e-4, -2.23e-4 relative on 256 ... 2048 springs). Only the stages need to
-/// match across rows.
+/// -8.82e-4, -4.43e-4, -2.23e-4 relative on 256 ... 2048 springs). Not where a stage starts
+/// with its front pinned off the row's springs (a peeling front reloaded): that stage's normal
+/// work and the program's are a sawtooth in the spacing, and take the plain value with a bound
+/// on the pinned strip's work added to the estimate. Only the stages need to match across rows.
 std::vector<WorkChoice> choose_works(std::vector<RunResult>& rows,
                                      DiscretizationOptions::Extrapolation extrapolation);
 
