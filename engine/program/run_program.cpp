@@ -117,7 +117,8 @@ constexpr int kCrossingSamples = 1024;
 /// from the centre), so a row framed at a later one never reaches spring N and its front sits
 /// at a different fraction of a spacing in every row (the work of the pinned turn then jumps
 /// by a sawtooth that Richardson cannot remove). Samples at kCrossingSamples points of
-/// [0, root]; a crossing narrower than their spacing stays unseen.
+/// [0, root]; a crossing narrower than their spacing stays unseen. For an approach work of
+/// adhesion that varies with the radius (the profile's ripples are the row's to resolve).
 template <class Excess>
 double first_crossing(const Excess& excess, double root) {
   double lo = 0.0;
@@ -167,7 +168,11 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   if (!std::isfinite(hi) || hi > profile.outer_radius() || !(excess(hi) > 0.0)) {
     return std::nullopt;
   }
-  const double a_max = first_crossing(excess, bracketed_root(excess, 0.0, hi));
+  // Only an approach work of adhesion that varies with the radius is looked through: on a
+  // wavy profile the row's own spacing decides which ripples its front sees.
+  const double root = bracketed_root(excess, 0.0, hi);
+  const double a_max =
+      scene.material.approach_work_of_adhesion_by_radius ? first_crossing(excess, root) : root;
   if (!(a_max > 0.0)) return std::nullopt;
   return frame_at(scene, a_max, deepest, glued_edge && !scene.material.glues_on_touch());
 }
