@@ -125,8 +125,9 @@ std::optional<ContactSnapshot> ProgramFront::peak(const ContactSnapshot& plain) 
 std::optional<ContactSnapshot> ProgramFront::fold(ProgramRow& row, const StageLine& line, double t,
                                                   const ContactSnapshot& before) {
   const std::int64_t k = row.glued() + 1;  // the spring that let go at t
-  if (!previous_let_go_ || previous_let_go_->spring != k + 1 || row.in_contact() != k - 1 ||
-      k < 3 || !(previous_let_go_->t < t)) {
+  const auto& previous = previous_single_;
+  if (!previous || !previous->let_go || previous->spring != k + 1 || row.in_contact() != k - 1 ||
+      k < 3 || !(previous->t < t)) {
     return std::nullopt;
   }
   // The let-go of spring k - 1 along the stage line (d and u_x affine in t while the springs
@@ -145,7 +146,7 @@ std::optional<ContactSnapshot> ProgramFront::fold(ProgramRow& row, const StageLi
   if (margin(t) > 0.0) return std::nullopt;
   // Back from t in steps that double from the last let-go's distance (which is tiny where
   // the fold falls between springs k + 1 and k).
-  double behind = previous_let_go_->t;
+  double behind = previous->t;
   for (int i = 0; i < 64 && !(margin(behind) > 0.0); ++i) behind = t - 2.0 * (t - behind);
   if (!(margin(behind) > 0.0)) return std::nullopt;  // broken at rest: a shear-off, not a fold
   const double t_inner = bracketed_root(margin, behind, t);
@@ -153,9 +154,40 @@ std::optional<ContactSnapshot> ProgramFront::fold(ProgramRow& row, const StageLi
                                           [](const ProgramRow& r) { return r.snapshot(); });
 
   // The fold is the largest parameter of the let-go branch: the vertex of -t.
-  const auto vertex = parabola_vertex(-t_inner, -t, -previous_let_go_->t);
+  const auto vertex = parabola_vertex(-t_inner, -t, -previous->t);
   if (!vertex) return std::nullopt;
-  ContactSnapshot q = interpolate_snapshots(inner, before, previous_let_go_->before, *vertex);
+  ContactSnapshot q = interpolate_snapshots(inner, before, previous->before, *vertex);
+  q.springs_in_contact = before.springs_in_contact;
+  return q;
+}
+
+std::optional<ContactSnapshot> ProgramFront::advancing_fold(ProgramRow& row, const StageLine& line,
+                                                            double t,
+                                                            const ContactSnapshot& before) {
+  const std::int64_t k = row.glued();  // the spring that glued at t
+  const auto& previous = previous_single_;
+  if (!previous || previous->let_go || previous->spring != k - 1 || row.in_contact() != k ||
+      k < 3 || !row.can_glue(k + 1) || !(previous->t < t)) {
+    return std::nullopt;
+  }
+  // The glue of spring k + 1 along the stage line (d affine in t while the springs stay): it
+  // is due already at t, so it lies behind, where its gap is still above its limit.
+  const double d = row.indentation();
+  const double d_per_t = row.indentation_per_held() * line.normal.rate;
+  const double limit = row.gluing_depth(k + 1);
+  const auto margin = [&](double at) { return limit - (d + d_per_t * (at - t)); };
+  if (margin(t) > 0.0) return std::nullopt;
+  double behind = previous->t;
+  for (int i = 0; i < 64 && !(margin(behind) > 0.0); ++i) behind = t - 2.0 * (t - behind);
+  if (!(margin(behind) > 0.0)) return std::nullopt;
+  const double t_outer = bracketed_root(margin, behind, t);
+  const ContactSnapshot outer = row.trial([&](ProgramRow& r) { line.place(r, t_outer); },
+                                          [](const ProgramRow& r) { return r.snapshot(); });
+
+  // The fold is the largest parameter of the gluing branch: the vertex of -t.
+  const auto vertex = parabola_vertex(-previous->t, -t, -t_outer);
+  if (!vertex) return std::nullopt;
+  ContactSnapshot q = interpolate_snapshots(previous->before, before, outer, *vertex);
   q.springs_in_contact = before.springs_in_contact;
   return q;
 }

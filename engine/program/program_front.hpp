@@ -40,29 +40,29 @@ class ProgramFront {
   explicit ProgramFront(const DetachmentCriterion& criterion) : criterion_(&criterion) {}
 
   void stage_started() { other_change(); }
-  /// Spring k + 1 glued alone from the equilibrium `before`.
-  void glued_one(const ContactSnapshot& before) {
+  /// Spring k glued alone at t from the equilibrium `before` (k - 1 glued).
+  void glued_one(double t, std::int64_t k, const ContactSnapshot& before) {
     phase_ = 0.0;
-    previous_let_go_.reset();
+    previous_single_ = PreviousSingle{t, k, before, false};
     branch_state(false, before);
   }
   /// Spring k let go alone at t from the equilibrium `before`.
   void let_go_one(double t, std::int64_t k, const ContactSnapshot& before) {
     phase_ = 1.0;
-    previous_let_go_ = PreviousLetGo{t, k, before};
+    previous_single_ = PreviousSingle{t, k, before, true};
     branch_state(true, before);
   }
   /// A change that leaves the glued front (a touch, a lift, a fall-in) or a jump ends a run
   /// of single changes.
   void other_change() {
-    previous_let_go_.reset();
+    previous_single_.reset();
     branch_size_ = 0;
   }
   /// What a cascade of one change at t did to the front.
   void track(const Cascade& cascade, double t) {
     if (cascade.changes != 1) return;
     if (cascade.first == Change::glue) {
-      glued_one(cascade.before);
+      glued_one(t, cascade.glued + 1, cascade.before);
     } else if (cascade.first == Change::let_go) {
       let_go_one(t, cascade.glued, cascade.before);
     } else {
@@ -92,6 +92,14 @@ class ProgramFront {
   /// equilibria are interpolated there.
   std::optional<ContactSnapshot> fold(ProgramRow& row, const StageLine& line, double t,
                                       const ContactSnapshot& before);
+  /// The fold of a run of single glues, where the advancing front jumps in: spring k glued at
+  /// t from `before`, `row` is the row after it (k glued, still at t) and spring k + 1 is due
+  /// too. The gluing parameter of spring n along the advancing branch has its largest value
+  /// there; the parabola through those of springs k - 1, k and k + 1 (the last root-found
+  /// behind t along the stage's line) locates it between springs, and the three equilibria
+  /// before those glues are interpolated there.
+  std::optional<ContactSnapshot> advancing_fold(ProgramRow& row, const StageLine& line, double t,
+                                                const ContactSnapshot& before);
 
  private:
   /// The criterion's margin at the boundary spring of `row` (> 0: it holds).
@@ -99,14 +107,16 @@ class ProgramFront {
   /// The equilibrium before a single change, on the branch of one kind of change.
   void branch_state(bool let_go, const ContactSnapshot& before);
 
-  struct PreviousLetGo {
+  /// The last single change of a run: spring `spring` glued or let go at t from `before`.
+  struct PreviousSingle {
     double t;
     std::int64_t spring;
     ContactSnapshot before;
+    bool let_go;
   };
   const DetachmentCriterion* criterion_;
   std::optional<double> phase_;
-  std::optional<PreviousLetGo> previous_let_go_;
+  std::optional<PreviousSingle> previous_single_;
   std::array<ContactSnapshot, 3> branch_{};
   int branch_size_ = 0;
   bool branch_let_go_ = false;

@@ -275,9 +275,13 @@ bool ProgramRunner::run_changes(std::optional<Change> first, Cascade& cascade, s
   Change change{};
   while (due(change)) {
     if (cascade.changes >= limit) return true;
-    if (front_ && cascade.changes == 1 && cascade.first == Change::let_go &&
-        change == Change::let_go) {
-      cascade.refined_before = front_->fold(at_.row, at_.line, at_.t, cascade.before);
+    if (front_ && cascade.changes == 1 && cascade.first == change) {
+      // The critical point of a jump out of a run of let-gos, or into one of glues.
+      if (change == Change::let_go) {
+        cascade.refined_before = front_->fold(at_.row, at_.line, at_.t, cascade.before);
+      } else if (change == Change::glue) {
+        cascade.refined_before = front_->advancing_fold(at_.row, at_.line, at_.t, cascade.before);
+      }
     }
     if (cascade.changes > cap || cascade.friction_events > cap) {
       // Rounding at values far from the scene's scales (a push until separation that goes on

@@ -193,7 +193,7 @@ TEST(ProgramFront, APinnedFrontKeepsTheLastPhase) {
   ASSERT_TRUE(kept.has_value());
   EXPECT_NEAR(kept->contact_radius, x + phase * kSpacing, 1e-12 * x);
 
-  front.glued_one(pinned.snapshot());
+  front.glued_one(0.0, 110, pinned.snapshot());
   EXPECT_NEAR(front.at_rest(pinned)->contact_radius, x, 1e-12 * x);
   front.let_go_one(0.0, 111, pinned.snapshot());
   EXPECT_NEAR(front.at_rest(pinned)->contact_radius, x + kSpacing, 1e-12 * x);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -66,9 +67,9 @@ radial_front_reference::RadialWorkOfAdhesion sinusoid(double mean, double amplit
           .finest_scale = kWavelength};
 }
 
-radial_front_reference::RadialLoopReference tracked(double amplitude) {
+radial_front_reference::RadialLoopReference tracked(double amplitude, double deepest = kDeepest) {
   return radial_front_reference::radial_fixed_grips_loop(kModulus, kRadius,
-                                                         sinusoid(kMean, amplitude), kDeepest);
+                                                         sinusoid(kMean, amplitude), deepest);
 }
 
 std::string sinusoid_text(double mean, double amplitude) {
@@ -76,10 +77,10 @@ std::string sinusoid_text(double mean, double amplitude) {
                      kWavelength);
 }
 
-RunResult row(double amplitude, const std::string& discretization) {
+RunResult row(double amplitude, const std::string& discretization, double deepest = kDeepest) {
   const std::string w = fmt::format("{{ mean = {:.17g}, amplitude = {}, wavelength = {} }}", kMean,
                                     amplitude, kWavelength);
-  return reversible_loop(kModulus, kRadius, w, kDeepest, -10.0, discretization);
+  return reversible_loop(kModulus, kRadius, w, deepest, -10.0, discretization);
 }
 
 struct Counts {
@@ -169,6 +170,88 @@ TEST(CrackFrontLoop, AnApproachOnHalfTheWorkMeetsRtolOnTheLoopEnergy) {
   std::printf("loop energy %.12g (tracker %.12g, error %.1e, estimate %.1e)\n", fine.work->normal,
               ref.loop_energy, error / ref.loop_energy,
               fine.accuracy.work_error_estimate->normal / ref.loop_energy);
+}
+
+/// Pressed to d = 0.8 the front crosses three waves on the approach, each a jump in at a local
+/// maximum of d(a): the fold of the advancing branch. (At d = 1 a fourth jump lands a few
+/// springs inside a_max, where coarse rows' landing states are not yet O(1/N).)
+constexpr double kDeepApproach = 0.8;
+
+/// The row's jumps in, less the touch (from no contact), in order.
+std::vector<const JumpRecord*> jumps_in_from_contact(const RunResult& r) {
+  std::vector<const JumpRecord*> in;
+  for (const JumpRecord& j : r.jumps) {
+    if (j.inward && j.critical.springs_in_contact > 0) in.push_back(&j);
+  }
+  return in;
+}
+
+/// The tracker's jumps in, less the touch.
+std::vector<radial_front_reference::RadialFrontJump> tracked_jumps_in(
+    const radial_front_reference::RadialLoopReference& ref) {
+  std::vector<radial_front_reference::RadialFrontJump> in;
+  for (const auto& j : ref.jumps) {
+    if (j.advancing && j.from_radius > 0.0) in.push_back(j);
+  }
+  return in;
+}
+
+/// F = E* (2 a d - 2 a^3 / (3R)) at the front a under d.
+double front_force(double a, double d) {
+  return kModulus * (2.0 * a * d - 2.0 * a * a * a / (3.0 * kRadius));
+}
+
+// Before each jump in the row reports its last equilibrium; located between springs at the fold
+// of the advancing branch (the largest gluing depth of a run of single glues) it converges as
+// O(1/N) and Richardson takes it to O(1/N^2): at rtol = 1e-6 every such state is within 1e-6 of
+// the tracker's local maximum of d(a) (measured 2e-9 to 7e-8 relative in F, 1e-11 in d), and
+// each estimate covers its error. The row's plain state sits on the spring before the fold
+// (1e-5 to 1e-4 off, an error no extrapolation removes).
+TEST(CrackFrontLoop, TheStatesBeforeEachJumpInAreTheTrackersFolds) {
+  const auto want = tracked_jumps_in(tracked(0.2, kDeepApproach));
+  ASSERT_EQ(want.size(), 3u);
+  const RunResult r = row(0.2, "rtol = 1e-6", kDeepApproach);
+  const auto got = jumps_in_from_contact(r);
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    SCOPED_TRACE(fmt::format("jump in {} at d = {}", i + 1, want[i].indentation));
+    const ContactSnapshot& c = got[i]->critical;
+    const double force = front_force(want[i].from_radius, want[i].indentation);
+    const double error = std::abs(c.normal_force - force);
+    EXPECT_LE(error, 1e-6 * std::abs(force));
+    ASSERT_TRUE(got[i]->critical_error_estimate.has_value());
+    EXPECT_LE(error, *got[i]->critical_error_estimate);
+    // d and a at the fold, where d'(a) = 0: d to the force's rtol, a (to which d is
+    // insensitive there) to sqrt(rtol) of the wavelength.
+    EXPECT_NEAR(c.indentation, want[i].indentation, 1e-6 * std::abs(want[i].indentation));
+    EXPECT_NEAR(c.contact_radius, want[i].from_radius, 1e-3 * kWavelength);
+  }
+}
+
+// rtol = 1e-3 is met by rows below 10^4 springs (the jumps' states located between springs,
+// every estimate within rtol of its force), and the jump-in states lie within it.
+TEST(CrackFrontLoop, RtolOneInAThousandTakesRowsBelowTenThousandSprings) {
+  const auto want = tracked_jumps_in(tracked(0.2, kDeepApproach));
+  const RunResult r = row(0.2, "rtol = 1e-3", kDeepApproach);
+  EXPECT_TRUE(r.accuracy.rtol_met);
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+  ASSERT_FALSE(r.accuracy.rows.empty());
+  EXPECT_LT(r.accuracy.rows.back(), 10000);
+  for (const JumpRecord& j : r.jumps) {
+    ASSERT_TRUE(j.critical_error_estimate.has_value());
+    EXPECT_LE(*j.critical_error_estimate, 1e-3 * std::abs(j.critical.normal_force));
+    if (j.end != JumpEnd::state) continue;
+    ASSERT_TRUE(j.after_error_estimate.has_value());
+    EXPECT_LE(*j.after_error_estimate, 1e-3 * std::abs(j.after.normal_force));
+  }
+  ASSERT_TRUE(r.work && r.accuracy.work_error_estimate);
+  EXPECT_LE(r.accuracy.work_error_estimate->normal, 1e-3 * std::abs(r.work->normal));
+  const auto got = jumps_in_from_contact(r);
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const double force = front_force(want[i].from_radius, want[i].indentation);
+    EXPECT_NEAR(got[i]->critical.normal_force, force, 1e-3 * std::abs(force));
+  }
 }
 
 }  // namespace crack_front
