@@ -27,6 +27,9 @@ struct Cascade {
   std::optional<Change> first;
   /// `before` located at the fold between springs (refining rows only).
   std::optional<ContactSnapshot> refined_before;
+  /// The stage parameter at `refined_before`: where the continuum jumps, which the row does
+  /// at its own last spring, O(dx^2) apart.
+  std::optional<double> fold_parameter;
   AxisWork work_before;          ///< the stage's work up to `before`
   const Stage* stage = nullptr;  ///< the stage it happened in
   /// A shear-off cascade's fold of the let-go branch above a_s, in spacings, where one lies

@@ -100,6 +100,13 @@ class ProgramFront {
   /// before those glues are interpolated there.
   std::optional<ContactSnapshot> advancing_fold(ProgramRow& row, const StageLine& line, double t,
                                                 const ContactSnapshot& before);
+  /// The stage parameter of the last fold that fold() or advancing_fold() located.
+  double fold_parameter() const { return fold_parameter_; }
+  /// at_rest of `row` moved along `line` to parameter t (its springs as they are), where the
+  /// front's phase is found there; the kept phase stays as it was. A jump's landing state at
+  /// its located fold: at the row's own jump parameter it carries the row's O(dx^2) sawtooth of
+  /// that parameter, which no extrapolation removes.
+  std::optional<ContactSnapshot> at_rest_at(ProgramRow& row, const StageLine& line, double t);
 
  private:
   /// The criterion's margin at the boundary spring of `row` (> 0: it holds).
@@ -117,6 +124,7 @@ class ProgramFront {
   const DetachmentCriterion* criterion_;
   std::optional<double> phase_;
   std::optional<PreviousSingle> previous_single_;
+  double fold_parameter_ = 0.0;
   std::array<ContactSnapshot, 3> branch_{};
   int branch_size_ = 0;
   bool branch_let_go_ = false;

@@ -234,6 +234,11 @@ void ProgramRunner::finish_cascade(const Cascade& cascade) {
   if (front_) {
     jump.refined_critical = cascade.refined_before;
     jump.refined_after = front_->at_rest(at_.row);
+    if (cascade.fold_parameter) {
+      if (auto landed = front_->at_rest_at(at_.row, at_.line, *cascade.fold_parameter)) {
+        jump.refined_after = landed;
+      }
+    }
     front_->other_change();
     front_->candidate(jump.refined_critical);
     front_->candidate(jump.refined_after);
@@ -282,6 +287,7 @@ bool ProgramRunner::run_changes(std::optional<Change> first, Cascade& cascade, s
       } else if (change == Change::glue) {
         cascade.refined_before = front_->advancing_fold(at_.row, at_.line, at_.t, cascade.before);
       }
+      if (cascade.refined_before) cascade.fold_parameter = front_->fold_parameter();
     }
     if (cascade.changes > cap || cascade.friction_events > cap) {
       // Rounding at values far from the scene's scales (a push until separation that goes on
