@@ -1,6 +1,7 @@
 // The subcommands of mdrsim: options as parsed, and the functions that carry them out.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,6 +21,14 @@ struct RunOptions {
 struct SweepOptions {
   std::string scene;
   std::vector<std::string> vary;  ///< KEY=VALUES, one per varied key (docs/sweeps.md)
+  std::vector<std::string> link;  ///< KEY=VALUES varied with a --vary key, not as a product
+  /// For each --link, how many --vary came before it on the command line (it joins the axis
+  /// of the last of them); empty: every --link follows the last --vary.
+  std::vector<std::size_t> link_after;
+  std::vector<std::string> where;  ///< conditions a row must pass to be run
+  std::string design;              ///< grid (default), random or latin
+  std::string samples;             ///< a random design's sample count, as given
+  std::string seed;                ///< a random design's seed, as given
   std::vector<std::string> sets;
   std::string csv = "-";
   int threads = 1;

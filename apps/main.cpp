@@ -150,9 +150,28 @@ int main(int argc, char** argv) {
   sweep_app
       ->add_option("--vary", sweep.vary,
                    "KEY=FROM:TO:COUNT (evenly spaced), KEY=FROM:TO:COUNT:log or KEY=V1,V2,...; "
-                   "repeat it for the product of the keys")
+                   "repeat it for the product of the keys (a random design: KEY=FROM:TO or "
+                   "KEY=FROM:TO:log)")
       ->required()
       ->allow_extra_args(false);
+  CLI::Option* link_option =
+      sweep_app
+          ->add_option("--link", sweep.link,
+                       "KEY=VALUES varied together with the --vary before it (as many values, "
+                       "or the same draw of a random design), not as a product")
+          ->allow_extra_args(false);
+  sweep_app
+      ->add_option("--where", sweep.where,
+                   "run only the rows where 'A OP B' holds (OP: <=, <, >=, >, ==, !=; A, B: a "
+                   "varied key, a number or NUMBER*KEY); repeatable, all must hold")
+      ->allow_extra_args(false);
+  sweep_app->add_option("--design", sweep.design,
+                        "grid (default: the product of the --vary values), random (uniform "
+                        "draws in each FROM:TO) or latin (a Latin hypercube)");
+  sweep_app->add_option("--samples", sweep.samples, "N: the rows of a random or latin design");
+  sweep_app->add_option("--seed", sweep.seed,
+                        "S: the seed of a random or latin design (default 0): the same seed, "
+                        "the same rows");
   sweep_app->add_option("--set", sweep.sets, "override one scene value: KEY=VALUE (repeatable)")
       ->allow_extra_args(false);
   sweep_app->add_option("--csv", sweep.csv, "write the CSV to PATH, or - (default)");
@@ -223,6 +242,17 @@ int main(int argc, char** argv) {
       if (sub->parsed() && sub->count(flag) > 0 &&
           sub->get_option(flag)->as<std::string>().empty()) {
         throw mdrsim::cli::UsageError(fmt::format("{}: needs a file path or -", flag));
+      }
+    }
+    if (sweep_app->parsed()) {
+      // A --link joins the axis of the --vary before it: their order on the command line.
+      std::size_t varies = 0;
+      for (const CLI::Option* option : sweep_app->parse_order()) {
+        if (option == link_option) {
+          sweep.link_after.push_back(varies);
+        } else if (option->get_name() == "--vary") {
+          ++varies;
+        }
       }
     }
     set_up_logging(level);

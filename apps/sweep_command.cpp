@@ -37,6 +37,7 @@
 #include "engine/output/sweep_rows.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/sweep/run_label.hpp"
+#include "engine/sweep/sweep_design.hpp"
 #include "engine/sweep/sweep_grid.hpp"
 #include "engine/sweep/sweep_progress.hpp"
 #include "engine/sweep/usage_error.hpp"
@@ -224,6 +225,28 @@ void refuse_existing_csv(const std::string& path) {
                   printable(path)));
 }
 
+/// The keys in command-line order: each --vary, then the --link flags that followed it.
+std::vector<VarySpec> vary_keys(const SweepOptions& options, bool drawn) {
+  std::vector<VarySpec> keys;
+  std::size_t linked = 0;
+  const auto add_links = [&](std::size_t varies) {
+    for (; linked < options.link.size(); ++linked) {
+      const std::size_t after =
+          linked < options.link_after.size() ? options.link_after[linked] : options.vary.size();
+      if (after > varies) return;
+      VarySpec spec = parse_vary(options.link[linked], drawn, "--link");
+      spec.linked = true;
+      keys.push_back(std::move(spec));
+    }
+  };
+  add_links(0);
+  for (std::size_t v = 0; v < options.vary.size(); ++v) {
+    keys.push_back(parse_vary(options.vary[v], drawn));
+    add_links(v + 1);
+  }
+  return keys;
+}
+
 std::string read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -246,9 +269,8 @@ int sweep_command(const SweepOptions& options) {
     std::_Exit(128 + signal);
   });
 
-  std::vector<VarySpec> specs;
-  for (const std::string& text : options.vary) specs.push_back(parse_vary(text));
-  const SweepGrid grid(std::move(specs));
+  const SweepDesign design = parse_design(options.design, options.samples, options.seed);
+  const SweepGrid grid(vary_keys(options, design.drawn()), options.where, design);
   const Shard shard = options.shard.empty() ? Shard{} : parse_shard(options.shard);
   require_distinct_outputs({{"--csv", options.csv}}, options.scene);
   if (options.resume && options.csv == "-") {

@@ -82,8 +82,8 @@ std::string csv_header(const SweepGrid& grid, SweepColumns columns) {
 
 // The status and its stop reason (empty but for step-limit) lead each row, and a run without a
 // critical point leaves the critical columns empty, so that no plot mistakes it for one.
-std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& values,
-                    const Scene& scene, const RunResult& r, SweepColumns columns) {
+std::string csv_row(const std::vector<VaryValue>& values, const Scene& scene, const RunResult& r,
+                    SweepColumns columns) {
   const bool dimensionless = columns.dimensionless;
   fmt::memory_buffer out;
   const auto s = dimensionless_scales(scene);
@@ -91,7 +91,7 @@ std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& value
                  r.stop_reason ? to_string(*r.stop_reason) : "");
   for (std::size_t k = 0; k < values.size(); ++k) {
     out.push_back(',');
-    const std::string& text = grid.keys()[k].values[values[k]].text;
+    const std::string& text = values[k].text;
     out.append(text.data(), text.data() + text.size());
   }
   const auto critical = [&](const SnapshotField& f, double scale) -> std::optional<double> {

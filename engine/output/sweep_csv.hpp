@@ -42,9 +42,9 @@ struct SweepColumns {
 
 /// The header line, with its newline: status, stop_reason, the varied keys, the run's fields.
 std::string csv_header(const SweepGrid& grid, SweepColumns columns);
-/// One row, with its newline; `values` index each key's values as SweepGrid::indices does.
-std::string csv_row(const SweepGrid& grid, const std::vector<std::size_t>& values,
-                    const Scene& scene, const RunResult& result, SweepColumns columns);
+/// One row, with its newline; `values` are the row's, one per key (SweepGrid::values).
+std::string csv_row(const std::vector<VaryValue>& values, const Scene& scene,
+                    const RunResult& result, SweepColumns columns);
 
 /// A sweep CSV as found on disk: complete lines end in a newline; a last line without one
 /// is torn (the writer was killed during it).

@@ -15,13 +15,13 @@
 
 namespace mdrsim::cli {
 
-/// Sets every varied key to its value at `values` (an index into each key's values) and
-/// builds the scene; a SceneError names --vary for the varied keys.
+/// Sets every varied key to its value in `values` (one per key, as SweepGrid::values gives a
+/// row's) and builds the scene; a SceneError names --vary for the varied keys.
 Scene build_row(SceneDocument& document, const SweepGrid& grid,
-                const std::vector<std::size_t>& values, const Registries& registries);
+                const std::vector<VaryValue>& values, const Registries& registries);
 
-/// Builds every probe of every key (VarySpec::probes) with the other keys at their first
-/// value, so that a bad value fails before any run; returns the columns any of these scenes
+/// Builds the grid's probe rows (SweepGrid::probe_rows: the first row with each value of each
+/// key), so that a bad value fails before any run; returns the columns any of these scenes
 /// has: JKR scales (the dimensionless columns), friction, a program (the work columns).
 SweepColumns check_values(const SceneDocument& base, const SweepGrid& grid,
                           const Registries& registries);

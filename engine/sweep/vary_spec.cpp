@@ -20,6 +20,7 @@ namespace {
 
 constexpr std::int64_t kMaxCount = 1'000'000;
 constexpr const char* kForms = "KEY=FROM:TO:COUNT, KEY=FROM:TO:COUNT:log or KEY=V1,V2,...";
+constexpr const char* kDrawnForms = "KEY=FROM:TO, KEY=FROM:TO:log or KEY=V1,V2,...";
 
 /// `text` without a '+' that from_chars does not take (a user may write one).
 std::string_view without_plus(std::string_view text) {
@@ -96,16 +97,27 @@ std::vector<std::size_t> VarySpec::probes() const {
   return out;
 }
 
-VarySpec parse_vary(const std::string& text) {
+VaryValue VarySpec::at(double t) const {
+  if (!drawn()) {
+    const auto size = static_cast<double>(values.size());
+    return values[std::min(values.size() - 1, static_cast<std::size_t>(t * size))];
+  }
+  const double value =
+      form == Form::log ? from * std::pow(to / from, t) : (1.0 - t) * from + t * to;
+  return number_value(std::clamp(value, std::min(from, to), std::max(from, to)));
+}
+
+VarySpec parse_vary(const std::string& text, bool drawn, const std::string& flag) {
+  const char* forms = drawn ? kDrawnForms : kForms;
   const auto eq = text.find('=');
   const std::string_view key = trim_blanks(std::string_view(text).substr(0, eq));
   const std::string_view given =
       eq == std::string::npos ? std::string_view() : std::string_view(text).substr(eq + 1);
   if (eq == std::string::npos || key.empty() || trim_blanks(given).empty()) {
-    throw UsageError(fmt::format("--vary: '{}' is not {}", printable(text), kForms));
+    throw UsageError(fmt::format("{}: '{}' is not {}", flag, printable(text), forms));
   }
   const auto fail = [&](const std::string& why) {
-    throw UsageError(fmt::format("--vary: {}: {}", printable(key), why));
+    throw UsageError(fmt::format("{}: {}: {}", flag, printable(key), why));
   };
   VarySpec spec{std::string(key), VarySpec::Form::list, {}};
 
@@ -138,12 +150,23 @@ VarySpec parse_vary(const std::string& text) {
   }
 
   const auto parts = split(given, ':');
-  if (parts.size() != 3 && parts.size() != 4) {
-    throw UsageError(fmt::format("--vary: '{}' is not {}", printable(text), kForms));
+  if (drawn) {
+    // A random design draws from the range: a COUNT there is a grid's, not this design's.
+    if (parts.size() == 3 && trim_blanks(parts[2]) != "log") {
+      fail(fmt::format("a random design draws from FROM:TO or FROM:TO:log, not a COUNT ('{}')",
+                       printable(trim_blanks(parts[2]))));
+    }
+    if (parts.size() != 2 && parts.size() != 3) {
+      throw UsageError(fmt::format("{}: '{}' is not {}", flag, printable(text), forms));
+    }
+  } else if (parts.size() != 3 && parts.size() != 4) {
+    throw UsageError(fmt::format("{}: '{}' is not {}", flag, printable(text), forms));
   }
-  const bool log = parts.size() == 4;
-  if (log && trim_blanks(parts[3]) != "log") {
-    fail(fmt::format("'{}' is not log (FROM:TO:COUNT:log)", printable(trim_blanks(parts[3]))));
+  const std::size_t log_part = drawn ? 2 : 3;
+  const bool log = parts.size() == log_part + 1;
+  if (log && trim_blanks(parts[log_part]) != "log") {
+    fail(fmt::format("'{}' is not log ({})", printable(trim_blanks(parts[log_part])),
+                     drawn ? "FROM:TO:log" : "FROM:TO:COUNT:log"));
   }
   const auto part_fail = [&](const char* part, std::string_view value, const char* expected) {
     fail(fmt::format("{} '{}' is not {}", part, printable(trim_blanks(value)), expected));
@@ -156,10 +179,10 @@ VarySpec parse_vary(const std::string& text) {
   if (!parse_whole(parts[1], to) || !std::isfinite(to)) {
     part_fail("TO", parts[1], "a finite number");
   }
-  if (!parse_whole(parts[2], count) || count < 1 || count > kMaxCount) {
+  if (!drawn && (!parse_whole(parts[2], count) || count < 1 || count > kMaxCount)) {
     part_fail("COUNT", parts[2], "a whole number from 1 to 1000000");
   }
-  if (count == 1 && from != to) {
+  if (!drawn && count == 1 && from != to) {
     fail(
         fmt::format("COUNT 1 gives one value, but FROM {} and TO {} differ (give a COUNT of 2 or "
                     "more, or one value)",
@@ -177,6 +200,9 @@ VarySpec parse_vary(const std::string& text) {
     }
   }
   spec.form = log ? VarySpec::Form::log : VarySpec::Form::linear;
+  spec.from = from;
+  spec.to = to;
+  if (drawn) return spec;
   spec.values.reserve(static_cast<std::size_t>(count));
   for (std::int64_t i = 0; i < count; ++i) {
     // The ends are exact. Linear: from + (to - from) t overflows for from and to near opposite

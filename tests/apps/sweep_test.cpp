@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -310,6 +311,196 @@ TEST_F(Sweep, AnExistingCsvIsKeptUnlessResumeOrForce) {
   ASSERT_EQ(run(sweep_args(small, {"--csv", empty})), 0) << err();
   EXPECT_EQ(lines_of(slurp(empty)).size(), 2u + 2u);
   EXPECT_EQ(run(sweep_args(small, {"--csv", "/dev/null"})), 0) << err();
+}
+
+// ---- linked keys, --where and random designs ----
+
+/// A program whose approach work of adhesion must not exceed its work of adhesion (the scene
+/// refuses dgamma_a > dgamma): a product grid of the two breaks on its first such row.
+constexpr std::string_view kProgram = R"([material]
+effective_modulus = 1.0e6
+work_of_adhesion = 0.05
+[profile]
+type = "parabolic"
+radius = 0.01
+[[loading.stage]]
+name = "press"
+normal = { control = "fixed-grips", to = 2e-5 }
+[[loading.stage]]
+name = "pull"
+normal = { control = "fixed-grips", by = -4e-5 }
+until = "separation"
+[discretization]
+springs = 100
+)";
+
+TEST_F(Sweep, LinkedKeysAndWhereRunOnlyTheRowsAScenePermits) {
+  std::ofstream(scene_) << kProgram;
+  const std::string dgamma = "material.work_of_adhesion=0.01:0.04:4";
+  const std::string approach = "material.approach_work_of_adhesion=0.01:0.04:4";
+  const std::string csv = path("rows.csv");
+  // The product reaches dgamma_a = 0.02 > dgamma = 0.01 among the values it checks first.
+  EXPECT_EQ(run(sweep_args({"--vary", dgamma, "--vary", approach, "--csv", csv})), 2);
+  EXPECT_EQ(err(),
+            "--vary: material.approach_work_of_adhesion = 0.02 is above work_of_adhesion = 0.01 "
+            "(0 <= dgamma_a <= dgamma)\n");
+  EXPECT_FALSE(fs::exists(csv));
+  // --where: the 10 rows of the lower triangle, in the product's order.
+  ASSERT_EQ(run(sweep_args({"--vary", dgamma, "--vary", approach, "--where",
+                            "material.approach_work_of_adhesion <= material.work_of_adhesion",
+                            "--csv", csv})),
+            0)
+      << err();
+  auto lines = lines_of(slurp(csv));
+  ASSERT_EQ(lines.size(), 2u + 10u);
+  EXPECT_NE(lines[0].find(", rows 10, shard 0/1"), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[1].rfind("status,stop_reason,material.work_of_adhesion,"
+                           "material.approach_work_of_adhesion,normal_force,",
+                           0),
+            0u)
+      << lines[1];
+  const char* values[] = {"0.01", "0.02", "0.03", "0.04"};
+  std::size_t line = 2;
+  for (int g = 0; g < 4; ++g) {
+    for (int a = 0; a <= g; ++a, ++line) {
+      const auto fields = split(lines[line]);
+      EXPECT_EQ(fields[2], values[g]) << lines[line];
+      EXPECT_EQ(fields[3], values[a]) << lines[line];
+      EXPECT_EQ(fields[0], "instability") << lines[line];
+    }
+  }
+  // --link: dgamma_a = dgamma / 2 on one axis of 4 rows, the columns as for the product.
+  ASSERT_EQ(
+      run(sweep_args({"--vary", dgamma, "--link", "material.approach_work_of_adhesion=0.005:0.02:4",
+                      "--csv", csv, "--force"})),
+      0)
+      << err();
+  lines = lines_of(slurp(csv));
+  ASSERT_EQ(lines.size(), 2u + 4u);
+  const char* halves[] = {"0.005", "0.01", "0.015", "0.02"};
+  for (int g = 0; g < 4; ++g) {
+    EXPECT_EQ(split(lines[2 + g])[2], values[g]);
+    EXPECT_EQ(split(lines[2 + g])[3], halves[g]);
+  }
+  // Shards of a filtered grid merge into the unsharded CSV.
+  const std::vector<std::string> filtered{
+      "--vary", dgamma,    "--vary",
+      approach, "--where", "material.approach_work_of_adhesion <= material.work_of_adhesion"};
+  ASSERT_EQ(run(sweep_args(filtered, {"--csv", csv, "--force"})), 0) << err();
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_EQ(run(sweep_args(filtered, {"--shard", fmt::format("{}/3", i), "--csv",
+                                        path(fmt::format("part{}.csv", i))})),
+              0)
+        << err();
+  }
+  ASSERT_EQ(
+      run({"merge", path("merged.csv"), path("part2.csv"), path("part0.csv"), path("part1.csv")}),
+      0)
+      << err();
+  EXPECT_EQ(slurp(path("merged.csv")), slurp(csv));
+}
+
+TEST_F(Sweep, RandomDesignIsReproducibleInsideItsBoundsAndResumable) {
+  const std::vector<std::string> design{"--vary",    "material.poisson_ratio=0:0.45",
+                                        "--vary",    "profile.radius=1e-3:1e-1:log",
+                                        "--design",  "random",
+                                        "--samples", "9",
+                                        "--seed",    "42"};
+  const std::string first = path("first.csv");
+  ASSERT_EQ(run(sweep_args(design, {"--csv", first, "--threads", "2"})), 0) << err();
+  const std::string text = slurp(first);
+  const auto lines = lines_of(text);
+  ASSERT_EQ(lines.size(), 2u + 9u);
+  EXPECT_NE(lines[0].find(", rows 9, shard 0/1"), std::string::npos) << lines[0];
+  for (std::size_t i = 2; i < lines.size(); ++i) {
+    const auto fields = split(lines[i]);
+    EXPECT_EQ(fields[0], "instability") << lines[i];
+    const double nu = std::stod(fields[2]);
+    const double radius = std::stod(fields[3]);
+    EXPECT_TRUE(nu >= 0.0 && nu <= 0.45) << lines[i];
+    EXPECT_TRUE(radius >= 1e-3 && radius <= 1e-1) << lines[i];
+  }
+  // The same seed: the same CSV, on any thread count; another seed: other rows.
+  const std::string again = path("again.csv");
+  ASSERT_EQ(run(sweep_args(design, {"--csv", again, "--threads", "1"})), 0) << err();
+  EXPECT_EQ(slurp(again), text);
+  std::vector<std::string> reseeded = design;
+  reseeded.back() = "43";
+  ASSERT_EQ(run(sweep_args(reseeded, {"--csv", again, "--force"})), 0) << err();
+  EXPECT_NE(lines_of(slurp(again))[2], lines[2]);
+  EXPECT_NE(lines_of(slurp(again))[0], lines[0]);
+  // Cut after 4 rows (and a torn fifth) and resumed: the uninterrupted CSV.
+  std::string cut;
+  for (std::size_t i = 0; i < 6; ++i) cut += lines[i] + "\n";
+  std::ofstream(again, std::ios::binary) << cut << lines[6].substr(0, 9);
+  ASSERT_EQ(run(sweep_args(design, {"--csv", again, "--resume"})), 0) << err();
+  EXPECT_EQ(slurp(again), text);
+  // Another seed is another sweep: --resume refuses it.
+  std::ofstream(again, std::ios::binary) << cut;
+  EXPECT_EQ(run(sweep_args(reseeded, {"--csv", again, "--resume"})), 2);
+  EXPECT_NE(err().find("is a sweep of another grid"), std::string::npos) << err();
+  // A Latin hypercube of 9 rows: one in each ninth of each range.
+  const std::string latin = path("latin.csv");
+  std::vector<std::string> hypercube = design;
+  hypercube[5] = "latin";
+  ASSERT_EQ(run(sweep_args(hypercube, {"--csv", latin})), 0) << err();
+  std::vector<int> nu_strata(9, 0), radius_strata(9, 0);
+  const auto latin_lines = lines_of(slurp(latin));
+  ASSERT_EQ(latin_lines.size(), 2u + 9u);
+  for (std::size_t i = 2; i < latin_lines.size(); ++i) {
+    const auto fields = split(latin_lines[i]);
+    ++nu_strata[static_cast<std::size_t>(std::stod(fields[2]) / 0.45 * 9.0)];
+    ++radius_strata[static_cast<std::size_t>(std::log(std::stod(fields[3]) / 1e-3) /
+                                             std::log(100.0) * 9.0)];
+  }
+  EXPECT_EQ(nu_strata, std::vector<int>(9, 1));
+  EXPECT_EQ(radius_strata, std::vector<int>(9, 1));
+}
+
+TEST_F(Sweep, BadDesignFlagsExit2WithOneLineNamingTheFlag) {
+  const std::string csv = path("bad.csv");
+  const std::string nu = "material.poisson_ratio=0:0.3:3";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--vary", nu, "--link", "profile.radius=0.01,0.02"},
+       "--link: profile.radius has 2 values, material.poisson_ratio has 3 (a linked key needs "
+       "as many as the key it varies with)"},
+      {{"--link", "profile.radius=0.01,0.02,0.03", "--vary", nu},
+       "--link: profile.radius follows no --vary (a linked key varies with the --vary before it)"},
+      {{"--vary", nu, "--where", "material.poisson_ratio < profile.radius"},
+       "--where: profile.radius is not a varied key (known: material.poisson_ratio)"},
+      {{"--vary", nu, "--where", "material.poisson_ratio"},
+       "--where: 'material.poisson_ratio' is not A OP B (OP one of <=, <, >=, >, ==, !=; A and "
+       "B a varied key, a number or NUMBER*KEY)"},
+      {{"--vary", nu, "--where", "material.poisson_ratio > 1"},
+       "--where: no row of the 3 candidates passes material.poisson_ratio > 1"},
+      {{"--vary", nu, "--design", "sobol"},
+       "--design: unknown 'sobol' (known: grid, latin, random)"},
+      {{"--vary", nu, "--design", "random", "--samples", "4"},
+       "--vary: material.poisson_ratio: a random design draws from FROM:TO or FROM:TO:log, not "
+       "a COUNT ('3')"},
+      {{"--vary", "material.poisson_ratio=0:0.3", "--design", "latin"},
+       "--samples: --design latin needs --samples N"},
+      {{"--vary", "material.poisson_ratio=0:0.3", "--design", "random", "--samples", "ten"},
+       "--samples: 'ten' is not a whole number from 1 to 100000000 (--design random)"},
+      {{"--vary", "material.poisson_ratio=0:0.3", "--design", "random", "--samples", "3", "--seed",
+        "1.5"},
+       "--seed: '1.5' is not a whole number from 0 to 18446744073709551615"},
+      {{"--vary", nu, "--seed", "3"},
+       "--seed: a grid draws nothing (--seed belongs to --design random or latin)"},
+      {{"--vary", "material.poisson_ratio=0:0.3"},
+       "--vary: 'material.poisson_ratio=0:0.3' is not KEY=FROM:TO:COUNT, KEY=FROM:TO:COUNT:log "
+       "or KEY=V1,V2,..."},
+      // A drawn range's values are checked before any run: the row of its largest draw.
+      {{"--vary", "material.poisson_ratio=0:0.7", "--design", "random", "--samples", "20"},
+       "--vary: material.poisson_ratio = 0.6"},
+  };
+  for (const auto& [flags, message] : cases) {
+    EXPECT_EQ(run(sweep_args(flags, {"--csv", csv})), 2) << message;
+    const std::string text = err();
+    EXPECT_EQ(text.rfind(message, 0), 0u) << text;
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+    EXPECT_FALSE(fs::exists(csv)) << message;
+  }
 }
 
 // ---- shards and merge ----

@@ -220,14 +220,14 @@ TEST(StopReason, TheSummaryAndTheSweepRowNameIt) {
       << summary(scene, r);
   const cli::SweepGrid grid({cli::parse_vary("material.poisson_ratio=0")});
   EXPECT_EQ(cli::csv_header(grid, {}).rfind("status,stop_reason,material.poisson_ratio,", 0), 0u);
-  EXPECT_EQ(cli::csv_row(grid, {0}, scene, r, {}).rfind("step-limit,max-steps,0,", 0), 0u);
+  EXPECT_EQ(cli::csv_row(grid.values(0), scene, r, {}).rfind("step-limit,max-steps,0,", 0), 0u);
   // Another status leaves the column empty.
   s.method = "event";
   s.solver_extra = "";
   const Scene plain = s.build();
   const RunResult instability = run(plain);
   EXPECT_EQ(summary(plain, instability).rfind("status: instability (normal fixed-load", 0), 0u);
-  EXPECT_EQ(cli::csv_row(grid, {0}, plain, instability, {}).rfind("instability,,0,", 0), 0u);
+  EXPECT_EQ(cli::csv_row(grid.values(0), plain, instability, {}).rfind("instability,,0,", 0), 0u);
 }
 
 }  // namespace

@@ -51,6 +51,99 @@ TEST(SweepGrid, HashOfTheValuesNotOfHowTheyWereWritten) {
   EXPECT_EQ(fnv1a("a"), 0xaf63dc4c8601ec8cULL);
 }
 
+SweepGrid linked_grid(const std::vector<std::string>& varies,
+                      const std::vector<std::string>& where = {}) {
+  std::vector<VarySpec> specs;
+  for (const std::string& v : varies) {
+    const bool linked = v.rfind("&", 0) == 0;
+    specs.push_back(parse_vary(linked ? v.substr(1) : v, false, linked ? "--link" : "--vary"));
+    specs.back().linked = linked;
+  }
+  return SweepGrid(std::move(specs), where);
+}
+
+std::vector<std::vector<std::string>> texts(const SweepGrid& grid) {
+  std::vector<std::vector<std::string>> out;
+  for (std::uint64_t row = 0; row < grid.rows(); ++row) {
+    std::vector<std::string> fields;
+    for (const VaryValue& v : grid.values(row)) fields.push_back(v.text);
+    out.push_back(fields);
+  }
+  return out;
+}
+
+TEST(SweepGrid, LinkedKeysRideAlongWithTheirAxis) {
+  // b and c are zipped with a (one axis of 3), d is the product's second axis.
+  const SweepGrid grid = linked_grid({"a=1:3:3", "&b=10,20,30", "&c=x,y,z", "d=0:1:2"});
+  EXPECT_EQ(grid.rows(), 6u);
+  EXPECT_EQ(texts(grid), (std::vector<std::vector<std::string>>{{"1", "10", "x", "0"},
+                                                                {"1", "10", "x", "1"},
+                                                                {"2", "20", "y", "0"},
+                                                                {"2", "20", "y", "1"},
+                                                                {"3", "30", "z", "0"},
+                                                                {"3", "30", "z", "1"}}));
+  EXPECT_EQ(grid.indices(3), (std::vector<std::size_t>{1, 1, 1, 1}));
+  // The first row with each value of each key, the keys in order (a's values, then d's 1).
+  EXPECT_EQ(grid.probe_rows(), (std::vector<std::uint64_t>{0, 2, 4, 1}));
+  // A linked key is another grid than the same key in the product.
+  EXPECT_NE(grid.hash(), linked_grid({"a=1:3:3", "b=10,20,30", "c=x,y,z", "d=0:1:2"}).hash());
+  EXPECT_EQ(grid.hash(), fnv1a("a=1,2,3\n&b=10,20,30\n&c=x,y,z\nd=0,1\n"));
+}
+
+TEST(SweepGrid, WhereKeepsTheProductRowsThatPassInOrder) {
+  // b <= a over a, b in 1..4: the lower triangle, 10 of 16 rows, the product's order kept.
+  const SweepGrid grid = linked_grid({"a=1:4:4", "b=1:4:4"}, {"b <= a"});
+  EXPECT_EQ(grid.candidates(), 16u);
+  ASSERT_EQ(grid.rows(), 10u);
+  std::vector<std::vector<std::string>> expected;
+  for (int a = 1; a <= 4; ++a) {
+    for (int b = 1; b <= a; ++b) expected.push_back({std::to_string(a), std::to_string(b)});
+  }
+  EXPECT_EQ(texts(grid), expected);
+  // Probes are rows the sweep runs: a's values with the smallest b, b's with the smallest a.
+  EXPECT_EQ(grid.probe_rows(), (std::vector<std::uint64_t>{0, 1, 3, 6, 2, 5, 9}));
+  // Two conditions: both hold. A factor on either side; 0.5*a is exact in binary.
+  EXPECT_EQ(texts(linked_grid({"a=1:4:4", "b=1:4:4"}, {"b <= a", "b > 1"})).size(), 6u);
+  EXPECT_EQ(
+      texts(linked_grid({"a=1:4:4", "b=0.5:2:4"}, {"b == 0.5*a"})),
+      (std::vector<std::vector<std::string>>{{"1", "0.5"}, {"2", "1"}, {"3", "1.5"}, {"4", "2"}}));
+  EXPECT_EQ(texts(linked_grid({"a=1:4:4"}, {"2*a != 4", "a*1 < 4"})),
+            (std::vector<std::vector<std::string>>{{"1"}, {"3"}}));
+  // The identity: the keys' line as before, then each condition as written back.
+  EXPECT_EQ(grid.hash(), fnv1a("a=1,2,3,4\nb=1,2,3,4\nwhere b <= a\n"));
+  EXPECT_EQ(grid.hash(), linked_grid({"a=1:4:4", "b=1:4:4"}, {" b<=1*a "}).hash());
+  // Shards and rows past a gap: row 9 is the product's last.
+  EXPECT_EQ(grid.values(9)[0].text, "4");
+  EXPECT_EQ(grid.values(9)[1].text, "4");
+}
+
+TEST(SweepGrid, BadLinksAndConditions) {
+  EXPECT_THROW_MSG(linked_grid({"&a=1:3:3", "b=1"}), UsageError,
+                   "--link: a follows no --vary (a linked key varies with the --vary before it)");
+  EXPECT_THROW_MSG(linked_grid({"a=1:3:3", "&b=1,2"}), UsageError,
+                   "--link: b has 2 values, a has 3 (a linked key needs as many as the key it "
+                   "varies with)");
+  EXPECT_THROW_MSG(linked_grid({"a=1:3:3", "&a=1,2,3"}), UsageError, "--link: a is varied twice");
+  EXPECT_THROW_MSG(parse_vary("b=1:2", false, "--link"), UsageError,
+                   "--link: 'b=1:2' is not KEY=FROM:TO:COUNT, KEY=FROM:TO:COUNT:log or "
+                   "KEY=V1,V2,...");
+  const std::string form =
+      "is not A OP B (OP one of <=, <, >=, >, ==, !=; A and B a varied key, a number or "
+      "NUMBER*KEY)";
+  for (const char* where : {"a", "a = 1", "a <= ", "<= a", "a <= b <= 1", "x*a < 1", "a => 1"}) {
+    EXPECT_THROW_MSG(linked_grid({"a=1:3:3", "b=1"}, {where}), UsageError,
+                     std::string("--where: '") + where + "' " + form);
+  }
+  EXPECT_THROW_MSG(linked_grid({"a=1:3:3", "b=1"}, {"c <= a"}), UsageError,
+                   "--where: c is not a varied key (known: a, b)");
+  EXPECT_THROW_MSG(linked_grid({"a=1:3:3", "b=x,1"}, {"b <= a"}), UsageError,
+                   "--where: b takes names ('x'), not numbers only");
+  EXPECT_THROW_MSG(linked_grid({"a=1:3:3"}, {"1 < 2"}), UsageError,
+                   "--where: '1 < 2' names no varied key");
+  EXPECT_THROW_MSG(linked_grid({"a=1:3:3"}, {"a > 3"}), UsageError,
+                   "--where: no row of the 3 candidates passes a > 3");
+}
+
 TEST(SweepGrid, ShardsTakeEveryNthRow) {
   EXPECT_EQ(parse_shard("0/1"), (Shard{0, 1}));
   EXPECT_EQ(parse_shard("3/4"), (Shard{3, 4}));
