@@ -375,9 +375,14 @@ int sweep_command(const SweepOptions& options) {
     if (const auto summary = quiet.summary()) spdlog::warn("{}", *summary);
   }
   if (failure) std::rethrow_exception(failure);
-  spdlog::info("sweep: {} rows on {} in {:.3g} s{}", shard_rows - done, counted(threads, "thread"),
+  spdlog::info("sweep: {} rows on {} in {:.3g} s{}{}", shard_rows - done,
+               counted(threads, "thread"),
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
-               done > 0 ? fmt::format(" ({} were in the CSV already)", done) : std::string());
+               done > 0 ? fmt::format(" ({} were in the CSV already)", done) : std::string(),
+               grid.rows() < grid.candidates()
+                   ? fmt::format("; {} of the {} {} pass --where", grid.rows(), grid.candidates(),
+                                 grid.design().drawn() ? "samples" : "grid's rows")
+                   : std::string());
   return 0;
 }
 

@@ -69,16 +69,16 @@ SweepGrid::SweepGrid(std::vector<VarySpec> keys, std::vector<std::string> where,
             "--link: {} follows no --vary (a linked key varies with the --vary before it)",
             printable(spec.key)));
       }
-      axes_.push_back({k, 0, 0});
+      axes_.push_back({k, 0});
     }
     Axis& axis = axes_.back();
-    const VarySpec& first = keys_[axis.first];
-    ++axis.size;
     axis_of_.push_back(axes_.size() - 1);
     if (spec.drawn()) continue;
     // Every list of an axis has as many values: its keys are zipped, not multiplied.
     if (axis.count != 0 && spec.values.size() != axis.count) {
-      const VarySpec& other = first.drawn() ? keys_[k - 1] : first;
+      std::size_t listed = axis.first;  // the axis' first list, which set its count
+      while (keys_[listed].drawn()) ++listed;
+      const VarySpec& other = keys_[listed];
       throw UsageError(fmt::format(
           "--link: {} has {} values, {} has {} (a linked key needs as many as the key it "
           "varies with)",
@@ -167,10 +167,18 @@ std::vector<VaryValue> SweepGrid::candidate_values(std::uint64_t candidate) cons
 }
 
 std::vector<double> SweepGrid::candidate_numbers(std::uint64_t candidate) const {
-  std::vector<double> out;
-  out.reserve(keys_.size());
-  for (const VaryValue& v : candidate_values(candidate)) {
-    out.push_back(v.number.value_or(std::numeric_limits<double>::quiet_NaN()));
+  // As candidate_values, without the text: --where looks at every candidate.
+  std::vector<double> out(keys_.size());
+  if (design_.drawn()) {
+    std::vector<double> t(axes_.size());
+    for (std::size_t a = 0; a < axes_.size(); ++a) t[a] = draws_.draw(candidate, a);
+    for (std::size_t k = 0; k < keys_.size(); ++k) out[k] = keys_[k].number_at(t[axis_of_[k]]);
+    return out;
+  }
+  const std::vector<std::size_t> index = grid_indices(candidate);
+  for (std::size_t k = 0; k < keys_.size(); ++k) {
+    out[k] = keys_[k].values[index[axis_of_[k]]].number.value_or(
+        std::numeric_limits<double>::quiet_NaN());
   }
   return out;
 }

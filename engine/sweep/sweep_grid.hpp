@@ -70,12 +70,11 @@ class SweepGrid {
  private:
   struct Axis {
     std::size_t first = 0;    ///< its first key in keys_
-    std::size_t size = 0;     ///< its keys
     std::uint64_t count = 0;  ///< a grid's values per key; a random design's list length, or 0
   };
 
   std::uint64_t candidate(std::uint64_t row) const;
-  /// The axes' indices (a grid) or draws in [0, 1) (a random design) of `candidate`.
+  /// A grid's index into each axis' values at `candidate`.
   std::vector<std::size_t> grid_indices(std::uint64_t candidate) const;
   std::vector<VaryValue> candidate_values(std::uint64_t candidate) const;
   std::vector<double> candidate_numbers(std::uint64_t candidate) const;

@@ -102,9 +102,14 @@ VaryValue VarySpec::at(double t) const {
     const auto size = static_cast<double>(values.size());
     return values[std::min(values.size() - 1, static_cast<std::size_t>(t * size))];
   }
+  return number_value(number_at(t));
+}
+
+double VarySpec::number_at(double t) const {
+  if (!drawn()) return at(t).number.value_or(std::numeric_limits<double>::quiet_NaN());
   const double value =
       form == Form::log ? from * std::pow(to / from, t) : (1.0 - t) * from + t * to;
-  return number_value(std::clamp(value, std::min(from, to), std::max(from, to)));
+  return std::clamp(value, std::min(from, to), std::max(from, to));
 }
 
 VarySpec parse_vary(const std::string& text, bool drawn, const std::string& flag) {

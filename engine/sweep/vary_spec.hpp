@@ -32,6 +32,8 @@ struct VarySpec {
   /// The value at `t` in [0, 1) of a drawn range: (1 - t) FROM + t TO or FROM (TO/FROM)^t,
   /// kept between the ends; of a list, value floor(t * size).
   VaryValue at(double t) const;
+  /// at(t)'s number, without its text (NaN for a name).
+  double number_at(double t) const;
 
   /// The values a sweep builds before any run, so that a bad value fails before the CSV
   /// exists: all of them for a list or a range of up to kAllProbed values, else the first,

@@ -122,6 +122,18 @@ TEST(SweepDesign, LinkedKeysShareTheirAxisDraw) {
     EXPECT_NEAR(*v[2].number, 100.0 - 100.0 * *v[0].number, 1e-13) << row;
     EXPECT_NE(*v[3].number, *v[0].number) << row;
   }
+  // Lists on one axis take value floor(t k): as many values each, named against the first.
+  EXPECT_THROW_MSG(drawn_grid({"a=0:1", "&b=x,y,z", "&c=0:1", "&d=1,2"}, "random", "5", "1"),
+                   UsageError,
+                   "--link: d has 2 values, b has 3 (a linked key needs as many as the key it "
+                   "varies with)");
+  const SweepGrid zipped = drawn_grid({"a=0:1", "&b=x,y,z", "&c=1,2,3"}, "random", "30", "1");
+  for (std::uint64_t row = 0; row < zipped.rows(); ++row) {
+    const std::vector<VaryValue> v = zipped.values(row);
+    const auto third = static_cast<std::size_t>(*v[0].number * 3.0);
+    EXPECT_EQ(v[1].text, std::string(1, static_cast<char>('x' + third))) << row;
+    EXPECT_EQ(*v[2].number, static_cast<double>(third + 1)) << row;
+  }
 }
 
 TEST(SweepDesign, WhereKeepsTheDrawsThatPassInSampleOrder) {
