@@ -380,8 +380,8 @@ int sweep_command(const SweepOptions& options) {
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
                done > 0 ? fmt::format(" ({} were in the CSV already)", done) : std::string(),
                grid.rows() < grid.candidates()
-                   ? fmt::format("; {} of the {} {} pass --where", grid.rows(), grid.candidates(),
-                                 grid.design().drawn() ? "samples" : "grid's rows")
+                   ? fmt::format("; {} of {} {} pass --where", grid.rows(), grid.candidates(),
+                                 grid.design().drawn() ? "samples" : "grid rows")
                    : std::string());
   return 0;
 }

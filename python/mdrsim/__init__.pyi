@@ -198,8 +198,11 @@ Parameters = Union[Mapping[str, Union[Parameter, float, None]], Sequence[str], N
 
 def run(scene: SceneLike, trajectory: Union[bool, int] = ..., method: Method | None = ...,
         samples: int | None = ...) -> Result: ...
-def sweep(scene: SceneLike, grid: Mapping[str, Any], executor: Executor | None = ...,
-          batch_seconds: float = ..., method: Method | None = ...) -> SweepResult: ...
+def sweep(scene: SceneLike, grid: Mapping[str | tuple[str, ...], Any],
+          executor: Executor | None = ..., batch_seconds: float = ...,
+          method: Method | None = ..., *, where: str | Sequence[str] | None = ...,
+          design: Literal["grid", "random", "latin"] | None = ..., samples: int | None = ...,
+          seed: int | None = ...) -> SweepResult: ...
 def parts() -> dict[str, dict[str, str]]: ...
 def register_criterion(name: str, margin: Callable[..., float], *,
                        critical_elongation: Callable[..., float | None] | None = ...,

@@ -33,7 +33,7 @@ _COUNT_COLUMNS = frozenset({"springs_in_contact", "springs", "warnings", "spring
 _FLAG_COLUMNS = frozenset({"disk_valid", "sliding"})
 
 
-def _item_text(key, item):
+def _item_text(key, item, flag="--vary"):
     """One value of a list as the command line writes it in `--vary KEY=V1,V2,...`."""
     if hasattr(item, "dtype") and getattr(item, "ndim", None) == 0:
         item = item.item()  # a NumPy scalar
@@ -45,19 +45,19 @@ def _item_text(key, item):
         return repr(float(item))  # the shortest text that reads back as the same double
     if isinstance(item, str):
         if "," in item or ":" in item:
-            raise SceneError(f"--vary: {key}: '{item}' is not one value (a name has no ',' or "
+            raise SceneError(f"{flag}: {key}: '{item}' is not one value (a name has no ',' or "
                              "':')")
         return item
-    raise SceneError(f"--vary: {key}: {type(item).__name__} {item!r:.40} is not a number or a "
+    raise SceneError(f"{flag}: {key}: {type(item).__name__} {item!r:.40} is not a number or a "
                      "name")
 
 
-def _vary_text(key, values):
-    """`KEY=VALUES` as `mdrsim sweep --vary` takes it."""
+def _vary_text(key, values, flag="--vary"):
+    """`KEY=VALUES` as `mdrsim sweep --vary` (or --link) takes it."""
     if not isinstance(key, str):
-        raise SceneError(f"--vary: the key {key!r} is not a string")
+        raise SceneError(f"{flag}: the key {key!r} is not a string")
     if "=" in key:
-        raise SceneError(f"--vary: '{key}' is not a key (it has '=')")
+        raise SceneError(f"{flag}: '{key}' is not a key (it has '=')")
     if isinstance(values, str):
         return f"{key}={values}"
     if isinstance(values, numbers.Real) or (hasattr(values, "dtype") and values.ndim == 0):
@@ -65,15 +65,62 @@ def _vary_text(key, values):
     try:
         items = list(values)
     except TypeError:
-        raise SceneError(f"--vary: {key}: {type(values).__name__} {values!r:.40} is not a list "
+        raise SceneError(f"{flag}: {key}: {type(values).__name__} {values!r:.40} is not a list "
                          "of values or a string such as '0:1:11'") from None
-    return f"{key}=" + ",".join(_item_text(key, item) for item in items)
+    return f"{key}=" + ",".join(_item_text(key, item, flag) for item in items)
+
+
+def _grid_flags(grid, where, design, samples, seed):
+    """The command's flags of a grid and design, as SweepPlan takes them: (vary, linked,
+    where, design, samples, seed). A tuple of keys in the grid is one axis: its first key a
+    --vary, the others --link."""
+    vary, linked = [], []
+    for key, values in grid.items():
+        if isinstance(key, tuple):
+            if len(key) < 2:
+                raise SceneError(f"--link: the keys {key!r} are not two or more keys varied "
+                                 "together")
+            if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or \
+                    len(values) != len(key):
+                raise SceneError(f"--link: the keys {key!r} need one value list per key, "
+                                 f"not {values!r:.60}")
+            for i, (each, its) in enumerate(zip(key, values)):
+                flag = "--vary" if i == 0 else "--link"
+                vary.append(_vary_text(each, its, flag))
+                linked.append(i > 0)
+        else:
+            vary.append(_vary_text(key, values))
+            linked.append(False)
+    if where is None:
+        where = []
+    elif isinstance(where, str):
+        where = [where]
+    else:
+        try:
+            where = list(where)
+        except TypeError:
+            raise SceneError(f"--where: {type(where).__name__} {where!r:.40} is not a condition "
+                             "or a list of them") from None
+    for condition in where:
+        if not isinstance(condition, str):
+            raise SceneError(f"--where: {condition!r:.40} is not a condition such as 'a <= b'")
+    if design is not None and not isinstance(design, str):
+        raise SceneError(f"--design: {design!r:.40} is not grid, latin or random")
+
+    def whole(flag, value):
+        if value is None:
+            return ""
+        if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+            raise SceneError(f"{flag}: {value!r:.40} is not a whole number")
+        return str(int(value))
+
+    return (vary, linked, where, design or "", whole("--samples", samples), whole("--seed", seed))
 
 
 class _Job:
     """What a task needs to run rows in any process: the scene's text and overrides, the
-    --vary texts and the CSV's optional columns (dimensionless, friction, work). Pickled without
-    its plan, which each process makes once (_plan_for)."""
+    grid's flags (_grid_flags) and the CSV's optional columns (dimensionless, friction, work).
+    Pickled without its plan, which each process makes once (_plan_for)."""
 
     __slots__ = ("token", "scene", "vary", "columns", "plan")
 
@@ -99,7 +146,7 @@ def _plan_for(job):
     with _plans_lock:
         plan = _plans.get(job.token)
     if plan is None:
-        plan = _core.SweepPlan(*job.scene, job.vary, *job.columns)
+        plan = _core.SweepPlan(*job.scene, *job.vary, *job.columns)
         with _plans_lock:
             _plans[job.token] = plan
             while len(_plans) > 4:
@@ -141,14 +188,14 @@ class SweepResult:
         stop reason as str (None but for step-limit), a varied number and the fields as float (the counts springs_in_contact, springs and
         warnings, springs_sliding as int; disk_valid, sliding as bool), None where the CSV
         field is empty."""
-        keys = [dict(values) for values in self._values]
+        keys = [None if values is None else dict(values) for values in self._values]
         names = self.columns[2 + len(keys):]
         rows = []
         for line in self._lines:
             fields = line.rstrip("\n").split(",")
             row = {"status": fields[0], "stop_reason": fields[1] or None}
             for column, lookup, text in zip(self.columns[2:], keys, fields[2:]):
-                row[column] = lookup[text]
+                row[column] = float(text) if lookup is None else lookup[text]
             for name, text in zip(names, fields[2 + len(keys):]):
                 if text == "":
                     row[name] = None
@@ -187,7 +234,8 @@ class SweepResult:
         return f"<mdrsim.SweepResult {len(self)} rows x {len(self.columns)} columns>"
 
 
-def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None):
+def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None, *, where=None,
+          design=None, samples=None, seed=None):
     """Runs one scene per row of a grid, as `mdrsim sweep` does, and returns a SweepResult.
 
     scene: a Scene, a scene file path or a dict (as mdrsim.run takes).
@@ -195,6 +243,14 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None):
     the last varying fastest). values is a string in --vary's syntax, parsed by the
     command's own parser ("0:1e-5:41", "1e2:1e6:9:log", "mode-mixed,stress"), or a list of
     numbers and names (a str item is read as the command reads one: "2" is the number 2).
+    A tuple of keys is one axis, its keys varied together (the command's --vary and --link):
+    {("material.work_of_adhesion", "material.approach_work_of_adhesion"): ("0.01:0.1:10",
+    "0.005:0.05:10")}, one value list per key, each as long as the others.
+    where: a condition or a list of them, as the command's --where ("a <= b", "a < 0.5*b"):
+    only the rows where every one holds run.
+    design: None or "grid" (the product), "random" or "latin" (the command's --design): then
+    samples (int) rows, drawn from seed (int, default 0) in each key's "FROM:TO" or
+    "FROM:TO:log" (uniform, log-uniform) or list; the same seed, the same rows.
     executor: any concurrent.futures.Executor (a Dask cluster: Client.get_executor()); None
     runs the rows on a ThreadPoolExecutor of one thread per CPU this process may use (its
     affinity mask: taskset, a SLURM allocation), as the command's --threads default.
@@ -223,10 +279,10 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None):
         raise SceneError("--vary: the grid has no keys (give at least one key and its values)")
     if not (isinstance(batch_seconds, numbers.Real) and batch_seconds >= 0):
         raise ValueError(f"sweep(): batch_seconds must be a number >= 0, not {batch_seconds!r}")
-    vary = [_vary_text(key, values) for key, values in grid.items()]
+    flags = _grid_flags(grid, where, design, samples, seed)
     state = scene._state()
-    plan = _core.SweepPlan(*state, vary)  # every value checked, as the command does
-    job = _Job(uuid.uuid4().hex, state, vary, (plan.dimensionless, plan.friction, plan.work),
+    plan = _core.SweepPlan(*state, *flags)  # every value checked, as the command does
+    job = _Job(uuid.uuid4().hex, state, flags, (plan.dimensionless, plan.friction, plan.work),
                plan)
 
     started = time.perf_counter()

@@ -19,6 +19,7 @@
 #include "engine/output/sweep_rows.hpp"
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/sweep_design.hpp"
 #include "engine/sweep/sweep_grid.hpp"
 #include "engine/sweep/sweep_progress.hpp"
 #include "engine/sweep/usage_error.hpp"
@@ -36,12 +37,28 @@ using cli::SweepGrid;
 using cli::VarySpec;
 using cli::VaryValue;
 
-/// The command's --vary parser; its UsageError (exit 2 there) is a SceneError here.
-SweepGrid parse_grid(const std::vector<std::string>& vary) {
+/// What mdrsim.sweep's grid and design arguments become: the command's flags as text.
+struct GridFlags {
+  std::vector<std::string> vary;  ///< KEY=VALUES, each a --vary or (linked) a --link
+  std::vector<bool> linked;       ///< empty: none is linked
+  std::vector<std::string> where;
+  std::string design;
+  std::string samples;
+  std::string seed;
+};
+
+/// The command's --vary, --link, --where and --design parsers; their UsageError (exit 2
+/// there) is a SceneError here.
+SweepGrid parse_grid(const GridFlags& flags) {
   try {
+    const cli::SweepDesign design = cli::parse_design(flags.design, flags.samples, flags.seed);
     std::vector<VarySpec> specs;
-    for (const std::string& text : vary) specs.push_back(cli::parse_vary(text));
-    return SweepGrid(std::move(specs));
+    for (std::size_t k = 0; k < flags.vary.size(); ++k) {
+      const bool linked = k < flags.linked.size() && flags.linked[k];
+      specs.push_back(cli::parse_vary(flags.vary[k], design.drawn(), linked ? "--link" : "--vary"));
+      specs.back().linked = linked;
+    }
+    return SweepGrid(std::move(specs), flags.where, design);
   } catch (const cli::UsageError& e) {
     throw SceneError(e.what());
   }
@@ -56,10 +73,9 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 class SweepPlan {
  public:
   SweepPlan(const std::string& text, const std::string& source_name, const std::string& base_dir,
-            const Overrides& overrides, const std::vector<std::string>& vary,
-            std::optional<bool> dimensionless, std::optional<bool> friction,
-            std::optional<bool> work)
-      : grid_(parse_grid(vary)), registries_(current_registries()) {
+            const Overrides& overrides, const GridFlags& flags, std::optional<bool> dimensionless,
+            std::optional<bool> friction, std::optional<bool> work)
+      : grid_(parse_grid(flags)), registries_(current_registries()) {
     std::vector<std::string> sets;
     for (const auto& [key, value] : overrides) sets.push_back(key + "=" + value);
     scene_hash_ = cli::scene_hash(text, sets);
@@ -83,10 +99,14 @@ class SweepPlan {
   }
 
   /// Each key's values as (CSV text, value): a float where it is set as a number, else the
-  /// name.
+  /// name; None for a range a random design draws from (its values are numbers).
   py::list values() const {
     py::list out;
     for (const VarySpec& spec : grid_.keys()) {
+      if (spec.drawn()) {
+        out.append(py::none());
+        continue;
+      }
       py::list values;
       for (const VaryValue& v : spec.values) {
         values.append(py::make_tuple(
@@ -129,12 +149,22 @@ void bind_sweep(py::module_& m) {
         "as `mdrsim sweep` takes it.");
   py::class_<SweepPlan>(m, "SweepPlan",
                         "The rows of a sweep, as `mdrsim sweep` makes them (internal).")
-      .def(py::init<const std::string&, const std::string&, const std::string&, const Overrides&,
-                    const std::vector<std::string>&, std::optional<bool>, std::optional<bool>,
-                    std::optional<bool>>(),
+      .def(py::init([](const std::string& text, const std::string& source_name,
+                       const std::string& base_dir, const Overrides& overrides,
+                       const std::vector<std::string>& vary, const std::vector<bool>& linked,
+                       const std::vector<std::string>& where, const std::string& design,
+                       const std::string& samples, const std::string& seed,
+                       std::optional<bool> dimensionless, std::optional<bool> friction,
+                       std::optional<bool> work) {
+             return SweepPlan(text, source_name, base_dir, overrides,
+                              {vary, linked, where, design, samples, seed}, dimensionless, friction,
+                              work);
+           }),
            py::arg("text"), py::arg("source_name"), py::arg("base_dir"), py::arg("overrides"),
-           py::arg("vary"), py::arg("dimensionless") = py::none(), py::arg("friction") = py::none(),
-           py::arg("work") = py::none())
+           py::arg("vary"), py::arg("linked") = std::vector<bool>{},
+           py::arg("where") = std::vector<std::string>{}, py::arg("design") = "",
+           py::arg("samples") = "", py::arg("seed") = "", py::arg("dimensionless") = py::none(),
+           py::arg("friction") = py::none(), py::arg("work") = py::none())
       .def_property_readonly("rows", &SweepPlan::rows)
       .def_property_readonly("dimensionless", &SweepPlan::dimensionless)
       .def_property_readonly("friction", &SweepPlan::friction)

@@ -246,3 +246,80 @@ def test_work_columns_are_the_runs_work():
         assert row["work_normal"] == work.normal
         assert row["work_tangential"] == work.tangential
         assert row["dissipated_by_friction"] == work.dissipated_by_friction
+
+
+# dgamma_a <= dgamma: the program refuses a row with dgamma_a > dgamma.
+PROGRAM = "scenes/programs/jkr_cycle_reversible.toml"
+DGAMMA = "material.work_of_adhesion"
+DGAMMA_A = "material.approach_work_of_adhesion"
+
+
+def program_command(cli, *flags):
+    done = subprocess.run([cli, "sweep", PROGRAM, "--set", "discretization.springs=200", *flags,
+                           "--csv", "-", "--log-level", "off"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+def program_scene():
+    return mdrsim.Scene.from_file(PROGRAM).with_values({"discretization.springs": 200})
+
+
+def test_linked_keys_and_where_give_the_command_csv(cli):
+    where = f"{DGAMMA_A} <= {DGAMMA}"
+    filtered = mdrsim.sweep(program_scene(), {DGAMMA: "0.01:0.04:4", DGAMMA_A: "0.01:0.04:4"},
+                            where=where)
+    assert filtered.to_csv() == program_command(
+        cli, "--vary", f"{DGAMMA}=0.01:0.04:4", "--vary", f"{DGAMMA_A}=0.01:0.04:4", "--where",
+        where)
+    assert len(filtered) == 10
+    assert all(row[DGAMMA_A] <= row[DGAMMA] for row in filtered.rows)
+    linked = mdrsim.sweep(program_scene(), {(DGAMMA, DGAMMA_A): ("0.01:0.04:4", [0.005, 0.01,
+                                                                                 0.015, 0.02])})
+    assert linked.to_csv() == program_command(
+        cli, "--vary", f"{DGAMMA}=0.01:0.04:4", "--link", f"{DGAMMA_A}=0.005,0.01,0.015,0.02")
+    assert [row[DGAMMA_A] / row[DGAMMA] for row in linked.rows] == [0.5] * 4
+
+
+def test_random_design_gives_the_command_csv_and_is_reproducible(cli):
+    grid = {"material.poisson_ratio": "0:0.45", "profile.radius": "1e-3:1e-1:log"}
+    flags = ["--vary", "material.poisson_ratio=0:0.45", "--vary", "profile.radius=1e-3:1e-1:log"]
+    for design in ("random", "latin"):
+        result = mdrsim.sweep(small_scene(), grid, design=design, samples=12, seed=5)
+        assert result.to_csv() == command_sweep(cli, flags, "--design", design, "--samples", "12",
+                                                "--seed", "5").stdout
+        assert result.to_csv() == mdrsim.sweep(small_scene(), grid, design=design, samples=12,
+                                               seed=5).to_csv()
+        assert result.to_csv() != mdrsim.sweep(small_scene(), grid, design=design, samples=12,
+                                               seed=6).to_csv()
+        for row in result.rows:
+            assert 0.0 <= row["material.poisson_ratio"] <= 0.45
+            assert 1e-3 <= row["profile.radius"] <= 1e-1
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"grid": {("a.b",): ["1"]}},
+     "--link: the keys ('a.b',) are not two or more keys varied together"),
+    ({"grid": {(DGAMMA, DGAMMA_A): "0.01:0.04:4"}},
+     f"--link: the keys ('{DGAMMA}', '{DGAMMA_A}') need one value list per key, not "
+     "'0.01:0.04:4'"),
+    ({"grid": {(DGAMMA, DGAMMA_A): ("0.01:0.04:4", "0.01:0.04:3")}},
+     f"--link: {DGAMMA_A} has 3 values, {DGAMMA} has 4 (a linked key needs as many as the key "
+     "it varies with)"),
+    ({"grid": {DGAMMA: "0.01:0.04:4"}, "where": 3},
+     "--where: int 3 is not a condition or a list of them"),
+    ({"grid": {DGAMMA: "0.01:0.04:4"}, "where": [f"{DGAMMA} <= x"]},
+     f"--where: x is not a varied key (known: {DGAMMA})"),
+    ({"grid": {DGAMMA: "0.01:0.04"}, "design": "random"},
+     "--samples: --design random needs --samples N"),
+    ({"grid": {DGAMMA: "0.01:0.04"}, "design": "random", "samples": 2.5},
+     "--samples: 2.5 is not a whole number"),
+    ({"grid": {DGAMMA: "0.01:0.04"}, "design": "random", "samples": 3, "seed": -1},
+     "--seed: '-1' is not a whole number from 0 to 18446744073709551615"),
+    ({"grid": {DGAMMA: "0.01:0.04:4"}, "design": "sobol"},
+     "--design: unknown 'sobol' (known: grid, latin, random)"),
+])
+def test_bad_design_arguments_raise_scene_error(kwargs, message):
+    with pytest.raises(mdrsim.SceneError) as caught:
+        mdrsim.sweep(program_scene(), **kwargs)
+    assert str(caught.value) == message
