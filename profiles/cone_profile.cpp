@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/base/angle_series.hpp"
 #include "profiles/power_law_profile.hpp"
 
 namespace mdrsim {
@@ -28,6 +29,12 @@ double ConeProfile::contact_radius_at_depth(double depth) const {
 // 2 integral_0^a k (a - x) dx = k a^2 with k = (pi/2) tan(theta): the classical cone force
 // F = (pi/2) E* a^2 tan(theta) (Sneddon).
 double ConeProfile::nonadhesive_force_per_modulus(double a) const { return image_slope_ * a * a; }
+
+// int_a^c k (x - a)/sqrt(c^2 - x^2) dx = k (s - a t) = k a (tan t - t), s = sqrt(c^2 - a^2);
+// at a = 0 it is k c (a -> 0 with t -> pi/2).
+double ConeProfile::dugdale_gap_integral(double a, double c, double t) const {
+  return a > 0.0 ? image_slope_ * a * tan_minus_angle(t) : image_slope_ * c;
+}
 
 // k = (pi/2) tan(theta): a0 = 9 pi dgamma/(2 E* k^2), F0 = E* k a0^2/3 = 27 pi^2 dgamma^2/(4 E*
 // k^3), d0 = k a0/3, the critical indentation itself (positive: the cone jumps off pressed in).

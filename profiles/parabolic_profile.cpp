@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/base/angle_series.hpp"
+
 namespace mdrsim {
 
 ParabolicProfile::ParabolicProfile(double radius) : radius_(radius) {
@@ -23,6 +25,13 @@ double ParabolicProfile::contact_radius_at_depth(double depth) const {
 // 2 * integral_0^a (a^2 - x^2)/R dx = 4 a^3 / (3 R), the Hertz force over E*.
 double ParabolicProfile::nonadhesive_force_per_modulus(double a) const {
   return 4.0 * a * a * a / (3.0 * radius_);
+}
+
+// int_a^c (x^2 - a^2)/(R sqrt(c^2 - x^2)) dx = (a s - a^2 t + s^2 t) / (2R) with s = c sin(t) =
+// sqrt(c^2 - a^2); a s - a^2 t = a^2 (tan t - t) cancels at small t and takes its series.
+double ParabolicProfile::dugdale_gap_integral(double a, double c, double t) const {
+  const double s = c * std::sin(t);
+  return (a * a * tan_minus_angle(t) + t * s * s) / (2.0 * radius_);
 }
 
 }  // namespace mdrsim

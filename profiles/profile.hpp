@@ -40,6 +40,15 @@ class Profile {
   /// 2 * integral_0^a (g(a) - g(x)) dx [m^2]. Default: Gauss-Kronrod quadrature.
   virtual double nonadhesive_force_per_modulus(double contact_radius) const;
 
+  /// Optional: the Dugdale zone's gap integral int_a^c (g(x) - g(a)) / sqrt(c^2 - x^2) dx [m]
+  /// for 0 <= a < c [m] (finite-range adhesion: the opening at the zone's outer edge c of a
+  /// contact of radius a), with t = arccos(a/c) [rad] as the caller knows it to full precision
+  /// (the zone is solved for t: from a and c alone it loses digits where c is close to a).
+  /// Default: Gauss-Kronrod in x = c cos(psi), psi from 0 to t, where the integrand is as
+  /// smooth as g; the parabola and the cone override it in closed form.
+  virtual double dugdale_gap_integral(double contact_radius, double cohesive_radius,
+                                      double angle) const;
+
   /// Optional: a contact radius the shape fixes for any glued contact (flat punch) [m].
   virtual std::optional<double> fixed_contact_radius() const { return std::nullopt; }
 

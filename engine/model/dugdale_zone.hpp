@@ -1,0 +1,44 @@
+// Finite-range adhesion in the MDR (Maugis-Dugdale): the equilibria of a contact of radius a
+// with a cohesive zone out to c, and of the zone alone once the contact has closed.
+#pragma once
+
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+/// The Dugdale interaction: a constant stress sigma_0 over the gap h0 = dgamma / sigma_0.
+struct DugdaleLaw {
+  double adhesive_stress = 0.0;    ///< sigma_0 [Pa]
+  double work_of_adhesion = 0.0;   ///< dgamma [J/m^2]
+  double effective_modulus = 0.0;  ///< E* [Pa]
+
+  double range() const { return work_of_adhesion / adhesive_stress; }  ///< h0 [m]
+  /// 2 sigma_0 / E* [1]: a zone spring at x stretches by that times sqrt(c^2 - x^2).
+  double zone_strain() const { return 2.0 * adhesive_stress / effective_modulus; }
+};
+
+/// One equilibrium: the springs |x| < a follow the indenter, those of a < |x| < c carry the
+/// line load -2 sigma_0 sqrt(c^2 - x^2), no stress singularity at a, the gap h0 at c.
+struct DugdaleState {
+  double contact_radius = 0.0;   ///< a [m] (0 on the no-contact branch)
+  double cohesive_radius = 0.0;  ///< c [m]
+  double angle = 0.0;            ///< t = arccos(a/c) [rad] (pi/2 on the no-contact branch)
+  double indentation = 0.0;      ///< d [m]
+  double normal_force = 0.0;     ///< F [N]
+};
+
+/// The contact branch at a > 0: the zone's opening (2/pi)[int_a^c (g - g(a))/sqrt(c^2 - x^2) dx
+/// + (2 sigma_0/E*)(s t - (c - a))] = h0 solved for t (it rises with t from -h0 at t = 0), then
+/// d = g(a) - (2 sigma_0/E*) s and F = E* nf(a) - 2 sigma_0 (a s + c^2 t), s = sqrt(c^2 - a^2).
+/// Throws std::domain_error where the zone would reach beyond the profile's outer radius.
+DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a);
+
+/// The no-contact branch at c > 0: the zone's disk alone pulls, d = f(c) - 4 sigma_0 c/(pi E*)
+/// - h0 and F = -pi sigma_0 c^2.
+DugdaleState dugdale_free_state(const Profile& profile, const DugdaleLaw& law, double c);
+
+/// c0 [m]: where the contact branch closes (a -> 0) onto the no-contact branch, the root of
+/// f(c) - g(0) + (2 sigma_0/E*)(1 - 2/pi) c = h0.
+double dugdale_closing_radius(const Profile& profile, const DugdaleLaw& law);
+
+}  // namespace mdrsim
