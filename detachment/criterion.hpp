@@ -65,8 +65,9 @@ class ElongationScales {
 ///    is not convex (a margin positive, then <= 0, then positive again on one line) loses the
 ///    let-go in between, and the spring is found to hold where it had let go.
 /// The engine samples both on a grid at the run's radii before a run (criterion_contract.hpp)
-/// and stops with an error naming the criterion where they fail. Every built-in criterion
-/// satisfies them (tests/engine/model/criterion_contract_test.cpp).
+/// and stops with an error naming the criterion where they fail, unless the criterion proves
+/// them (proves_contract()). Every built-in criterion proves them, and the tests sample them
+/// too (tests/engine/model/criterion_contract_test.cpp).
 class DetachmentCriterion {
  public:
   virtual ~DetachmentCriterion() = default;
@@ -81,6 +82,11 @@ class DetachmentCriterion {
                                                     double /*tangential_displacement*/) const {
     return std::nullopt;
   }
+
+  /// Optional: whether the margin's form proves the contract above for every material, radius
+  /// and u_x, so that a run need not sample it (a sampled grid costs more than the continuum
+  /// route's whole answer). Default false: a criterion of one's own is sampled before each run.
+  virtual bool proves_contract() const { return false; }
 };
 
 /// The margin of an unstretched boundary spring at radius a [m] under u_x [m]: where it is

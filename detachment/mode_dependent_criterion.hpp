@@ -18,6 +18,12 @@ class ModeDependentCriterion final : public DetachmentCriterion {
   double margin(const BoundarySpring& spring) const override;
   std::optional<double> critical_elongation(double contact_radius,
                                             double tangential_displacement) const override;
+  /// In x = sqrt(E*) e, y = sqrt(G*) |u_x|, polar (r, psi), the spring holds inside
+  /// r cos(mu psi) = sqrt(2 pi a dgamma), mu = 1 - lambda: with r = sec(mu psi) (in that unit),
+  /// r^2 + 2 r'^2 - r r'' = (1 - mu^2) sec^2(mu psi) >= 0, so the holding set is convex (and
+  /// smooth across u_x = 0, r'(0) = 0); d(r cos(mu psi))/dx = cos(psi) cos(mu psi) + mu sin(psi)
+  /// sin(mu psi) >= 0 for psi in [0, pi/2], so the margin falls with the elongation.
+  bool proves_contract() const override { return true; }
 
  private:
   /// sin(phi) / sin(lambda pi/2 + (1 - lambda) phi) = e / sqrt(2 pi a dgamma / E*) on a quarter

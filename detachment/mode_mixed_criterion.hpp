@@ -12,6 +12,9 @@ class ModeMixedCriterion final : public DetachmentCriterion {
   double margin(const BoundarySpring& spring) const override;
   std::optional<double> critical_elongation(double contact_radius,
                                             double tangential_displacement) const override;
+  /// The holding set E* e^2 + G* u_x^2 < 2 pi a dgamma is an ellipse's inside (convex), and
+  /// the margin falls with e >= 0.
+  bool proves_contract() const override { return true; }
 
  private:
   InterfaceProperties p_;

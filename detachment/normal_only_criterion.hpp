@@ -12,6 +12,8 @@ class NormalOnlyCriterion final : public DetachmentCriterion {
   double margin(const BoundarySpring& spring) const override;
   std::optional<double> critical_elongation(double contact_radius,
                                             double tangential_displacement) const override;
+  /// The holding set e < dl(a) is a half-plane (convex), and the margin falls with e.
+  bool proves_contract() const override { return true; }
 
  private:
   InterfaceProperties p_;

@@ -13,7 +13,12 @@ namespace mdrsim {
 /// times sqrt(E*/G*)): the margin must not rise with the elongation, and the midpoint of two
 /// holding states must hold. Throws std::runtime_error naming the criterion `name` and the
 /// first state that breaks either, rather than letting the engine return a wrong let-go.
-/// About 2000 margins per radius, once per run.
+/// About 6000 margins per radius.
+void sample_criterion_contract(const DetachmentCriterion& criterion, std::string_view name,
+                               const Material& material, double radius);
+
+/// What a run checks, once: nothing for a criterion that proves the contract
+/// (DetachmentCriterion::proves_contract: every built-in), else sample_criterion_contract.
 void check_criterion_contract(const DetachmentCriterion& criterion, std::string_view name,
                               const Material& material, double radius);
 

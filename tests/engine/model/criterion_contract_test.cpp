@@ -59,10 +59,48 @@ TEST(CriterionContract, EveryBuiltinKeepsIt) {
     s.criterion = name;
     s.criterion_extra = mdrsim::test::example_keys("criterion", name, "\n");
     const mdrsim::Scene scene = s.build();
-    EXPECT_NO_THROW(mdrsim::check_criterion_contract(*scene.criterion, name, scene.material,
-                                                     scene.glued_radius))
+    EXPECT_NO_THROW(mdrsim::sample_criterion_contract(*scene.criterion, name, scene.material,
+                                                      scene.glued_radius))
         << name;
   }
+}
+
+// A built-in declares the contract proven (runs skip the sampling), and the sampling agrees
+// over materials (G*/E* from 1/100 to 100), radii and, for mode-dependent, lambda in [0, 1].
+TEST(CriterionContract, EveryBuiltinProvesIt) {
+  const auto registries = mdrsim::Registries::builtin();
+  for (const std::string& name : registries.criteria.names()) {
+    for (const double shear_ratio : {1e-2, 1.0, 1e2}) {
+      for (const double lambda : {0.0, 0.1, 0.5, 0.9, 1.0}) {
+        mdrsim::Material material = mdrsim::Material::from_youngs_modulus(1e6, 0.3, 0.05);
+        material.effective_shear_modulus = shear_ratio * material.effective_modulus;
+        mdrsim::ParameterValues values;
+        values.set("lambda", lambda);
+        const auto criterion = registries.criteria.find(name)->create(values, material);
+        SCOPED_TRACE(name + " G*/E* " + std::to_string(shear_ratio) + " lambda " +
+                     std::to_string(lambda));
+        EXPECT_TRUE(criterion->proves_contract());
+        for (const double a : {1e-9, 5e-4, 1.0}) {
+          EXPECT_NO_THROW(mdrsim::sample_criterion_contract(*criterion, name, material, a));
+        }
+      }
+    }
+  }
+}
+
+// The run's check skips a criterion that declares the contract proven, and samples one that
+// does not: the same broken margin, declared and not.
+TEST(CriterionContract, RunChecksOnlyWhatIsNotProven) {
+  struct Declared final : mdrsim::DetachmentCriterion {
+    Relapsing broken;
+    double margin(const mdrsim::BoundarySpring& s) const override { return broken.margin(s); }
+    bool proves_contract() const override { return true; }
+  };
+  EXPECT_NO_THROW(mdrsim::check_criterion_contract(Declared(), "declared", kMaterial, kRadius));
+  EXPECT_THROW(mdrsim::sample_criterion_contract(Declared(), "declared", kMaterial, kRadius),
+               std::runtime_error);
+  EXPECT_THROW(mdrsim::check_criterion_contract(Relapsing(), "relapsing", kMaterial, kRadius),
+               std::runtime_error);
 }
 
 TEST(CriterionContract, MarginRisingWithTheElongationIsNamed) {
@@ -120,6 +158,6 @@ TEST(CriterionContract, RoundingOnTheHoldingBoundaryIsNoBreak) {
   const mdrsim::ModeDependentCriterion criterion(material, 0.0);
   for (const double a : {2.02733e-103, 1e-60, 1e-20, 5e-4, 1e3}) {
     SCOPED_TRACE(a);
-    EXPECT_NO_THROW(mdrsim::check_criterion_contract(criterion, "mode-dependent", material, a));
+    EXPECT_NO_THROW(mdrsim::sample_criterion_contract(criterion, "mode-dependent", material, a));
   }
 }
