@@ -15,6 +15,13 @@ struct LogSlopeRange {
   double high;
 };
 
+/// A closed-form integral and the sum of its terms' magnitudes, what its rounding is relative
+/// to (same unit).
+struct ExactIntegral {
+  double value;
+  double magnitude;
+};
+
 /// Required operations: shape() and mdr_image(). The others have numerical defaults that
 /// a profile overrides where it knows a closed form.
 class Profile {
@@ -49,6 +56,14 @@ class Profile {
   virtual double dugdale_gap_integral(double contact_radius, double cohesive_radius,
                                       double angle) const;
 
+  /// Optional: int_0^a (d - g(x))^2 dx [m^3] in closed form at contact radius a [m] and
+  /// indentation d [m] (a table's piecewise-cubic image); nullopt: the engine integrates it by
+  /// quadrature. E* times it is the energy the glued springs store.
+  virtual std::optional<ExactIntegral> squared_gap_integral(double /*contact_radius*/,
+                                                            double /*indentation*/) const {
+    return std::nullopt;
+  }
+
   /// Optional: a contact radius the shape fixes for any glued contact (flat punch) [m].
   virtual std::optional<double> fixed_contact_radius() const { return std::nullopt; }
 
@@ -61,6 +76,15 @@ class Profile {
   /// non-adhesive solutions (Hertz, Sneddon) have a gap that opens outside the contact, and
   /// to which adhesion only adds the flat punch's lift dl (1 - (2/pi) asin(a/r)) >= 0.
   virtual bool always_one_disk() const { return false; }
+
+  /// Optional: whether the shape proves every reported MDR state one contact disk, so that the
+  /// disk check is skipped. Outside a contact of radius a at indentation d the gap is
+  ///   h(r) = (2/pi) int_a^r (g(x) - d) / sqrt(r^2 - x^2) dx,
+  /// (f is the Abel transform of g), >= 0 wherever g never falls beyond a, as d <= g(a) at a
+  /// front; and the pressure of an edge pressed at d >= g(a) is >= 0 wherever g' >= 0. So a
+  /// shape whose image never falls proves it: g' = int_0^(pi/2) (r f')'(x sin t) dt >= 0 where
+  /// r f'(r) never falls (every convex f rising from the tip). Default: always_one_disk().
+  virtual bool proves_one_disk() const { return always_one_disk(); }
 
   /// Optional: whether the shape's branch folds again at every crest of a ripple, more folds
   /// than the continuum route follows (it refuses the scene where it is named).

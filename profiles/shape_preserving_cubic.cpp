@@ -147,4 +147,30 @@ double ShapePreservingCubic::integral(double x) const {
   return p.integral_before + p.h * s * (p.y + s * (p.c1 / 2.0 + s * (p.c2 / 3.0 + s * p.c3 / 4.0)));
 }
 
+ShapePreservingCubic::SquareIntegral ShapePreservingCubic::integral_of_square(double level,
+                                                                              double x) const {
+  SquareIntegral out{0.0, 0.0};
+  if (!(x > knots_.front())) return out;
+  const std::size_t last = piece(x);
+  for (std::size_t k = 0; k <= last; ++k) {
+    const Piece& p = pieces_[k];
+    const double end = k == last ? (x - knots_[k]) / p.h : 1.0;
+    // level - p(s) = b0 + b1 s + b2 s^2 + b3 s^3; its square's coefficient of s^m is the sum
+    // of b_i b_j over i + j = m, integrated from 0 to `end` as end^(m+1) / (m+1).
+    const double b[4] = {level - p.y, -p.c1, -p.c2, -p.c3};
+    double power = end;
+    for (int m = 0; m <= 6; ++m) {
+      double coefficient = 0.0, size = 0.0;
+      for (int i = std::max(0, m - 3); i <= std::min(3, m); ++i) {
+        coefficient += b[i] * b[m - i];
+        size += std::abs(b[i] * b[m - i]);
+      }
+      out.value += p.h * coefficient * power / (m + 1);
+      out.magnitude += p.h * size * power / (m + 1);
+      power *= end;
+    }
+  }
+  return out;
+}
+
 }  // namespace mdrsim

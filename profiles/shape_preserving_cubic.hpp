@@ -41,6 +41,15 @@ class ShapePreservingCubic {
   /// integral from x_0 to x of the interpolant.
   double integral(double x) const;
 
+  /// integral from x_0 to x of (level - p)^2, exact on each piece (expanded about the piece's
+  /// start, so that no term is larger than the piece's own |level - p|^2 demands), and the sum
+  /// of its terms' magnitudes (what its rounding is relative to).
+  struct SquareIntegral {
+    double value;
+    double magnitude;
+  };
+  SquareIntegral integral_of_square(double level, double x) const;
+
  private:
   /// p(s) = y + s (c1 + s (c2 + s c3)), s = (x - x_k)/h on piece k.
   struct Piece {

@@ -44,6 +44,25 @@ void gauss_legendre(double lo, double hi, Fn fn) {
   }
 }
 
+/// Whether r f'(r) never falls on the cubic pieces of f: (r f')' = f' + r f'' is a quadratic
+/// in r on each piece, whose least value on the piece is at an end or at its vertex.
+bool r_slope_never_falls(const ShapePreservingCubic& f) {
+  const std::vector<double>& r = f.knots();
+  for (std::size_t k = 0; k + 1 < r.size(); ++k) {
+    const auto rise = [&](double s) {
+      const double x = r[k] + (r[k + 1] - r[k]) * s;
+      return f.slope_on(k, x) + x * f.curvature_on(k, x);
+    };
+    // q(s) = q0 + b s + c s^2 through s = 0, 1/2, 1.
+    const double q0 = rise(0.0), q_mid = rise(0.5), q1 = rise(1.0);
+    const double c = 2.0 * (q0 - 2.0 * q_mid + q1);
+    const double b = q1 - q0 - c;
+    if (!(q0 >= 0.0 && q1 >= 0.0)) return false;
+    if (c > 0.0 && b < 0.0 && -b < 2.0 * c && !(rise(-b / (2.0 * c)) >= 0.0)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<TableProblem> find_table_problem(const ProfileTable& t) {
@@ -109,6 +128,9 @@ TabulatedProfile::TabulatedProfile(const ProfileTable& table)
     values.push_back(g.image);
     slopes.push_back(g.slope);
   }
+  image_never_falls_ = r_slope_never_falls(shape_) &&
+                       std::is_sorted(values.begin(), values.end()) &&
+                       std::all_of(slopes.begin(), slopes.end(), [](double s) { return s >= 0.0; });
   image_ = ShapePreservingCubic::hermite(std::move(nodes), std::move(values), std::move(slopes));
 }
 
@@ -186,6 +208,12 @@ double TabulatedProfile::nonadhesive_force_per_modulus(double a) const {
   if (a > outer_radius()) return std::numeric_limits<double>::infinity();
   if (!(a > 0.0)) return 0.0;
   return 2.0 * (a * image_.value(a) - image_.integral(a));
+}
+
+std::optional<ExactIntegral> TabulatedProfile::squared_gap_integral(double a, double d) const {
+  if (!(a <= outer_radius())) return std::nullopt;
+  const ShapePreservingCubic::SquareIntegral i = image_.integral_of_square(d, std::max(a, 0.0));
+  return ExactIntegral{i.value, i.magnitude};
 }
 
 }  // namespace mdrsim

@@ -62,7 +62,15 @@ class TabulatedProfile final : public Profile {
   double mdr_image_slope(double x) const override;
   /// 2 (a g(a) - integral_0^a g), the integral exact on the Hermite pieces.
   double nonadhesive_force_per_modulus(double contact_radius) const override;
+  /// Exact on the image's Hermite pieces: no quadrature over its ~1000 kinks.
+  std::optional<ExactIntegral> squared_gap_integral(double contact_radius,
+                                                    double indentation) const override;
   double outer_radius() const override { return shape_.back(); }
+  /// Where the interpolated shape's r f'(r) never falls (checked exactly at construction: on
+  /// each cubic piece (r f')' is a quadratic in r) and the image's nodes never fall (its
+  /// Hermite pieces are limited to be monotone on monotone nodes): every convex table rising
+  /// from the tip, a cone's, a power law's.
+  bool proves_one_disk() const override { return image_never_falls_; }
   std::optional<std::string> source_table_file() const override { return file_; }
 
   /// Eq. 4 and its x-derivative for the interpolated f at x [m], by Gauss-Legendre
@@ -82,6 +90,7 @@ class TabulatedProfile final : public Profile {
   ShapePreservingCubic shape_;       ///< f(r)
   ShapePreservingCubic image_;       ///< g(x) on the grid
   std::optional<std::string> file_;  ///< the CSV read, as the scene gave it; none for arrays
+  bool image_never_falls_ = false;   ///< proves_one_disk()
 };
 
 }  // namespace mdrsim

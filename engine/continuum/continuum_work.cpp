@@ -9,6 +9,7 @@ namespace {
 
 constexpr double kQuadratureTolerance = 1e-12;
 constexpr unsigned kMaxDepth = 15;
+constexpr double kRounding = 1e-15;  ///< of a sum of terms, relative to their magnitudes' sum
 
 /// Over [lo, hi] mapped onto [0, 1]: Boost's adaptive rule compares the error of the unit
 /// interval's sum with the tolerance times the scaled integral, so that on an interval of
@@ -23,7 +24,7 @@ Estimated integrate(Fn fn, double lo, double hi) {
       [&](double t) { return fn(lo + width * t); }, 0.0, 1.0, kMaxDepth, kQuadratureTolerance,
       &error, &l1);
   // Rounding of the sum of positive terms adds about 1e-15 of its size.
-  return {width * value, width * (error + 1e-15 * l1)};
+  return {width * value, width * (error + kRounding * l1)};
 }
 
 }  // namespace
@@ -34,12 +35,17 @@ Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s) {
   const double d = s.indentation;
   // x = a t^2: images like sqrt(x) (power laws with n < 1, the cone's tip) become smooth in t.
   const double a = s.contact_radius;
-  Estimated e = integrate(
-      [&](double t) {
-        const double gap = d - profile.mdr_image(a * t * t);
-        return 2.0 * a * t * gap * gap;
-      },
-      0.0, 1.0);
+  Estimated e;
+  if (const auto exact = profile.squared_gap_integral(a, d)) {
+    e = {exact->value, kRounding * exact->magnitude};
+  } else {
+    e = integrate(
+        [&](double t) {
+          const double gap = d - profile.mdr_image(a * t * t);
+          return 2.0 * a * t * gap * gap;
+        },
+        0.0, 1.0);
+  }
   e.value *= m.effective_modulus;
   e.error *= m.effective_modulus;
   const double ux = s.tangential_displacement;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -173,6 +174,64 @@ TEST(TabulatedProfile, AcceptsAGapThatDecreases) {
     EXPECT_NEAR(table.shape(t.radii[i]), t.gaps[i], 1e-12 * 1.5e-5);
   }
   EXPECT_LT(table.shape(1.5e-4), 2e-6);  // between the crest and the dip, no overshoot
+}
+
+// The disk check is skipped where the interpolated shape's r f'(r) never falls (then g' >= 0:
+// Profile::proves_one_disk). Convex tables rising from the tip prove it, and so does a cone's
+// table, whose second differences are rounding of either sign; a cone capped by a plateau does
+// not (its image falls), nor a sphere's table with one point raised into a concave one, nor
+// r^0.5's, whose spline rings near the singular tip.
+TEST(TabulatedProfile, ProvesOneDiskWhereRSlopeNeverFalls) {
+  const auto sphere = [](double r) { return 0.01 - std::sqrt(0.01 * 0.01 - r * r); };
+  EXPECT_TRUE(TabulatedProfile(table_of(sphere, 200, 6e-3)).proves_one_disk());
+  EXPECT_TRUE(TabulatedProfile(table_of([](double r) { return r * r / 0.02; }, 11, 1e-3))
+                  .proves_one_disk());
+  const double slope = std::tan(10.0 * std::numbers::pi / 180.0);
+  EXPECT_TRUE(
+      TabulatedProfile(table_of([&](double r) { return slope * r; }, 51, 5e-5)).proves_one_disk());
+  EXPECT_TRUE(
+      TabulatedProfile(table_of([](double r) { return 0.8 * std::pow(r, 1.5); }, 201, 1e-3, 2.0))
+          .proves_one_disk());
+
+  ProfileTable capped;
+  capped.radii = {0, 1e-4, 2e-4, 3e-4, 4e-4, 5e-4, 6e-4, 8e-4, 1e-3};
+  capped.gaps = {0, 1e-4, 2e-4, 3e-4, 4e-4, 4e-4, 4e-4, 4e-4, 4e-4};
+  EXPECT_FALSE(TabulatedProfile(capped).proves_one_disk());
+
+  ProfileTable bumped = table_of(sphere, 200, 6e-3);
+  const auto second_difference = [&](std::size_t i) {
+    return bumped.gaps[i + 1] - 2.0 * bumped.gaps[i] + bumped.gaps[i - 1];
+  };
+  bumped.gaps[60] += 5.0 * second_difference(60);
+  int concave = 0;
+  for (std::size_t i = 1; i + 1 < bumped.gaps.size(); ++i) concave += second_difference(i) < 0.0;
+  EXPECT_EQ(concave, 1);
+  EXPECT_FALSE(TabulatedProfile(bumped).proves_one_disk());
+
+  EXPECT_FALSE(TabulatedProfile(table_of([](double r) { return 1e-2 * std::sqrt(r); }, 101, 1e-3))
+                   .proves_one_disk());
+}
+
+// The springs' stored energy per E*, int_0^a (d - g)^2 dx, exact on the image's pieces: on a
+// parabola's table (g = x^2/R to 1e-13, PolynomialTablesAreExact) against
+// d^2 a - 2 d a^3 / (3 R) + a^5 / (5 R^2), to 1e-12 (the image's error, and the closed form's
+// own cancellation of a few ulps), pressed (d > g(a)) and stretched (d < g(a)), a at a knot
+// and between knots.
+TEST(TabulatedProfile, SquaredGapIntegralIsExactOnTheImage) {
+  constexpr double kR = 0.01;
+  const TabulatedProfile table(table_of([](double r) { return r * r / (2.0 * kR); }, 11, 1e-3));
+  for (const double a : {1e-4, 3.3e-4, 7e-4, 1e-3}) {
+    for (const double d : {2.0 * a * a / kR, a * a / kR, 0.2 * a * a / kR}) {
+      SCOPED_TRACE(fmt::format("a {} d {}", a, d));
+      const double exact =
+          d * d * a - 2.0 * d * a * a * a / (3.0 * kR) + std::pow(a, 5) / (5.0 * kR * kR);
+      const auto i = table.squared_gap_integral(a, d);
+      ASSERT_TRUE(i.has_value());
+      EXPECT_NEAR(i->value, exact, 1e-12 * i->magnitude);
+      EXPECT_GE(i->magnitude, std::abs(i->value));
+    }
+  }
+  EXPECT_EQ(table.squared_gap_integral(0.0, 1e-6)->value, 0.0);
 }
 
 // Each check of find_table_problem, with the point it names.

@@ -5,12 +5,15 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <memory>
 #include <string>
 
 #include "engine/model/disk_validity.hpp"
 #include "engine/output/result_json.hpp"
 #include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
+#include "profiles/tabulated_profile.hpp"
 
 namespace mdrsim {
 namespace {
@@ -64,6 +67,71 @@ TEST(DiskStates, AGentleRippleIsOneDisk) {
   for (const std::string& w : r.warnings) {
     EXPECT_EQ(w.find("not one disk"), std::string::npos) << w;
   }
+}
+
+/// A 200-point table of a sphere of radius 1 cm out to 6 mm, optionally with point 60 raised
+/// by five times its second difference (the table's one concave point).
+ProfileTable sphere_table(bool bumped) {
+  ProfileTable t;
+  for (int i = 0; i < 200; ++i) {
+    const double r = 6e-3 * i / 199.0;
+    t.radii.push_back(r);
+    t.gaps.push_back(0.01 - std::sqrt(0.01 * 0.01 - r * r));
+  }
+  if (bumped) t.gaps[60] += 5.0 * (t.gaps[61] - 2.0 * t.gaps[60] + t.gaps[59]);
+  return t;
+}
+
+/// The profile `shape` claiming that it proves one disk, whatever it is.
+struct ClaimsOneDisk final : Profile {
+  const Profile& inner;
+  explicit ClaimsOneDisk(const Profile& p) : inner(p) {}
+  double shape(double r) const override { return inner.shape(r); }
+  double mdr_image(double x) const override { return inner.mdr_image(x); }
+  double outer_radius() const override { return inner.outer_radius(); }
+  bool proves_one_disk() const override { return true; }
+};
+
+// The skip is as good as its proof: a table that proves one disk (the sphere's) passes the
+// check at every state tried, pressed and stretched; a table with one concave point does not
+// prove it, is checked, and the check finds the surface touching again outside a contact
+// whose edge stands at the foot of the raised point (a = 1.812 mm, d = g(a): the gap dips to
+// -6e-11 m, 1e-9 of the depth being 3e-13 m). The same profile claiming one disk is skipped.
+TEST(DiskStates, TheSkipFollowsTheProfilesProof) {
+  const TabulatedProfile sphere(sphere_table(false));
+  ASSERT_TRUE(sphere.proves_one_disk());
+  for (const double a : {1e-5, 1e-4, 5e-4, 1.8e-3, 4e-3, 5.9e-3}) {
+    for (const double stretch : {0.0, 1e-3 * sphere.mdr_image(a), 0.5 * sphere.mdr_image(a)}) {
+      SCOPED_TRACE(fmt::format("a {} stretch {}", a, stretch));
+      EXPECT_TRUE(check_disk(sphere, 1e6, a, sphere.mdr_image(a) - stretch, a).valid);
+    }
+  }
+
+  const auto bumped = std::make_shared<const TabulatedProfile>(sphere_table(true));
+  ASSERT_FALSE(bumped->proves_one_disk());
+  Scene scene = test::build_scene_text(
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[loading]\npreload = { contact_radius = 5e-4 }\nnormal = { control = \"fixed-grips\" }\n");
+  scene.profile = bumped;
+  RunResult r;
+  ContactSnapshot edge;
+  edge.contact_radius = 1.81221e-3;
+  edge.indentation = bumped->mdr_image(edge.contact_radius);
+  edge.glued_radius = edge.contact_radius;
+  r.critical = edge;
+  check_disk_states(scene, r);
+  EXPECT_FALSE(r.disk_valid);
+  EXPECT_FALSE(r.critical->disk_valid);
+
+  const ClaimsOneDisk claims(*bumped);
+  scene.profile = std::shared_ptr<const Profile>(&claims, [](const Profile*) {});
+  r.critical = edge;
+  r.disk_valid = true;
+  r.warnings.clear();
+  check_disk_states(scene, r);
+  EXPECT_TRUE(r.disk_valid);
+  EXPECT_TRUE(r.critical->disk_valid);
 }
 
 // With adhesion the pressure is checked where springs in contact are not glued. A wavy sphere
