@@ -88,13 +88,17 @@ struct Refined {
 
 /// Adds rows of doubling springs across `outer` to `seq` until its estimate meets rtol.
 Refined refine(const Scene& scene, RowSequence seq, double outer, double rtol,
-               std::optional<Accuracy::Route> forced, RunCounts& counts) {
+               std::optional<Accuracy::Route> forced, RunCounts& counts,
+               std::vector<RunResult>* glued_rows = nullptr) {
   const bool zoomed = outer < scene.glued_radius;
+  const bool keep = glued_rows && !zoomed;
   seq.with_rough_radii(rough_radii(scene.material));
   const RowOfSprings row = [&](std::int64_t springs) -> std::optional<RunResult> {
-    RunResult next =
-        run_row(scene, {.springs = springs, .outer_radius = outer, .zoomed = zoomed}, {});
+    RunResult next = run_row(
+        scene, {.springs = springs, .outer_radius = outer, .zoomed = zoomed, .record_path = keep},
+        {});
     counts += next.counts;
+    if (keep) glued_rows->push_back(next);
     return next;
   };
   RowRefinement refined =
@@ -185,7 +189,7 @@ void refine_peak(const Scene& scene, const std::vector<Zoom>& chain, double oute
 }  // namespace
 
 RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::Route> route,
-                       const ObserverList& observers) {
+                       const ObserverList& observers, std::vector<RunResult>* glued_rows) {
   RunCounts counts;
   std::vector<std::string> warnings;
   if (rtol < kValidatedRtol) {
@@ -198,9 +202,13 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
   PhaseFilter preload_events(observers, PhaseFilter::Phase::preload);
   ObserverList pilot_observers;
   pilot_observers.add(preload_events);
-  RunResult pilot =
-      run_row(scene, {.springs = kRowSprings, .outer_radius = scene.glued_radius}, pilot_observers);
+  RunResult pilot = run_row(scene,
+                            {.springs = kRowSprings,
+                             .outer_radius = scene.glued_radius,
+                             .record_path = glued_rows != nullptr},
+                            pilot_observers);
   counts += pilot.counts;
+  if (glued_rows) glued_rows->push_back(pilot);
   if (pilot.status == RunStatus::step_limit || pilot.tangential_strength) {
     // Nothing to refine: no critical point, or a strength found to full precision.
     pilot.counts = counts;
@@ -217,8 +225,8 @@ RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::
                  .zoomed = zoom.outer_radius < scene.glued_radius};
   std::vector<RunResult> rows{zoom.row};
   if (result.status != RunStatus::no_instability) {
-    Refined c =
-        refine(scene, RowSequence(Target::critical, rows), zoom.outer_radius, rtol, route, counts);
+    Refined c = refine(scene, RowSequence(Target::critical, rows), zoom.outer_radius, rtol, route,
+                       counts, glued_rows);
     // The status before the force: a fold just above the radius where the glue shears off
     // unstretched is an instability, but a row reports shear-off until a spring fits between
     // them (the force is the same to that spacing, so rtol alone can stop short of it).

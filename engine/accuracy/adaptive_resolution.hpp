@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "engine/events/observer.hpp"
 #include "engine/result/run_result.hpp"
@@ -32,7 +33,10 @@ namespace mdrsim {
 /// 3. The peak adhesive force takes the critical point's rows where it lies inside them,
 ///    else its own zoom and refinement.
 /// Observers see the preload events of the pilot and the detachments of the finest row.
+/// Where `glued_rows` is given, the rows run across the whole glued radius (the pilot, and the
+/// refinement's where no zoom gains) record their paths and are kept there, for the shorthand's
+/// path rows to take rather than run again (shorthand_accuracy.hpp).
 RunResult run_adaptive(const Scene& scene, double rtol, std::optional<Accuracy::Route> route,
-                       const ObserverList& observers);
+                       const ObserverList& observers, std::vector<RunResult>* glued_rows = nullptr);
 
 }  // namespace mdrsim

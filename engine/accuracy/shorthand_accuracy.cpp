@@ -128,11 +128,21 @@ ZeroScale shorthand_zero_scale(const Scene& scene) {
                     scene.material.largest_work_of_adhesion(), scene.preload_force);
 }
 
-void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result) {
+void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result,
+                           std::vector<RunResult> ran) {
   const ZeroScale zero = shorthand_zero_scale(scene);
   const auto run = [&](std::int64_t springs) {
-    RunResult row = run_row(
-        scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {});
+    const auto same = std::find_if(ran.begin(), ran.end(), [&](const RunResult& r) {
+      return r.springs == springs && r.work.has_value();
+    });
+    RunResult row;
+    if (same != ran.end()) {
+      row = std::move(*same);
+      row.counts = {};  // counted by the run that made it
+    } else {
+      row = run_row(
+          scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {});
+    }
     locate_at_critical(row);
     if (row.work) carry_works_to_located_ends(scene, row);
     return row;

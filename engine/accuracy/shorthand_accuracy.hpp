@@ -21,7 +21,11 @@ void combine_shorthand_path(const Scene& scene, std::vector<RunResult> rows, Run
 /// recorded, doubled until every stage end's, jump's and work's estimate meets rtol (the
 /// critical point and peak stay as the zoom refined them); their values and estimates go into
 /// `result`. Where they do not meet it, a warning says which and `covers` leaves them out.
-void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result);
+/// `ran`: rows across the glued radius with their paths recorded that the critical point's
+/// refinement already ran (run_adaptive's glued_rows): a path row of the same springs is taken
+/// from them rather than run again.
+void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result,
+                           std::vector<RunResult> ran = {});
 
 /// What is zero on the shorthand's rows (zero_scale.hpp): its glued radius, its image there and
 /// its preload force, as program_zero_scale gives it for a program's frame.

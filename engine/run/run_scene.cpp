@@ -156,9 +156,10 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
 RunResult run_on_pull_off_row(const Scene& scene, const ObserverList& observers) {
   switch (scene.plan.driver) {
     case RouteDriver::rtol: {
+      std::vector<RunResult> glued_rows;
       RunResult result = run_adaptive(scene, *scene.discretization.rtol,
-                                      forced_route(scene.discretization), observers);
-      refine_shorthand_path(scene, *scene.discretization.rtol, result);
+                                      forced_route(scene.discretization), observers, &glued_rows);
+      refine_shorthand_path(scene, *scene.discretization.rtol, result, std::move(glued_rows));
       return result;
     }
     case RouteDriver::richardson:
