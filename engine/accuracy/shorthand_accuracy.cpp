@@ -93,12 +93,11 @@ void take_critical(const RunResult& result, std::vector<StateChoice>& choices) {
 
 }  // namespace
 
-void combine_shorthand_path(const Scene& scene, std::vector<RunResult> rows, RunResult& result) {
+void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result) {
   if (rows.size() < 3 || !result.work) return;
   for (RunResult& row : rows) {
     if (!row.work) return;  // a row's work left the range of a double: nothing to combine
     locate_at_critical(row);
-    carry_works_to_located_ends(scene, row);
   }
   const std::size_t n = rows.size();
   if (!end_alike(rows[n - 3], rows[n - 2]) || !end_alike(rows[n - 2], rows[n - 1])) {
