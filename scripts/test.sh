@@ -4,7 +4,8 @@
 #      (scripts/check_doc_links.py), build (Release, warnings as errors) and run every test with
 #      ctest;
 #   2. install the Python module the way docs/python.md says, offline into a fresh venv
-#      (pip install --no-build-isolation --no-deps --no-index .), run its one-line check, and
+#      (pip install -v --no-build-isolation --no-deps --no-index .), run its one-line check and
+#      the console script, and
 #      the module's tests with pytest (python/tests) on the installed module. (The module's
 #      build is its own, in build-python-package: it needs position-independent code, which
 #      costs the command 10-20 % per event, so the C++ build of stage 1 stays without it.)
@@ -71,8 +72,10 @@ fi
 stage "2/4 install the Python module offline into a fresh venv (docs/python.md), pytest"
 venv="$logs/venv"
 /usr/bin/python3 -m venv --system-site-packages "$venv"
-"$venv/bin/pip" install -q --no-build-isolation --no-deps --no-index .
+# -v: setup.py's step lines and CMake's progress as the build goes (pip is silent without it).
+"$venv/bin/pip" install -v --no-build-isolation --no-deps --no-index .
 "$venv/bin/python" -c "import mdrsim; print(mdrsim.__file__)" | grep -q "^$venv/lib/"
+"$venv/bin/mdrsim" --version  # the console script, installed with the package
 "$venv/bin/python" -c "import mdrsim; print(mdrsim.run(mdrsim.Scene.from_file('scenes/fig2_fixed_load.toml')).critical)"
 # The tests on the installed module, compared with the mdrsim command of stage 1.
 MDRSIM_CLI="$build_dir/apps/mdrsim" \
