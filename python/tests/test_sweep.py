@@ -323,3 +323,18 @@ def test_bad_design_arguments_raise_scene_error(kwargs, message):
     with pytest.raises(mdrsim.SceneError) as caught:
         mdrsim.sweep(program_scene(), **kwargs)
     assert str(caught.value) == message
+
+
+def test_a_long_run_and_a_sweep_print_nothing_by_default(capfd):
+    # Logs are off until set_log_level (test_log_lines_name_their_row turns them on): a program
+    # run of 2e6 springs, whose engine asks every 65536 events whether its progress line is due
+    # (at info, every 2 s), and a sweep whose every row warns write nothing to standard output
+    # or error. The warnings are on the result, as a count per row in the sweep.
+    cycle = mdrsim.Scene.from_file("scenes/programs/jkr_cycle_reversible.toml")
+    long = mdrsim.run(cycle.set("discretization.springs", 2_000_000), trajectory=False)
+    coarse = mdrsim.Scene.from_file("scenes/fig3a_fixed_grips.toml").with_values(
+        {"discretization": {"springs": 20}})  # a plain row (the scene extrapolates)
+    rows = mdrsim.sweep(coarse, {"loading.tangential.displacement": [0, 2e-6, 4e-6]}).rows
+    assert capfd.readouterr() == ("", "")
+    assert long.counts["events"] > 1 << 16
+    assert [row["warnings"] for row in rows] == [1, 1, 1]
