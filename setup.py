@@ -40,8 +40,9 @@ class CMakeBuild(build_ext):
         subprocess.run(["cmake", "-S", str(ROOT), "-B", str(cmake), "-DCMAKE_BUILD_TYPE=Release",
                         "-DMDRSIM_PYTHON=ON", "-DMDRSIM_HEADER_ONLY_DEPS=ON",
                         "-DMDRSIM_BUILD_TESTS=OFF", "-DMDRSIM_BUILD_BENCH=OFF",
-                        # About 8 sources per compiler call: the headers (Boost.Math, fmt,
-                        # spdlog, toml++, pybind11) are parsed once per batch, not per file.
+                        # About 8 sources per compiler call, the headers parsed once per
+                        # batch: header-only fmt, spdlog and toml++ took the engine from 2.5 to
+                        # 4.6 min of CPU file by file; in batches it takes 2.1.
                         "-DCMAKE_UNITY_BUILD=ON",
                         f"-DPython3_EXECUTABLE={sys.executable}"], check=True)
         step(started, f"compiling the engine, the extension and the command on {jobs()} jobs "
