@@ -2,7 +2,9 @@
 #include "engine/base/text.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <cstring>
+#include <system_error>
 
 namespace mdrsim {
 
@@ -38,6 +40,12 @@ std::string_view trim_blanks(std::string_view text) {
   while (!text.empty() && blank(text.front())) text.remove_prefix(1);
   while (!text.empty() && blank(text.back())) text.remove_suffix(1);
   return text;
+}
+
+bool read_whole_number(std::string_view text, std::uint64_t& out) {
+  const char* end = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), end, out);
+  return !text.empty() && r.ec == std::errc() && r.ptr == end;
 }
 
 }  // namespace mdrsim

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <concepts>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,5 +35,9 @@ std::string system_reason(int error);
 
 /// The text without the spaces and tabs at either end.
 std::string_view trim_blanks(std::string_view text);
+
+/// Reads all of `text` as a whole number >= 0 into `out`; false (out unspecified) for an empty
+/// text, a sign, anything after the digits or a number beyond 64 bits.
+bool read_whole_number(std::string_view text, std::uint64_t& out);
 
 }  // namespace mdrsim

@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 #include <string_view>
 #include <utility>
@@ -26,12 +25,6 @@ double unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1p-
 std::uint64_t draw_bits(std::uint64_t seed, std::uint64_t stream, std::uint64_t axis,
                         std::uint64_t sample) {
   return splitmix64(splitmix64(splitmix64(splitmix64(seed) ^ stream) ^ axis) ^ sample);
-}
-
-bool parse_count(std::string_view text, std::uint64_t& out) {
-  const char* end = text.data() + text.size();
-  const auto r = std::from_chars(text.data(), end, out);
-  return !text.empty() && r.ec == std::errc() && r.ptr == end;
 }
 
 }  // namespace
@@ -82,11 +75,11 @@ SweepDesign parse_design(const std::string& kind, const std::string& samples,
   if (samples.empty()) {
     throw UsageError(fmt::format("--samples: --design {} needs --samples N", kind));
   }
-  if (!parse_count(samples, design.samples) || design.samples < 1 || design.samples > most) {
+  if (!read_whole_number(samples, design.samples) || design.samples < 1 || design.samples > most) {
     throw UsageError(fmt::format("--samples: '{}' is not a whole number from 1 to {} (--design {})",
                                  printable(samples), most, kind));
   }
-  if (!seed.empty() && !parse_count(seed, design.seed)) {
+  if (!seed.empty() && !read_whole_number(seed, design.seed)) {
     throw UsageError(fmt::format("--seed: '{}' is not a whole number from 0 to {}", printable(seed),
                                  UINT64_MAX));
   }

@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <unordered_set>
 #include <utility>
 
+#include "engine/base/text.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/sweep/usage_error.hpp"
 
@@ -19,12 +19,6 @@ namespace {
 
 constexpr std::uint64_t kMaxShards = 1'000'000;
 constexpr std::uint64_t kNone = std::numeric_limits<std::uint64_t>::max();
-
-bool parse_count(std::string_view text, std::uint64_t& out) {
-  const char* end = text.data() + text.size();
-  const auto r = std::from_chars(text.data(), end, out);
-  return !text.empty() && r.ec == std::errc() && r.ptr == end;
-}
 
 /// The position of the `n`-th (from 0) set bit of `word`.
 unsigned nth_bit(std::uint64_t word, std::uint64_t n) {
@@ -38,9 +32,9 @@ Shard parse_shard(const std::string& text) {
   const auto slash = text.find('/');
   Shard shard;
   if (slash == std::string::npos ||
-      !parse_count(std::string_view(text).substr(0, slash), shard.index) ||
-      !parse_count(std::string_view(text).substr(slash + 1), shard.count) || shard.count < 1 ||
-      shard.count > kMaxShards || shard.index >= shard.count) {
+      !read_whole_number(std::string_view(text).substr(0, slash), shard.index) ||
+      !read_whole_number(std::string_view(text).substr(slash + 1), shard.count) ||
+      shard.count < 1 || shard.count > kMaxShards || shard.index >= shard.count) {
     throw UsageError(
         fmt::format("--shard: '{}' is not I/N with 0 <= I < N <= {}", printable(text), kMaxShards));
   }
