@@ -45,6 +45,14 @@ nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<Pu
 }
 
 /// With friction the work says what of it friction dissipated.
+/// Field names as in docs/outputs.md ("energy").
+nlohmann::ordered_json energy_json(const EnergyBalance& e) {
+  return {
+      {"machine_work", e.machine_work},     {"stored_change", e.stored_change},
+      {"surface_change", e.surface_change}, {"dissipated_by_friction", e.dissipated_by_friction},
+      {"jump_losses", e.jump_losses},       {"residual", e.residual}};
+}
+
 nlohmann::ordered_json work_json(const AxisWork& w, bool friction = false) {
   nlohmann::ordered_json j = {{"normal", w.normal}, {"tangential", w.tangential}};
   if (friction) j["dissipated_by_friction"] = w.friction;
@@ -219,6 +227,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       if (stage.work_error_estimate) {
         record["work_error_estimate"] = work_json(*stage.work_error_estimate);
       }
+      if (stage.energy) record["energy"] = energy_json(*stage.energy);
       stages.push_back(record);
     }
     j["stages"] = stages;
@@ -240,6 +249,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     }
     j["jumps"] = jumps;
     j["work"] = work_json(*result.work, friction);
+    if (result.energy) j["energy"] = energy_json(*result.energy);
   }
   if (continuum) drop_spring_counts(j);
   j["warnings"] = result.warnings;

@@ -90,7 +90,11 @@ void FrictionRow::detach_glued(std::int64_t n) {
     }
   }
   // Only glued sliders add to these: what is left is rounding.
-  if (glued_keyed_) slider_adhesion_ = tension_limits_ = {};
+  if (glued_keyed_) {
+    slider_adhesion_ = tension_limits_ = {};
+    energy_.slider_adhesion_images = energy_.slider_adhesion_squares =
+        energy_.tension_limit_squares = {};
+  }
 }
 
 double FrictionRow::attach_glued(std::int64_t n, bool relimit_sticking) {
@@ -188,7 +192,9 @@ double FrictionRow::limit_sum(std::size_t s, double indentation) const {
 
 void FrictionRow::add_sticking(std::int64_t i, int stuck_from) {
   ++sticking_;
-  sticking_offsets_.add(springs_[index(i)].state.offset);
+  const double offset = springs_[index(i)].state.offset;
+  sticking_offsets_.add(offset);
+  energy_.sticking_offset_squares.add(offset * offset);
   if (keyed(i)) insert_keys(i, stuck_from);
 }
 
@@ -219,6 +225,7 @@ void FrictionRow::remove_sticking(std::int64_t i) {
   const Spring& s = springs_[index(i)];
   --sticking_;
   sticking_offsets_.add(-s.state.offset);
+  energy_.sticking_offset_squares.add(-s.state.offset * s.state.offset);
   if (!keyed(i)) return;
   keys_.erase(i);
   if (keyed_glued(i)) tension_keys_.erase(i);
@@ -236,13 +243,21 @@ void FrictionRow::add_sliding(std::int64_t i) {
     const double c = glued_keys_move() ? glued_adhesive_limit(i) : 0.0;
     if (in_tension(i)) {
       tension_sliders_[at].insert(i);
-      if (c != 0.0) tension_limits_[at].add(c);
+      if (c != 0.0) {
+        tension_limits_[at].add(c);
+        energy_.tension_limit_squares[at].add(c * c);
+      }
       return;
     }
-    if (c != 0.0) slider_adhesion_[at].add(c);
+    if (c != 0.0) {
+      slider_adhesion_[at].add(c);
+      energy_.slider_adhesion_images[at].add(c * s.image);
+      energy_.slider_adhesion_squares[at].add(c * c);
+    }
   }
   sliders_[at].insert(i);
   slider_images_[at].add(s.image);
+  energy_.slider_image_squares[at].add(s.image * s.image);
 }
 
 void FrictionRow::remove_sliding(std::int64_t i) {
@@ -257,13 +272,21 @@ void FrictionRow::remove_sliding(std::int64_t i) {
     const double c = glued_keys_move() ? glued_adhesive_limit(i) : 0.0;
     if (in_tension(i)) {
       tension_sliders_[at].erase(i);
-      if (c != 0.0) tension_limits_[at].add(-c);
+      if (c != 0.0) {
+        tension_limits_[at].add(-c);
+        energy_.tension_limit_squares[at].add(-c * c);
+      }
       return;
     }
-    if (c != 0.0) slider_adhesion_[at].add(-c);
+    if (c != 0.0) {
+      slider_adhesion_[at].add(-c);
+      energy_.slider_adhesion_images[at].add(-c * s.image);
+      energy_.slider_adhesion_squares[at].add(-c * c);
+    }
   }
   sliders_[at].erase(i);
   slider_images_[at].add(-s.image);
+  energy_.slider_image_squares[at].add(-s.image * s.image);
 }
 
 std::int64_t FrictionRow::first_own_sliding() const {
@@ -361,6 +384,60 @@ double FrictionRow::tangential_force(double indentation, double tangential) cons
     }
   }
   return 2.0 * sum;
+}
+
+double FrictionRow::stored_energy(double indentation, double tangential) const {
+  const double u = tangential;
+  const double d = indentation;
+  const double n = static_cast<double>(sticking_);
+  // Each term is f_x^2 / kx, both halves of f_x^2 / (2 kx). A sticking spring's sum (u - o)^2
+  // = n u^2 - 2 u sum o + sum o^2: the sums the force already keeps, and one more.
+  double twice = tangential_stiffness_ * (n * u * u - 2.0 * u * sticking_offsets_.value() +
+                                          energy_.sticking_offset_squares.value());
+  // A keyed pressed slider is at its limit mu kz (d - g_i) + c_i (c_i of a glued one only).
+  const double per_slider = settings_.coefficient * normal_stiffness_;
+  for (std::size_t s = 0; s < 2; ++s) {
+    if (sliders_[s].empty()) continue;
+    const auto count = static_cast<double>(sliders_[s].size());
+    twice += per_slider * per_slider *
+             (count * d * d - 2.0 * d * slider_images_[s].value() +
+              energy_.slider_image_squares[s].value()) /
+             tangential_stiffness_;
+  }
+  if (glued_keys_move()) {
+    for (std::size_t s = 0; s < 2; ++s) {
+      // 2 mu kz (d - g_i) c_i + c_i^2 of the pressed glued sliders; c_i^2 in tension.
+      twice +=
+          (2.0 * per_slider *
+               (d * slider_adhesion_[s].value() - energy_.slider_adhesion_images[s].value()) +
+           energy_.slider_adhesion_squares[s].value() + energy_.tension_limit_squares[s].value()) /
+          tangential_stiffness_;
+    }
+  }
+  if (glued_keyed_ && !classes_hold(d)) twice += misclassed_energy(d);
+  if (own_sliding_ > 0) {
+    for (std::int64_t i = 1; i <= own_springs(); ++i) {
+      const StickSlipSpring& state = springs_[index(i)].state;
+      if (state.sliding == 0) continue;
+      const double f = spring_tangential_force(state, *law(i), geometry(i), d, u);
+      twice += f * f / tangential_stiffness_;
+    }
+  }
+  return twice;
+}
+
+double FrictionRow::misclassed_energy(double indentation) const {
+  double sum = 0.0;
+  for (std::int64_t i = 1; i <= glued_; ++i) {
+    const Spring& s = springs_[index(i)];
+    if (s.state.sliding == 0) continue;
+    const double c = glued_keys_move() ? glued_adhesive_limit(i) : 0.0;
+    const double keyed_limit =
+        in_tension(i) ? c : settings_.coefficient * normal_stiffness_ * (indentation - s.image) + c;
+    const double exact = slip_limit(*law(i), geometry(i), indentation);
+    sum += (exact * exact - keyed_limit * keyed_limit) / tangential_stiffness_;
+  }
+  return sum;
 }
 
 double FrictionRow::tangential_stiffness() const {

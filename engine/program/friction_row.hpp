@@ -71,6 +71,19 @@ class FrictionRow {
   /// sliding, as between two events): u_x - offset while it sticks, +-limit / kx while it
   /// slides (0 at the glued edge in tension, where its limit is 0) [m].
   double glued_stretch(std::int64_t i, double indentation, double tangential) const;
+  /// The tangential stretch spring i keeps at d once its glue is gone and it stays pressed:
+  /// what its law lets it hold without glue, limit / kx (Coulomb's mu f_z / kx) [m].
+  double released_limit_stretch(std::int64_t i, double indentation) const {
+    const SlipLimit free = individual_ ? laws_[index(i)] : SlipLimit{settings_.coefficient, 0.0};
+    return slip_limit(free, geometry(i), indentation) / tangential_stiffness_;
+  }
+  /// Whether that stretch moves with d (a coefficient or a law of its own).
+  bool released_limit_moves() const { return individual_ || settings_.coefficient != 0.0; }
+  /// The elastic energy of the springs' tangential stretches on both halves, kx (u_x -
+  /// offset)^2 / 2 each, a slider's at its limit, limit^2 / (2 kx): O(1) from the row's sums
+  /// (glued springs under glued = "coulomb" included, by class), plus O(m) while springs under
+  /// a law of its own slide, O(k) where a glued slider's class is wrong at d [J].
+  double stored_energy(double indentation, double tangential) const;
 
   /// Room for `springs` in contact without reallocation (the row's N: each regrowth copies the
   /// springs into fresh pages, and at 1e6 springs the pages cost more than the events).
@@ -188,6 +201,8 @@ class FrictionRow {
   /// d [N]: O(k), where classes_hold(d) is false.
   double misclassed_force(double indentation) const;
   double misclassed_slope(double indentation) const;  ///< the same for dF_x/dd / 2 [N/m]
+  /// The same for the sliders' f_x^2 / kx (stored_energy's terms) [J].
+  double misclassed_energy(double indentation) const;
   /// The glued spring's keys against p+- (pressed) or u_x (in tension): o -+ r g -+ c/kx, or the
   /// p at which it stuck on the side it slid to (`stuck_from`).
   void insert_keys(std::int64_t i, int stuck_from);
@@ -234,6 +249,16 @@ class FrictionRow {
   std::array<CompensatedSum, 2> tension_limits_;
   /// The sums of c_i of the glued sliders of sliders_ (pressed) [N]; with tau_0 > 0 only.
   std::array<CompensatedSum, 2> slider_adhesion_;
+  /// What stored_energy needs beyond the forces' sums, kept beside them.
+  struct EnergySums {
+    CompensatedSum sticking_offset_squares;              ///< [m^2]
+    std::array<CompensatedSum, 2> slider_image_squares;  ///< g_i^2 of sliders_ [m^2]
+    /// c_i g_i and c_i^2 of the glued ones among sliders_; with tau_0 > 0 only [N m], [N^2].
+    std::array<CompensatedSum, 2> slider_adhesion_images;
+    std::array<CompensatedSum, 2> slider_adhesion_squares;
+    std::array<CompensatedSum, 2> tension_limit_squares;  ///< c_i^2 of tension_sliders_ [N^2]
+  };
+  EnergySums energy_;
   /// The keyed glued springs by class: a pressed one with keys (+inf, g_i), one in tension with
   /// (g_i, -inf), so that backward_last is the pressed one of the largest image and
   /// forward_first the one in tension of the smallest: the next to cross as d falls (rises).

@@ -30,7 +30,12 @@ struct Cascade {
   /// The stage parameter at `refined_before`: where the continuum jumps, which the row does
   /// at its own last spring, O(dx^2) apart.
   std::optional<double> fold_parameter;
-  AxisWork work_before;          ///< the stage's work up to `before`
+  AxisWork work_before;  ///< the stage's work up to `before`
+  /// At `before`, where the cascade may end in a flight (a held force): the stored energy,
+  /// the glued surface and the stage's jump losses [J].
+  double stored_before = 0.0;
+  double surface_before = 0.0;
+  double jump_losses_before = 0.0;
   const Stage* stage = nullptr;  ///< the stage it happened in
   /// A shear-off cascade's fold of the let-go branch above a_s, in spacings, where one lies
   /// there (status_margin.hpp): the row cannot tell that shear-off from an instability.

@@ -18,6 +18,8 @@ struct Flight {
   JumpEnd end = JumpEnd::state;                 ///< state: no flight
   ContactSnapshot from;                         ///< the critical point, where the last stage ends
   std::optional<ContactSnapshot> refined_from;  ///< `from` located between springs
+  double stored_from = 0.0;                     ///< the stored energy at `from` [J]
+  double surface_from = 0.0;                    ///< the glued surface at `from` [J]
 
   bool flying() const { return end != JumpEnd::state; }
 };

@@ -175,6 +175,9 @@ double ProgramRow::glue_through(std::int64_t last) {
     const double g = image(i);
     contact_images_.add(g);
     glued_offsets_.add(u);
+    sums_.image_squares.add(g * g);
+    sums_.offset_squares.add(u * u);
+    sums_.surface.add(surface_energy(i));
     const double stretch = d - g;
     squares.add(stretch * stretch);
   }
@@ -205,11 +208,14 @@ void ProgramRow::glue_at(double u) {
   if (glued_ > in_contact_) {
     in_contact_ = glued_;
     contact_images_.add(image(glued_));
+    sums_.image_squares.add(image(glued_) * image(glued_));
     if (friction_) friction_->touch(image(glued_), u);
   }
   if (friction_) friction_->glue_next(normal_.rest);
   if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_, u});
   glued_offsets_.add(u);
+  sums_.offset_squares.add(u * u);
+  sums_.surface.add(surface_energy(glued_));
 }
 
 double ProgramRow::let_go_boundary(bool pressed) {
@@ -223,9 +229,12 @@ double ProgramRow::let_go_boundary(bool pressed) {
   }
   springs_changed(true, !tangential_unchanged_by(runs_.back().offset));
   glued_offsets_.add(-runs_.back().offset);
+  sums_.offset_squares.add(-runs_.back().offset * runs_.back().offset);
+  sums_.surface.add(-surface_energy(glued_));
   if (runs_.back().first == glued_) runs_.pop_back();
   if (!pressed && in_contact_ == glued_) {
     contact_images_.add(-image(in_contact_));
+    sums_.image_squares.add(-image(in_contact_) * image(in_contact_));
     --in_contact_;
   }
   --glued_;
@@ -239,6 +248,7 @@ void ProgramRow::touch_next() {
   springs_changed(true, false);
   ++in_contact_;
   contact_images_.add(image(in_contact_));
+  sums_.image_squares.add(image(in_contact_) * image(in_contact_));
 }
 
 void ProgramRow::lift_outer() {
@@ -246,6 +256,7 @@ void ProgramRow::lift_outer() {
   if (friction_) friction_->lift_outer();
   springs_changed(true, false);
   contact_images_.add(-image(in_contact_));
+  sums_.image_squares.add(-image(in_contact_) * image(in_contact_));
   --in_contact_;
   forget_rounding_of_empty_sums();
 }
@@ -253,8 +264,46 @@ void ProgramRow::lift_outer() {
 // A sum over no spring is 0, not the rounding its adds and removes left (1e-30 N of force
 // on an empty row after the crack-front case's cascade of 10^5 springs).
 void ProgramRow::forget_rounding_of_empty_sums() {
-  if (in_contact_ == 0) contact_images_ = CompensatedSum{};
-  if (glued_ == 0) glued_offsets_ = CompensatedSum{};
+  if (in_contact_ == 0) contact_images_ = sums_.image_squares = CompensatedSum{};
+  if (glued_ == 0) glued_offsets_ = sums_.offset_squares = sums_.surface = CompensatedSum{};
+}
+
+double ProgramRow::surface_energy(std::int64_t i) const {
+  const double x = position(i);
+  return 2.0 * std::numbers::pi * x * material_.work_of_adhesion_at(x) * spacing_;
+}
+
+double ProgramRow::boundary_released_stretch(double indentation, double tangential) const {
+  const double stretch = boundary_stretch(indentation, tangential);
+  // Out of contact the spring lifts as it lets go: its whole stretch goes.
+  if (!friction_ || image(glued_) > indentation) return stretch;
+  const double held = friction_->released_limit_stretch(glued_, indentation);
+  if (held == 0.0) return stretch;
+  return std::copysign(std::max(std::abs(stretch) - held, 0.0), stretch);
+}
+
+double ProgramRow::stored_energy() const {
+  const double d = indentation();
+  const double u = tangential_displacement();
+  // Both halves of kz (d - g_i)^2 / 2 and kx (u - s_i)^2 / 2, from the sums the forces keep.
+  double energy = material_.effective_modulus * spacing_ *
+                  (static_cast<double>(in_contact_) * d * d - 2.0 * d * contact_images_.value() +
+                   sums_.image_squares.value());
+  if (friction_) {
+    energy += friction_->stored_energy(d, u);
+  } else {
+    energy += material_.effective_shear_modulus * spacing_ *
+              (static_cast<double>(glued_) * u * u - 2.0 * u * glued_offsets_.value() +
+               sums_.offset_squares.value());
+  }
+  // A compliant machine's spring, stretched by a_F F: F^2 a_F / 2 (a_u = 1).
+  const auto machine_spring = [](const MachineAxis& axis, double force) {
+    const AffineConstraint& c = axis.constraint;
+    if (!drives_through_spring(c)) return 0.0;
+    return 0.5 * c.force_coefficient / c.displacement_coefficient * force * force;
+  };
+  return energy + machine_spring(normal_, normal_force()) +
+         machine_spring(tangential_, tangential_force());
 }
 
 ProgramRow::Edges ProgramRow::edges() const {
@@ -263,6 +312,7 @@ ProgramRow::Edges ProgramRow::edges() const {
           ever_glued_,
           contact_images_,
           glued_offsets_,
+          sums_,
           runs_.size(),
           runs_.empty() ? Run{} : runs_.back(),
           normal_,
@@ -283,6 +333,7 @@ void ProgramRow::restore(const Edges& saved) {
   ever_glued_ = saved.ever_glued;
   contact_images_ = saved.contact_images;
   glued_offsets_ = saved.glued_offsets;
+  sums_ = saved.sums;
   runs_.resize(saved.runs);
   if (saved.runs > 0) runs_.back() = saved.last_run;
   normal_ = saved.normal;

@@ -78,10 +78,21 @@ class ProgramRow {
     if (boundary_slips()) return friction_->glued_stretch(glued_, indentation, tangential);
     return tangential - boundary_offset();
   }
-  /// Whether that stretch moves as d and u_x move at rates vd and vu: with u_x alone for a
-  /// spring that sticks; with d alone for a glued spring sliding while pressed (glued = "coulomb")
-  /// (its limit mu f_z over kx), not while it is in tension (limit 0 at the glued edge).
+  /// The tangential stretch the detachment criterion sees at the boundary spring k [m]: its
+  /// stretch less what friction holds of it once the glue is gone, where it stays pressed
+  /// (d >= g_k): the stretch the let-go releases. Griffith per spring: the glue goes only where
+  /// the energy it releases pays its surface energy, and a stick zone releases nothing
+  /// (docs/friction.md "Letting go under friction"). Its whole stretch out of contact.
+  double boundary_released_stretch(double indentation, double tangential) const;
+  /// Whether the released stretch moves as d and u_x move at rates vd and vu: with u_x alone
+  /// for a spring that sticks; with d alone for a glued spring sliding while pressed
+  /// (glued = "coulomb") (its limit mu f_z over kx), not while it is in tension (limit 0 at the
+  /// glued edge); with d too where friction holds part of it while pressed.
   bool boundary_stretch_moves(double indentation, double vd, double vu) const {
+    if (friction_ && vd != 0.0 && friction_->released_limit_moves()) {
+      const double g = image(glued_);
+      if (indentation > g || (indentation == g && vd > 0.0)) return true;
+    }
     if (!boundary_slips() || friction_->spring(glued_).sliding == 0) return vu != 0.0;
     const double g = image(glued_);
     return vd != 0.0 && (indentation > g || (indentation == g && vd > 0.0));
@@ -203,6 +214,14 @@ class ProgramRow {
 
   ContactSnapshot snapshot() const;
 
+  /// The elastic energy of the springs at the present equilibrium, both halves, with the
+  /// spring of a compliant machine: O(1) from running sums (O(k) while glued springs slide
+  /// under glued = "coulomb") [J].
+  double stored_energy() const;
+  /// The surface energy the glue holds: 2 pi x_i dgamma(x_i) dx over springs i <= k, what
+  /// breaking it all would create (the MDR image of the glued disk's pi a^2 dgamma) [J].
+  double glued_surface() const { return sums_.surface.value(); }
+
   /// Applies `change` (one change at the edges, or new held values), returns what `look`
   /// sees of the row then, and puts the row back exactly: O(1), where a copy of the row would
   /// copy every run of glued springs.
@@ -279,6 +298,15 @@ class ProgramRow {
   std::int64_t ever_glued_ = 0;
   CompensatedSum contact_images_;  ///< sum of g_i, i <= m [m]
   CompensatedSum glued_offsets_;   ///< sum of s_i, i <= k [m]
+  /// What the energy balance needs beyond the forces' sums.
+  struct EnergySums {
+    CompensatedSum image_squares;   ///< sum of g_i^2, i <= m [m^2]
+    CompensatedSum offset_squares;  ///< sum of s_i^2, i <= k [m^2]
+    CompensatedSum surface;         ///< glued_surface [J]
+  };
+  EnergySums sums_;
+  /// 2 pi x_i dgamma(x_i) dx: the surface energy spring i's glue holds [J].
+  double surface_energy(std::int64_t i) const;
   std::vector<Run> runs_;
   std::optional<FrictionRow> friction_;
   MachineAxis normal_;
@@ -300,6 +328,7 @@ class ProgramRow {
   struct Edges {
     std::int64_t glued, in_contact, ever_glued;
     CompensatedSum contact_images, glued_offsets;
+    EnergySums sums;
     std::size_t runs;
     Run last_run;
     MachineAxis normal, tangential;

@@ -140,6 +140,11 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
   const AxisPoint x0 = tangential_moves ? at_.tangential_point() : AxisPoint{};
   const std::int64_t k = at_.row.glued();
   const std::int64_t m = at_.row.in_contact();
+  // Only a glue or a let-go moves energy at one parameter value (a touch, a lift, a slip or a
+  // stick changes no spring's force there).
+  const bool loses = change == Change::glue || change == Change::let_go;
+  const StagePosition::EnergyPoint energy_before =
+      loses ? at_.energy_point() : StagePosition::EnergyPoint{};
   bool by_shear = false;
   switch (change) {
     case Change::fall_in:
@@ -152,14 +157,15 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
       break;
     case Change::let_go: {
       const double d = at_.row.indentation();
-      const double stretch_x = at_.row.boundary_stretch(d, at_.row.tangential_displacement());
+      const double u = at_.row.tangential_displacement();
+      const double stretch_x = at_.row.boundary_released_stretch(d, u);
       // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
       by_shear = locator_.boundary_let_go(at_.row, stretch_x).kind == LetGo::Kind::now;
       let_go_trail_.note(cascade, at_.row, at_.line, *scene_.criterion, k, stretch_x, by_shear);
       events_.spring(EventKind::spring_detached, at_.row, k, in_cascade);
       at_.work.friction += at_.row.let_go_boundary(at_.row.image(k) <= d);
       at_.guards.released_to = std::max(at_.guards.released_to, k);
-      at_.guards.released_with_stretch = stretch_x != 0.0;
+      at_.guards.released_with_stretch = at_.row.boundary_stretch(d, u) != 0.0;
       break;
     }
     case Change::touch:
@@ -184,6 +190,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
     }
   }
   at_.add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
+  if (loses) at_.add_jump_loss(energy_before);
   // What the locator keeps of a run that may glue again (rebinding).
   if (at_.row.friction()) locator_.changed(change, m);
   if (change != Change::fall_in && change != Change::friction) {
@@ -197,8 +204,10 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   // (the held force on the last spring alone) and the work at constant force grow with the
   // spring count, and none of it is reported.
   events_.discard_flight(!step_);
-  flight_ = {end, cascade.before, cascade.refined_before};
+  flight_ = {end, cascade.before, cascade.refined_before, cascade.stored_before,
+             cascade.surface_before};
   at_.work = cascade.work_before;
+  at_.energy.jump_losses = cascade.jump_losses_before;
   outcome_.losses().record(cascade, at_.row.glued(), at_.row.in_contact());
   if (cascade.changes < 2) return;
   JumpRecord& jump = record_.add_jump(cascade, at_.row.in_contact(), at_.row.glued());
@@ -265,6 +274,12 @@ Cascade ProgramRunner::begin_cascade() {
                   .glued = at_.row.glued(),
                   .work_before = at_.work,
                   .stage = at_.stage};
+  // Only a held force can end a cascade in a flight, whose stage ends at `before`.
+  if (holds_force(at_.row.normal().constraint) || holds_force(at_.row.tangential().constraint)) {
+    cascade.stored_before = at_.row.stored_energy();
+    cascade.surface_before = at_.row.glued_surface();
+    cascade.jump_losses_before = at_.energy.jump_losses;
+  }
   observe(cascade.before);
   return cascade;
 }
@@ -446,13 +461,16 @@ void ProgramRunner::end_stage(const Stage& stage) {
       outcome_.stop_lost_hold(at_.row);
     }
     // The stage ends where the flight began: its critical point.
-    record_.end_stage(stage.name, flight_.from, at_.work).refined_end = flight_.refined_from;
+    StageRecord& record = record_.end_stage(stage.name, flight_.from, at_.work);
+    record.refined_end = flight_.refined_from;
+    record.energy = at_.balance(flight_.stored_from, flight_.surface_from);
     if (front_) front_->candidate(flight_.refined_from);
     events_.emit(EventKind::stage_end, flight_.from);
     return;
   }
   const ContactSnapshot end = at_.row.snapshot();
   StageRecord& record = record_.end_stage(stage.name, end, at_.work);
+  record.energy = at_.balance(at_.row.stored_energy(), at_.row.glued_surface());
   if (front_ && !stopped) {
     record.refined_end = front_->at_rest(at_.row);
     front_->candidate(record.refined_end);
@@ -474,6 +492,11 @@ RunResult ProgramRunner::run() {
     end_stage(stages[i]);
   }
   result_.work = record_.total_work();
+  EnergyBalance energy;
+  for (const StageRecord& stage : result_.stages) {
+    if (stage.energy) energy += *stage.energy;
+  }
+  result_.energy = energy;
   outcome_.decide(
       {scene_, *at_.stage, at_.row, at_.line.normal, max_springs_, zero_, watch_, flight_},
       result_);

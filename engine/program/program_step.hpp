@@ -60,7 +60,7 @@ class ChangeLocator {
   std::optional<std::pair<double, Change>> next_change(const ProgramRow& row, const StepLine& line,
                                                        double t_end);
   /// Where the boundary spring lets go at tangential stretch stretch_x [m] (ProgramRow::
-  /// boundary_stretch).
+  /// boundary_released_stretch).
   /// A reference into the locator's cache, valid until its next call: a LetGo returned by
   /// value would go through the stack on every event.
   const LetGo& boundary_let_go(const ProgramRow& row, double stretch_x);
@@ -217,7 +217,8 @@ inline std::optional<Change> ChangeLocator::due(const ProgramRow& row, const Ste
   }
   const double d = row.indentation();
   if (k > 0 && k < line.guards.glued_from) {
-    const LetGo& go = boundary_let_go(row, row.boundary_stretch(d, row.tangential_displacement()));
+    const LetGo& go =
+        boundary_let_go(row, row.boundary_released_stretch(d, row.tangential_displacement()));
     if (go.kind == LetGo::Kind::now || row.image(k) - d >= go.elongation) return Change::let_go;
   }
   const bool front_glues = row.adhesive() && row.can_glue(k + 1) && k < line.row_end;
@@ -303,7 +304,8 @@ inline std::optional<double> ChangeLocator::let_go_along(const ProgramRow& row,
   const auto margin = [&](double t) {
     const double d_t = d + vd * (t - line.t);
     const double stretch = std::max(0.0, g - d_t);
-    return criterion_.margin({stretch, row.boundary_stretch(d_t, u + vu * (t - line.t)), a});
+    return criterion_.margin(
+        {stretch, row.boundary_released_stretch(d_t, u + vu * (t - line.t)), a});
   };
   const double now = margin(line.t);
   if (now <= 0.0) return line.t;
@@ -368,7 +370,7 @@ inline std::optional<std::pair<double, Change>> ChangeLocator::next_change(const
       // Its stretch stays (u_x still): the spring lets go only as d falls to g - e*(stretch).
       // (Broken at rest, it would be due already.)
       if (vd < 0.0) {
-        const LetGo& go = boundary_let_go(row, row.boundary_stretch(d, u));
+        const LetGo& go = boundary_let_go(row, row.boundary_released_stretch(d, u));
         if (go.kind == LetGo::Kind::now) {
           consider(soonest, Change::let_go);
         } else {

@@ -15,6 +15,19 @@ void StagePosition::start(const Stage& next) {
           axis_motion(next.tangential, row.tangential().held)};
   guards = {};
   work = {};
+  energy = {row.stored_energy(), row.glued_surface(), 0.0};
+}
+
+EnergyBalance StagePosition::balance(double stored, double surface) const {
+  EnergyBalance b;
+  b.machine_work = work.normal + work.tangential;
+  b.stored_change = stored - energy.stored_at_start;
+  b.surface_change = energy.surface_at_start - surface;
+  b.dissipated_by_friction = work.friction;
+  b.jump_losses = energy.jump_losses;
+  b.residual = b.machine_work - b.stored_change - b.surface_change - b.dissipated_by_friction -
+               b.jump_losses;
+  return b;
 }
 
 void StagePosition::set_parameter(double to) {

@@ -23,6 +23,28 @@ struct StagePosition {
   StageLine line;              ///< held = start + rate * t on each axis
   SameParameterGuards guards;  ///< program_step.hpp
   AxisWork work;               ///< the machine's and friction's work in the stage [J]
+  /// What the stage's energy balance needs beyond its work [J].
+  struct EnergyTally {
+    double stored_at_start = 0.0;   ///< ProgramRow::stored_energy as the stage started
+    double surface_at_start = 0.0;  ///< ProgramRow::glued_surface as the stage started
+    double jump_losses = 0.0;       ///< EnergyBalance::jump_losses so far
+  };
+  EnergyTally energy;
+  /// The energies a change of the row moves.
+  struct EnergyPoint {
+    double machine_work, friction, stored, surface;
+  };
+  EnergyPoint energy_point() const {
+    return {work.normal + work.tangential, work.friction, row.stored_energy(), row.glued_surface()};
+  }
+  /// Adds what the row's changes since `before` lost to the jump losses.
+  void add_jump_loss(const EnergyPoint& before) {
+    const EnergyPoint now = energy_point();
+    energy.jump_losses += (now.machine_work - before.machine_work) - (now.stored - before.stored) -
+                          (before.surface - now.surface) - (now.friction - before.friction);
+  }
+  /// The stage's balance so far, its state's stored energy and glued surface given [J].
+  EnergyBalance balance(double stored, double surface) const;
 
   /// Starts `next` at t = 0 on the line its axes' motions give from the present held values.
   void start(const Stage& next);

@@ -25,10 +25,38 @@ struct AxisWork {
   }
 };
 
+/// The energy balance of a stage, or of the program (docs/outputs.md, "energy"), each term
+/// computed on its own, so that machine_work = stored_change + surface_change +
+/// dissipated_by_friction + jump_losses + residual, the residual rounding [J]. A term a later
+/// physics adds (a viscous loss) is one more field here and one more key.
+struct EnergyBalance {
+  double machine_work = 0.0;   ///< the machine's work on both axes (AxisWork's normal + tangential)
+  double stored_change = 0.0;  ///< the springs' elastic energy (a compliant machine's included)
+  /// Surface energy created: 2 pi x dgamma dx over the springs whose glue went, less over
+  /// those that glued.
+  double surface_change = 0.0;
+  double dissipated_by_friction = 0.0;  ///< AxisWork::friction
+  /// What the row's changes at one parameter value (glues and let-gos) lost: the machine's
+  /// work there less their change of stored, surface and friction energy; >= 0 (to rounding).
+  double jump_losses = 0.0;
+  double residual = 0.0;  ///< machine_work less the other terms
+  EnergyBalance& operator+=(const EnergyBalance& more) {
+    machine_work += more.machine_work;
+    stored_change += more.stored_change;
+    surface_change += more.surface_change;
+    dissipated_by_friction += more.dissipated_by_friction;
+    jump_losses += more.jump_losses;
+    residual += more.residual;
+    return *this;
+  }
+};
+
 struct StageRecord {
   std::string name;
   ContactSnapshot end;  ///< the state at the stage's end (or where the contact was lost)
   AxisWork work;
+  /// The stage's energy balance (program rows).
+  std::optional<EnergyBalance> energy;
   /// `end` with the row's front located between springs (rows run to be extrapolated).
   std::optional<ContactSnapshot> refined_end;
   /// With rtol: a posteriori bounds on |reported - continuum| of the end's forces [N].

@@ -78,6 +78,8 @@ struct RunResult {
   std::vector<StageRecord> stages;
   std::vector<JumpRecord> jumps;
   std::optional<AxisWork> work;
+  /// The sum of the stages' energy balances (program rows).
+  std::optional<EnergyBalance> energy;
   /// The run ended with a held tangential force that nothing held any more: the indenter
   /// slides away (a jump's end is JumpEnd::sliding, or the glue's last spring let go alone).
   bool sliding = false;

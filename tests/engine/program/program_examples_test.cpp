@@ -64,9 +64,10 @@ json member(const json& j, const char* key) {
 
 /// The JSON result of `mdrsim run scenes/programs/NAME.toml`, or null (with a failure) if the
 /// run failed or printed no JSON.
-json run_example(const std::string& name) {
-  const auto r =
-      mdrsim::test::run_mdrsim("run scenes/programs/" + name + ".toml --json - --log-level off");
+/// `extra`: options after the scene's path (--set ...).
+json run_example(const std::string& name, const std::string& extra = "") {
+  const auto r = mdrsim::test::run_mdrsim("run scenes/programs/" + name + ".toml " + extra +
+                                          " --json - --log-level off");
   EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
   json result = json::parse(r.out, nullptr, false);
   if (result.is_discarded() || !result.is_object()) {
@@ -313,13 +314,16 @@ TEST(ProgramExamples, FrettingCycleDissipatesTheMindlinDeresiewiczLoopEnergy) {
 
 TEST(ProgramExamples, PullOffAfterShearLetsTheGlueGoWhereThePapersPathDoes) {
   // docs/friction.md "Pull-off after shear": sheared to u = 1e-5 m (0.78 u_c) with d held, the
-  // glue is whole with the stretch u on every spring, so the retraction is the paper's path
-  // with u held: Fig. 3a's shorthand, answered here on the continuum route at rtol 1e-10. At
-  // this u the glue lets go while the contact is still pressed (the critical force is
-  // compressive) and nothing ever pulls: no peak adhesion. The row's critical force within
-  // 3/N of the unsheared pull-off force (observed: 1.3/N), its contact radius
-  // within one spacing.
-  const json program = run_example("pull_off_after_shear");
+  // glue is whole with the stretch u on every spring, so without friction (mu = 0) the
+  // retraction is the paper's path with u held: Fig. 3a's shorthand, answered here on the
+  // continuum route at rtol 1e-10. At this u the glue lets go while the contact is still
+  // pressed (the critical force is compressive) and nothing ever pulls: no peak adhesion. The
+  // row's critical force within 3/N of the unsheared pull-off force (observed: 1.3/N), its
+  // contact radius within one spacing. With the example's mu = 1, friction holds part of each
+  // pressed spring's stretch, so the glue holds on further: its critical force lies below the
+  // path's, still compressive.
+  const json program = run_example("pull_off_after_shear", "--set friction.coefficient=0.0");
+  const json with_friction = run_example("pull_off_after_shear");
   const auto path = mdrsim::test::run_mdrsim(
       "run scenes/fig3a_fixed_grips.toml --set loading.tangential.displacement=1e-5 --set "
       "'solver={method=\"continuum\"}' --set 'discretization={rtol=1e-10}' --json - "
@@ -342,4 +346,7 @@ TEST(ProgramExamples, PullOffAfterShearLetsTheGlueGoWhereThePapersPathDoes) {
   const double glued_radius = 5.209397078678047e-4;
   EXPECT_NEAR(member(critical, "contact_radius").get<double>(),
               member(expected, "contact_radius").get<double>(), glued_radius / kRowSprings);
+  const double held = member(member(with_friction, "critical"), "normal_force").get<double>();
+  EXPECT_GT(held, 0.0);
+  EXPECT_LT(held, force - 3.0 / kRowSprings * unsheared);
 }
