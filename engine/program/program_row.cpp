@@ -297,13 +297,16 @@ double ProgramRow::stored_energy() const {
                sums_.offset_squares.value());
   }
   // A compliant machine's spring, stretched by a_F F: F^2 a_F / 2 (a_u = 1).
-  const auto machine_spring = [](const MachineAxis& axis, double force) {
-    const AffineConstraint& c = axis.constraint;
-    if (!drives_through_spring(c)) return 0.0;
+  const auto spring_of = [](const AffineConstraint& c, double force) {
     return 0.5 * c.force_coefficient / c.displacement_coefficient * force * force;
   };
-  return energy + machine_spring(normal_, normal_force()) +
-         machine_spring(tangential_, tangential_force());
+  if (drives_through_spring(normal_.constraint)) {
+    energy += spring_of(normal_.constraint, normal_force());
+  }
+  if (drives_through_spring(tangential_.constraint)) {
+    energy += spring_of(tangential_.constraint, tangential_force());
+  }
+  return energy;
 }
 
 ProgramRow::Edges ProgramRow::edges() const {
