@@ -146,6 +146,34 @@ TEST(EnergyBalance, CoulombGlueCloses) {
   EXPECT_GT(r.stages[1].energy->dissipated_by_friction, 0.0);
 }
 
+// glued = "coulomb" with a shear strength: pressed to d = a^2/R at a = 2e-4 m, sheared past
+// full slip (u* = (mu E* a^2/R + 2 tau_0 a)/E* = 2.4e-6 m), back to -u*/2 and retracted until
+// separation: the glued springs slide pressed (mu f_z + c_i) and in tension (c_i alone), change
+// class as d falls past their images, and every let-go shrinks every c_i. The stored energy
+// counts each class's sliders at their limits; by symmetry the reversal's full slip stores what
+// the forward one did.
+TEST(EnergyBalance, CoulombGlueWithAShearStrengthCloses) {
+  const std::string text =
+      "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.0\nwork_of_adhesion = 0.05\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n[[loading.stage]]\nname = \"press\"\n"
+      "normal = { control = \"fixed-grips\", to = 4.0e-6 }\n[[loading.stage]]\nname = "
+      "\"shear\"\ntangential = { control = \"fixed-grips\", to = 3.6e-6 }\n[[loading.stage]]\n"
+      "name = \"back\"\ntangential = { control = \"fixed-grips\", to = -1.2e-6 }\n"
+      "[[loading.stage]]\nname = \"retract\"\nnormal = { by = -2.0e-5 }\nuntil = "
+      "\"separation\"\n[friction]\ncoefficient = 0.4\nglued = \"coulomb\"\n"
+      "shear_strength = 2000.0\n[discretization]\nsprings = 400\n";
+  const RunResult r = run_text(text);
+  expect_closes(r);
+  ASSERT_EQ(r.stages.size(), 4u);
+  const EnergyBalance& shear = *r.stages[1].energy;
+  const EnergyBalance& back = *r.stages[2].energy;
+  EXPECT_GT(shear.stored_change, 0.0);
+  EXPECT_GT(back.dissipated_by_friction, 0.0);
+  EXPECT_NEAR(back.stored_change, 0.0, kRounding * scale_of(back));
+  EXPECT_GT(r.stages[3].energy->dissipated_by_friction, 0.0);
+  EXPECT_EQ(r.stages[3].end.glued_radius, 0.0);
+}
+
 // A JKR cycle without friction: glued on touch to 12 d0 at fixed grips, retracted until
 // separation. Nothing is stored or glued at the end, so the machine's work is all jump losses:
 // the glue taken on touch, pi a_max^2 dgamma, and the jump out of the fold of d(a) = a^2/R -
