@@ -40,10 +40,9 @@ BulkEnd press_in_bulk(StagePosition& at, double t_end, std::int64_t last_spring,
   const double vd = row.indentation_per_held() * at.line.normal.rate;
   const double t = std::max(at.t + (row.image(last) - d) * (1.0 / vd), next_parameter(at.t));
   if (!at.advance_to(t)) return BulkEnd::overflow;  // the springs glued before: the trapezoid
-  // Each spring glued at no stretch as d reached it: the surface energy its glue took is lost.
-  const double surface = at.row.glued_surface();
+  // Each spring glued at no stretch as d reached it: its glue released nothing, and the surface
+  // it took is lost (StagePosition::EnergyTally).
   at.work.normal += at.row.glue_through(last);
-  at.energy.jump_losses += at.row.glued_surface() - surface;
   counts.events += last - k;
   at.guards.glued_from = last;
   return BulkEnd::taken;

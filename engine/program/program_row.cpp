@@ -16,7 +16,8 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
       reference_springs_(reference_springs),
       reference_image_(reference_image),
       spacing_(reference_radius / static_cast<double>(reference_springs)),
-      rebinding_(rebinding) {}
+      rebinding_(rebinding),
+      surface_varies_(material.work_of_adhesion_by_radius != nullptr) {}
 
 void ProgramRow::springs_changed(bool normal, bool tangential) {
   if (friction_) tangential = true;  // every spring in contact may carry a tangential force
@@ -169,15 +170,14 @@ double ProgramRow::glue_through(std::int64_t last) {
   normal_.rest = d;
   tangential_.rest = u;
   springs_changed(true, !tangential_unchanged_by(u));
-  if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_ + 1, u});
+  if (runs_.empty() || runs_.back().offset != u) push_run(glued_ + 1, u);
   CompensatedSum squares;
   for (std::int64_t i = glued_ + 1; i <= last; ++i) {
     const double g = image(i);
     contact_images_.add(g);
     glued_offsets_.add(u);
     sums_.image_squares.add(g * g);
-    sums_.offset_squares.add(u * u);
-    sums_.surface.add(surface_energy(i));
+    if (surface_varies_) sums_.surface.add(surface_energy(i));
     const double stretch = d - g;
     squares.add(stretch * stretch);
   }
@@ -186,6 +186,16 @@ double ProgramRow::glue_through(std::int64_t last) {
   ever_glued_ = std::max(ever_glued_, last);
   // Half of 2 E* dx (both halves) per spring, times the stretch squared.
   return material_.effective_modulus * spacing_ * squares.value();
+}
+
+void ProgramRow::push_run(std::int64_t first, double offset) {
+  double before = 0.0;
+  if (!runs_.empty()) {
+    const Run& last = runs_.back();
+    before =
+        last.squares_before + static_cast<double>(first - last.first) * last.offset * last.offset;
+  }
+  runs_.push_back({first, offset, before});
 }
 
 void ProgramRow::glue_next_as_boundary() {
@@ -212,10 +222,9 @@ void ProgramRow::glue_at(double u) {
     if (friction_) friction_->touch(image(glued_), u);
   }
   if (friction_) friction_->glue_next(normal_.rest);
-  if (runs_.empty() || runs_.back().offset != u) runs_.push_back({glued_, u});
+  if (runs_.empty() || runs_.back().offset != u) push_run(glued_, u);
   glued_offsets_.add(u);
-  sums_.offset_squares.add(u * u);
-  sums_.surface.add(surface_energy(glued_));
+  if (surface_varies_) sums_.surface.add(surface_energy(glued_));
 }
 
 double ProgramRow::let_go_boundary(bool pressed) {
@@ -229,8 +238,7 @@ double ProgramRow::let_go_boundary(bool pressed) {
   }
   springs_changed(true, !tangential_unchanged_by(runs_.back().offset));
   glued_offsets_.add(-runs_.back().offset);
-  sums_.offset_squares.add(-runs_.back().offset * runs_.back().offset);
-  sums_.surface.add(-surface_energy(glued_));
+  if (surface_varies_) sums_.surface.add(-surface_energy(glued_));
   if (runs_.back().first == glued_) runs_.pop_back();
   if (!pressed && in_contact_ == glued_) {
     contact_images_.add(-image(in_contact_));
@@ -265,7 +273,7 @@ void ProgramRow::lift_outer() {
 // on an empty row after the crack-front case's cascade of 10^5 springs).
 void ProgramRow::forget_rounding_of_empty_sums() {
   if (in_contact_ == 0) contact_images_ = sums_.image_squares = CompensatedSum{};
-  if (glued_ == 0) glued_offsets_ = sums_.offset_squares = sums_.surface = CompensatedSum{};
+  if (glued_ == 0) glued_offsets_ = sums_.surface = CompensatedSum{};
 }
 
 double ProgramRow::surface_energy(std::int64_t i) const {
@@ -273,10 +281,10 @@ double ProgramRow::surface_energy(std::int64_t i) const {
   return 2.0 * std::numbers::pi * x * material_.work_of_adhesion_at(x) * spacing_;
 }
 
-double ProgramRow::boundary_released_stretch(double indentation, double tangential) const {
+double ProgramRow::friction_released_stretch(double indentation, double tangential) const {
   const double stretch = boundary_stretch(indentation, tangential);
   // Out of contact the spring lifts as it lets go: its whole stretch goes.
-  if (!friction_ || image(glued_) > indentation) return stretch;
+  if (image(glued_) > indentation) return stretch;
   const double held = friction_->released_limit_stretch(glued_, indentation);
   if (held == 0.0) return stretch;
   return std::copysign(std::max(std::abs(stretch) - held, 0.0), stretch);
@@ -292,9 +300,9 @@ double ProgramRow::stored_energy() const {
   if (friction_) {
     energy += friction_->stored_energy(d, u);
   } else {
-    energy += material_.effective_shear_modulus * spacing_ *
-              (static_cast<double>(glued_) * u * u - 2.0 * u * glued_offsets_.value() +
-               sums_.offset_squares.value());
+    energy +=
+        material_.effective_shear_modulus * spacing_ *
+        (static_cast<double>(glued_) * u * u - 2.0 * u * glued_offsets_.value() + offset_squares());
   }
   // A compliant machine's spring, stretched by a_F F: F^2 a_F / 2 (a_u = 1).
   const auto spring_of = [](const AffineConstraint& c, double force) {

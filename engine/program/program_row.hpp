@@ -83,7 +83,10 @@ class ProgramRow {
   /// (d >= g_k): the stretch the let-go releases. Griffith per spring: the glue goes only where
   /// the energy it releases pays its surface energy, and a stick zone releases nothing
   /// (docs/friction.md "Letting go under friction"). Its whole stretch out of contact.
-  double boundary_released_stretch(double indentation, double tangential) const;
+  double boundary_released_stretch(double indentation, double tangential) const {
+    if (!friction_) return boundary_stretch(indentation, tangential);
+    return friction_released_stretch(indentation, tangential);
+  }
   /// Whether the released stretch moves as d and u_x move at rates vd and vu: with u_x alone
   /// for a spring that sticks; with d alone for a glued spring sliding while pressed
   /// (glued = "coulomb") (its limit mu f_z over kx), not while it is in tension (limit 0 at the
@@ -215,12 +218,42 @@ class ProgramRow {
   ContactSnapshot snapshot() const;
 
   /// The elastic energy of the springs at the present equilibrium, both halves, with the
-  /// spring of a compliant machine: O(1) from running sums (O(k) while glued springs slide
-  /// under glued = "coulomb") [J].
+  /// spring of a compliant machine: O(1) from running sums (friction_row.hpp says when the
+  /// friction row's part is more) [J].
   double stored_energy() const;
   /// The surface energy the glue holds: 2 pi x_i dgamma(x_i) dx over springs i <= k, what
   /// breaking it all would create (the MDR image of the glued disk's pi a^2 dgamma) [J].
-  double glued_surface() const { return sums_.surface.value(); }
+  /// One dgamma: pi dgamma dx^2 k (k + 1), with no sum to keep.
+  double glued_surface() const {
+    if (surface_varies_) return sums_.surface.value();
+    const auto k = static_cast<double>(glued_);
+    return std::numbers::pi * material_.work_of_adhesion * spacing_ * spacing_ * k * (k + 1.0);
+  }
+  /// Whether a glue or a let-go changes the stored energy of its own spring only: without
+  /// friction (no other spring slips) and under fixed grips on both axes (d and u_x stay).
+  bool changes_stay_local() const {
+    return !friction_ && is_fixed_grips(normal_.constraint) &&
+           is_fixed_grips(tangential_.constraint);
+  }
+  /// Where changes_stay_local: the stored energy the boundary spring takes with it as it lets
+  /// go (`pressed`: it stays in contact, its normal stretch with it), and the one spring k + 1
+  /// brings as it glues (its normal stretch, if it was not in contact; glued at u_x, no
+  /// tangential stretch), both halves [J].
+  double let_go_energy(bool pressed) const {
+    const double stretch = tangential_displacement() - runs_.back().offset;
+    double energy = material_.effective_shear_modulus * spacing_ * stretch * stretch;
+    // let_go_boundary: it leaves the contact only as the outermost spring, unpressed.
+    if (!pressed && in_contact_ == glued_) {
+      const double normal = indentation() - image(glued_);
+      energy += material_.effective_modulus * spacing_ * normal * normal;
+    }
+    return energy;
+  }
+  double glue_energy() const {
+    if (glued_ < in_contact_) return 0.0;
+    const double normal = indentation() - image(glued_ + 1);
+    return material_.effective_modulus * spacing_ * normal * normal;
+  }
 
   /// Applies `change` (one change at the edges, or new held values), returns what `look`
   /// sees of the row then, and puts the row back exactly: O(1), where a copy of the row would
@@ -237,6 +270,7 @@ class ProgramRow {
   void record_edge_forces(bool on) { edge_forces_ = on; }
 
  private:
+  double friction_released_stretch(double indentation, double tangential) const;
   /// Resets the sums over springs in contact and glued once no spring is left in them.
   void forget_rounding_of_empty_sums();
 
@@ -282,9 +316,20 @@ class ProgramRow {
   mutable std::array<SpringValues, 4> recent_{};
 
   struct Run {
-    std::int64_t first;  ///< innermost spring of the run
-    double offset;       ///< s [m]
+    std::int64_t first;     ///< innermost spring of the run
+    double offset;          ///< s [m]
+    double squares_before;  ///< sum of s_i^2 over the runs inside it [m^2]
   };
+  /// A run of offset s from spring `first` on: the sum of squares before it is its
+  /// predecessor's, once per run, not once per spring.
+  void push_run(std::int64_t first, double offset);
+  /// sum of s_i^2, i <= k [m^2].
+  double offset_squares() const {
+    if (runs_.empty()) return 0.0;
+    const Run& last = runs_.back();
+    return last.squares_before +
+           static_cast<double>(glued_ - last.first + 1) * last.offset * last.offset;
+  }
   const Profile* profile_;
   Material material_;
   double reference_radius_;
@@ -292,17 +337,17 @@ class ProgramRow {
   double reference_image_;
   double spacing_;
   bool rebinding_;
+  bool surface_varies_;  ///< dgamma varies with the radius: glued_surface keeps a sum
 
   std::int64_t glued_ = 0;
   std::int64_t in_contact_ = 0;
   std::int64_t ever_glued_ = 0;
   CompensatedSum contact_images_;  ///< sum of g_i, i <= m [m]
   CompensatedSum glued_offsets_;   ///< sum of s_i, i <= k [m]
-  /// What the energy balance needs beyond the forces' sums.
+  /// What the energy balance needs beyond the forces' sums (the runs keep sum of s_i^2).
   struct EnergySums {
-    CompensatedSum image_squares;   ///< sum of g_i^2, i <= m [m^2]
-    CompensatedSum offset_squares;  ///< sum of s_i^2, i <= k [m^2]
-    CompensatedSum surface;         ///< glued_surface [J]
+    CompensatedSum image_squares;  ///< sum of g_i^2, i <= m [m^2]
+    CompensatedSum surface;        ///< glued_surface, where dgamma varies [J]
   };
   EnergySums sums_;
   /// 2 pi x_i dgamma(x_i) dx: the surface energy spring i's glue holds [J].

@@ -141,16 +141,18 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
   const std::int64_t k = at_.row.glued();
   const std::int64_t m = at_.row.in_contact();
   // Only a glue or a let-go moves energy at one parameter value (a touch, a lift, a slip or a
-  // stick changes no spring's force there).
-  const bool loses = change == Change::glue || change == Change::let_go;
+  // stick changes no spring's force there); most move their own spring's alone.
+  const bool releases = change == Change::glue || change == Change::let_go;
+  const bool local = releases && at_.row.changes_stay_local();
   const StagePosition::EnergyPoint energy_before =
-      loses ? at_.energy_point() : StagePosition::EnergyPoint{};
+      releases && !local ? at_.energy_point() : StagePosition::EnergyPoint{};
   bool by_shear = false;
   switch (change) {
     case Change::fall_in:
       at_.row.edit_normal().rest = at_.row.image(1);
       break;
     case Change::glue:
+      if (local) at_.energy.released.add(-at_.row.glue_energy());
       at_.row.glue_next();
       at_.guards.glued_from = std::min(at_.guards.glued_from, k + 1);
       events_.spring(EventKind::spring_glued, at_.row, k + 1, in_cascade);
@@ -163,7 +165,9 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
       by_shear = locator_.boundary_let_go(at_.row, stretch_x).kind == LetGo::Kind::now;
       let_go_trail_.note(cascade, at_.row, at_.line, *scene_.criterion, k, stretch_x, by_shear);
       events_.spring(EventKind::spring_detached, at_.row, k, in_cascade);
-      at_.work.friction += at_.row.let_go_boundary(at_.row.image(k) <= d);
+      const bool pressed = at_.row.image(k) <= d;
+      if (local) at_.energy.released.add(at_.row.let_go_energy(pressed));
+      at_.work.friction += at_.row.let_go_boundary(pressed);
       at_.guards.released_to = std::max(at_.guards.released_to, k);
       at_.guards.released_with_stretch = at_.row.boundary_stretch(d, u) != 0.0;
       break;
@@ -190,7 +194,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
     }
   }
   at_.add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
-  if (loses) at_.add_jump_loss(energy_before);
+  if (releases && !local) at_.add_release(energy_before);
   // What the locator keeps of a run that may glue again (rebinding).
   if (at_.row.friction()) locator_.changed(change, m);
   if (change != Change::fall_in && change != Change::friction) {
@@ -207,7 +211,7 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   flight_ = {end, cascade.before, cascade.refined_before, cascade.stored_before,
              cascade.surface_before};
   at_.work = cascade.work_before;
-  at_.energy.jump_losses = cascade.jump_losses_before;
+  at_.energy.released = cascade.released_before;
   outcome_.losses().record(cascade, at_.row.glued(), at_.row.in_contact());
   if (cascade.changes < 2) return;
   JumpRecord& jump = record_.add_jump(cascade, at_.row.in_contact(), at_.row.glued());
@@ -278,7 +282,7 @@ Cascade ProgramRunner::begin_cascade() {
   if (holds_force(at_.row.normal().constraint) || holds_force(at_.row.tangential().constraint)) {
     cascade.stored_before = at_.row.stored_energy();
     cascade.surface_before = at_.row.glued_surface();
-    cascade.jump_losses_before = at_.energy.jump_losses;
+    cascade.released_before = at_.energy.released;
   }
   observe(cascade.before);
   return cascade;

@@ -15,7 +15,7 @@ void StagePosition::start(const Stage& next) {
           axis_motion(next.tangential, row.tangential().held)};
   guards = {};
   work = {};
-  energy = {row.stored_energy(), row.glued_surface(), 0.0};
+  energy = {row.stored_energy(), row.glued_surface(), {}};
 }
 
 EnergyBalance StagePosition::balance(double stored, double surface) const {
@@ -24,7 +24,7 @@ EnergyBalance StagePosition::balance(double stored, double surface) const {
   b.stored_change = stored - energy.stored_at_start;
   b.surface_change = energy.surface_at_start - surface;
   b.dissipated_by_friction = work.friction;
-  b.jump_losses = energy.jump_losses;
+  b.jump_losses = energy.released.value() - b.surface_change;
   b.residual = b.machine_work - b.stored_change - b.surface_change - b.dissipated_by_friction -
                b.jump_losses;
   return b;

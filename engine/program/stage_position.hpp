@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "engine/model/compensated_sum.hpp"
 #include "engine/model/machine_work.hpp"
 #include "engine/program/program_front.hpp"
 #include "engine/program/program_row.hpp"
@@ -27,21 +28,25 @@ struct StagePosition {
   struct EnergyTally {
     double stored_at_start = 0.0;   ///< ProgramRow::stored_energy as the stage started
     double surface_at_start = 0.0;  ///< ProgramRow::glued_surface as the stage started
-    double jump_losses = 0.0;       ///< EnergyBalance::jump_losses so far
+    /// What the glues and let-gos released: at each, the machine's work there less its change
+    /// of stored energy and friction's work. The surface changes only there, so the jump
+    /// losses are this less the stage's surface change, and no change looks the surface up.
+    CompensatedSum released;
   };
   EnergyTally energy;
   /// The energies a change of the row moves.
   struct EnergyPoint {
-    double machine_work, friction, stored, surface;
+    double machine_work, friction, stored;
   };
   EnergyPoint energy_point() const {
-    return {work.normal + work.tangential, work.friction, row.stored_energy(), row.glued_surface()};
+    return {work.normal + work.tangential, work.friction, row.stored_energy()};
   }
-  /// Adds what the row's changes since `before` lost to the jump losses.
-  void add_jump_loss(const EnergyPoint& before) {
+  /// Adds what the row's changes since `before` released (a change that moves an axis or
+  /// slips a spring: the whole row's stored energy, before and after).
+  void add_release(const EnergyPoint& before) {
     const EnergyPoint now = energy_point();
-    energy.jump_losses += (now.machine_work - before.machine_work) - (now.stored - before.stored) -
-                          (before.surface - now.surface) - (now.friction - before.friction);
+    energy.released.add((now.machine_work - before.machine_work) - (now.stored - before.stored) -
+                        (now.friction - before.friction));
   }
   /// The stage's balance so far, its state's stored energy and glued surface given [J].
   EnergyBalance balance(double stored, double surface) const;
