@@ -40,6 +40,13 @@ class RadialAdhesion {
   /// The largest value anywhere [J/m^2]: found once, at construction (a program asks for it at
   /// every event, and a table may hold 10^4 points).
   double largest() const { return largest_; }
+  /// Whether dgamma is one value at every radius (a table of equal values, a sinusoid of
+  /// amplitude 0): at() then gives it to the bit.
+  bool uniform() const {
+    if (const Sinusoid* s = sinusoid()) return s->amplitude == 0.0;
+    const Table& t = std::get<Table>(form_);
+    return std::all_of(t.values.begin(), t.values.end(), [&](double v) { return v == largest_; });
+  }
   /// Radii [m] where dgamma(r) bends or jumps (a table's points; none for a sinusoid).
   const std::vector<double>& breakpoints() const;
   /// The shortest length over which dgamma(r) changes [m]: a sinusoid's wavelength, or the

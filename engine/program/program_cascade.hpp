@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <optional>
 
-#include "engine/model/compensated_sum.hpp"
 #include "engine/model/contact_snapshot.hpp"
 #include "engine/result/program_records.hpp"
 #include "engine/scene/program.hpp"
@@ -33,10 +32,10 @@ struct Cascade {
   std::optional<double> fold_parameter;
   AxisWork work_before;  ///< the stage's work up to `before`
   /// At `before`, where the cascade may end in a flight (a held force): the stored energy,
-  /// the glued surface and what the stage's changes released (StagePosition::EnergyTally) [J].
+  /// the glued surface and what the stage's changes released (StagePosition::released) [J].
   double stored_before = 0.0;
   double surface_before = 0.0;
-  CompensatedSum released_before;
+  double released_before = 0.0;
   const Stage* stage = nullptr;  ///< the stage it happened in
   /// A shear-off cascade's fold of the let-go branch above a_s, in spacings, where one lies
   /// there (status_margin.hpp): the row cannot tell that shear-off from an instability.

@@ -20,6 +20,7 @@ struct Flight {
   std::optional<ContactSnapshot> refined_from;  ///< `from` located between springs
   double stored_from = 0.0;                     ///< the stored energy at `from` [J]
   double surface_from = 0.0;                    ///< the glued surface at `from` [J]
+  double released_from = 0.0;                   ///< StagePosition::released at `from` [J]
 
   bool flying() const { return end != JumpEnd::state; }
 };

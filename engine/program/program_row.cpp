@@ -17,7 +17,9 @@ ProgramRow::ProgramRow(const Profile& profile, const Material& material, double 
       reference_image_(reference_image),
       spacing_(reference_radius / static_cast<double>(reference_springs)),
       rebinding_(rebinding),
-      surface_varies_(material.work_of_adhesion_by_radius != nullptr) {}
+      surface_varies_(material.work_of_adhesion_by_radius != nullptr &&
+                      !material.work_of_adhesion_by_radius->uniform()),
+      surface_work_of_adhesion_(material.work_of_adhesion_at(0.0)) {}
 
 void ProgramRow::springs_changed(bool normal, bool tangential) {
   if (friction_) tangential = true;  // every spring in contact may carry a tangential force
@@ -215,12 +217,18 @@ void ProgramRow::glue_at(double u) {
   springs_changed(true, !tangential_unchanged_by(u));
   ++glued_;
   if (glued_ > ever_glued_) ever_glued_ = glued_;
+  const double stretch = tangential_.rest - u;
+  double brought = material_.effective_shear_modulus * spacing_ * stretch * stretch;
   if (glued_ > in_contact_) {
     in_contact_ = glued_;
-    contact_images_.add(image(glued_));
-    sums_.image_squares.add(image(glued_) * image(glued_));
-    if (friction_) friction_->touch(image(glued_), u);
+    const double g = image(glued_);
+    contact_images_.add(g);
+    sums_.image_squares.add(g * g);
+    const double normal = normal_.rest - g;
+    brought += material_.effective_modulus * spacing_ * normal * normal;
+    if (friction_) friction_->touch(g, u);
   }
+  if (!friction_) sums_.released.add(-brought);
   if (friction_) friction_->glue_next(normal_.rest);
   if (runs_.empty() || runs_.back().offset != u) push_run(glued_, u);
   glued_offsets_.add(u);
@@ -236,15 +244,22 @@ double ProgramRow::let_go_boundary(bool pressed) {
     dissipated = friction_->let_go_boundary(normal_.rest, tangential_.rest);
     if (!pressed && in_contact_ == glued_) friction_->lift_outer();
   }
-  springs_changed(true, !tangential_unchanged_by(runs_.back().offset));
-  glued_offsets_.add(-runs_.back().offset);
+  const double offset = runs_.back().offset;
+  springs_changed(true, !tangential_unchanged_by(offset));
+  glued_offsets_.add(-offset);
   if (surface_varies_) sums_.surface.add(-surface_energy(glued_));
   if (runs_.back().first == glued_) runs_.pop_back();
+  const double stretch = tangential_.rest - offset;
+  double released = material_.effective_shear_modulus * spacing_ * stretch * stretch;
   if (!pressed && in_contact_ == glued_) {
-    contact_images_.add(-image(in_contact_));
-    sums_.image_squares.add(-image(in_contact_) * image(in_contact_));
+    const double g = image(in_contact_);
+    contact_images_.add(-g);
+    sums_.image_squares.add(-g * g);
+    const double normal = normal_.rest - g;
+    released += material_.effective_modulus * spacing_ * normal * normal;
     --in_contact_;
   }
+  if (!friction_) sums_.released.add(released);
   --glued_;
   forget_rounding_of_empty_sums();
   return dissipated;

@@ -227,7 +227,7 @@ class ProgramRow {
   double glued_surface() const {
     if (surface_varies_) return sums_.surface.value();
     const auto k = static_cast<double>(glued_);
-    return std::numbers::pi * material_.work_of_adhesion * spacing_ * spacing_ * k * (k + 1.0);
+    return std::numbers::pi * surface_work_of_adhesion_ * spacing_ * spacing_ * k * (k + 1.0);
   }
   /// Whether a glue or a let-go changes the stored energy of its own spring only: without
   /// friction (no other spring slips) and under fixed grips on both axes (d and u_x stay).
@@ -235,25 +235,11 @@ class ProgramRow {
     return !friction_ && is_fixed_grips(normal_.constraint) &&
            is_fixed_grips(tangential_.constraint);
   }
-  /// Where changes_stay_local: the stored energy the boundary spring takes with it as it lets
-  /// go (`pressed`: it stays in contact, its normal stretch with it), and the one spring k + 1
-  /// brings as it glues (its normal stretch, if it was not in contact; glued at u_x, no
-  /// tangential stretch), both halves [J].
-  double let_go_energy(bool pressed) const {
-    const double stretch = tangential_displacement() - runs_.back().offset;
-    double energy = material_.effective_shear_modulus * spacing_ * stretch * stretch;
-    // let_go_boundary: it leaves the contact only as the outermost spring, unpressed.
-    if (!pressed && in_contact_ == glued_) {
-      const double normal = indentation() - image(glued_);
-      energy += material_.effective_modulus * spacing_ * normal * normal;
-    }
-    return energy;
-  }
-  double glue_energy() const {
-    if (glued_ < in_contact_) return 0.0;
-    const double normal = indentation() - image(glued_ + 1);
-    return material_.effective_modulus * spacing_ * normal * normal;
-  }
+  /// Without friction: the stored energy the glues and let-gos took out of the row at the d and
+  /// u_x of each, summed over the row's life: a let-go's spring's (its tangential stretch, and
+  /// its normal one where it leaves the contact), less a glue's (its normal stretch where it
+  /// joins the contact), both halves [J]. Where changes_stay_local, what they released.
+  double released_by_changes() const { return sums_.released.value(); }
 
   /// Applies `change` (one change at the edges, or new held values), returns what `look`
   /// sees of the row then, and puts the row back exactly: O(1), where a copy of the row would
@@ -338,6 +324,8 @@ class ProgramRow {
   double spacing_;
   bool rebinding_;
   bool surface_varies_;  ///< dgamma varies with the radius: glued_surface keeps a sum
+  /// dgamma where it does not vary (a uniform table's or sinusoid's to the bit) [J/m^2].
+  double surface_work_of_adhesion_;
 
   std::int64_t glued_ = 0;
   std::int64_t in_contact_ = 0;
@@ -348,6 +336,7 @@ class ProgramRow {
   struct EnergySums {
     CompensatedSum image_squares;  ///< sum of g_i^2, i <= m [m^2]
     CompensatedSum surface;        ///< glued_surface, where dgamma varies [J]
+    CompensatedSum released;       ///< released_by_changes [J]
   };
   EnergySums sums_;
   /// 2 pi x_i dgamma(x_i) dx: the surface energy spring i's glue holds [J].

@@ -141,18 +141,17 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
   const std::int64_t k = at_.row.glued();
   const std::int64_t m = at_.row.in_contact();
   // Only a glue or a let-go moves energy at one parameter value (a touch, a lift, a slip or a
-  // stick changes no spring's force there); most move their own spring's alone.
-  const bool releases = change == Change::glue || change == Change::let_go;
-  const bool local = releases && at_.row.changes_stay_local();
+  // stick changes no spring's force there). Where they stay local the row sums what they
+  // release; else it is measured on the whole row.
+  const bool measured = (change == Change::glue || change == Change::let_go) && !at_.energy.local;
   const StagePosition::EnergyPoint energy_before =
-      releases && !local ? at_.energy_point() : StagePosition::EnergyPoint{};
+      measured ? at_.energy_point() : StagePosition::EnergyPoint{};
   bool by_shear = false;
   switch (change) {
     case Change::fall_in:
       at_.row.edit_normal().rest = at_.row.image(1);
       break;
     case Change::glue:
-      if (local) at_.energy.released.add(-at_.row.glue_energy());
       at_.row.glue_next();
       at_.guards.glued_from = std::min(at_.guards.glued_from, k + 1);
       events_.spring(EventKind::spring_glued, at_.row, k + 1, in_cascade);
@@ -160,16 +159,16 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
     case Change::let_go: {
       const double d = at_.row.indentation();
       const double u = at_.row.tangential_displacement();
+      // Glued again at this parameter only if it goes with a stretch (its own, before the let-go).
+      const bool with_stretch = at_.row.boundary_stretch(d, u) != 0.0;
       const double stretch_x = at_.row.boundary_released_stretch(d, u);
       // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
       by_shear = locator_.boundary_let_go(at_.row, stretch_x).kind == LetGo::Kind::now;
       let_go_trail_.note(cascade, at_.row, at_.line, *scene_.criterion, k, stretch_x, by_shear);
       events_.spring(EventKind::spring_detached, at_.row, k, in_cascade);
-      const bool pressed = at_.row.image(k) <= d;
-      if (local) at_.energy.released.add(at_.row.let_go_energy(pressed));
-      at_.work.friction += at_.row.let_go_boundary(pressed);
+      at_.work.friction += at_.row.let_go_boundary(at_.row.image(k) <= d);
       at_.guards.released_to = std::max(at_.guards.released_to, k);
-      at_.guards.released_with_stretch = at_.row.boundary_stretch(d, u) != 0.0;
+      at_.guards.released_with_stretch = with_stretch;
       break;
     }
     case Change::touch:
@@ -194,7 +193,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
     }
   }
   at_.add_work(normal_moves ? &n0 : nullptr, tangential_moves ? &x0 : nullptr);
-  if (releases && !local) at_.add_release(energy_before);
+  if (measured) at_.add_release(energy_before);
   // What the locator keeps of a run that may glue again (rebinding).
   if (at_.row.friction()) locator_.changed(change, m);
   if (change != Change::fall_in && change != Change::friction) {
@@ -208,10 +207,13 @@ void ProgramRunner::end_in_flight(const Cascade& cascade, JumpEnd end) {
   // (the held force on the last spring alone) and the work at constant force grow with the
   // spring count, and none of it is reported.
   events_.discard_flight(!step_);
-  flight_ = {end, cascade.before, cascade.refined_before, cascade.stored_before,
-             cascade.surface_before};
+  flight_ = {end,
+             cascade.before,
+             cascade.refined_before,
+             cascade.stored_before,
+             cascade.surface_before,
+             cascade.released_before};
   at_.work = cascade.work_before;
-  at_.energy.released = cascade.released_before;
   outcome_.losses().record(cascade, at_.row.glued(), at_.row.in_contact());
   if (cascade.changes < 2) return;
   JumpRecord& jump = record_.add_jump(cascade, at_.row.in_contact(), at_.row.glued());
@@ -282,7 +284,7 @@ Cascade ProgramRunner::begin_cascade() {
   if (holds_force(at_.row.normal().constraint) || holds_force(at_.row.tangential().constraint)) {
     cascade.stored_before = at_.row.stored_energy();
     cascade.surface_before = at_.row.glued_surface();
-    cascade.released_before = at_.energy.released;
+    cascade.released_before = at_.released();
   }
   observe(cascade.before);
   return cascade;
@@ -467,14 +469,14 @@ void ProgramRunner::end_stage(const Stage& stage) {
     // The stage ends where the flight began: its critical point.
     StageRecord& record = record_.end_stage(stage.name, flight_.from, at_.work);
     record.refined_end = flight_.refined_from;
-    record.energy = at_.balance(flight_.stored_from, flight_.surface_from);
+    record.energy = at_.balance(flight_.stored_from, flight_.surface_from, flight_.released_from);
     if (front_) front_->candidate(flight_.refined_from);
     events_.emit(EventKind::stage_end, flight_.from);
     return;
   }
   const ContactSnapshot end = at_.row.snapshot();
   StageRecord& record = record_.end_stage(stage.name, end, at_.work);
-  record.energy = at_.balance(at_.row.stored_energy(), at_.row.glued_surface());
+  record.energy = at_.balance(at_.row.stored_energy(), at_.row.glued_surface(), at_.released());
   if (front_ && !stopped) {
     record.refined_end = front_->at_rest(at_.row);
     front_->candidate(record.refined_end);

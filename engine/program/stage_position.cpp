@@ -15,16 +15,20 @@ void StagePosition::start(const Stage& next) {
           axis_motion(next.tangential, row.tangential().held)};
   guards = {};
   work = {};
-  energy = {row.stored_energy(), row.glued_surface(), {}};
+  energy = {.stored_at_start = row.stored_energy(),
+            .surface_at_start = row.glued_surface(),
+            .local = row.changes_stay_local(),
+            .row_released_at_start = row.released_by_changes(),
+            .released = {}};
 }
 
-EnergyBalance StagePosition::balance(double stored, double surface) const {
+EnergyBalance StagePosition::balance(double stored, double surface, double released) const {
   EnergyBalance b;
   b.machine_work = work.normal + work.tangential;
   b.stored_change = stored - energy.stored_at_start;
   b.surface_change = energy.surface_at_start - surface;
   b.dissipated_by_friction = work.friction;
-  b.jump_losses = energy.released.value() - b.surface_change;
+  b.jump_losses = released - b.surface_change;
   b.residual = b.machine_work - b.stored_change - b.surface_change - b.dissipated_by_friction -
                b.jump_losses;
   return b;

@@ -25,15 +25,24 @@ struct StagePosition {
   SameParameterGuards guards;  ///< program_step.hpp
   AxisWork work;               ///< the machine's and friction's work in the stage [J]
   /// What the stage's energy balance needs beyond its work [J].
+  /// What the glues and let-gos released: at each, the machine's work there less its change of
+  /// stored energy and friction's work. The surface changes only there, so the jump losses are
+  /// this less the stage's surface change, and no change looks the surface up.
   struct EnergyTally {
     double stored_at_start = 0.0;   ///< ProgramRow::stored_energy as the stage started
     double surface_at_start = 0.0;  ///< ProgramRow::glued_surface as the stage started
-    /// What the glues and let-gos released: at each, the machine's work there less its change
-    /// of stored energy and friction's work. The surface changes only there, so the jump
-    /// losses are this less the stage's surface change, and no change looks the surface up.
-    CompensatedSum released;
+    /// ProgramRow::changes_stay_local for the stage (its axes' controls and friction are set
+    /// as it starts): each change's release is then its own spring's, which the row sums.
+    bool local = false;
+    double row_released_at_start = 0.0;  ///< ProgramRow::released_by_changes then
+    CompensatedSum released;             ///< otherwise: add_release's sum
   };
   EnergyTally energy;
+  /// The stage's changes' release so far [J].
+  double released() const {
+    return energy.local ? row.released_by_changes() - energy.row_released_at_start
+                        : energy.released.value();
+  }
   /// The energies a change of the row moves.
   struct EnergyPoint {
     double machine_work, friction, stored;
@@ -41,15 +50,15 @@ struct StagePosition {
   EnergyPoint energy_point() const {
     return {work.normal + work.tangential, work.friction, row.stored_energy()};
   }
-  /// Adds what the row's changes since `before` released (a change that moves an axis or
-  /// slips a spring: the whole row's stored energy, before and after).
+  /// Adds what the row's changes since `before` released, where they do not stay local (they
+  /// move an axis or slip springs: the whole row's stored energy, before and after).
   void add_release(const EnergyPoint& before) {
     const EnergyPoint now = energy_point();
     energy.released.add((now.machine_work - before.machine_work) - (now.stored - before.stored) -
                         (now.friction - before.friction));
   }
-  /// The stage's balance so far, its state's stored energy and glued surface given [J].
-  EnergyBalance balance(double stored, double surface) const;
+  /// The stage's balance, its end's stored energy, glued surface and released() given [J].
+  EnergyBalance balance(double stored, double surface, double released) const;
 
   /// Starts `next` at t = 0 on the line its axes' motions give from the present held values.
   void start(const Stage& next);
