@@ -24,10 +24,10 @@ struct StagePosition {
   StageLine line;              ///< held = start + rate * t on each axis
   SameParameterGuards guards;  ///< program_step.hpp
   AxisWork work;               ///< the machine's and friction's work in the stage [J]
-  /// What the stage's energy balance needs beyond its work [J].
-  /// What the glues and let-gos released: at each, the machine's work there less its change of
-  /// stored energy and friction's work. The surface changes only there, so the jump losses are
-  /// this less the stage's surface change, and no change looks the surface up.
+  /// What the stage's energy balance needs beyond its work [J]. Its changes' release: at each
+  /// glue and let-go, the machine's work there less its change of stored energy and friction's
+  /// work. The surface changes only there, so the jump losses are the release less the stage's
+  /// surface change, and no change looks the surface up.
   struct EnergyTally {
     double stored_at_start = 0.0;   ///< ProgramRow::stored_energy as the stage started
     double surface_at_start = 0.0;  ///< ProgramRow::glued_surface as the stage started
