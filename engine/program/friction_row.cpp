@@ -66,17 +66,23 @@ double FrictionRow::limit_glued_springs() {
     } else {
       remove_sticking(i);
     }
-    // Within its new limit a spring sticks where it is (a slide goes on only at the limit);
-    // over it, it slips to the limit at once.
-    state.sliding = 0;
-    dissipated += slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
-    if (state.sliding != 0) {
-      add_sliding(i);
-    } else {
-      add_sticking(i);
-    }
+    dissipated += settle_at_limit(i);
   }
   return 2.0 * dissipated;
+}
+
+double FrictionRow::settle_at_limit(std::int64_t i) {
+  // Within its new limit a spring sticks where it is (a slide goes on only at the limit);
+  // over it, it slips to the limit at once.
+  StickSlipSpring& state = springs_[index(i)].state;
+  state.sliding = 0;
+  const double dissipated = slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
+  if (state.sliding != 0) {
+    add_sliding(i);
+  } else {
+    add_sticking(i);
+  }
+  return dissipated;
 }
 
 void FrictionRow::detach_glued(std::int64_t n) {
@@ -105,13 +111,7 @@ double FrictionRow::attach_glued(std::int64_t n, bool relimit_sticking) {
       add_sticking(i);
       continue;
     }
-    state.sliding = 0;
-    dissipated += slip_to_limit(state, *law(i), geometry(i), indentation_, tangential_);
-    if (state.sliding != 0) {
-      add_sliding(i);
-    } else {
-      add_sticking(i);
-    }
+    dissipated += settle_at_limit(i);
   }
   return 2.0 * dissipated;
 }

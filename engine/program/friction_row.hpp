@@ -212,6 +212,9 @@ class FrictionRow {
   void add_sticking(std::int64_t i, int stuck_from = 0);
   void remove_sticking(std::int64_t i);
   void add_sliding(std::int64_t i);
+  /// Spring i (out of its sets) back in under its present limit: it sticks where it is within
+  /// it, or slips to it at once over it. Returns the work dissipated on one half [J].
+  double settle_at_limit(std::int64_t i);
   void remove_sliding(std::int64_t i);
   std::int64_t first_own_sliding() const;  ///< of own_springs(); 0 when none
   double sliding_stick_radius() const;     ///< stick_radius with a spring sliding

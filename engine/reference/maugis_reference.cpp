@@ -64,6 +64,19 @@ double sampled_minimum(F f, double lo, double hi, int samples) {
 
 }  // namespace
 
+double MaugisScales::length() const {
+  return std::cbrt(kPi * work * radius * radius / (4.0 * modulus / 3.0));
+}
+
+double MaugisScales::depth() const { return length() * length() / radius; }
+
+double MaugisScales::force() const { return kPi * work * radius; }
+
+double MaugisScales::adhesive_stress(double lambda) const {
+  const double k = 4.0 * modulus / 3.0;
+  return 0.5 * lambda * std::cbrt(kPi * work * k * k / radius);
+}
+
 MaugisState contact_branch(double lambda, double contact_radius) {
   if (!(lambda > 0.0) || !(contact_radius > 0.0)) {
     throw std::invalid_argument("maugis_reference: lambda and A must be > 0");

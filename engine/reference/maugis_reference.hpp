@@ -17,6 +17,19 @@ namespace mdrsim::maugis_reference {
 // D = C^2/2 - (8 lambda/(3 pi)) C - 2/(pi lambda) (the no-contact branch; the contact branch
 // meets it at C0, the root of (pi lambda/4) C^2 + (4 lambda^2/3)(pi/2 - 1) C = 1).
 
+/// Maugis' scales in SI units for a parabola of radius R [m] on E* [Pa] with work of adhesion
+/// w [J/m^2], and the Dugdale stress sigma_0 [Pa] of a given lambda.
+struct MaugisScales {
+  double radius = 0.0;   ///< R [m]
+  double modulus = 0.0;  ///< E* [Pa]
+  double work = 0.0;     ///< w [J/m^2]
+
+  double length() const;                        ///< (pi w R^2 / K)^(1/3) [m], K = 4 E*/3
+  double depth() const;                         ///< length^2 / R [m]
+  double force() const;                         ///< pi w R [N]
+  double adhesive_stress(double lambda) const;  ///< (lambda/2) (pi w K^2 / R)^(1/3) [Pa]
+};
+
 /// One equilibrium on the contact branch (A > 0) or the no-contact branch (A = 0).
 struct MaugisState {
   double contact_radius = 0.0;   ///< A

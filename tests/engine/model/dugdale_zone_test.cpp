@@ -20,15 +20,12 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 namespace maugis = maugis_reference;
 
-/// A parabola R = 1 cm on E* = 1 MPa with dgamma = 0.05 J/m^2, and sigma_0 for `lambda`.
-struct MaugisUnits {
-  double radius = 0.01, modulus = 1e6, work = 0.05;
-  double k() const { return 4.0 * modulus / 3.0; }
-  double length() const { return std::cbrt(kPi * work * radius * radius / k()); }
-  double depth() const { return length() * length() / radius; }
-  double force() const { return kPi * work * radius; }
+/// A parabola R = 1 cm on E* = 1 MPa with dgamma = 0.05 J/m^2 in Maugis' scales, and its
+/// Dugdale law at `lambda`.
+struct MaugisUnits : maugis::MaugisScales {
+  MaugisUnits() : maugis::MaugisScales{.radius = 0.01, .modulus = 1e6, .work = 0.05} {}
   DugdaleLaw law(double lambda) const {
-    return {.adhesive_stress = 0.5 * lambda * std::cbrt(kPi * work * k() * k() / radius),
+    return {.adhesive_stress = adhesive_stress(lambda),
             .work_of_adhesion = work,
             .effective_modulus = modulus};
   }
