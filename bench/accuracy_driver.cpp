@@ -154,17 +154,6 @@ struct CycleRun {
   std::size_t jumps;
 };
 
-/// A reversible-JKR approach-retract cycle under fixed grips (target 9's speed case).
-std::string cycle_text(std::int64_t springs) {
-  return fmt::format(
-      "[material]\neffective_modulus = 1e6\nwork_of_adhesion = 0.05\n"
-      "approach_work_of_adhesion = 0.05\n[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
-      "[loading]\n[[loading.stage]]\nnormal = {{ control = \"fixed-grips\", to = 2e-5 }}\n"
-      "[[loading.stage]]\nnormal = {{ by = -2e-5 }}\nuntil = \"separation\"\n"
-      "[discretization]\nsprings = {}\n",
-      springs);
-}
-
 double peak_rss_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -214,7 +203,7 @@ int main(int argc, char** argv) {
   for (const std::int64_t springs : {std::int64_t{1'000'000}, std::int64_t{10'000'000}}) {
     const double rss_before = peak_rss_mb();
     double seconds = 0.0;
-    const mdrsim::RunResult r = timed_run(cycle_text(springs), seconds);
+    const mdrsim::RunResult r = timed_run(mdrsim::bench::cycle_text(springs), seconds);
     if (springs == 10'000'000) cycles_rss_growth = peak_rss_mb() - rss_before;
     cycles.push_back({springs, seconds, r.counts.events, r.jumps.size()});
   }
@@ -534,8 +523,8 @@ int main(int argc, char** argv) {
   // One approach-retract curve to 1e-4 in F/F0, by Richardson over rows of 64, 128 and 256
   // springs: the jump in, the end of the approach and the fold against eqs. 18-19.
   {
-    const mdrsim::Scene scene =
-        mdrsim::test::build_scene_text(cycle_text(128) + "extrapolation = \"richardson\"\n");
+    const mdrsim::Scene scene = mdrsim::test::build_scene_text(mdrsim::bench::cycle_text(128) +
+                                                               "extrapolation = \"richardson\"\n");
     mdrsim::RunResult r;
     const double seconds = seconds_per_run([&] { r = mdrsim::run_scene(scene, {}); });
     const double force = 1.5 * std::numbers::pi * 0.01 * 0.05;  // F0 [N]

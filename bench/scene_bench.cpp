@@ -1,7 +1,6 @@
 // Google Benchmark: whole runs as a user meets them, through run_scene: the Fig. 2 and sphere
 // pull-offs at rtol 1e-6 and the reversible JKR approach-retract cycle at 1e6 and 1e7 springs.
-// Only the scene reader and run_scene are used, so the file builds against older trees too
-// (bench/compare_binaries.py compares two builds' binaries side by side).
+// bench/compare_binaries.py compares two builds' binaries side by side.
 #include <benchmark/benchmark.h>
 #include <spdlog/spdlog.h>
 
@@ -10,6 +9,7 @@
 #include <cstdint>
 #include <string>
 
+#include "bench/bench_cases.hpp"
 #include "engine/run/run_scene.hpp"
 #include "engine/scene/registries.hpp"
 #include "engine/scene/scene_document.hpp"
@@ -29,17 +29,6 @@ std::string pull_off_text(const char* profile, const char* normal) {
       "normal = {{ control = \"{}\" }}\n[detachment]\ncriterion = \"mode-mixed\"\n"
       "[discretization]\nrtol = 1e-6\n[solver]\nmethod = \"event\"\n",
       profile, normal);
-}
-
-/// bench/accuracy_driver.cpp's target 9: fixed grips to 2e-5 m and back until separation.
-std::string cycle_text(std::int64_t springs) {
-  return fmt::format(
-      "[material]\neffective_modulus = 1e6\nwork_of_adhesion = 0.05\n"
-      "approach_work_of_adhesion = 0.05\n[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
-      "[loading]\n[[loading.stage]]\nnormal = {{ control = \"fixed-grips\", to = 2e-5 }}\n"
-      "[[loading.stage]]\nnormal = {{ by = -2e-5 }}\nuntil = \"separation\"\n"
-      "[discretization]\nsprings = {}\n",
-      springs);
 }
 
 /// The benchmark's time is the run's; `wall_time_s` is the time the JSON reports.
@@ -70,7 +59,7 @@ int main(int argc, char** argv) {
   }
   for (const std::int64_t springs : {std::int64_t{1'000'000}, std::int64_t{10'000'000}}) {
     benchmark::RegisterBenchmark(fmt::format("jkr_cycle/springs:{}", springs).c_str(), run,
-                                 cycle_text(springs))
+                                 mdrsim::bench::cycle_text(springs))
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
   }

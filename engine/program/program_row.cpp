@@ -270,16 +270,18 @@ void ProgramRow::touch_next() {
   if (friction_) friction_->touch(image(in_contact_ + 1), tangential_displacement());
   springs_changed(true, false);
   ++in_contact_;
-  contact_images_.add(image(in_contact_));
-  sums_.image_squares.add(image(in_contact_) * image(in_contact_));
+  const double g = image(in_contact_);
+  contact_images_.add(g);
+  sums_.image_squares.add(g * g);
 }
 
 void ProgramRow::lift_outer() {
   normal_.rest = indentation();
   if (friction_) friction_->lift_outer();
   springs_changed(true, false);
-  contact_images_.add(-image(in_contact_));
-  sums_.image_squares.add(-image(in_contact_) * image(in_contact_));
+  const double g = image(in_contact_);
+  contact_images_.add(-g);
+  sums_.image_squares.add(-g * g);
   --in_contact_;
   forget_rounding_of_empty_sums();
 }

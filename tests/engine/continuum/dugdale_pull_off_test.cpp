@@ -11,6 +11,7 @@
 #include "engine/reference/maugis_reference.hpp"
 #include "profiles/cone_profile.hpp"
 #include "profiles/parabolic_profile.hpp"
+#include "tests/support/maugis_units.hpp"
 
 namespace mdrsim {
 namespace {
@@ -18,16 +19,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 namespace maugis = maugis_reference;
 
-/// A parabola R = 1 cm on E* = 1 MPa with dgamma = 0.05 J/m^2 in Maugis' scales, and its
-/// Dugdale law at `lambda`.
-struct MaugisUnits : maugis::MaugisScales {
-  MaugisUnits() : maugis::MaugisScales{.radius = 0.01, .modulus = 1e6, .work = 0.05} {}
-  DugdaleLaw law(double lambda) const {
-    return {.adhesive_stress = adhesive_stress(lambda),
-            .work_of_adhesion = work,
-            .effective_modulus = modulus};
-  }
-};
+using test::MaugisUnits;
 
 // The pull-off force P = F / (pi dgamma R) and the contact radius there, glued at A = 3 (far
 // beyond every fold), lambda from 0.01 to 100 and across the fixed-grips threshold 0.93885.

@@ -13,6 +13,7 @@
 #include "profiles/parabolic_profile.hpp"
 #include "profiles/power_law_profile.hpp"
 #include "profiles/sphere_profile.hpp"
+#include "tests/support/maugis_units.hpp"
 
 namespace mdrsim {
 namespace {
@@ -20,16 +21,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 namespace maugis = maugis_reference;
 
-/// A parabola R = 1 cm on E* = 1 MPa with dgamma = 0.05 J/m^2 in Maugis' scales, and its
-/// Dugdale law at `lambda`.
-struct MaugisUnits : maugis::MaugisScales {
-  MaugisUnits() : maugis::MaugisScales{.radius = 0.01, .modulus = 1e6, .work = 0.05} {}
-  DugdaleLaw law(double lambda) const {
-    return {.adhesive_stress = adhesive_stress(lambda),
-            .work_of_adhesion = work,
-            .effective_modulus = modulus};
-  }
-};
+using test::MaugisUnits;
 
 // The MDR form of SPEC against Maugis' equations, written apart from it: lambda from the DMT
 // side (0.3) to the JKR side (50), A from small to large. Tolerance 1e-11 of the scales: the
