@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 namespace mdrsim::maugis_reference {
 namespace {
@@ -114,27 +115,33 @@ MaugisState fixed_load_pull_off(double lambda) {
   return a > 0.0 ? contact_branch(lambda, a) : closed;
 }
 
+double grips_threshold() { return std::cbrt(9.0 * kPi / (16.0 * (kPi - 1.0))); }
+
 MaugisState fixed_grips_jump(double lambda) {
-  // Down the contact branch from A = 4 (far beyond any fold) while D falls with A.
+  // The contact closes first: the no-contact branch folds at C = 8 lambda / (3 pi) <= C0.
+  if (lambda <= grips_threshold()) {
+    return no_contact_branch(lambda, 8.0 * lambda / (3.0 * kPi));
+  }
+  // Down the contact branch from A = 4 (far beyond any fold) while D falls with A: evenly to
+  // A = 1e-3, then geometrically, since near the threshold the fold sits just above A = 0
+  // (D - D(0) grows like A^2 with a factor that vanishes there).
   constexpr int kSamples = 4000;
   constexpr double kTop = 4.0;
-  double previous = contact_branch(lambda, kTop).indentation;
-  for (int i = kSamples - 1; i >= 1; --i) {
-    const double a = kTop * i / kSamples;
-    const double d = contact_branch(lambda, a).indentation;
-    if (d >= previous) {  // D turned between a and a + 2 steps: refine its minimum there
-      const double step = kTop / kSamples;
-      const auto m = boost::math::tools::brent_find_minima(
-          [&](double x) { return contact_branch(lambda, x).indentation; }, a,
-          std::min(kTop, a + 2.0 * step), 60);
-      return contact_branch(lambda, m.first);
+  const auto depth = [&](double x) { return contact_branch(lambda, x).indentation; };
+  std::vector<double> radii;
+  for (int i = kSamples; i >= 1; --i) radii.push_back(kTop * i / kSamples);
+  for (double a = kTop / kSamples * 0.9; a > 1e-7; a *= 0.9) radii.push_back(a);
+  double previous = depth(radii[0]);
+  for (std::size_t i = 1; i < radii.size(); ++i) {
+    const double d = depth(radii[i]);
+    if (d >= previous) {  // D turned between radii[i] and radii[i - 2]: refine its minimum
+      const double upper = radii[i >= 2 ? i - 2 : 0];
+      return contact_branch(
+          lambda, boost::math::tools::brent_find_minima(depth, radii[i], upper, 60).first);
     }
     previous = d;
   }
-  // The contact closed first: the no-contact branch folds at C = 8 lambda / (3 pi), or at once
-  // where that lies beyond C0.
-  const double c0 = closing_cohesive_radius(lambda);
-  return no_contact_branch(lambda, std::min(c0, 8.0 * lambda / (3.0 * kPi)));
+  throw std::logic_error("maugis_reference: no fold of D above the threshold");
 }
 
 }  // namespace mdrsim::maugis_reference

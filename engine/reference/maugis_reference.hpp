@@ -47,9 +47,13 @@ double closing_cohesive_radius(double lambda);
 
 /// Fixed load: the most tensile force on the path (the pull-off), and where it is.
 MaugisState fixed_load_pull_off(double lambda);
+/// The lambda below which the contact closes before D folds under fixed grips: where C0 = 8
+/// lambda / (3 pi), the no-contact branch's fold, i.e. lambda^3 = 9 pi / (16 (pi - 1)),
+/// lambda = 0.9379475...
+double grips_threshold();
 /// Fixed grips: the last equilibrium before the jump out, retracting from a large contact:
 /// the first fold of D going down the contact branch, or, where the contact closes first
-/// (small lambda), the fold of the no-contact branch at C = 8 lambda / (3 pi) (A = 0).
+/// (lambda <= grips_threshold()), the fold of the no-contact branch at C = 8 lambda / (3 pi).
 MaugisState fixed_grips_jump(double lambda);
 
 }  // namespace mdrsim::maugis_reference

@@ -59,13 +59,23 @@ TEST(MaugisReference, SmallLambdaIsDmt) {
   }
 }
 
-// The transition: -1.6007 at lambda = 1 (Maugis' curve); the fixed-grips jump leaves the contact
-// branch above lambda = 0.938 (the fold of D reaches A = 0 at 0.93885) and the no-contact
-// branch below it.
+// The transition: -1.6007 at lambda = 1 (Maugis' curve). Under fixed grips the contact closes
+// before D folds where C0 reaches the no-contact branch's fold 8 lambda/(3 pi): substituted into
+// C0's equation, lambda^3 = 9 pi / (16 (pi - 1)), 0.9379475. Just above it the contact branch's
+// fold sits just above A = 0 and loses the contact at once; just
+// below, the no-contact branch carries the fold: the two forces meet there (C0 = 8 lambda/(3 pi)).
 TEST(MaugisReference, TheTransition) {
   EXPECT_NEAR(fixed_load_pull_off(1.0).force, -1.6007, 1e-4);
-  EXPECT_EQ(fixed_grips_jump(0.938).contact_radius, 0.0);
-  EXPECT_GT(fixed_grips_jump(0.940).contact_radius, 0.0);
+  const double threshold = grips_threshold();
+  EXPECT_NEAR(threshold, 0.93794746, 1e-8);
+  EXPECT_NEAR(closing_cohesive_radius(threshold), 8.0 * threshold / (3.0 * kPi), 1e-12);
+  EXPECT_EQ(fixed_grips_jump(threshold * (1.0 - 1e-4)).contact_radius, 0.0);
+  const MaugisState above = fixed_grips_jump(threshold * (1.0 + 1e-4));
+  EXPECT_GT(above.contact_radius, 0.0);
+  EXPECT_LT(above.contact_radius, 1e-2);
+  EXPECT_NEAR(above.force, fixed_grips_jump(threshold * (1.0 - 1e-4)).force, 1e-3);
+  // D at the fold lies below D at the closing point: the fold is real, not a rounding tie.
+  EXPECT_LT(above.indentation, contact_branch(threshold * (1.0 + 1e-4), 1e-6).indentation);
 }
 
 // As A -> 0 the contact branch runs onto the no-contact branch at C0, the difference falling like
