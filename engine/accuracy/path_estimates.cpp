@@ -11,6 +11,7 @@
 
 #include "engine/accuracy/error_estimate.hpp"
 #include "engine/accuracy/row_sequence.hpp"
+#include "engine/model/machine_work.hpp"
 #include "engine/result/rtol_rule.hpp"
 
 namespace mdrsim {
@@ -132,6 +133,60 @@ std::vector<double*> works(RunResult& r) {
   return w;
 }
 
+/// The tangential driving point of `s` under `c`: the machine end a_u u_x + a_F F_x where it
+/// drives through a spring (the snapshot keeps no tangential held value), else u_x.
+double tangential_driving(const AffineConstraint& c, const ContactSnapshot& s) {
+  return drives_through_spring(c) ? c.displacement_coefficient * s.tangential_displacement +
+                                        c.force_coefficient * s.tangential_force
+                                  : s.tangential_displacement;
+}
+
+/// The work [J] per axis the machine does from stage `stage`'s last equilibrium to its end
+/// located between springs (carried_works), none where the row does not locate it.
+AxisWork carried_to_located_end(const StageRecord& stage, const StageControl& control) {
+  if (!stage.refined_end || stage.end.springs_in_contact == 0) return {0.0, 0.0};
+  const ContactSnapshot& from = stage.end;
+  const ContactSnapshot& to = *stage.refined_end;
+  const auto normal_point = [&](const ContactSnapshot& x) {
+    return AxisPoint{x.normal_force,
+                     driving_point(control.normal, x.normal_control, x.indentation)};
+  };
+  const auto tangential_point = [&](const ContactSnapshot& x) {
+    return AxisPoint{x.tangential_force, tangential_driving(control.tangential, x)};
+  };
+  return {trapezoid_work(normal_point(from), normal_point(to)),
+          trapezoid_work(tangential_point(from), tangential_point(to))};
+}
+
+/// The works `row` reports in choose_works' order, each stage's carried on from its last
+/// equilibrium to its located end and the next stage's starting there (choose_works).
+std::vector<double> carried_works(const RunResult& row, const std::vector<StageControl>& controls) {
+  std::vector<double> w;
+  for (const StageRecord& s : row.stages) {
+    w.push_back(s.work.normal);
+    w.push_back(s.work.tangential);
+  }
+  if (row.work) {
+    w.push_back(row.work->normal);
+    w.push_back(row.work->tangential);
+  }
+  const std::size_t stages = row.stages.size();
+  for (std::size_t s = 0; s < stages && s < controls.size(); ++s) {
+    const AxisWork carried = carried_to_located_end(row.stages[s], controls[s]);
+    w[2 * s] += carried.normal;
+    w[2 * s + 1] += carried.tangential;
+    // The next stage starts at the located end; the last one's carry is the total's.
+    if (s + 1 < stages) {
+      w[2 * s + 2] -= carried.normal;
+      w[2 * s + 3] -= carried.tangential;
+    } else if (row.work) {
+      w[2 * stages] += carried.normal;
+      w[2 * stages + 1] += carried.tangential;
+    }
+  }
+  return w;
+}
+
 /// A bound [J] on the normal work that stage `s` of `row` owes to a front pinned off the row's
 /// springs, 0 where its front is not. The stage before moved the front (its end is located
 /// between springs) and this one turns the indentation back (a peeling front reloaded, an
@@ -244,9 +299,11 @@ std::vector<StateChoice> choose_states(std::vector<RunResult>& rows, Extrapolati
   return out;
 }
 
-std::vector<WorkChoice> choose_works(std::vector<RunResult>& rows, Extrapolation extrapolation) {
-  std::vector<std::vector<double*>> w;
-  for (RunResult& row : rows) w.push_back(works(row));
+std::vector<WorkChoice> choose_works(const std::vector<RunResult>& rows,
+                                     Extrapolation extrapolation,
+                                     const std::vector<StageControl>& controls) {
+  std::vector<std::vector<double>> w;
+  for (const RunResult& row : rows) w.push_back(carried_works(row, controls));
   const std::size_t n = rows.size();
   // A work is a sum over the row's events, a total a sum of its stages' works: both carry the
   // rounding of the axis's largest work, which a small remainder (2.8e-6 J of a preload's and
@@ -254,7 +311,7 @@ std::vector<WorkChoice> choose_works(std::vector<RunResult>& rows, Extrapolation
   // springs, up and down. kSumRounding of that work: below it, differences are no divergence.
   double largest[2] = {0.0, 0.0};
   for (std::size_t i = 0; i < w.back().size(); ++i) {
-    largest[i % 2] = std::max(largest[i % 2], std::abs(*w.back()[i]));
+    largest[i % 2] = std::max(largest[i % 2], std::abs(w.back()[i]));
   }
   // The normal works that a front pinned off the row's springs makes a sawtooth: each stage's
   // own, and the program's, which sums them.
@@ -267,14 +324,14 @@ std::vector<WorkChoice> choose_works(std::vector<RunResult>& rows, Extrapolation
   }
   std::vector<WorkChoice> out;
   for (std::size_t i = 0; i < w.back().size(); ++i) {
-    const double w0 = *w[n - 3][i];
-    const double w1 = *w[n - 2][i];
-    const double w2 = *w[n - 1][i];
+    const double w0 = w[n - 3][i];
+    const double w1 = w[n - 2][i];
+    const double w2 = w[n - 1][i];
     const double plain[] = {w0, w1, w2};
     WorkChoice chosen{w2, std::max(change_estimate(plain) + pinned[i], rounding_floor(w2))};
     if (extrapolation != Extrapolation::none) {
       std::vector<double> r;
-      for (std::size_t j = 1; j < n; ++j) r.push_back(richardson_value(*w[j - 1][i], *w[j][i]));
+      for (std::size_t j = 1; j < n; ++j) r.push_back(richardson_value(w[j - 1][i], w[j][i]));
       // Richardson removes the smooth 1/N part and keeps the pinned strip's sawtooth, which
       // 2 W(2N) - W(N) takes at most three times its bound: its value stays the better one
       // (the reload's work 5e-6 off instead of the plain row's 1e-4), its estimate covers it.
@@ -284,7 +341,7 @@ std::vector<WorkChoice> choose_works(std::vector<RunResult>& rows, Extrapolation
         chosen = extrapolated;
       }
     }
-    chosen.diverges = n >= 4 && diverging(*w[n - 4][i], w0, w1, w2, kSumRounding * largest[i % 2]);
+    chosen.diverges = n >= 4 && diverging(w[n - 4][i], w0, w1, w2, kSumRounding * largest[i % 2]);
     if (chosen.diverges) chosen = {w2, std::abs(w2 - w1), true};
     out.push_back(chosen);
   }
@@ -390,7 +447,8 @@ std::vector<std::int64_t> PathRefinement::rows_used() const {
 
 PathRefinement refine_path(std::int64_t first, std::int64_t max_springs,
                            const std::function<RunResult(std::int64_t)>& run,
-                           Extrapolation extrapolation, PathStates which, const ZeroScale& zero,
+                           Extrapolation extrapolation, PathStates which,
+                           const std::vector<StageControl>& controls, const ZeroScale& zero,
                            double rtol) {
   PathRefinement p;
   std::vector<RunResult>& rows = p.rows;
@@ -404,7 +462,7 @@ PathRefinement refine_path(std::int64_t first, std::int64_t max_springs,
                                    [&](const RunResult& r) { return end_alike(r, rows.back()); });
     if (k >= 3 && alike) {
       p.choices = choose_states(rows, extrapolation, which);
-      p.work_choices = choose_works(rows, extrapolation);
+      p.work_choices = choose_works(rows, extrapolation, controls);
       p.met = within(p.choices, p.work_choices, zero, rtol);
       if (p.met && k == kRowsKept) break;
       p.met = false;

@@ -41,6 +41,19 @@ ProgramRowSpec resolving_row(const Scene& scene, const ProgramRowFrame& frame,
   return spec;
 }
 
+/// Each stage's constraints as the row holds them: a stage that names an axis hands it to its
+/// controller, one that does not keeps the one before (both fixed grips before the first).
+std::vector<StageControl> program_controls(const Scene& scene) {
+  std::vector<StageControl> out;
+  StageControl control;
+  for (const Stage& stage : scene.program->stages) {
+    if (stage.normal) control.normal = stage.normal->controller->constraint();
+    if (stage.tangential) control.tangential = stage.tangential->controller->constraint();
+    out.push_back(control);
+  }
+  return out;
+}
+
 }  // namespace
 
 RunResult run_program_richardson(const Scene& scene, const ObserverList& observers) {
@@ -69,7 +82,8 @@ RunResult run_program_richardson(const Scene& scene, const ObserverList& observe
       write_states(result, choose_states(rows, Extrapolation::richardson, PathStates::all),
                    PathStates::all)
           .plain;
-  const std::vector<WorkChoice> works_chosen = choose_works(rows, Extrapolation::richardson);
+  const std::vector<WorkChoice> works_chosen =
+      choose_works(rows, Extrapolation::richardson, program_controls(scene));
   write_works(result, works_chosen);
   set_covers(result, works_chosen);
   result.accuracy.route = Accuracy::Route::richardson;
@@ -119,7 +133,7 @@ RunResult run_program_rtol(const Scene& scene, double rtol, const ObserverList& 
       zoomed_peak ? PathStates::critical_and_peak_elsewhere
       : zoomed    ? PathStates::critical_elsewhere
                   : PathStates::all,
-      frame.zero, rtol);
+      program_controls(scene), frame.zero, rtol);
   counts += p.counts;
   const bool zoom_applies = zoomed && p.rows.back().status == first_status;
   if (zoom_applies && !p.choices.empty()) {

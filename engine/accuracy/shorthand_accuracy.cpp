@@ -11,7 +11,6 @@
 #include "controllers/controller.hpp"
 #include "engine/accuracy/path_estimates.hpp"
 #include "engine/base/zero_scale.hpp"
-#include "engine/model/machine_work.hpp"
 
 namespace mdrsim {
 namespace {
@@ -44,44 +43,13 @@ void locate_at_critical(RunResult& row) {
   }
 }
 
-/// The works carried on from each stage's last equilibrium to its end located between springs
-/// (the work the machine does along the branch between the two), the next stage's starting there
-/// too. A row's pull-off ends at its last equilibrium, a fraction of a spacing from the fold
-/// that varies with the spring count unless the fold sits at a fixed share of the glued radius
-/// (a parabola glued at 2 a0 folds at spring N/2): under a fixed load the depth moves along the
-/// branch there, so the work's error is F dd, a sawtooth O(dx) that Richardson does not remove
-/// (the sphere's pull-off work 6.5e-6 off at 131072 springs). Carried to the located end, only
-/// the smooth part of the error is left. Between the two the force is at its extremum (fixed
-/// load) or the depth at its own (fixed grips): the trapezoid is good to O(dx^3).
-void carry_works_to_located_ends(const Scene& scene, RunResult& row) {
-  const AffineConstraint normal = scene.normal.controller->constraint();
-  const bool tangential_held =
-      scene.tangential && holds_force(scene.tangential->controller->constraint());
-  for (std::size_t s = 0; s < row.stages.size(); ++s) {
-    StageRecord& stage = row.stages[s];
-    if (!stage.refined_end || stage.end.springs_in_contact == 0) continue;
-    const ContactSnapshot& from = stage.end;
-    const ContactSnapshot& to = *stage.refined_end;
-    const AxisPoint a{from.normal_force,
-                      driving_point(normal, from.normal_control, from.indentation)};
-    const AxisPoint b{to.normal_force, driving_point(normal, to.normal_control, to.indentation)};
-    // Under fixed grips or a compliant machine the tangential driving point does not move
-    // while the normal one does (ShorthandPath::add_work).
-    const AxisWork carried{
-        trapezoid_work(a, b),
-        tangential_held ? trapezoid_work({from.tangential_force, from.tangential_displacement},
-                                         {to.tangential_force, to.tangential_displacement})
-                        : 0.0};
-    stage.work.normal += carried.normal;
-    stage.work.tangential += carried.tangential;
-    if (s + 1 < row.stages.size()) {
-      row.stages[s + 1].work.normal -= carried.normal;
-      row.stages[s + 1].work.tangential -= carried.tangential;
-    } else if (row.work) {
-      row.work->normal += carried.normal;
-      row.work->tangential += carried.tangential;
-    }
-  }
+/// The shorthand's three stages (preload, tangential, pull-off) hold its normal and tangential
+/// controllers (the preload's end, every spring pressed, is its own located end: nothing to
+/// carry there).
+std::vector<StageControl> shorthand_controls(const Scene& scene) {
+  StageControl control{.normal = scene.normal.controller->constraint()};
+  if (scene.tangential) control.tangential = scene.tangential->controller->constraint();
+  return std::vector<StageControl>(3, control);
 }
 
 /// The path's states at the critical point take the critical point's value and estimate, which
@@ -93,7 +61,7 @@ void take_critical(const RunResult& result, std::vector<StateChoice>& choices) {
 
 }  // namespace
 
-void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result) {
+void combine_shorthand_path(const Scene& scene, std::vector<RunResult> rows, RunResult& result) {
   if (rows.size() < 3 || !result.work) return;
   for (RunResult& row : rows) {
     if (!row.work) return;  // a row's work left the range of a double: nothing to combine
@@ -116,7 +84,8 @@ void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result) {
       choose_states(rows, Extrapolation::richardson, PathStates::path);
   take_critical(result, states);
   write_states(result, states, PathStates::path);
-  const std::vector<WorkChoice> works = choose_works(rows, Extrapolation::richardson);
+  const std::vector<WorkChoice> works =
+      choose_works(rows, Extrapolation::richardson, shorthand_controls(scene));
   write_works(result, works);
   shorthand_covers(result, true, works, result.warnings);
 }
@@ -143,13 +112,12 @@ void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result,
           scene, {.springs = springs, .outer_radius = scene.glued_radius, .record_path = true}, {});
     }
     locate_at_critical(row);
-    if (row.work) carry_works_to_located_ends(scene, row);
     return row;
   };
   const std::int64_t cap =
       std::min(scene.discretization.max_row_springs, std::max(kPathRowCap, 4 * result.springs));
   PathRefinement p = refine_path(kFirstPathRow, cap, run, scene.discretization.extrapolation,
-                                 PathStates::path, zero, rtol);
+                                 PathStates::path, shorthand_controls(scene), zero, rtol);
   result.counts += p.counts;
   RunResult& finest = p.rows.back();
   result.stages = std::move(finest.stages);

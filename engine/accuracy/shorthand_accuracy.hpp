@@ -15,7 +15,8 @@ namespace mdrsim {
 /// point and peak already combined by RowSequence): every stage end, jump and work by the
 /// rule programs use, with its estimate, and `covers` listing them. Rows that end differently
 /// along the path leave the finest row's values without estimates, and a warning says so.
-void combine_shorthand_path(std::vector<RunResult> rows, RunResult& result);
+/// `scene`: its controllers, by which each row's works are carried to the located ends.
+void combine_shorthand_path(const Scene& scene, std::vector<RunResult> rows, RunResult& result);
 
 /// Under rtol: rows of 512, 1024, ... springs across the glued radius with their paths
 /// recorded, doubled until every stage end's, jump's and work's estimate meets rtol (the

@@ -63,7 +63,7 @@ RunResult run_richardson(const Scene& scene, const ObserverList& observers) {
     result.peak = value;
     result.accuracy.peak_error_estimate = peaks.estimate(Accuracy::Route::richardson);
   }
-  combine_shorthand_path(seq.rows(), result);
+  combine_shorthand_path(scene, seq.rows(), result);
   return result;
 }
 
