@@ -8,7 +8,6 @@
 
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <numbers>
 #include <string>
 
@@ -19,10 +18,9 @@
 #include "engine/reference/parabolic_reference.hpp"
 #include "engine/reference/random_scenes.hpp"
 #include "engine/run/run_scene.hpp"
-#include "engine/scene/registries.hpp"
-#include "engine/scene/scene_document.hpp"
 #include "profiles/parabolic_profile.hpp"
 #include "profiles/power_law_profile.hpp"
+#include "tests/support/constant_strength.hpp"
 
 namespace mdrsim {
 namespace {
@@ -317,40 +315,11 @@ TEST(RunContinuum, SquareRootPowerLawPeelsSmoothly) {
   }
 }
 
-/// A user's own criterion: a stress criterion whose threshold is a fixed strength s [N/m]
-/// instead of E* dl(a), |(E* e, G* u_x)| >= s at every radius.
-class ConstantStrength final : public DetachmentCriterion {
- public:
-  ConstantStrength(const InterfaceProperties& p, double strength) : p_(p), strength_(strength) {}
-  double margin(const BoundarySpring& b) const override {
-    return strength_ - std::hypot(p_.effective_modulus * b.elongation,
-                                  p_.effective_shear_modulus * b.tangential_displacement);
-  }
-
- private:
-  InterfaceProperties p_;
-  double strength_;
-};
-
-/// The parabola R = 1 cm glued at 1 mm under `normal` with the constant strength s = 1 N/m
-/// (e = s/E* = 1 um) on `method`'s route (the row with 2000 springs).
+/// The constant-strength scene (tests/support) on `method`'s route (the row with 2000 springs).
 Scene constant_strength_scene(const std::string& normal, const std::string& method) {
-  Registries registries = Registries::builtin();
-  registries.criteria.add(
-      {.name = "constant-strength",
-       .summary = "a stress criterion with a fixed threshold",
-       .parameters = {{.key = "strength", .help = "[N/m]", .lower = Bound{0.0, false}}},
-       .create = [](const ParameterValues& v,
-                    const InterfaceProperties& p) -> std::unique_ptr<DetachmentCriterion> {
-         return std::make_unique<ConstantStrength>(p, v.number("strength"));
-       }});
-  const std::string text = fmt::format(
-      "[material]\neffective_modulus = 1e6\nwork_of_adhesion = 0.05\n[profile]\n"
-      "type = \"parabolic\"\nradius = 0.01\n[loading]\npreload = {{ contact_radius = 1e-3 }}\n"
-      "normal = {{ control = \"{}\" }}\n[detachment]\ncriterion = \"constant-strength\"\n"
-      "strength = 1.0\n[solver]\nmethod = \"{}\"\n{}",
-      normal, method, method == "event" ? "[discretization]\nsprings = 2000\n" : "");
-  return SceneDocument::from_text(text, "user.toml").build(registries);
+  return test::constant_strength_scene(
+      normal, fmt::format("[solver]\nmethod = \"{}\"\n{}", method,
+                          method == "event" ? "[discretization]\nsprings = 2000\n" : ""));
 }
 
 // Under fixed grips the user criterion's branch d(a) = a^2/R - s/E* falls all the way to
