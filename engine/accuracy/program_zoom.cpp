@@ -57,8 +57,8 @@ void as_program_state(std::optional<ContactSnapshot>& state, double offset) {
 /// The zoomed row on the pull-off loop: every spring glued at the offset s, so that the
 /// stretch is u_x - s; the tangential constraint a_u u_x + a_F F_x = h holds the stretch
 /// at h - a_u s.
-RunResult pull_off_row(const Scene& scene, const LastStageStart& start, double radius,
-                       std::int64_t springs) {
+RunResult pull_off_row(const Scene& scene, const LastStageStart& start, const ZeroScale& zero,
+                       double radius, std::int64_t springs) {
   const MachineStart machine{
       .normal = start.normal.constraint,
       .normal_held = start.normal.held,
@@ -66,7 +66,9 @@ RunResult pull_off_row(const Scene& scene, const LastStageStart& start, double r
       .tangential_held = start.tangential.held -
                          start.tangential.constraint.displacement_coefficient * start.offset};
   RunResult row = run_row(
-      scene, {.springs = springs, .outer_radius = radius, .zoomed = true, .start = machine}, {});
+      scene,
+      {.springs = springs, .outer_radius = radius, .zoomed = true, .start = machine, .zero = zero},
+      {});
   for (auto* state : {&row.critical, &row.refined_critical, &row.peak, &row.refined_peak}) {
     as_program_state(*state, start.offset);
   }
@@ -75,7 +77,8 @@ RunResult pull_off_row(const Scene& scene, const LastStageStart& start, double r
 
 ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroScale& zero,
                    double radius, std::int64_t springs) {
-  if (peels_as_pull_off(scene, start)) return {pull_off_row(scene, start, radius, springs), true};
+  if (peels_as_pull_off(scene, start))
+    return {pull_off_row(scene, start, zero, radius, springs), true};
   ProgramRowSpec spec{
       .reference_radius = radius,
       .reference_springs = springs,

@@ -90,12 +90,6 @@ void combine_shorthand_path(const Scene& scene, std::vector<RunResult> rows, Run
   shorthand_covers(result, true, works, result.warnings);
 }
 
-ZeroScale shorthand_zero_scale(const Scene& scene) {
-  return zero_scale(scene.material.effective_modulus, scene.glued_radius,
-                    scene.profile->mdr_image(scene.glued_radius),
-                    scene.material.largest_work_of_adhesion(), scene.preload_force);
-}
-
 void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result,
                            std::vector<RunResult> ran) {
   const ZeroScale zero = shorthand_zero_scale(scene);

@@ -28,8 +28,4 @@ void combine_shorthand_path(const Scene& scene, std::vector<RunResult> rows, Run
 void refine_shorthand_path(const Scene& scene, double rtol, RunResult& result,
                            std::vector<RunResult> ran = {});
 
-/// What is zero on the shorthand's rows (zero_scale.hpp): its glued radius, its image there and
-/// its preload force, as program_zero_scale gives it for a program's frame.
-ZeroScale shorthand_zero_scale(const Scene& scene);
-
 }  // namespace mdrsim

@@ -21,6 +21,9 @@ struct ZeroScale {
   double force = 0.0;         ///< [N]
   double displacement = 0.0;  ///< [m]
   double work = 0.0;          ///< [J]
+  /// The contact's own force, of which `force` is the rounding: what a finite force is
+  /// measured against (loss_status.hpp) [N].
+  double contact_force = 0.0;
 
   bool zero_force(double f) const { return std::abs(f) <= force; }
   bool zero_displacement(double d) const { return std::abs(d) <= displacement; }
@@ -31,7 +34,7 @@ struct ZeroScale {
 /// program reaches) on E* [Pa]: its depth D the larger of `image` (g at that radius [m]) and
 /// the Hess length 2 pi dgamma / E* [m], its force the larger of E* a D (half a flat punch of
 /// radius a pressed to D) and `held_force` [N] (a preload or held load), its work force times
-/// D. Each times kRoundingShare.
+/// D. Each times kRoundingShare, and the force itself as `contact_force`.
 inline ZeroScale zero_scale(double effective_modulus, double radius, double image,
                             double work_of_adhesion, double held_force = 0.0) {
   const double hess = hess_scale(work_of_adhesion, effective_modulus);
@@ -39,7 +42,7 @@ inline ZeroScale zero_scale(double effective_modulus, double radius, double imag
   const double force = std::max(effective_modulus * radius * depth, std::abs(held_force));
   const auto finite = [](double v) { return std::isfinite(v) ? v : 0.0; };
   return {finite(kRoundingShare * force), finite(kRoundingShare * depth),
-          finite(kRoundingShare * force * depth)};
+          finite(kRoundingShare * force * depth), finite(force)};
 }
 
 }  // namespace mdrsim

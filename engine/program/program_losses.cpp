@@ -25,8 +25,7 @@ const Cascade& ProgramLosses::deciding() const {
   return *last_contact_loss_;
 }
 
-void ProgramLosses::decide(const Cascade& c, const ZeroScale& zero, double largest_force,
-                           RunResult& r) {
+void ProgramLosses::decide(const Cascade& c, const ZeroScale& zero, RunResult& r) {
   if (zero.zero_force(c.before.normal_force) && c.glued == 0) {
     // Nothing carried a force or glue when the contact went: no critical point.
     r.status = c.first_by_shear ? RunStatus::shear_off : RunStatus::no_instability;
@@ -35,7 +34,7 @@ void ProgramLosses::decide(const Cascade& c, const ZeroScale& zero, double large
   const LossCascade loss{.changes = c.changes,
                          .springs_before = c.in_contact,
                          .force_before = c.before.normal_force,
-                         .largest_force = largest_force,
+                         .force_scale = zero.contact_force,
                          .first_by_shear = c.first_by_shear,
                          .second_by_shear = c.second_by_shear};
   r.status = loss_status(loss);

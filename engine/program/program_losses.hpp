@@ -30,9 +30,9 @@ class ProgramLosses {
   const Cascade& deciding() const;
 
   /// Writes the status a loss decides into `r`, with its critical point: nothing where nothing
-  /// carried a force or glue when the contact went, else loss_status.hpp's rule on the path's
-  /// largest |F| [N].
-  static void decide(const Cascade& c, const ZeroScale& zero, double largest_force, RunResult& r);
+  /// carried a force or glue when the contact went, else loss_status.hpp's rule on the run's
+  /// force scale (`zero`, the same for every row and zoom of the run).
+  static void decide(const Cascade& c, const ZeroScale& zero, RunResult& r);
 
  private:
   std::optional<Cascade> last_contact_loss_;

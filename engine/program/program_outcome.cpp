@@ -97,9 +97,7 @@ std::string ProgramOutcome::limit_warning(const ProgramEnd& end, const RunResult
 
 void ProgramOutcome::decide_by_losses(const ProgramEnd& end, RunResult& r) const {
   const ProgramRow& row = end.row;
-  const auto decide_loss = [&](const Cascade& c) {
-    ProgramLosses::decide(c, end.zero, end.watch.largest_force(), r);
-  };
+  const auto decide_loss = [&](const Cascade& c) { ProgramLosses::decide(c, end.zero, r); };
   const auto& glue_loss = losses_.last_glue_loss();
   const auto& contact_loss = losses_.last_contact_loss();
   if (stop_ == Stop::cannot_hold_tangential) {

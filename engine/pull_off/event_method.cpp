@@ -21,6 +21,7 @@ AdvanceOutcome EventMethod::advance(Contact& contact, const DetachmentCriterion&
   const double tolerance = 4.0 * std::numeric_limits<double>::epsilon() *
                            std::max(std::abs(held), std::abs(go.normal_control));
   const bool due = out.first_by_shear || go.normal_control >= held - tolerance;
+  out.flat = due && !out.first_by_shear && go.normal_control <= held + tolerance;
   if (!due) {
     contact.set_normal_control(go.normal_control);
     out.equilibrium_before = contact.save();

@@ -73,7 +73,6 @@ class EquilibriumTrack {
     }
     const double force = contact_->normal_force_of(state);
     last_force_ = force;
-    largest_force_ = std::max(largest_force_, std::abs(force));
     if (count_ == 1 || force < peak_force_) {
       peak_force_ = force;
       peak_ = state;
@@ -94,8 +93,7 @@ class EquilibriumTrack {
     return recent_[static_cast<std::size_t>(k)];
   }
   std::int64_t run_top() const { return run_top_; }
-  double last_force() const { return last_force_; }        ///< [N]
-  double largest_force() const { return largest_force_; }  ///< largest |F| on the path [N]
+  double last_force() const { return last_force_; }  ///< [N]
   const Contact::State& peak() const { return peak_; }
   std::optional<Contact::State> peak_outer() const { return peak_outer_; }
   std::optional<Contact::State> peak_inner() const { return peak_inner_; }
@@ -109,7 +107,6 @@ class EquilibriumTrack {
   Contact::State peak_{};
   double peak_force_ = 0.0;
   double last_force_ = 0.0;
-  double largest_force_ = 0.0;
   std::optional<Contact::State> peak_outer_;
   std::optional<Contact::State> peak_inner_;
   bool peak_waits_for_inner_ = false;
@@ -120,6 +117,7 @@ class EquilibriumTrack {
 struct CascadeStart {
   std::int64_t size = 0;  ///< springs detached since the last equilibrium
   bool by_shear = false;  ///< the first spring due after it was broken at zero stretch
+  bool flat = true;       ///< every spring due after it was due only to rounding (AdvanceOutcome)
 };
 
 void fill_critical(RunResult& result, const Contact& contact, const DetachmentCriterion& criterion,
@@ -149,6 +147,12 @@ void fill_critical(RunResult& result, const Contact& contact, const DetachmentCr
 }
 
 }  // namespace
+
+ZeroScale shorthand_zero_scale(const Scene& scene) {
+  return zero_scale(scene.material.effective_modulus, scene.glued_radius,
+                    scene.profile->mdr_image(scene.glued_radius),
+                    scene.material.largest_work_of_adhesion(), scene.preload_force);
+}
 
 RunResult run_pull_off(const Scene& scene, const ObserverList& observers) {
   return run_pull_off(scene, scene.springs, observers);
@@ -267,10 +271,13 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
     if (path) path->advanced(contact, out, out.equilibrium_before && !broken_at_start);
     if (out.equilibrium_before && !broken_at_start) {
       track.add(*out.equilibrium_before, cascade.size > 1);
-      cascade = {.size = out.detached, .by_shear = out.detached > 1 && out.second_by_shear};
+      cascade = {.size = out.detached,
+                 .by_shear = out.detached > 1 && out.second_by_shear,
+                 .flat = out.detached == 1 || out.flat};
     } else {
       if (cascade.size == 1) cascade.by_shear = out.first_by_shear;
       cascade.size += out.detached;
+      cascade.flat = cascade.flat && out.flat;
     }
   }
   const JumpEnd flight = shorthand_flight(contact.save(), normal_constraint, tangential_constraint,
@@ -324,12 +331,14 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
   }
   // The status from the cascade that lost the contact (loss_status.hpp). A single let-go's
   // cascade.by_shear is false: the first spring let go at an equilibrium, stretched.
-  const LossCascade loss{.changes = cascade.size,
-                         .springs_before = track.last().springs_in_contact,
-                         .force_before = track.last_force(),
-                         .largest_force = track.largest_force(),
-                         .first_by_shear = cascade.by_shear,
-                         .second_by_shear = cascade.by_shear};
+  const LossCascade loss{
+      .changes = cascade.size,
+      .springs_before = track.last().springs_in_contact,
+      .force_before = track.last_force(),
+      .force_scale = (row.zero ? *row.zero : shorthand_zero_scale(scene)).contact_force,
+      .first_by_shear = cascade.by_shear,
+      .second_by_shear = cascade.by_shear,
+      .flat = cascade.flat};
   result.status = loss_status(loss);
   const bool smooth = result.status == RunStatus::no_instability;
   fill_critical(result, contact, *scene.criterion, track);

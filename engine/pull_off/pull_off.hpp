@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "controllers/controller.hpp"
+#include "engine/base/zero_scale.hpp"
 #include "engine/events/observer.hpp"
 #include "engine/result/run_result.hpp"
 #include "engine/scene/scene.hpp"
@@ -33,7 +34,15 @@ struct RowSpec {
   /// Record the path's stages, jumps and work (shorthand_path.hpp): for the row a run reports,
   /// not for the rows it only compares (a few ns per let-go).
   bool record_path = false;
+  /// What is zero in the run, and its force scale (the status's, loss_status.hpp): the
+  /// shorthand's (shorthand_zero_scale) where not given; a program's last stage brings its own.
+  std::optional<ZeroScale> zero;
 };
+
+/// What is zero on the shorthand's rows (zero_scale.hpp): its glued radius, its image there and
+/// its preload force, as program_zero_scale gives it for a program's frame. From the scene
+/// alone: every row and zoom of a run draws the same lines.
+ZeroScale shorthand_zero_scale(const Scene& scene);
 
 /// Runs one row and returns its status and row detail (critical, peak, refined points).
 /// Emits every event of the row but `instability` and `finished`, which the caller emits

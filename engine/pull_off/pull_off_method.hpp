@@ -20,6 +20,10 @@ struct AdvanceOutcome {
   /// The second spring of this advance (the first one due at the same control value) was
   /// broken at zero elongation: a cascade started by shear, not by a fold.
   bool second_by_shear = false;
+  /// The spring went on a cascade (due at the held value, not by shear) whose control did not
+  /// turn: its let-go value lies within the rounding of the held one, above it or below (a
+  /// tie where d is flat to the bit, not a fold). False where the method cannot tell.
+  bool flat = false;
 };
 
 class PullOffMethod {

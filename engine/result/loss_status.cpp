@@ -6,8 +6,8 @@
 namespace mdrsim {
 
 bool peels_smoothly(const LossCascade& c) {
-  return c.changes < 2 && c.springs_before <= 1 &&
-         std::abs(c.force_before) <= kNegligibleForce * c.largest_force;
+  if (c.changes >= 2) return c.flat;
+  return c.springs_before <= 1 && std::abs(c.force_before) <= kNegligibleForce * c.force_scale;
 }
 
 RunStatus loss_status(const LossCascade& c) {
