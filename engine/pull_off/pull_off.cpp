@@ -86,6 +86,7 @@ class EquilibriumTrack {
   }
 
   bool empty() const { return count_ == 0; }
+  std::int64_t size() const { return count_; }  ///< equilibria so far
   const Contact::State& last() const { return recent_[0]; }
   /// The k-th equilibrium before the last in the unbroken run (k = 1, 2), if there is one.
   std::optional<Contact::State> before_last(int k) const {
@@ -330,7 +331,11 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
     return result;
   }
   // The status from the cascade that lost the contact (loss_status.hpp). A single let-go's
-  // cascade.by_shear is false: the first spring let go at an equilibrium, stretched.
+  // cascade.by_shear is false: the first spring let go at an equilibrium, stretched. A flat
+  // cascade is a tie on a falling branch only where the branch fell before it: at a glued
+  // row's first let-go the control never fell, and a branch flat from the glued radius on
+  // (a flat punch under a constant let-go stretch) is the continuum route's fold there.
+  const bool fell = row.zoomed || track.size() > 1;
   const LossCascade loss{
       .changes = cascade.size,
       .springs_before = track.last().springs_in_contact,
@@ -338,7 +343,7 @@ RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& ob
       .force_scale = (row.zero ? *row.zero : shorthand_zero_scale(scene)).contact_force,
       .first_by_shear = cascade.by_shear,
       .second_by_shear = cascade.by_shear,
-      .flat = cascade.flat};
+      .flat = cascade.flat && fell};
   result.status = loss_status(loss);
   const bool smooth = result.status == RunStatus::no_instability;
   fill_critical(result, contact, *scene.criterion, track);

@@ -24,9 +24,9 @@ struct LossCascade {
   double force_scale = 0.0;
   bool first_by_shear = false;   ///< the first change broke a spring at zero stretch
   bool second_by_shear = false;  ///< the first change due after it did
-  /// Every change after the first was due at the held value only up to its rounding: the
-  /// control did not turn (a tie where d is flat to the bit), as the continuum route reads a
-  /// control that stops falling by no more than its own rounding.
+  /// Every change after the first was due at the held value only up to its rounding, on a
+  /// branch that fell before: the control did not turn (a tie where d is flat to the bit),
+  /// as the continuum route reads a control that stops falling by no more than its rounding.
   bool flat = false;
 };
 

@@ -83,5 +83,24 @@ TEST(AdaptiveResolution, ConstantStrengthProgramPeelsSmoothly) {
   }
 }
 
+// A flat punch under the constant strength: every spring at the same let-go value d = -e, so
+// the row's first let-go takes the whole contact at once, F = -2 E* A e. The control never
+// fell: the continuum route's fold at the glued radius (its slope is not positive there), an
+// instability on every route, not the tie of a falling branch.
+TEST(AdaptiveResolution, FlatPunchUnderAConstantStrengthJumpsAtOnce) {
+  const std::string punch = "type = \"flat_punch\"\nradius = 1e-3\n";
+  for (const std::string& tail :
+       {std::string("[solver]\nmethod = \"event\"\n[discretization]\nsprings = 2000\n"),
+        rtol_tail(1e-6), std::string("[solver]\nmethod = \"continuum\"\n")}) {
+    SCOPED_TRACE(tail);
+    const RunResult r =
+        run_scene(test::constant_strength_scene("fixed-grips", tail, punch), ObserverList{});
+    EXPECT_EQ(r.status, RunStatus::instability);
+    ASSERT_TRUE(r.critical);
+    // F = -2 E* A e = -2e-3 N, to the row's own rounding.
+    EXPECT_NEAR(r.critical->normal_force, -2.0 * 1e6 * 1e-3 * 1e-6, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace mdrsim
