@@ -77,8 +77,9 @@ RunResult pull_off_row(const Scene& scene, const LastStageStart& start, const Ze
 
 ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroScale& zero,
                    double radius, std::int64_t springs) {
-  if (peels_as_pull_off(scene, start))
+  if (peels_as_pull_off(scene, start)) {
     return {pull_off_row(scene, start, zero, radius, springs), true};
+  }
   ProgramRowSpec spec{
       .reference_radius = radius,
       .reference_springs = springs,

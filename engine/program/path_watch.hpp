@@ -1,10 +1,8 @@
 // What a program row's equilibria tell of its path as they come: the most tensile one (the
-// peak), the largest |F|, whether any spring ever touched, and for the drivers that ask, the
-// largest contact and whether the last stage keeps the zoom's conditions.
+// peak), whether any spring ever touched, and for the drivers that ask, the largest contact
+// and whether the last stage keeps the zoom's conditions.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
 #include <optional>
 
 #include "engine/model/contact_snapshot.hpp"
@@ -40,7 +38,6 @@ class PathWatch {
   void observe(const ContactSnapshot& s, const ProgramRow& row, const Stage& stage,
                const ContactSnapshot* cascade_before = nullptr) {
     if (!within_double(s)) return;
-    largest_force_ = std::max(largest_force_, std::abs(s.normal_force));
     if (s.springs_in_contact > 0 && s.normal_force < -zero_force_ &&
         (!peak_ || s.normal_force < peak_->normal_force)) {
       peak_ = s;
@@ -50,7 +47,6 @@ class PathWatch {
   }
 
   const std::optional<ContactSnapshot>& peak() const { return peak_; }
-  double largest_force() const { return largest_force_; }  ///< largest |F| [N]
   bool ever_in_contact() const { return ever_in_contact_; }
 
  private:
@@ -63,7 +59,6 @@ class PathWatch {
   double zero_force_;
   LargestContact* largest_;
   LastStageStart* last_stage_;
-  double largest_force_ = 0.0;
   std::optional<ContactSnapshot> peak_;
   bool ever_in_contact_ = false;
 };

@@ -31,20 +31,23 @@ std::string rtol_tail(double rtol) {
 TEST(AdaptiveResolution, ConstantStrengthPeelsSmoothlyAtEveryRtol) {
   for (const std::string& profile : {test::kParabolaProfile, kCone}) {
     for (const double rtol : {1e-4, 1e-6, 1e-8}) {
-      SCOPED_TRACE(profile + fmt::format("rtol {}", rtol));
-      const RunResult r = run_scene(
-          test::constant_strength_scene("fixed-grips", rtol_tail(rtol), profile), ObserverList{});
-      EXPECT_EQ(r.status, RunStatus::no_instability);
-      EXPECT_FALSE(r.critical);
-      // Nothing to refine: before, the deepest zoomed row's last spring read as a jump and
-      // rows of up to 2^25 springs were refined without meeting rtol.
-      EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
-      const RunResult continuum =
-          run_scene(test::constant_strength_scene("fixed-grips",
-                                                  "[solver]\nmethod = \"continuum\"\n", profile),
-                    ObserverList{});
-      EXPECT_EQ(continuum.status, RunStatus::no_instability);
+      // The row under rtol, and rtol alone (the route the scene's plan picks).
+      for (const std::string& tail :
+           {rtol_tail(rtol), fmt::format("[discretization]\nrtol = {}\n", rtol)}) {
+        SCOPED_TRACE(profile + tail);
+        const RunResult r =
+            run_scene(test::constant_strength_scene("fixed-grips", tail, profile), ObserverList{});
+        EXPECT_EQ(r.status, RunStatus::no_instability);
+        EXPECT_FALSE(r.critical);
+        // Nothing to refine and no warning: a deepest zoom read as a jump refines rows of up
+        // to 2^25 springs without meeting rtol.
+        EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+      }
     }
+    const RunResult continuum = run_scene(
+        test::constant_strength_scene("fixed-grips", "[solver]\nmethod = \"continuum\"\n", profile),
+        ObserverList{});
+    EXPECT_EQ(continuum.status, RunStatus::no_instability);
   }
 }
 
