@@ -31,7 +31,8 @@ refuse "the outputs sit above the engine: engine/ includes engine/output/ only f
 # The engine's wings: pull_off/ (the shorthand's row), program/ (a program's row) and continuum/
 # (the branch with no springs) are three engines side by side; none includes another, nor the
 # accuracy drivers above them (accuracy/) or the entry (run/). accuracy/ may take any wing, not
-# run/; the folders below the wings (base, scene, model, events, result) include none of them.
+# run/; the folders below the wings (base, scene, model, events, result, and measured, the
+# readers of measured force curves) include none of them.
 wings=(pull_off program continuum)
 for wing in "${wings[@]}"; do
   others="$(printf '%s\n' "${wings[@]}" accuracy run | grep -vx "$wing" | paste -sd'|')"
@@ -40,8 +41,8 @@ for wing in "${wings[@]}"; do
 done
 refuse "engine/accuracy/ sits above the wings and below the entry: it may not include run/:" \
   "$(includes engine/accuracy | grep '#include "engine/run/' || true)"
-refuse "the folders below the wings (base, scene, model, events, result) may not include a wing, accuracy/ or run/:" \
-  "$(includes engine/base engine/scene engine/model engine/events engine/result |
+refuse "the folders below the wings (base, scene, model, events, result, measured) may not include a wing, accuracy/ or run/:" \
+  "$(includes engine/base engine/scene engine/model engine/events engine/result engine/measured |
      grep -E '#include "engine/(pull_off|program|continuum|accuracy|run)/' || true)"
 
 # The folder graph: each engine/ subfolder a node, and apps, python/src, controllers, detachment,

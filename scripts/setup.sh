@@ -10,6 +10,10 @@ packages=(
   cmake g++ make
   libeigen3-dev libspdlog-dev libfmt-dev libgtest-dev libbenchmark-dev libboost-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  # Readers of measured force curves (engine/measured/, docs/afm.md): libzip opens JPK's zip
+  # archives, HDF5's C library reads afmformats' .h5 exports; both found through pkg-config
+  # (Debian's libzip CMake package also demands zipcmp, zipmerge and ziptool).
+  libzip-dev libhdf5-dev pkgconf
   python3-matplotlib python3-numpy
   # The Python module (python/, docs/python.md "Installing"): pybind11, a venv and pip that install
   # offline, pytest; pandas for Result.to_dataframe (optional for users, tested here).
