@@ -48,6 +48,11 @@ class ZipArchive {
   ~ZipArchive() { zip_discard(archive_); }
 
   bool has(const std::string& name) const { return names_.contains(name); }
+  /// Whether any entry's name starts with `folder`.
+  bool has_under(const std::string& folder) const {
+    const auto it = names_.lower_bound(folder);
+    return it != names_.end() && it->starts_with(folder);
+  }
   const std::set<std::string>& names() const { return names_; }
 
   std::string read(const std::string& name) const {
@@ -396,10 +401,7 @@ ForceCurve read_curve(const ZipArchive& archive, const std::filesystem::path& pa
     const std::string segment_folder = folder.prefix + "segments/" + std::to_string(number) + "/";
     const std::string segment_header = segment_folder + "segment-header.properties";
     if (!archive.has(segment_header)) {
-      const bool any =
-          std::any_of(archive.names().begin(), archive.names().end(),
-                      [&](const std::string& n) { return n.starts_with(segment_folder); });
-      if (any) refuse(path, "{}: missing", segment_header);
+      if (archive.has_under(segment_folder)) refuse(path, "{}: missing", segment_header);
       break;
     }
     Properties properties = parse_properties(archive.read(segment_header));

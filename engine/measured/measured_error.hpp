@@ -21,8 +21,9 @@ class MeasuredFileError : public SceneError {
 template <typename... Args>
 [[noreturn]] void refuse(const std::filesystem::path& path, fmt::format_string<Args...> what,
                          Args&&... args) {
-  throw MeasuredFileError(fmt::format(
-      "{}: {}", path.string(), printable(fmt::format(what, std::forward<Args>(args)...), 300)));
+  throw MeasuredFileError(
+      fmt::format("{}: {}", printable(path.string(), 300),
+                  printable(fmt::format(what, std::forward<Args>(args)...), 300)));
 }
 
 }  // namespace mdrsim::measured

@@ -20,23 +20,6 @@
 
 namespace mdrsim::measured {
 
-const char* segment_kind_name(SegmentKind kind) {
-  switch (kind) {
-    case SegmentKind::approach:
-      return "approach";
-    case SegmentKind::retract:
-      return "retract";
-    case SegmentKind::pause:
-      return "pause";
-  }
-  return "pause";
-}
-
-std::size_t Segment::size() const {
-  return std::max({time.size(), piezo_height.size(), measured_height.size(), tip_position.size(),
-                   deflection.size(), force.size()});
-}
-
 namespace {
 
 /// The file's first bytes (fewer if it is shorter).
