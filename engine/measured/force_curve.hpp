@@ -63,8 +63,11 @@ struct MapGrid {
   double center_y = 0.0;  ///< [m]
 };
 
+/// A curve of the file. In a file of several curves (a map), a curve that cannot be read keeps
+/// its label and position and says why in `unreadable`, so that the map goes on without it.
 struct ForceCurve {
   std::string label;  ///< where in the file: "index/109" of a map, "0" of an HDF5 file, "" alone
+  std::string unreadable;  ///< empty for a curve that loaded; else its refusal line
   std::vector<Segment> segments;
   Calibration calibration;
   std::optional<MapPosition> position;

@@ -189,7 +189,12 @@ MeasuredFile read_afmformats_hdf5(const std::filesystem::path& path,
   result.path = path;
   result.format = "hdf5";
   for (const std::string& name : names) {
-    result.curves.push_back(read_group(path, file.get(), name, overrides));
+    try {
+      result.curves.push_back(read_group(path, file.get(), name, overrides));
+    } catch (const MeasuredFileError& error) {
+      if (names.size() == 1) throw;
+      result.curves.push_back(ForceCurve{.label = name, .unreadable = error.what()});
+    }
   }
   return result;
 }

@@ -510,7 +510,12 @@ MeasuredFile read_jpk(const std::filesystem::path& path, const std::string& form
     }
   }
   for (const CurveFolder& folder : folders) {
-    file.curves.push_back(read_curve(archive, path, folder, general, shared, overrides));
+    try {
+      file.curves.push_back(read_curve(archive, path, folder, general, shared, overrides));
+    } catch (const MeasuredFileError& error) {
+      if (folders.size() == 1) throw;
+      file.curves.push_back(ForceCurve{.label = folder.label, .unreadable = error.what()});
+    }
   }
   return file;
 }

@@ -116,7 +116,21 @@ MeasuredFile read_force_curves(const std::filesystem::path& path,
            extension);
   }
   if (file.curves.empty()) refuse(path, "no force curves");
-  for (const ForceCurve& curve : file.curves) check_curve(path, curve);
+  // One curve: its problem is the file's. Several: each bad curve is marked and the rest load,
+  // unless none does.
+  for (ForceCurve& curve : file.curves) {
+    if (!curve.unreadable.empty()) continue;
+    try {
+      check_curve(path, curve);
+    } catch (const MeasuredFileError& error) {
+      if (file.curves.size() == 1) throw;
+      curve.unreadable = error.what();
+      curve.segments.clear();
+    }
+  }
+  const bool any_readable = std::any_of(file.curves.begin(), file.curves.end(),
+                                        [](const ForceCurve& c) { return c.unreadable.empty(); });
+  if (!any_readable) throw MeasuredFileError(file.curves.front().unreadable);
   return file;
 }
 

@@ -15,7 +15,9 @@ namespace mdrsim::measured {
 /// Throws MeasuredFileError, one line naming the file, for an unknown extension, contents
 /// that do not match it, a damaged or truncated file, a curve without segments, an empty
 /// segment, a segment without a height or without a deflection or force in SI units (a file
-/// without sensitivity), channels of unequal length and samples that are not finite.
+/// without sensitivity), channels of unequal length and samples that are not finite. In a file
+/// of several curves, a curve with such a problem is kept with its line in `unreadable` and no
+/// segments; the file is refused only when no curve is readable.
 MeasuredFile read_force_curves(const std::filesystem::path& path,
                                const CalibrationOverride& overrides = {});
 

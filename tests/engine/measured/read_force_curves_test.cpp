@@ -404,6 +404,35 @@ TEST(ReadForceCurves, JpkChannelShorterThanItsHeaderIsRefused) {
                 ": segments/1/channels/height.dat: 1000 samples, the segment header says 2000");
 }
 
+TEST(ReadForceCurves, MapWithOneBadCurveLoadsTheOthers) {
+  TempFolder folder;
+  const fs::path copy = folder / "map.jpk-force-map";
+  fs::copy_file(kData / "fmt-jpk-fd_map-data-reference-points.jpk-force-map", copy);
+  std::string deflection = zip_entry(copy, "index/129/segments/1/channels/vDeflection.dat");
+  deflection.resize(deflection.size() - 4);
+  replace_entries(copy, {{"index/129/segments/1/channels/vDeflection.dat", deflection}});
+  const MeasuredFile file = read_force_curves(copy);
+  ASSERT_EQ(file.curves.size(), 3u);
+  EXPECT_EQ(file.curves[0].unreadable, "");
+  EXPECT_EQ(file.curves[2].segments[1].size(), 4000u);
+  EXPECT_EQ(file.curves[1].label, "index/129");
+  EXPECT_TRUE(file.curves[1].segments.empty());
+  EXPECT_EQ(file.curves[1].unreadable,
+            copy.string() +
+                ": index/129/segments/1/channels/vDeflection.dat: 3999 samples, the "
+                "segment header says 4000");
+  // Every curve bad: the file is refused with the first one's line.
+  std::vector<std::pair<std::string, std::string>> all;
+  for (const char* index : {"109", "129", "416"}) {
+    all.emplace_back(std::string("index/") + index + "/segments/1/channels/vDeflection.dat",
+                     deflection);
+  }
+  replace_entries(copy, all);
+  EXPECT_EQ(refusal(copy), copy.string() +
+                               ": index/109/segments/1/channels/vDeflection.dat: 3999 "
+                               "samples, the segment header says 4000");
+}
+
 TEST(ReadForceCurves, EmptySegmentIsRefused) {
   TempFolder folder;
   const fs::path copy = folder / "empty.jpk-force";
