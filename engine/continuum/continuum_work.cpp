@@ -29,8 +29,7 @@ Estimated integrate(Fn fn, double lo, double hi) {
 
 }  // namespace
 
-Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s) {
-  const Material& m = branch.material();
+Estimated glued_normal_energy(const ContinuumBranch& branch, const BranchState& s) {
   const Profile& profile = branch.profile();
   const double d = s.indentation;
   // x = a t^2: images like sqrt(x) (power laws with n < 1, the cone's tip) become smooth in t.
@@ -46,8 +45,16 @@ Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s) {
         },
         0.0, 1.0);
   }
-  e.value *= m.effective_modulus;
-  e.error *= m.effective_modulus;
+  const double modulus = branch.material().effective_modulus;
+  e.value *= modulus;
+  e.error *= modulus;
+  return e;
+}
+
+Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s,
+                        const Estimated& normal) {
+  const Material& m = branch.material();
+  Estimated e = normal;
   const double ux = s.tangential_displacement;
   e.value += m.effective_shear_modulus * s.contact_radius * ux * ux;
   if (drives_through_spring(branch.normal())) {
@@ -58,6 +65,14 @@ Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s) {
         0.5 * s.tangential_force * s.tangential_force * branch.tangential().force_coefficient;
   }
   return e;
+}
+
+Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s) {
+  return stored_energy(branch, s, glued_normal_energy(branch, s));
+}
+
+StoredState stored_state(const ContinuumBranch& branch, const BranchState& s) {
+  return {s, stored_energy(branch, s)};
 }
 
 Estimated released_energy(const ContinuumBranch& branch, double from, double to) {
@@ -71,20 +86,26 @@ Estimated released_energy(const ContinuumBranch& branch, double from, double to)
       to, from);
 }
 
-AxisWork stretch_work(const ContinuumBranch& branch, const BranchState& top,
-                      const BranchState& bottom, double& error) {
-  const Estimated before = stored_energy(branch, top);
-  const Estimated after = stored_energy(branch, bottom);
-  const Estimated released = released_energy(branch, top.contact_radius, bottom.contact_radius);
+AxisWork stretch_work(const ContinuumBranch& branch, const StoredState& top,
+                      const StoredState& bottom, double& error) {
+  const Estimated& before = top.energy;
+  const Estimated& after = bottom.energy;
+  const Estimated released =
+      released_energy(branch, top.state.contact_radius, bottom.state.contact_radius);
   const double total = after.value - before.value + released.value;
   error += before.error + after.error + released.error;
   AxisWork w;
   if (holds_force(branch.tangential())) {
-    w.tangential =
-        branch.tangential_held() * (bottom.tangential_displacement - top.tangential_displacement);
+    w.tangential = branch.tangential_held() *
+                   (bottom.state.tangential_displacement - top.state.tangential_displacement);
   }
   w.normal = total - w.tangential;
   return w;
+}
+
+AxisWork stretch_work(const ContinuumBranch& branch, const BranchState& top,
+                      const BranchState& bottom, double& error) {
+  return stretch_work(branch, stored_state(branch, top), stored_state(branch, bottom), error);
 }
 
 AxisWork jump_work(const ContinuumBranch& branch, const BranchState& from, const BranchState& to) {

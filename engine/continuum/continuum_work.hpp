@@ -12,10 +12,26 @@ struct Estimated {
   double error = 0.0;
 };
 
+/// A state and the energy it stores, computed once where the path meets the state twice.
+struct StoredState {
+  BranchState state;
+  Estimated energy;  ///< stored_energy(branch, state) [J]
+};
+
+/// The normal energy of the glued springs, E* int_0^a (d - g)^2 dx at s's contact radius and
+/// indentation [J]: the profile's closed form where it has one, else quadrature. States that
+/// share a and d (the preload and the tangential load's application) share it.
+Estimated glued_normal_energy(const ContinuumBranch& branch, const BranchState& s);
+
 /// The energy stored in the glued springs, E* int_0^a (d - g)^2 dx + G* a u_x^2 (both halves),
 /// plus the energy of the machines' springs, F^2 / 2k and F_x^2 / 2k_t, where they drive
-/// through one [J].
+/// through one [J]; `normal` is glued_normal_energy(branch, s).
+Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s,
+                        const Estimated& normal);
+/// The same, its normal part computed here.
 Estimated stored_energy(const ContinuumBranch& branch, const BranchState& s);
+/// The state with its stored energy.
+StoredState stored_state(const ContinuumBranch& branch, const BranchState& s);
 
 /// The energy the springs take with them as the front recedes along the branch from radius
 /// `from` down to `to`: int (E* e(x)^2 + G* u_x(x)^2) dx [J].
@@ -26,6 +42,9 @@ Estimated released_energy(const ContinuumBranch& branch, double from, double to)
 /// stored energy's change plus what the springs took; the tangential share is the held
 /// force times the move of u_x under a tangential fixed load (zero otherwise: fixed grips
 /// hold u_x, a compliant machine holds its end), the normal share the rest.
+AxisWork stretch_work(const ContinuumBranch& branch, const StoredState& top,
+                      const StoredState& bottom, double& error);
+/// The same, the two stored energies computed here.
 AxisWork stretch_work(const ContinuumBranch& branch, const BranchState& top,
                       const BranchState& bottom, double& error);
 

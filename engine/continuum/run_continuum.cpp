@@ -78,7 +78,11 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   observers.emit({.kind = EventKind::preload_reached, .state = preload.snapshot()});
   ContinuumBranch pressed(*scene.profile, *scene.criterion, scene.material,
                           FixedGripsController().constraint(), tangential, 0.0);
-  const Estimated preload_energy = stored_energy(pressed, pressed.state(ag, preload_stretch));
+  // The tangential load moves neither a nor d: both states store the same normal energy.
+  const BranchState applied = branch.state(ag, preload_stretch);
+  const Estimated glued_normal = glued_normal_energy(branch, applied);
+  const Estimated preload_energy =
+      stored_energy(pressed, pressed.state(ag, preload_stretch), glued_normal);
   double work_error = preload_energy.error;
   StageRecord preload_stage{"preload", preload.snapshot(), {}};
   preload_stage.work.normal = preload_energy.value;
@@ -86,7 +90,6 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   result.stages.push_back(preload_stage);
 
   // Stage tangential: u_x ramped on the glued contact, F_x = 2 G* a u_x.
-  const BranchState applied = branch.state(ag, preload_stretch);
   if (scene.tangential) {
     observers.emit({.kind = EventKind::tangential_applied, .state = applied.snapshot()});
   }
@@ -110,11 +113,13 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   } else {
     // The pinned phase (the front stays at a_g until e reaches its let-go value), then each
     // stable stretch of the branch and the jumps between them.
-    AxisWork work = stretch_work(branch, applied, branch.at(ag), work_error);
+    const StoredState pinned = stored_state(branch, branch.at(ag));
+    AxisWork work = stretch_work(branch, {applied, stored_energy(branch, applied, glued_normal)},
+                                 pinned, work_error);
     for (std::size_t k = 0; k < p.segments.size(); ++k) {
-      const BranchState top = k == 0 ? branch.at(ag) : p.partial_jumps[k - 1].to;
+      const StoredState top = k == 0 ? pinned : stored_state(branch, p.partial_jumps[k - 1].to);
       const BranchState bottom = k < p.partial_jumps.size() ? p.partial_jumps[k].from : p.critical;
-      work += stretch_work(branch, top, bottom, work_error);
+      work += stretch_work(branch, top, stored_state(branch, bottom), work_error);
       if (k < p.partial_jumps.size()) {
         const ContinuumJump& jump = p.partial_jumps[k];
         work += jump_work(branch, jump.from, jump.to);
