@@ -49,6 +49,18 @@ double PowerLawProfile::nonadhesive_force_per_modulus(double a) const {
   return 2.0 * image_coefficient_ * std::pow(a, exponent_ + 1.0) * exponent_ / (exponent_ + 1.0);
 }
 
+// int_0^a (d - k x^n)^2 dx = d^2 a - 2 d k a^(n+1)/(n+1) + k^2 a^(2n+1)/(2n+1), from g(a) =
+// k a^n: each term a few ulps off, so their magnitudes' sum bounds the rounding.
+std::optional<ExactIntegral> PowerLawProfile::squared_gap_integral(double a, double d) const {
+  if (!(a > 0.0)) return ExactIntegral{0.0, 0.0};
+  const double edge = mdr_image(a);
+  const double square = d * d * a;
+  const double cross = 2.0 * d * edge * a / (exponent_ + 1.0);
+  const double image = edge * edge * a / (2.0 * exponent_ + 1.0);
+  return ExactIntegral{square - cross + image,
+                       std::abs(square) + std::abs(cross) + std::abs(image)};
+}
+
 // JKR in MDR (paper eqs. 14-15 for any image): the boundary spring lets go at the stretch
 // dl(a) = sqrt(w a), w = 2 pi dgamma/E*, so along the pull-off branch d = k a^n - sqrt(w a) and
 // F = 2 E* (a d - integral_0^a k x^n dx) = 2 E* k n a^(n+1)/(n+1) - 2 E* sqrt(w) a^(3/2).

@@ -26,6 +26,8 @@ class PowerLawProfile final : public Profile {
   double mdr_image_slope(double x) const override;
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;
+  std::optional<ExactIntegral> squared_gap_integral(double contact_radius,
+                                                    double indentation) const override;
   std::optional<PullOffScales> pull_off_scales(double effective_modulus,
                                                double work_of_adhesion) const override;
 
