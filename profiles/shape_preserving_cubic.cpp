@@ -8,6 +8,21 @@
 namespace mdrsim {
 namespace {
 
+/// Neumaier's compensated sum.
+class Sum {
+ public:
+  void add(double term) {
+    const double t = sum_ + term;
+    compensation_ += std::abs(sum_) >= std::abs(term) ? (sum_ - t) + term : (term - t) + sum_;
+    sum_ = t;
+  }
+  double value() const { return sum_ + compensation_; }
+
+ private:
+  double sum_ = 0.0;
+  double compensation_ = 0.0;
+};
+
 void check_knots(const std::vector<double>& x, const std::vector<double>& y, std::size_t least) {
   if (x.size() < least) throw std::invalid_argument("too few knots for the interpolant");
   if (y.size() != x.size()) throw std::invalid_argument("one value per knot is needed");
@@ -105,14 +120,26 @@ ShapePreservingCubic::ShapePreservingCubic(std::vector<double> knots,
   }
   pieces_.reserve(n - 1);
   double integral = 0.0;
+  // Neumaier's sums: thousands of pieces add no more than an ulp of rounding to each.
+  Sum first, first_size, square, square_size;
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double h = knots_[k + 1] - knots_[k];
     const double rise = values[k + 1] - values[k];
     const double c1 = h * slopes[k];
     const double c2 = 3.0 * rise - 2.0 * h * slopes[k] - h * slopes[k + 1];
     const double c3 = h * (slopes[k] + slopes[k + 1]) - 2.0 * rise;
-    pieces_.push_back({h, values[k], c1, c2, c3, integral});
+    pieces_.push_back({h, values[k], c1, c2, c3, integral, first.value(), first_size.value(),
+                       square.value(), square_size.value()});
     integral += h * (values[k] + c1 / 2.0 + c2 / 3.0 + c3 / 4.0);
+    const double c[4] = {values[k], c1, c2, c3};
+    for (int i = 0; i <= 3; ++i) {
+      first.add(h * c[i] / (i + 1));
+      first_size.add(h * std::abs(c[i]) / (i + 1));
+      for (int j = 0; j <= 3; ++j) {
+        square.add(h * c[i] * c[j] / (i + j + 1));
+        square_size.add(h * std::abs(c[i] * c[j]) / (i + j + 1));
+      }
+    }
   }
 }
 
@@ -149,26 +176,27 @@ double ShapePreservingCubic::integral(double x) const {
 
 ShapePreservingCubic::SquareIntegral ShapePreservingCubic::integral_of_square(double level,
                                                                               double x) const {
-  SquareIntegral out{0.0, 0.0};
-  if (!(x > knots_.front())) return out;
+  if (!(x > knots_.front())) return {0.0, 0.0};
   const std::size_t last = piece(x);
-  for (std::size_t k = 0; k <= last; ++k) {
-    const Piece& p = pieces_[k];
-    const double end = k == last ? (x - knots_[k]) / p.h : 1.0;
-    // level - p(s) = b0 + b1 s + b2 s^2 + b3 s^3; its square's coefficient of s^m is the sum
-    // of b_i b_j over i + j = m, integrated from 0 to `end` as end^(m+1) / (m+1).
-    const double b[4] = {level - p.y, -p.c1, -p.c2, -p.c3};
-    double power = end;
-    for (int m = 0; m <= 6; ++m) {
-      double coefficient = 0.0, size = 0.0;
-      for (int i = std::max(0, m - 3); i <= std::min(3, m); ++i) {
-        coefficient += b[i] * b[m - i];
-        size += std::abs(b[i] * b[m - i]);
-      }
-      out.value += p.h * coefficient * power / (m + 1);
-      out.magnitude += p.h * size * power / (m + 1);
-      power *= end;
+  const Piece& p = pieces_[last];
+  const double span = knots_[last] - knots_.front();
+  SquareIntegral out{
+      level * level * span - 2.0 * level * p.first_before + p.square_before,
+      level * level * span + 2.0 * std::abs(level) * p.first_size_before + p.square_size_before};
+  const double end = (x - knots_[last]) / p.h;
+  // level - p(s) = b0 + b1 s + b2 s^2 + b3 s^3; its square's coefficient of s^m is the sum of
+  // b_i b_j over i + j = m, integrated from 0 to `end` as end^(m+1) / (m+1).
+  const double b[4] = {level - p.y, -p.c1, -p.c2, -p.c3};
+  double power = end;
+  for (int m = 0; m <= 6; ++m) {
+    double coefficient = 0.0, size = 0.0;
+    for (int i = std::max(0, m - 3); i <= std::min(3, m); ++i) {
+      coefficient += b[i] * b[m - i];
+      size += std::abs(b[i] * b[m - i]);
     }
+    out.value += p.h * coefficient * power / (m + 1);
+    out.magnitude += p.h * size * power / (m + 1);
+    power *= end;
   }
   return out;
 }

@@ -41,9 +41,10 @@ class ShapePreservingCubic {
   /// integral from x_0 to x of the interpolant.
   double integral(double x) const;
 
-  /// integral from x_0 to x of (level - p)^2, exact on each piece (expanded about the piece's
-  /// start, so that no term is larger than the piece's own |level - p|^2 demands), and the sum
-  /// of its terms' magnitudes (what its rounding is relative to).
+  /// integral from x_0 to x of (level - p)^2, exact on each piece, and the sum of its terms'
+  /// magnitudes (what its rounding is relative to): level^2 (x_k - x_0) - 2 level int p +
+  /// int p^2 over the whole pieces before x (their sums kept from construction, so that a call
+  /// costs O(log n)), the piece x lies on expanded about its start.
   struct SquareIntegral {
     double value;
     double magnitude;
@@ -55,6 +56,9 @@ class ShapePreservingCubic {
   struct Piece {
     double h, y, c1, c2, c3;
     double integral_before;  ///< integral from x_0 to x_k
+    /// From x_0 to x_k, summed with compensation: int p, int p^2, and the sums of their
+    /// pieces' terms' magnitudes.
+    double first_before, first_size_before, square_before, square_size_before;
   };
   ShapePreservingCubic(std::vector<double> knots, const std::vector<double>& values,
                        std::vector<double> slopes, bool given_slopes);

@@ -134,3 +134,36 @@ TEST(ShapePreservingCubic, RefusesBadKnots) {
   EXPECT_THROW(ShapePreservingCubic::spline({0, 1, 1, 2}, {0, 1, 2, 3}), std::invalid_argument);
   EXPECT_THROW(ShapePreservingCubic::hermite({0, 1}, {0, 1}, {0}), std::invalid_argument);
 }
+
+// int (level - p)^2 over 3000 uneven pieces of a rising and falling cubic q (kept as given:
+// the Hermite pieces are q itself) against the polynomial's own integral, in long double
+// (its rounding near 1e-19 relative): within 1e-15 of the terms' magnitudes, what the
+// continuum work reports as its rounding, at levels above, inside and below q's range and at
+// x on a knot, between knots and at the last one.
+TEST(ShapePreservingCubic, IntegralOfSquareOverManyPieces) {
+  const auto q = [](long double x) { return 0.3L + x * (2.0L + x * (-3.0L + x)); };
+  const auto dq = [](long double x) { return 2.0L + x * (-6.0L + 3.0L * x); };
+  std::vector<double> x, y, s;
+  for (int k = 0; k <= 3000; ++k) {
+    const double t = static_cast<double>(k) / 3000.0;
+    x.push_back(2.5 * t * (1.0 + 0.3 * std::sin(3.0 * t)) / 1.3);
+    y.push_back(static_cast<double>(q(x.back())));
+    s.push_back(static_cast<double>(dq(x.back())));
+  }
+  const ShapePreservingCubic p = ShapePreservingCubic::hermite(x, y, s);
+  for (const double level : {2.0, 0.5, 0.3, -0.4}) {
+    for (const double at : {x[1234], 0.5 * (x[2000] + x[2001]), x.back()}) {
+      // int_0^X (level - q)^2 dx by its antiderivative, q's coefficients (0.3 - level, 2, -3, 1).
+      const long double c[4] = {0.3L - level, 2.0L, -3.0L, 1.0L};
+      long double want = 0.0L;
+      for (int i = 0; i <= 3; ++i) {
+        for (int j = 0; j <= 3; ++j)
+          want += c[i] * c[j] * std::pow(static_cast<long double>(at), i + j + 1) / (i + j + 1);
+      }
+      const ShapePreservingCubic::SquareIntegral got = p.integral_of_square(level, at);
+      EXPECT_LE(std::abs(got.value - static_cast<double>(want)), 1e-15 * got.magnitude)
+          << "level " << level << ", x " << at;
+      EXPECT_GE(got.magnitude, std::abs(got.value));
+    }
+  }
+}
