@@ -57,8 +57,8 @@ class Profile {
                                       double angle) const;
 
   /// Optional: int_0^a (d - g(x))^2 dx [m^3] in closed form at contact radius a [m] and
-  /// indentation d [m] (a table's piecewise-cubic image); nullopt: the engine integrates it by
-  /// quadrature. E* times it is the energy the glued springs store.
+  /// indentation d [m] (a power law, a table's piecewise-cubic image); nullopt: the engine
+  /// integrates it by quadrature. E* times it is the energy the glued springs store.
   virtual std::optional<ExactIntegral> squared_gap_integral(double /*contact_radius*/,
                                                             double /*indentation*/) const {
     return std::nullopt;
