@@ -22,6 +22,9 @@ struct Material {
   /// the value at r = 0): F0, a0 and d0 use them; a spring at radius x uses the value at x.
   std::shared_ptr<const RadialAdhesion> work_of_adhesion_by_radius;
   std::shared_ptr<const RadialAdhesion> approach_work_of_adhesion_by_radius;
+  /// sigma_0 [Pa] of the Dugdale law (docs/maugis.md): the adhesion acts at this stress over the
+  /// gap dgamma / sigma_0; 0: no range (JKR, Hess's rule lets each spring go).
+  double adhesive_stress = 0.0;
 
   /// dgamma at the radius r [m] of a spring [J/m^2]: every criterion lets go with this.
   double work_of_adhesion_at(double r) const {
@@ -53,6 +56,8 @@ struct Material {
   double largest_work_of_adhesion() const {
     return work_of_adhesion_by_radius ? work_of_adhesion_by_radius->largest() : work_of_adhesion;
   }
+  /// Whether the adhesion has a finite range (Maugis-Dugdale): sigma_0 > 0.
+  bool finite_range() const { return adhesive_stress > 0.0; }
   /// Whether any spring has glue to lose: dgamma > 0 somewhere.
   bool adhesive() const { return largest_work_of_adhesion() > 0.0; }
 

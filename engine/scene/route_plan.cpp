@@ -38,6 +38,10 @@ void refuse_continuum_pairs(const Scene& scene, const std::string& at) {
 std::string engine_reason(const Scene& scene, const RoutePlan& plan, bool method_given) {
   switch (plan.engine) {
     case RouteEngine::continuum:
+      if (scene.material.finite_range()) {
+        return "material.adhesive_stress: finite-range adhesion (Maugis-Dugdale) runs on the "
+               "continuum route whatever the rtol (the spring row does not carry it yet)";
+      }
       return method_given ? "solver.method = \"continuum\""
                           : "discretization.rtol with no solver.method, and the continuum route "
                             "answers this scene (one fold, one work of adhesion, normal stages)";

@@ -13,6 +13,7 @@
 #include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/preload.hpp"
 #include "engine/scene/adhesion_reader.hpp"
+#include "engine/scene/dugdale_reader.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/friction_reader.hpp"
 #include "engine/scene/program_reader.hpp"
@@ -42,9 +43,11 @@ void warn_moduli(TomlReader& t, const Material& m, std::vector<std::string>& war
                   ratio)));
 }
 
-Material read_material(TomlReader& t, std::vector<std::string>& warnings) {
+Material read_material(TomlReader& t, std::vector<std::string>& warnings,
+                       FiniteRangeKeys& finite_range) {
   t.check_keys({"youngs_modulus", "poisson_ratio", "work_of_adhesion", "effective_modulus",
-                "effective_shear_modulus", "approach_work_of_adhesion"});
+                "effective_shear_modulus", "approach_work_of_adhesion", "adhesive_stress",
+                "maugis_parameter"});
   const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
   const bool effective = t.has("effective_modulus") || t.has("effective_shear_modulus");
   if (youngs && effective) {
@@ -56,6 +59,7 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings) {
       read_adhesion(t, "work_of_adhesion", "work of adhesion dgamma [J/m^2], >= 0", std::nullopt);
   const ReadAdhesion approach = read_adhesion(t, "approach_work_of_adhesion",
                                               "dgamma_a [J/m^2], 0 <= dgamma_a <= dgamma", 0.0);
+  finite_range = read_finite_range(t);
   if (effective) {
     const double e_star =
         t.number({.key = "effective_modulus", .help = "E* [Pa], > 0", .lower = kPositive});
@@ -397,6 +401,22 @@ void read_discretization(TomlReader& root, RouteKeys& route_keys, Scene& scene) 
   }
 }
 
+/// Finite-range adhesion runs on the continuum route (the spring row does not carry it yet),
+/// with or without solver.method = "continuum"; the resolved scene names it, and leaves out the
+/// defaults it would refuse given (a criterion, an approach work of adhesion).
+void use_continuum_route(nlohmann::json& resolved, Scene& scene) {
+  resolved.erase("detachment");
+  if (auto material = resolved.find("material"); material != resolved.end()) {
+    material->erase("approach_work_of_adhesion");
+  }
+  scene.solver.method = SolverMethod::continuum;
+  nlohmann::json& solver = resolved["solver"];
+  if (solver.is_object()) {
+    for (const char* key : {"max_events", "max_events_per_spring"}) solver.erase(key);
+  }
+  solver["method"] = "continuum";
+}
+
 /// [friction], then the route: the plan of route_plan.hpp, with the resolved scene leaving
 /// `method` out where the input did and rtol alone chose the continuum route, so that rerunning
 /// it takes the same route.
@@ -439,10 +459,12 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   scene.title = root.optional_text("title").value_or("");
 
   TomlReader material = root.table("material");
-  scene.material = read_material(material, scene.warnings);
+  FiniteRangeKeys finite_range;
+  scene.material = read_material(material, scene.warnings, finite_range);
   material.finish();
 
   read_profile(root, registries, *resolved, scene);
+  apply_finite_range(material, finite_range, scene);
 
   TomlReader loading = root.table("loading");
   if (is_program(loading)) {
@@ -460,11 +482,13 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
     route_keys.method_given = solver->has("method");
     if (route_keys.method_given) route_keys.method_at = solver->message_at("method", "");
     read_solver(*solver, scene.solver);
-  } else {
+  } else if (!scene.material.finite_range()) {
     root.record("solver", {{"method", "event"},
                            {"max_events", scene.solver.max_events},
                            {"max_events_per_spring", scene.solver.max_events_per_spring}});
   }
+  refuse_outside_dugdale_scope(root, loading, route_keys, scene);
+  if (scene.material.finite_range()) use_continuum_route(*resolved, scene);
   read_discretization(root, route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);
   root.finish();

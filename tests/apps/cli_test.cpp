@@ -46,9 +46,8 @@ springs = 100
 )";
 
 constexpr const char* kMaterialKeys =
-    "approach_work_of_adhesion, effective_modulus, effective_shear_modulus, poisson_ratio, "
-    "work_of_adhesion, "
-    "youngs_modulus";
+    "adhesive_stress, approach_work_of_adhesion, effective_modulus, effective_shear_modulus, "
+    "maugis_parameter, poisson_ratio, work_of_adhesion, youngs_modulus";
 
 /// `text` as one single-quoted shell word.
 std::string shell_word(std::string_view text) {

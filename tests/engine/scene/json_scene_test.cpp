@@ -80,8 +80,8 @@ TEST(JsonScene, BadInputNamesTheFile) {
   typo["material"]["poisson"] = 0.3;
   EXPECT_THROW_MSG(build(typo.dump()), SceneError,
                    "r.json: material.poisson: unknown key; did you mean 'poisson_ratio'? (known: "
-                   "approach_work_of_adhesion, "
-                   "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
+                   "adhesive_stress, approach_work_of_adhesion, effective_modulus, "
+                   "effective_shear_modulus, maugis_parameter, poisson_ratio, work_of_adhesion, "
                    "youngs_modulus)");
 }
 
