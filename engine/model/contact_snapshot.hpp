@@ -29,6 +29,9 @@ struct ContactSnapshot {
   /// Whether the MDR's one contact disk holds at this state (engine/model/disk_validity):
   /// set on reported states after a run; true where the profile's shape guarantees it.
   bool disk_valid = true;
+  /// With finite-range adhesion (docs/maugis.md): c, the outer radius of the cohesive zone, out
+  /// to which the Dugdale stress pulls [m] (0 where nothing pulls).
+  double cohesive_radius = 0.0;
 };
 
 }  // namespace mdrsim

@@ -5,18 +5,25 @@
 #include <span>
 
 #include "engine/events/program_version.hpp"
+#include "engine/model/dugdale_material.hpp"
 #include "engine/model/snapshot_fields.hpp"
 
 namespace mdrsim {
 namespace {
 
-/// With friction a state also says how much of it slides (docs/friction.md).
-nlohmann::ordered_json snapshot_json(const ContactSnapshot& c, bool friction) {
+/// What a state says beyond the fields every state has.
+struct StateKeys {
+  bool friction = false;  ///< how much of it slides (docs/friction.md)
+  bool cohesive = false;  ///< the cohesive zone's radius (docs/maugis.md)
+};
+
+nlohmann::ordered_json snapshot_json(const ContactSnapshot& c, StateKeys keys) {
   nlohmann::ordered_json j;
   for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member;
+  if (keys.cohesive) j["cohesive_radius"] = c.cohesive_radius;
   j["springs_in_contact"] = c.springs_in_contact;
   j["disk_valid"] = c.disk_valid;
-  if (friction) {
+  if (keys.friction) {
     j["springs_sliding"] = c.springs_sliding;
     j["stick_radius"] = c.stick_radius;
   }
@@ -31,17 +38,17 @@ nlohmann::ordered_json dimensionless_json(const ContactSnapshot& c, const PullOf
 
 /// A snapshot with its dimensionless values nested, where the scales exist.
 nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<PullOffScales>& s,
-                                  bool friction) {
-  nlohmann::ordered_json j = snapshot_json(c, friction);
+                                  StateKeys keys) {
+  nlohmann::ordered_json j = snapshot_json(c, keys);
   if (s) j["dimensionless"] = dimensionless_json(c, *s);
   return j;
 }
 
 /// A jump's `after`: its state, or only how the indenter left when nothing held it.
 nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<PullOffScales>& s,
-                                  bool friction) {
+                                  StateKeys keys) {
   if (jump.end != JumpEnd::state) return {{to_string(jump.end), true}};
-  return state_json(jump.after, s, friction);
+  return state_json(jump.after, s, keys);
 }
 
 /// With friction the work says what of it friction dissipated.
@@ -148,6 +155,17 @@ void add_provenance(nlohmann::ordered_json& j, const Scene& scene, const RunResu
   if (scene.resolved) j["scene"] = nlohmann::ordered_json::parse(scene.resolved->dump());
 }
 
+/// Maugis' lambda of a parabolic or spherical tip with finite-range adhesion.
+std::optional<double> maugis_parameter(const Scene& scene) {
+  const auto radius = scene.profile->jkr_scale_radius();
+  if (!scene.material.finite_range() || !radius ||
+      (scene.profile_name != "parabolic" && scene.profile_name != "sphere")) {
+    return std::nullopt;
+  }
+  const Material& m = scene.material;
+  return maugis_parameter_of(m.adhesive_stress, m.work_of_adhesion, m.effective_modulus, *radius);
+}
+
 }  // namespace
 
 std::optional<PullOffScales> dimensionless_scales(const Scene& scene) {
@@ -159,6 +177,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const auto scales = dimensionless_scales(scene);
   const Accuracy& accuracy = result.accuracy;
   const bool friction = scene.friction.has_value();
+  const StateKeys keys{.friction = friction, .cohesive = scene.material.finite_range()};
   ordered_json j;
   j["status"] = to_string(result.status);
   if (result.stop_reason) j["stop_reason"] = to_string(*result.stop_reason);
@@ -200,11 +219,12 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     j["accuracy"] = a;
   }
   if (result.critical) {
-    j["critical"] = snapshot_json(*result.critical, friction);
+    j["critical"] = snapshot_json(*result.critical, keys);
     if (scales) j["dimensionless"] = dimensionless_json(*result.critical, *scales);
   }
+  if (const auto lambda = maugis_parameter(scene)) j["dimensionless"]["maugis_parameter"] = *lambda;
   if (result.peak) {
-    ordered_json p = snapshot_json(*result.peak, friction);
+    ordered_json p = snapshot_json(*result.peak, keys);
     if (scales) p["dimensionless"] = dimensionless_json(*result.peak, *scales);
     j["peak_adhesion"] = p;
   }
@@ -217,7 +237,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     ordered_json stages = ordered_json::array();
     for (const StageRecord& stage : result.stages) {
       ordered_json record = {{"name", stage.name},
-                             {"end", state_json(stage.end, scales, friction)},
+                             {"end", state_json(stage.end, scales, keys)},
                              {"work", work_json(stage.work, friction)}};
       if (stage.normal_force_error_estimate) {
         record["end_error_estimate"] = {
@@ -235,8 +255,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     for (const JumpRecord& jump : result.jumps) {
       jumps.push_back({{"stage", jump.stage},
                        {"kind", jump.inward ? "in" : "out"},
-                       {"critical", state_json(jump.critical, scales, friction)},
-                       {"after", after_json(jump, scales, friction)},
+                       {"critical", state_json(jump.critical, scales, keys)},
+                       {"after", after_json(jump, scales, keys)},
                        {"springs", jump.springs},
                        {"glued_springs", jump.glued_springs},
                        {"by_shear", jump.by_shear}});

@@ -16,6 +16,7 @@
 #include "engine/base/zero_scale.hpp"
 #include "engine/continuum/run_continuum.hpp"
 #include "engine/continuum/run_continuum_program.hpp"
+#include "engine/continuum/run_dugdale_continuum.hpp"
 #include "engine/events/cascade_buffer.hpp"
 #include "engine/model/criterion_contract.hpp"
 #include "engine/program/run_program.hpp"
@@ -121,6 +122,7 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
 RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
                            std::int64_t samples) {
   const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
+  if (scene.material.finite_range()) return run_dugdale_continuum(scene, rtol, samples, observers);
   if (!scene.program) return run_continuum(scene, rtol, samples, observers);
   ContinuumProgramRun run = run_continuum_program(scene, rtol, samples, observers);
   if (run.cannot_follow) {
@@ -195,7 +197,8 @@ RunResult run_as_given(const Scene& scene, const ObserverList& observers, std::i
       warn_resolution(scene, result);
       break;
   }
-  check_disk_states(scene, result);
+  // The disk check knows no cohesive zone: with one it is not made (docs/maugis.md).
+  if (!scene.material.finite_range()) check_disk_states(scene, result);
   result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());
   return result;
 }

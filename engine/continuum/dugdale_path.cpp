@@ -1,0 +1,340 @@
+// The shorthand's Dugdale path: its states, folds, most tensile point and work.
+#include "engine/continuum/dugdale_path.hpp"
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/tools/minima.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "engine/base/bracketed_root.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+/// Samples per phase: the branch above a_g, the branch below it (as dugdale_pull_off's, denser
+/// near the closing point) and the no-contact branch (8 per halving of c, 40 halvings).
+constexpr int kPinnedSamples = 64;
+constexpr int kBranchSamples = 512;
+constexpr int kFreeSamples = 320;
+constexpr double kFreeHalvings = 40.0;
+/// The difference quotients' step in s on the contact branch: rounding of the states (~1e-15 of
+/// d) over it and the fourth-order rule's truncation, h^4 d^(5) / 30, both near 1e-11 of d per
+/// unit s. The no-contact branch's c = c0 2^(-40 (s - 2)) varies 40 ln 2 times faster in s.
+constexpr double kStep = 2.5e-4;
+
+double step_of(int phase) {
+  return phase == 2 ? kStep / (kFreeHalvings * std::numbers::ln2) : kStep;
+}
+/// A fold that Brent places this close to a phase's end is that end (a corner of the path).
+constexpr double kCornerWidth = 1e-6;
+
+int phase_of(double s) { return s < 1.0 ? 0 : (s < 2.0 ? 1 : 2); }
+
+std::vector<double> sample_parameters() {
+  std::vector<double> s;
+  for (int k = 0; k < kPinnedSamples; ++k) s.push_back(static_cast<double>(k) / kPinnedSamples);
+  for (int k = 0; k < kBranchSamples; ++k) {
+    s.push_back(1.0 + static_cast<double>(k) / kBranchSamples);
+  }
+  for (int k = 0; k <= kFreeSamples; ++k) s.push_back(2.0 + static_cast<double>(k) / kFreeSamples);
+  return s;
+}
+
+/// Fourth-order central difference of fn at s with step h.
+template <class Fn>
+double slope(Fn fn, double s, double h) {
+  return (8.0 * (fn(s + h) - fn(s - h)) - (fn(s + 2.0 * h) - fn(s - 2.0 * h))) / (12.0 * h);
+}
+
+double brent_minimum(const auto& value, double lo, double hi) {
+  const double width = hi - lo;
+  // Over the unit interval: Brent's absolute tolerance would stop it early on a narrow bracket.
+  const double u =
+      boost::math::tools::brent_find_minima([&](double x) { return value(lo + x * width); }, 0.0,
+                                            1.0, std::numeric_limits<double>::digits)
+          .first;
+  return lo + u * width;
+}
+
+}  // namespace
+
+namespace {
+
+/// The zone's opening less h0 for a contact held at radius a, depth d and angle t.
+double held_opening_excess(const Profile& profile, const DugdaleLaw& law, double a, double depth,
+                           double t) {
+  const double cos_t = std::cos(t);
+  const double c = a / cos_t;
+  // c - a = 2 a sin^2(t/2) / cos t, without the cancellation.
+  const double half = std::sin(0.5 * t);
+  const double zone = 2.0 * a * half * half / cos_t;
+  return (2.0 / kPi) * (profile.dugdale_gap_integral(a, c, t) + (profile.mdr_image(a) - depth) * t -
+                        law.zone_strain() * zone) -
+         law.range();
+}
+
+/// a_p >= a_g where the contact branch's depth is d_p (a_g where d_p is not above d(a_g)).
+double radius_at_preload_depth(const Profile& profile, const DugdaleLaw& law, double glued_radius,
+                               double preload_depth, double glued_depth) {
+  if (!(preload_depth > glued_depth)) return glued_radius;
+  const auto excess = [&](double a) {
+    return dugdale_contact_state(profile, law, a).indentation - preload_depth;
+  };
+  double lo = glued_radius;
+  double hi = 1.5 * glued_radius;
+  while (excess(hi) < 0.0) {
+    lo = hi;
+    hi *= 1.5;
+  }
+  return bracket_root(excess, lo, hi, std::numeric_limits<double>::digits - 2).hi;
+}
+
+}  // namespace
+
+DugdalePath::DugdalePath(const Profile& profile, const DugdaleLaw& law, double glued_radius,
+                         double preload_depth)
+    : profile_(profile),
+      law_(law),
+      glued_radius_(glued_radius),
+      glued_state_(dugdale_contact_state(profile, law, glued_radius)),
+      closing_radius_(dugdale_closing_radius(profile, law)) {
+  preload_radius_ =
+      radius_at_preload_depth(profile, law, glued_radius, preload_depth, glued_state_.indentation);
+}
+
+DugdaleState dugdale_held_state(const Profile& profile, const DugdaleLaw& law, double a,
+                                double depth) {
+  const auto excess = [&](double t) { return held_opening_excess(profile, law, a, depth, t); };
+  // The branch's angle at a holds the root at the branch's depth; a deeper indentation opens
+  // the zone less there, so that the root lies above it.
+  const double outer = profile.outer_radius();
+  const double top = std::isfinite(outer)
+                         ? std::acos(std::min(1.0, a / outer))
+                         : 0.5 * kPi * (1.0 - 4.0 * std::numeric_limits<double>::epsilon());
+  double lo = dugdale_contact_state(profile, law, a).angle;
+  double hi = lo;
+  if (excess(lo) < 0.0) {
+    while (excess(hi) < 0.0) {
+      if (hi >= top) {
+        throw std::domain_error("the cohesive zone reaches beyond the profile's outer radius");
+      }
+      lo = hi;
+      hi = std::min(top, 1.5 * hi);
+    }
+  } else {
+    while (excess(lo) > 0.0 && lo > 1e-300) {
+      hi = lo;
+      lo *= 0.5;
+    }
+  }
+  const double t =
+      lo == hi ? lo : bracket_root(excess, lo, hi, std::numeric_limits<double>::digits - 2).hi;
+  const double c = a / std::cos(t);
+  const double s = c * std::sin(t);
+  const double e_star = law.effective_modulus;
+  return {.contact_radius = a,
+          .cohesive_radius = c,
+          .angle = t,
+          .indentation = depth,
+          .normal_force = e_star * profile.nonadhesive_force_per_modulus(a) +
+                          2.0 * e_star * a * (depth - profile.mdr_image(a)) -
+                          2.0 * law.adhesive_stress * (c * c * t - a * s)};
+}
+
+DugdaleState DugdalePath::in_phase(int phase, double s) const {
+  switch (phase) {
+    case 0: {
+      if (s == 1.0) return glued_state_;
+      return dugdale_contact_state(profile_, law_,
+                                   preload_radius_ - s * (preload_radius_ - glued_radius_));
+    }
+    case 1: {
+      if (s == 1.0) return glued_state_;
+      // a = a_g (2 - s)^2 is even about s = 2, where the branch closes onto c0.
+      const double u = 2.0 - s;
+      const double a = glued_radius_ * u * u;
+      if (!(a > 1e-12 * glued_radius_)) return dugdale_free_state(profile_, law_, closing_radius_);
+      return dugdale_contact_state(profile_, law_, a);
+    }
+    default:
+      return dugdale_free_state(profile_, law_,
+                                closing_radius_ * std::exp2(-kFreeHalvings * (s - 2.0)));
+  }
+}
+
+DugdaleState DugdalePath::at(double s) const { return in_phase(phase_of(s), s); }
+
+double DugdalePath::depth_slope(double s) const {
+  const int phase = phase_of(s);
+  return slope([&](double x) { return in_phase(phase, x).indentation; }, s, step_of(phase));
+}
+
+namespace {
+
+/// A fold on the no-contact branch, bracketed in [s_lo, s_hi]: the root of dv/dc = a_u (f'(c)
+/// - 4 sigma_0/(pi E*)) - a_F 2 pi sigma_0 c, free of the -h0 in d that rounds a difference
+/// quotient of d on the DMT side (where d barely moves about its fold); f' by central
+/// differences of c 1e-6 and 2e-6 (second order: the fine root's error is a third of their gap).
+std::optional<DugdaleFold> no_contact_fold(const DugdalePath& path, const AffineConstraint& control,
+                                           double s_lo, double s_hi) {
+  const Profile& profile = path.profile();
+  const DugdaleLaw& law = path.law();
+  const double pull = 4.0 * law.adhesive_stress / (kPi * law.effective_modulus);
+  const auto root_with = [&](double relative) -> std::optional<double> {
+    const auto dv = [&](double c) {
+      const double h = relative * c;
+      const double f_slope = (profile.shape(c + h) - profile.shape(c - h)) / (2.0 * h);
+      return control.displacement_coefficient * (f_slope - pull) -
+             control.force_coefficient * 2.0 * kPi * law.adhesive_stress * c;
+    };
+    const double c_hi = path.at(std::max(s_lo, 2.0)).cohesive_radius;
+    const double c_lo = path.at(s_hi).cohesive_radius;
+    // Going down in c the value falls (dv/dc > 0) until the fold.
+    if (!(dv(c_lo) < 0.0 && dv(c_hi) > 0.0)) return std::nullopt;
+    return bracketed_root(dv, c_lo, c_hi);
+  };
+  const auto fine = root_with(1e-6);
+  const auto coarse = root_with(2e-6);
+  if (!fine || !coarse) return std::nullopt;
+  DugdaleFold fold;
+  fold.state = dugdale_free_state(profile, law, *fine);
+  fold.s = 2.0 + std::log2(path.closing_radius() / *fine) / kFreeHalvings;
+  const double coarse_force = dugdale_free_state(profile, law, *coarse).normal_force;
+  fold.force_error =
+      std::abs(fold.state.normal_force - coarse_force) / 3.0 +
+      4.0 * std::numeric_limits<double>::epsilon() * std::abs(fold.state.normal_force);
+  return fold;
+}
+
+}  // namespace
+
+std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConstraint& control) {
+  const auto value = [&](const DugdaleState& st) {
+    return control.displacement_coefficient * st.indentation +
+           control.force_coefficient * st.normal_force;
+  };
+  const auto value_at = [&](double s) { return value(path.at(s)); };
+  const std::vector<double> samples = sample_parameters();
+  double before = value_at(samples[0]);
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    const double here = value_at(samples[k]);
+    if (here < before) {
+      before = here;
+      continue;
+    }
+    const double lo = samples[k >= 2 ? k - 2 : 0];
+    const double hi = samples[k];
+    double s = brent_minimum(value_at, lo, hi);
+    // The path's corners: its start and the closing point (a = a_g, s = 1, is no corner).
+    for (const double corner : {0.0, 2.0}) {
+      if (corner >= lo && corner <= hi && std::abs(s - corner) < kCornerWidth) s = corner;
+    }
+    DugdaleFold fold{.s = s, .state = path.at(s), .force_error = 0.0};
+    if (s == 0.0 || s == 2.0) {
+      fold.force_error =
+          4.0 * std::numeric_limits<double>::epsilon() * std::abs(fold.state.normal_force);
+      return fold;
+    }
+    const int phase = phase_of(s);
+    if (phase == 2) {
+      if (auto zone_fold = no_contact_fold(path, control, lo, hi)) return *zone_fold;
+    }
+    // A smooth fold: the root of v'(s) near Brent's place, whose value Brent only has to
+    // sqrt(eps); the roots with steps h and 2h bound the force's error.
+    const double phase_lo = static_cast<double>(phase);
+    const auto in_phase = [&](double x) {
+      return std::clamp(x, phase_lo + 1e-12, phase_lo + 1.0 - 1e-12);
+    };
+    const auto root_with = [&](double h) -> std::optional<double> {
+      const auto dv = [&](double x) { return slope(value_at, x, h); };
+      const double w = 1e-5;
+      const double a = in_phase(s - w);
+      const double b = in_phase(s + w);
+      if (phase_of(a - 2.0 * h) != phase || phase_of(b + 2.0 * h) != phase) return std::nullopt;
+      if (!(dv(a) < 0.0 && dv(b) > 0.0)) return std::nullopt;
+      return bracketed_root(dv, a, b);
+    };
+    const double step = step_of(phase);
+    const auto fine = root_with(step);
+    const auto coarse = root_with(2.0 * step);
+    if (fine && coarse) {
+      const DugdaleState at_coarse = path.at(*coarse);
+      fold.s = *fine;
+      fold.state = path.at(*fine);
+      // The rule's error falls as h^4: the fine root's is a fifteenth of the two roots' gap.
+      fold.force_error = std::abs(fold.state.normal_force - at_coarse.normal_force) / 15.0;
+    } else {
+      // Brent's place to sqrt(eps) of the bracket: the force moves by F' times that.
+      const double d = std::sqrt(std::numeric_limits<double>::epsilon()) * (hi - lo);
+      fold.force_error = std::max(std::abs(path.at(s + d).normal_force - fold.state.normal_force),
+                                  std::abs(path.at(s - d).normal_force - fold.state.normal_force));
+    }
+    fold.force_error +=
+        4.0 * std::numeric_limits<double>::epsilon() * std::abs(fold.state.normal_force);
+    return fold;
+  }
+  return std::nullopt;
+}
+
+DugdaleFold most_tensile(const DugdalePath& path, double s_end) {
+  std::vector<double> samples;
+  for (const double s : sample_parameters()) {
+    if (s < s_end) samples.push_back(s);
+  }
+  samples.push_back(s_end);
+  std::size_t best = 0;
+  double best_force = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const double f = path.at(samples[k]).normal_force;
+    if (f < best_force) {
+      best_force = f;
+      best = k;
+    }
+  }
+  const auto force = [&](double s) { return path.at(s).normal_force; };
+  const double lo = samples[best > 0 ? best - 1 : 0];
+  const double hi = samples[std::min(best + 1, samples.size() - 1)];
+  double s = hi > lo ? brent_minimum(force, lo, hi) : lo;
+  if (force(s_end) <= force(s)) s = s_end;
+  DugdaleFold peak{.s = s, .state = path.at(s), .force_error = 0.0};
+  // A minimum of F: Brent's sqrt(eps) in s costs F'' s^2 / 2, bounded by the neighbours' rise.
+  const double d = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(hi - lo, 1e-300);
+  if (s != s_end && s > d) {
+    peak.force_error = std::max(std::abs(force(s + d) - peak.state.normal_force),
+                                std::abs(force(s - d) - peak.state.normal_force));
+  }
+  peak.force_error +=
+      4.0 * std::numeric_limits<double>::epsilon() * std::abs(peak.state.normal_force);
+  return peak;
+}
+
+double path_work(const DugdalePath& path, double s0, double s1, double& error) {
+  double total = 0.0;
+  for (int phase = 0; phase < 3; ++phase) {
+    const double lo = std::max(s0, static_cast<double>(phase));
+    const double hi = std::min(s1, static_cast<double>(phase + 1));
+    if (!(hi > lo)) continue;
+    double err = 0.0;
+    double l1 = 0.0;
+    const double width = hi - lo;
+    const auto integrand = [&](double u) {
+      const double s = lo + width * u;
+      return path.at(s).normal_force * path.depth_slope(s);
+    };
+    // Next to the closing point c = a / cos(t) rounds to eps / cos(t) of itself, and the
+    // difference quotients of d with it: the quadrature's estimate then says so.
+    const double value = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+        integrand, 0.0, 1.0, 8, 1e-10, &err, &l1);
+    total += width * value;
+    // The quadrature's estimate, and the difference quotient's ~1e-11 of |F d'|.
+    error += width * (err + 1e-11 * l1);
+  }
+  return total;
+}
+
+}  // namespace mdrsim

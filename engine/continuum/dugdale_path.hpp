@@ -1,0 +1,75 @@
+// The shorthand's pull-off path with finite-range adhesion: the pinned phase, the contact branch
+// and the no-contact branch as one curve of one parameter, and its folds under any control.
+#pragma once
+
+#include <optional>
+
+#include "controllers/controller.hpp"
+#include "engine/model/dugdale_zone.hpp"
+#include "profiles/profile.hpp"
+
+namespace mdrsim {
+
+/// The path from the preload, s in [0, 3] (docs/maugis.md "The path"): the contact branch from
+/// a_p, where its depth is the preload depth d_p (the zone pulls the contact pressed to d_p out
+/// from a_g to a_p >= a_g at fixed grips), down to the closing point, then the no-contact branch:
+/// [0, 1] a = a_p - s (a_p - a_g), from a_p down to a_g;
+/// [1, 2] a = a_g (2 - s)^2 from a_g down to the closing point;
+/// [2, 3] the no-contact branch, c = c0 2^(-40 (s - 2)) from c0 down to 1e-12 of it.
+class DugdalePath {
+ public:
+  static constexpr double kEnd = 3.0;
+
+  DugdalePath(const Profile& profile, const DugdaleLaw& law, double glued_radius,
+              double preload_depth);
+
+  /// The equilibrium at s.
+  DugdaleState at(double s) const;
+  /// d'(s) [m]: a fourth-order central difference on s's own phase, its formula continued.
+  double depth_slope(double s) const;
+
+  double preload_radius() const { return preload_radius_; }  ///< a_p [m]
+  const Profile& profile() const { return profile_; }
+  const DugdaleLaw& law() const { return law_; }
+  double closing_radius() const { return closing_radius_; }  ///< c0 [m]
+
+ private:
+  /// The state at s by the formula of `phase`, continued beyond its ends.
+  DugdaleState in_phase(int phase, double s) const;
+
+  const Profile& profile_;
+  DugdaleLaw law_;
+  double glued_radius_;
+  DugdaleState glued_state_;
+  double preload_radius_ = 0.0;
+  double closing_radius_;
+};
+
+/// The state the path does not take (docs/maugis.md "Why the contact is not held at a_g"): the
+/// contact held at radius a [m] at the depth d [m], its zone's c from the opening condition
+/// with a stress singularity at a, F = 2 E* (a d - int_0^a g dx) - 2 sigma_0 (c^2 t - a s).
+/// For d above the branch's d(a) that singularity is compressive: the surface just outside a
+/// would pass through the indenter.
+DugdaleState dugdale_held_state(const Profile& profile, const DugdaleLaw& law, double a,
+                                double depth);
+
+/// A fold of the control value v = a_u d + a_F F along the path: where it stops falling.
+struct DugdaleFold {
+  double s = 0.0;
+  DugdaleState state;
+  double force_error = 0.0;  ///< a bound on the error of state.normal_force from locating s [N]
+};
+
+/// The first fold of v going along the path from s = 0, or nullopt where v falls to the end
+/// (no instability). A fold on a smooth stretch is a root of v'(s), found by Brent then
+/// refined on the difference quotient; a fold at a phase's end (a corner) is that end exactly.
+std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConstraint& control);
+
+/// The most tensile state on [0, s_end] (Brent about the most tensile sample), with its error.
+DugdaleFold most_tensile(const DugdalePath& path, double s_end);
+
+/// The machine's work int F dd along [s0, s1] [J] (the pinned phase exactly linear in d, the
+/// branches by Gauss-Kronrod on F d'(s)); `error` gains its bound.
+double path_work(const DugdalePath& path, double s0, double s1, double& error);
+
+}  // namespace mdrsim
