@@ -16,32 +16,42 @@ namespace mdrsim {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-/// Samples per phase: the branch above a_g, the branch below it (as dugdale_pull_off's, denser
-/// near the closing point) and the no-contact branch (8 per halving of c, 40 halvings).
-constexpr int kPinnedSamples = 64;
+/// Samples per phase: the branch above a_g, the branch below it (denser near the closing point)
+/// and the no-contact branch (8 per halving of c, 40 halvings).
+constexpr int kAboveGluedSamples = 64;
 constexpr int kBranchSamples = 512;
+constexpr int kNearClosingSamples = 256;
 constexpr int kFreeSamples = 320;
 constexpr double kFreeHalvings = 40.0;
+/// The zone's angle beyond which the branch is followed in t rather than in a: c = a / cos(t)
+/// from a given radius rounds to eps / cos(t) of itself, 2 eps at most below it.
+constexpr double kAngleBeyond = std::numbers::pi / 3.0;
+/// The phases: 0 and 1 the branch in a, 2 the branch in t, 3 the no-contact branch.
+constexpr int kFreePhase = 3;
 /// The difference quotients' step in s on the contact branch: rounding of the states (~1e-15 of
 /// d) over it and the fourth-order rule's truncation, h^4 d^(5) / 30, both near 1e-11 of d per
 /// unit s. The no-contact branch's c = c0 2^(-40 (s - 2)) varies 40 ln 2 times faster in s.
 constexpr double kStep = 2.5e-4;
 
 double step_of(int phase) {
-  return phase == 2 ? kStep / (kFreeHalvings * std::numbers::ln2) : kStep;
+  return phase == kFreePhase ? kStep / (kFreeHalvings * std::numbers::ln2) : kStep;
 }
 /// A fold that Brent places this close to a phase's end is that end (a corner of the path).
 constexpr double kCornerWidth = 1e-6;
 
-int phase_of(double s) { return s < 1.0 ? 0 : (s < 2.0 ? 1 : 2); }
+int phase_of(double s) { return std::clamp(static_cast<int>(std::floor(s)), 0, kFreePhase); }
 
 std::vector<double> sample_parameters() {
   std::vector<double> s;
-  for (int k = 0; k < kPinnedSamples; ++k) s.push_back(static_cast<double>(k) / kPinnedSamples);
+  for (int k = 0; k < kAboveGluedSamples; ++k)
+    s.push_back(static_cast<double>(k) / kAboveGluedSamples);
   for (int k = 0; k < kBranchSamples; ++k) {
     s.push_back(1.0 + static_cast<double>(k) / kBranchSamples);
   }
-  for (int k = 0; k <= kFreeSamples; ++k) s.push_back(2.0 + static_cast<double>(k) / kFreeSamples);
+  for (int k = 0; k < kNearClosingSamples; ++k) {
+    s.push_back(2.0 + static_cast<double>(k) / kNearClosingSamples);
+  }
+  for (int k = 0; k <= kFreeSamples; ++k) s.push_back(3.0 + static_cast<double>(k) / kFreeSamples);
   return s;
 }
 
@@ -78,6 +88,46 @@ double held_opening_excess(const Profile& profile, const DugdaleLaw& law, double
          law.range();
 }
 
+/// The contact branch at the zone's angle t = arccos(a/c) < pi/2 [rad]: a from the opening at
+/// fixed t, (2/pi)[int_a^c (g - g(a))/sqrt(c^2 - x^2) dx + (2 sigma_0/E*) a (t tan t - (sec t -
+/// 1))] = h0, which rises with a from -h0 at a = 0. Next to the closing point c = a / cos(t) from
+/// a radius found at a given angle keeps its digits, where one found from the angle at a
+/// given radius (dugdale_contact_state) rounds to eps / cos(t) of itself, and the difference
+/// quotients of d with it.
+DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& law, double t,
+                                    double guess) {
+  const double cos_t = std::cos(t);
+  const double half = std::sin(0.5 * t);
+  const double stretch_per_radius = t * std::tan(t) - 2.0 * half * half / cos_t;
+  const auto excess = [&](double a) {
+    return (2.0 / kPi) * (profile.dugdale_gap_integral(a, a / cos_t, t) +
+                          law.zone_strain() * a * stretch_per_radius) -
+           law.range();
+  };
+  double lo = guess;
+  double hi = guess;
+  if (excess(guess) < 0.0) {
+    while (excess(hi) < 0.0) {
+      lo = hi;
+      hi *= 2.0;
+    }
+  } else {
+    while (excess(lo) >= 0.0) {
+      hi = lo;
+      lo *= 0.5;
+    }
+  }
+  const double a = bracket_root(excess, lo, hi, std::numeric_limits<double>::digits - 2).hi;
+  const double c = a / cos_t;
+  const double s = a * std::tan(t);
+  return {.contact_radius = a,
+          .cohesive_radius = c,
+          .angle = t,
+          .indentation = profile.mdr_image(a) - law.zone_strain() * s,
+          .normal_force = law.effective_modulus * profile.nonadhesive_force_per_modulus(a) -
+                          2.0 * law.adhesive_stress * (a * s + c * c * t)};
+}
+
 /// a_p >= a_g where the contact branch's depth is d_p (a_g where d_p is not above d(a_g)).
 double radius_at_preload_depth(const Profile& profile, const DugdaleLaw& law, double glued_radius,
                                double preload_depth, double glued_depth) {
@@ -103,6 +153,9 @@ DugdalePath::DugdalePath(const Profile& profile, const DugdaleLaw& law, double g
       glued_radius_(glued_radius),
       glued_state_(dugdale_contact_state(profile, law, glued_radius)),
       closing_radius_(dugdale_closing_radius(profile, law)) {
+  angle_state_ = glued_state_.angle >= kAngleBeyond
+                     ? glued_state_
+                     : contact_state_at_angle(profile, law, kAngleBeyond, glued_radius);
   preload_radius_ =
       radius_at_preload_depth(profile, law, glued_radius, preload_depth, glued_state_.indentation);
 }
@@ -148,22 +201,34 @@ DugdaleState dugdale_held_state(const Profile& profile, const DugdaleLaw& law, d
 
 DugdaleState DugdalePath::in_phase(int phase, double s) const {
   switch (phase) {
-    case 0: {
+    case 0:
       if (s == 1.0) return glued_state_;
       return dugdale_contact_state(profile_, law_,
                                    preload_radius_ - s * (preload_radius_ - glued_radius_));
-    }
     case 1: {
       if (s == 1.0) return glued_state_;
-      // a = a_g (2 - s)^2 is even about s = 2, where the branch closes onto c0.
+      if (s == 2.0) return angle_state_;
+      // a from a_g down to a_t, where the zone's angle reaches kAngleBeyond.
       const double u = 2.0 - s;
-      const double a = glued_radius_ * u * u;
-      if (!(a > 1e-12 * glued_radius_)) return dugdale_free_state(profile_, law_, closing_radius_);
-      return dugdale_contact_state(profile_, law_, a);
+      return dugdale_contact_state(
+          profile_, law_,
+          angle_state_.contact_radius + (glued_radius_ - angle_state_.contact_radius) * u * u);
+    }
+    case 2: {
+      if (s == 2.0) return angle_state_;
+      // t = pi/2 - (pi/2 - t_t)(3 - s)^2: dense next to the closing point (t = pi/2, a = 0),
+      // where the DMT side's folds sit, and even about s = 3.
+      const double u = 3.0 - s;
+      const double gap = (0.5 * kPi - angle_state_.angle) * u * u;
+      if (!(gap > 1e-12)) return dugdale_free_state(profile_, law_, closing_radius_);
+      // a ~ c0 cos(t) next to the closing point: a start for the bracket.
+      return contact_state_at_angle(
+          profile_, law_, 0.5 * kPi - gap,
+          std::min(angle_state_.contact_radius, closing_radius_ * std::sin(gap)));
     }
     default:
       return dugdale_free_state(profile_, law_,
-                                closing_radius_ * std::exp2(-kFreeHalvings * (s - 2.0)));
+                                closing_radius_ * std::exp2(-kFreeHalvings * (s - kClosing)));
   }
 }
 
@@ -192,7 +257,7 @@ std::optional<DugdaleFold> no_contact_fold(const DugdalePath& path, const Affine
       return control.displacement_coefficient * (f_slope - pull) -
              control.force_coefficient * 2.0 * kPi * law.adhesive_stress * c;
     };
-    const double c_hi = path.at(std::max(s_lo, 2.0)).cohesive_radius;
+    const double c_hi = path.at(std::max(s_lo, DugdalePath::kClosing)).cohesive_radius;
     const double c_lo = path.at(s_hi).cohesive_radius;
     // Going down in c the value falls (dv/dc > 0) until the fold.
     if (!(dv(c_lo) < 0.0 && dv(c_hi) > 0.0)) return std::nullopt;
@@ -203,7 +268,7 @@ std::optional<DugdaleFold> no_contact_fold(const DugdalePath& path, const Affine
   if (!fine || !coarse) return std::nullopt;
   DugdaleFold fold;
   fold.state = dugdale_free_state(profile, law, *fine);
-  fold.s = 2.0 + std::log2(path.closing_radius() / *fine) / kFreeHalvings;
+  fold.s = DugdalePath::kClosing + std::log2(path.closing_radius() / *fine) / kFreeHalvings;
   const double coarse_force = dugdale_free_state(profile, law, *coarse).normal_force;
   fold.force_error =
       std::abs(fold.state.normal_force - coarse_force) / 3.0 +
@@ -223,7 +288,7 @@ std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConst
   double before = value_at(samples[0]);
   for (std::size_t k = 1; k < samples.size(); ++k) {
     const double here = value_at(samples[k]);
-    if (here < before) {
+    if (here <= before) {  // a phase of one state (a_p = a_g, a_t = a_g) stands still
       before = here;
       continue;
     }
@@ -231,17 +296,17 @@ std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConst
     const double hi = samples[k];
     double s = brent_minimum(value_at, lo, hi);
     // The path's corners: its start and the closing point (a = a_g, s = 1, is no corner).
-    for (const double corner : {0.0, 2.0}) {
+    for (const double corner : {0.0, DugdalePath::kClosing}) {
       if (corner >= lo && corner <= hi && std::abs(s - corner) < kCornerWidth) s = corner;
     }
     DugdaleFold fold{.s = s, .state = path.at(s), .force_error = 0.0};
-    if (s == 0.0 || s == 2.0) {
+    if (s == 0.0 || s == DugdalePath::kClosing) {
       fold.force_error =
           4.0 * std::numeric_limits<double>::epsilon() * std::abs(fold.state.normal_force);
       return fold;
     }
     const int phase = phase_of(s);
-    if (phase == 2) {
+    if (phase == kFreePhase) {
       if (auto zone_fold = no_contact_fold(path, control, lo, hi)) return *zone_fold;
     }
     // A smooth fold: the root of v'(s) near Brent's place, whose value Brent only has to
@@ -315,7 +380,7 @@ DugdaleFold most_tensile(const DugdalePath& path, double s_end) {
 
 double path_work(const DugdalePath& path, double s0, double s1, double& error) {
   double total = 0.0;
-  for (int phase = 0; phase < 3; ++phase) {
+  for (int phase = 0; phase <= kFreePhase; ++phase) {
     const double lo = std::max(s0, static_cast<double>(phase));
     const double hi = std::min(s1, static_cast<double>(phase + 1));
     if (!(hi > lo)) continue;
@@ -326,8 +391,6 @@ double path_work(const DugdalePath& path, double s0, double s1, double& error) {
       const double s = lo + width * u;
       return path.at(s).normal_force * path.depth_slope(s);
     };
-    // Next to the closing point c = a / cos(t) rounds to eps / cos(t) of itself, and the
-    // difference quotients of d with it: the quadrature's estimate then says so.
     const double value = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
         integrand, 0.0, 1.0, 8, 1e-10, &err, &l1);
     total += width * value;

@@ -10,15 +10,19 @@
 
 namespace mdrsim {
 
-/// The path from the preload, s in [0, 3] (docs/maugis.md "The path"): the contact branch from
+/// The path from the preload, s in [0, 4] (docs/maugis.md "The path"): the contact branch from
 /// a_p, where its depth is the preload depth d_p (the zone pulls the contact pressed to d_p out
 /// from a_g to a_p >= a_g at fixed grips), down to the closing point, then the no-contact branch:
 /// [0, 1] a = a_p - s (a_p - a_g), from a_p down to a_g;
-/// [1, 2] a = a_g (2 - s)^2 from a_g down to the closing point;
-/// [2, 3] the no-contact branch, c = c0 2^(-40 (s - 2)) from c0 down to 1e-12 of it.
+/// [1, 2] a from a_g down to a_t, where the zone's angle t = arccos(a/c) reaches pi/3 (a_g if
+///   it is beyond already), a_g - a = (a_g - a_t)(s - 1)(3 - s);
+/// [2, 3] t = pi/2 - (pi/2 - t_t)(3 - s)^2 up to the closing point (a = 0, c = c0), in t where
+///   a radius would round c;
+/// [3, 4] the no-contact branch, c = c0 2^(-40 (s - 3)) from c0 down to 1e-12 of it.
 class DugdalePath {
  public:
-  static constexpr double kEnd = 3.0;
+  static constexpr double kClosing = 3.0;  ///< s at the closing point
+  static constexpr double kEnd = 4.0;
 
   DugdalePath(const Profile& profile, const DugdaleLaw& law, double glued_radius,
               double preload_depth);
@@ -41,6 +45,7 @@ class DugdalePath {
   DugdaleLaw law_;
   double glued_radius_;
   DugdaleState glued_state_;
+  DugdaleState angle_state_;  ///< at a_t
   double preload_radius_ = 0.0;
   double closing_radius_;
 };
