@@ -129,9 +129,9 @@ def test_bad_key_in_a_file_names_its_line():
         mdrsim.Scene.from_toml(text, name="typo.toml")
     assert str(caught.value) == (
         "typo.toml:8:1: material.poisson_rate: unknown key; did you mean 'poisson_ratio'? "
-        "(known: approach_work_of_adhesion, "
-        "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
-        "youngs_modulus)")
+        "(known: adhesive_stress, approach_work_of_adhesion, "
+        "effective_modulus, effective_shear_modulus, maugis_parameter, poisson_ratio, "
+        "work_of_adhesion, youngs_modulus)")
 
 
 def test_malformed_toml():
