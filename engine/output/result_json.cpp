@@ -155,7 +155,12 @@ void add_provenance(nlohmann::ordered_json& j, const Scene& scene, const RunResu
   if (scene.resolved) j["scene"] = nlohmann::ordered_json::parse(scene.resolved->dump());
 }
 
-/// Maugis' lambda of a parabolic or spherical tip with finite-range adhesion.
+}  // namespace
+
+std::optional<PullOffScales> dimensionless_scales(const Scene& scene) {
+  return dimensionless_scales(*scene.profile, scene.material);
+}
+
 std::optional<double> maugis_parameter(const Scene& scene) {
   const auto radius = scene.profile->jkr_scale_radius();
   if (!scene.material.finite_range() || !radius ||
@@ -164,12 +169,6 @@ std::optional<double> maugis_parameter(const Scene& scene) {
   }
   const Material& m = scene.material;
   return maugis_parameter_of(m.adhesive_stress, m.work_of_adhesion, m.effective_modulus, *radius);
-}
-
-}  // namespace
-
-std::optional<PullOffScales> dimensionless_scales(const Scene& scene) {
-  return dimensionless_scales(*scene.profile, scene.material);
 }
 
 nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result) {

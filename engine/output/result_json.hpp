@@ -25,6 +25,10 @@ std::pair<std::string, std::string> final_controls(
 /// form (cone, power law n > 1/2, flat punch); none without adhesion or a closed form.
 std::optional<PullOffScales> dimensionless_scales(const Scene& scene);
 
+/// Maugis' lambda of a parabolic or spherical tip with finite-range adhesion (docs/maugis.md),
+/// else none: the JSON's dimensionless.maugis_parameter.
+std::optional<double> maugis_parameter(const Scene& scene);
+
 /// The result, then what produced it: the material's effective values, the preload, the
 /// scales, the resolution run, the program version and the resolved scene (docs).
 nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& result);

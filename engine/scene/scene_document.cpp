@@ -148,6 +148,7 @@ const std::vector<ExclusiveKeys>& exclusive_keys() {
   static const std::vector<ExclusiveKeys> table{
       {"material",
        {{"youngs_modulus", "poisson_ratio"}, {"effective_modulus", "effective_shear_modulus"}}},
+      {"material", {{"adhesive_stress"}, {"maugis_parameter"}}},
       {"profile", {{"file"}, {"r", "f"}}},
       {"loading.preload", {{"depth"}, {"force"}, {"contact_radius"}}},
       {"loading.tangential", {{"displacement"}, {"force"}}},

@@ -85,6 +85,7 @@ class State:
     disk_valid: bool
     springs_sliding: int | None
     stick_radius: float | None
+    cohesive_radius: float | None
 
 class Work:
     normal: float
@@ -131,6 +132,8 @@ class Result:
     def critical(self) -> State | None: ...
     @property
     def dimensionless(self) -> dict[str, float] | None: ...
+    @property
+    def maugis_parameter(self) -> float | None: ...
     @property
     def peak(self) -> State | None: ...
     @property

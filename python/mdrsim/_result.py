@@ -30,6 +30,9 @@ class State:
     # radius inside which every spring in contact sticks (the contact radius when none slides).
     springs_sliding: int = None
     stick_radius: float = None  # [m]
+    # With adhesive_stress or maugis_parameter (docs/maugis.md), else None: the outer radius of
+    # the cohesive zone, out to which the Dugdale stress pulls [m].
+    cohesive_radius: float = None
 
     @classmethod
     def _of(cls, snapshot, scales):
@@ -76,7 +79,8 @@ class Jump:
 # What a pickled Result keeps of the engine's result (the attributes of _core.RunResult).
 _RAW_FIELDS = ("status", "stop_reason", "title", "critical", "peak", "tangential_strength", "stages", "jumps",
                "work", "sliding", "warnings", "has_warnings", "disk_valid", "counts", "springs",
-               "wall_time_s", "scales", "trajectory_rows_seen", "trajectory_stride")
+               "wall_time_s", "scales", "maugis_parameter", "trajectory_rows_seen",
+               "trajectory_stride")
 
 
 class _StoredRun:
@@ -144,8 +148,19 @@ class Result:
 
     @property
     def dimensionless(self):
-        """The critical point's dimensionless values (the JSON's `dimensionless`), or None."""
-        return None if self.critical is None else self.critical.dimensionless
+        """The critical point's dimensionless values (the JSON's `dimensionless`), with Maugis'
+        lambda as `maugis_parameter` for a parabolic or spherical tip with finite-range
+        adhesion; or None."""
+        values = None if self.critical is None else self.critical.dimensionless
+        if self.maugis_parameter is None:
+            return values
+        return {**(values or {}), "maugis_parameter": self.maugis_parameter}
+
+    @property
+    def maugis_parameter(self):
+        """Maugis' lambda of a parabolic or spherical tip with finite-range adhesion
+        (docs/maugis.md), else None."""
+        return self._raw.maugis_parameter
 
     @cached_property
     def peak(self):

@@ -132,11 +132,13 @@ py::dict take_trajectory(TrajectoryColumns& c, bool friction) {
   return t;
 }
 
-/// With friction a state also says how much of it slides, as the JSON's states do.
-py::dict snapshot(const ContactSnapshot& s, bool friction) {
+/// With friction a state also says how much of it slides, and with finite-range adhesion the
+/// cohesive zone's radius, as the JSON's states do.
+py::dict snapshot(const ContactSnapshot& s, bool friction, bool cohesive = false) {
   py::dict d;
   d["normal_control"] = s.normal_control;
   for (const SnapshotField& f : kSnapshotFields) d[f.name] = s.*f.member;
+  if (cohesive) d["cohesive_radius"] = s.cohesive_radius;
   d["springs_in_contact"] = s.springs_in_contact;
   d["disk_valid"] = s.disk_valid;
   if (friction) {
@@ -146,8 +148,9 @@ py::dict snapshot(const ContactSnapshot& s, bool friction) {
   return d;
 }
 
-py::object optional_snapshot(const std::optional<ContactSnapshot>& s, bool friction) {
-  return s ? py::object(snapshot(*s, friction)) : py::object(py::none());
+py::object optional_snapshot(const std::optional<ContactSnapshot>& s, bool friction,
+                             bool cohesive) {
+  return s ? py::object(snapshot(*s, friction, cohesive)) : py::object(py::none());
 }
 
 /// With friction the work says what of it friction dissipated, as the JSON's does.
@@ -160,6 +163,7 @@ py::dict work(const AxisWork& w, bool friction) {
 }
 
 bool has_friction(const ResultHandle& r) { return r.scene->friction.has_value(); }
+bool has_zone(const ResultHandle& r) { return r.scene->material.finite_range(); }
 
 void bind_scenes(py::module_& m) {
   py::class_<SceneHandle>(m, "Document", "A parsed scene and the Scene it builds (internal).")
@@ -208,11 +212,14 @@ void bind_results(py::module_& m) {
       .def_property_readonly("title", [](const ResultHandle& r) { return r.scene->title; })
       .def_property_readonly("critical",
                              [](const ResultHandle& r) {
-                               return optional_snapshot(r.result.critical, has_friction(r));
+                               return optional_snapshot(r.result.critical, has_friction(r),
+                                                        has_zone(r));
                              })
-      .def_property_readonly(
-          "peak",
-          [](const ResultHandle& r) { return optional_snapshot(r.result.peak, has_friction(r)); })
+      .def_property_readonly("peak",
+                             [](const ResultHandle& r) {
+                               return optional_snapshot(r.result.peak, has_friction(r),
+                                                        has_zone(r));
+                             })
       .def_property_readonly("sliding", [](const ResultHandle& r) { return r.result.sliding; })
       .def_property_readonly("tangential_strength",
                              [](const ResultHandle& r) { return r.result.tangential_strength; })
@@ -222,33 +229,34 @@ void bind_results(py::module_& m) {
                                for (const StageRecord& s : r.result.stages) {
                                  py::dict d;
                                  d["name"] = s.name;
-                                 d["end"] = snapshot(s.end, has_friction(r));
+                                 d["end"] = snapshot(s.end, has_friction(r), has_zone(r));
                                  d["work"] = work(s.work, has_friction(r));
                                  out.append(d);
                                }
                                return out;
                              })
-      .def_property_readonly("jumps",
-                             [](const ResultHandle& r) {
-                               py::list out;
-                               for (const JumpRecord& j : r.result.jumps) {
-                                 py::dict d;
-                                 d["stage"] = j.stage;
-                                 d["kind"] = j.inward ? "in" : "out";
-                                 d["critical"] = snapshot(j.critical, has_friction(r));
-                                 // A flight (docs/programs.md "A fixed load that loses the
-                                 // contact") has no state after it.
-                                 d["after"] = j.end == JumpEnd::state
-                                                  ? py::object(snapshot(j.after, has_friction(r)))
-                                                  : py::object(py::none());
-                                 d["end"] = to_string(j.end);
-                                 d["springs"] = j.springs;
-                                 d["glued_springs"] = j.glued_springs;
-                                 d["by_shear"] = j.by_shear;
-                                 out.append(d);
-                               }
-                               return out;
-                             })
+      .def_property_readonly(
+          "jumps",
+          [](const ResultHandle& r) {
+            py::list out;
+            for (const JumpRecord& j : r.result.jumps) {
+              py::dict d;
+              d["stage"] = j.stage;
+              d["kind"] = j.inward ? "in" : "out";
+              d["critical"] = snapshot(j.critical, has_friction(r), has_zone(r));
+              // A flight (docs/programs.md "A fixed load that loses the
+              // contact") has no state after it.
+              d["after"] = j.end == JumpEnd::state
+                               ? py::object(snapshot(j.after, has_friction(r), has_zone(r)))
+                               : py::object(py::none());
+              d["end"] = to_string(j.end);
+              d["springs"] = j.springs;
+              d["glued_springs"] = j.glued_springs;
+              d["by_shear"] = j.by_shear;
+              out.append(d);
+            }
+            return out;
+          })
       .def_property_readonly("work",
                              [](const ResultHandle& r) {
                                return r.result.work
@@ -284,6 +292,8 @@ void bind_results(py::module_& m) {
             d["basis"] = s->basis;
             return d;
           })
+      .def_property_readonly("maugis_parameter",
+                             [](const ResultHandle& r) { return maugis_parameter(*r.scene); })
       .def_readonly("trajectory_rows_seen", &ResultHandle::trajectory_rows_seen)
       .def_readonly("trajectory_stride", &ResultHandle::trajectory_stride)
       .def("json", [](const ResultHandle& r) { return result_to_json(*r.scene, r.result).dump(); })

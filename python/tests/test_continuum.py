@@ -127,3 +127,27 @@ def test_sweep_with_method_continuum_matches_the_closed_forms():
         assert values["status"] == "instability"
         assert values["normal_force"] / F0 == pytest.approx(exact["Fz"], abs=1e-9)
         assert values["tangential_force"] / F0 == pytest.approx(exact["Fx"], abs=1e-9)
+
+
+def test_maugis_keys_pass_through_a_python_built_scene():
+    # Maugis' parabola (R = 1 cm, E* = 1 MPa, dgamma = 0.05 J/m^2) at lambda = 1, built as a dict:
+    # the fixed-load pull-off is Maugis' P = -1.6007349 pi dgamma R (docs/maugis.md, 1e-6).
+    scene = mdrsim.Scene.from_dict({
+        "material": {"effective_modulus": 1.0e6, "work_of_adhesion": 0.05,
+                     "maugis_parameter": 1.0},
+        "profile": {"type": "parabolic", "radius": 0.01},
+        "loading": {"preload": {"contact_radius": 6.8e-4},
+                    "normal": {"control": "fixed-load"}}})
+    result = mdrsim.run(scene, trajectory=False)
+    assert result.status == "instability"
+    force = math.pi * 0.05 * 0.01
+    assert result.critical.normal_force / force == pytest.approx(-1.6007349, abs=1e-6)
+    assert result.critical.cohesive_radius > result.critical.contact_radius > 0.0
+    assert result.dimensionless["maugis_parameter"] == pytest.approx(1.0, rel=1e-14)
+    assert result.maugis_parameter == pytest.approx(1.0, rel=1e-14)
+    assert result.to_dict()["dimensionless"]["maugis_parameter"] == pytest.approx(1.0, rel=1e-14)
+    # The same scene with the keys' value changed through with_values.
+    stress = scene.with_values({"material.maugis_parameter": 2.0})
+    assert mdrsim.run(stress, trajectory=False).maugis_parameter == pytest.approx(2.0, rel=1e-14)
+    # Without the keys: no zone in the states.
+    assert mdrsim.run(FIG2, method="continuum", trajectory=False).critical.cohesive_radius is None

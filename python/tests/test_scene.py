@@ -88,9 +88,9 @@ BAD = [
                  "--set: material.poisson_ratio = 0.7 is outside (-1, 0.5]", id="bad-value"),
     pytest.param(FIG2, {"material.poisson": 0.3},
                  "--set: material.poisson: unknown key; did you mean 'poisson_ratio'? "
-                 "(known: approach_work_of_adhesion, "
-                 "effective_modulus, effective_shear_modulus, poisson_ratio, work_of_adhesion, "
-                 "youngs_modulus)", id="bad-key"),
+                 "(known: adhesive_stress, approach_work_of_adhesion, "
+                 "effective_modulus, effective_shear_modulus, maugis_parameter, poisson_ratio, "
+                 "work_of_adhesion, youngs_modulus)", id="bad-key"),
     pytest.param(FIG2, {"loading.stage.2.normal.by": 1e-6},
                  "--set: loading.stage.2.normal.by: the scene has no [[loading.stage]]",
                  id="bad-override"),

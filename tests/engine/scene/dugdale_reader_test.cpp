@@ -53,6 +53,18 @@ TEST(DugdaleReader, ReadsEitherKey) {
   EXPECT_EQ(jkr.plan.engine, RouteEngine::pull_off_row);
 }
 
+// --set (and --vary) of one key replaces the other, as the preload's keys do.
+TEST(DugdaleReader, SettingOneKeyReplacesTheOther) {
+  static const Registries registries = Registries::builtin();
+  SceneDocument doc = SceneDocument::from_text(scene("adhesive_stress = 2.0e5"), "md.toml");
+  doc.set_value("material.maugis_parameter", "1.0");
+  const Scene lambda = doc.build(registries);
+  EXPECT_DOUBLE_EQ(lambda.material.adhesive_stress,
+                   adhesive_stress_of_maugis_parameter(1.0, 0.05, 1.0e6, 0.01));
+  doc.set_number("material.adhesive_stress", 3.0e5, "--vary");
+  EXPECT_EQ(doc.build(registries).material.adhesive_stress, 3.0e5);
+}
+
 TEST(DugdaleReader, RefusesBadValuesOfTheKeys) {
   EXPECT_THROW_MSG(build(scene("adhesive_stress = 2.0e5\nmaugis_parameter = 1.0")), SceneError,
                    "md.toml:6:20: material.maugis_parameter: give adhesive_stress or "
