@@ -58,9 +58,9 @@ RunResult run_dugdale_continuum(const Scene& scene, double rtol, std::int64_t sa
   result.accuracy.route = Accuracy::Route::continuum;
   result.accuracy.outer_radius = scene.glued_radius;
 
-  // Stage preload: pressed at fixed grips from touch to the preload depth, glued at a_g; the
-  // zone then pulls at that depth, where the grips do no work. Its work is the energy the
-  // springs store, as on the JKR route.
+  // Stage preload: pressed at fixed grips from touch to the preload depth (the contact a_g);
+  // the zone then pulls the contact out to a_p at that depth, where the grips do no work. Its
+  // work is the energy the springs store, as on the JKR route.
   const DugdaleState preload = path.at(0.0);
   const ContactSnapshot preload_snapshot = snapshot_of(preload, normal);
   observers.emit({.kind = EventKind::preload_reached, .state = preload_snapshot});

@@ -79,6 +79,35 @@ TEST(RunDugdaleContinuum, TheParabolaIsMaugisFromDmtToJkr) {
   }
 }
 
+// The fixed-grips jump on the contact branch (lambda above 0.93885) to 1e-9: against the root
+// of the slope of Maugis' own D(A) (maugis_reference, a fourth-order difference quotient at
+// 1e-4 A, bisected), where fixed_grips_jump's Brent on values places the fold to only about
+// sqrt(eps) in A (its P off by up to 2e-8).
+TEST(RunDugdaleContinuum, TheGripsJumpIsTheRootOfTheSlopeOfMaugisDepth) {
+  const MaugisUnits u;
+  for (const double lambda : {1.0, 2.0, 10.0, 100.0}) {
+    SCOPED_TRACE(lambda);
+    const auto slope = [&](double a) {
+      const double h = 1e-4 * a;
+      const auto depth = [&](double x) { return maugis::contact_branch(lambda, x).indentation; };
+      return (8.0 * (depth(a + h) - depth(a - h)) - (depth(a + 2.0 * h) - depth(a - 2.0 * h))) /
+             (12.0 * h);
+    };
+    const double near = maugis::fixed_grips_jump(lambda).contact_radius;
+    double lo = near * (1.0 - 1e-4);
+    double hi = near * (1.0 + 1e-4);
+    ASSERT_LT(slope(lo), 0.0);
+    ASSERT_GT(slope(hi), 0.0);
+    for (int i = 0; i < 100; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (slope(mid) < 0.0 ? lo : hi) = mid;
+    }
+    const double reference = maugis::contact_branch(lambda, 0.5 * (lo + hi)).force;
+    const RunResult grips = run(parabola(lambda, "control = \"fixed-grips\""));
+    EXPECT_NEAR(grips.critical->normal_force / u.force() / reference, 1.0, 1e-9);
+  }
+}
+
 // Under fixed grips the parabola jumps from the contact branch above lambda = 0.93885 and from
 // the no-contact branch (a = 0) below it.
 TEST(RunDugdaleContinuum, TheGripsJumpLeavesFromEitherBranchAboutTheThreshold) {
