@@ -63,9 +63,18 @@ def _first_minimum(value, lam):
     for k in range(1, len(grid) - 1):
         rise = 1e-11 * (1.0 + abs(values[k]))
         if values[k] <= values[k - 1] and values[k] + rise < values[k + 1]:
-            res = minimize_scalar(value, bracket=(grid[k + 1], grid[k], grid[k - 1]),
-                                  method="brent", tol=1e-12)
-            return res.x, res.fun
+            # The root of the slope (central differences of step 1e-5 A: truncation ~1e-10,
+            # rounding ~1e-11), not the minimum of the values (good to sqrt(eps) in A only).
+            def slope(a, step=1e-5):
+                return (value(a * (1.0 + step)) - value(a * (1.0 - step))) / (2.0 * step * a)
+
+            lo, hi = grid[k + 1], grid[k - 1]
+            if slope(lo) < 0.0 < slope(hi):
+                at = brentq(slope, lo, hi, xtol=1e-300, rtol=1e-14)
+            else:  # too flat for the slope's rounding: the minimum of the values
+                at = minimize_scalar(value, bracket=(lo, grid[k], hi), method="brent",
+                                     tol=1e-12).x
+            return at, value(at)
     return None
 
 

@@ -139,6 +139,30 @@ done
 echo
 "$py" scripts/plot_pull_off_after_shear.py --results "$results" --springs 2000 8000
 
+# Beyond the paper: finite-range adhesion (Maugis-Dugdale, docs/maugis.md). The parabola's
+# pull-off against Maugis' parameter lambda under a fixed load and fixed grips on the continuum
+# route (rtol 1e-10), against Maugis' own equations written apart (scripts/maugis_reference.py);
+# the cone's against sigma_0 / (E* tan theta), with the fixed-grips threshold pi/4 and the DMT and
+# JKR limits. A P beyond 1e-6 of Maugis' or a cone status against pi/4 fails the job (about 1 s).
+echo "== finite-range adhesion: the Maugis-Dugdale transition" >&2
+lambdas="0.01,0.02,0.05,0.1,0.2,0.5,0.8,0.9,1,1.2,1.5,2,3,5,10,20,50,100"
+# sigma_0 = x E* tan(10 deg) for x = 0.01, 0.03, 0.1, 0.3, 0.5, 0.7, 0.9, 1.2, 2, 5, 10, 30, 100
+stresses="1763.269807,5289.809421,17632.69807,52898.09421,88163.49035,123428.8865,158694.2826"
+stresses+=",211592.3769,352653.9614,881634.9035,1763269.807,5289809.421,17632698.07"
+"$mdrsim" run scenes/maugis/maugis_parabola.toml --json "$results/maugis_parabola.json" \
+  --log-level warn
+"$mdrsim" run scenes/maugis/maugis_cone.toml --json "$results/maugis_cone.json" --log-level warn
+for control in fixed-load fixed-grips; do
+  "$mdrsim" sweep scenes/maugis/maugis_parabola.toml --vary "material.maugis_parameter=$lambdas" \
+    --set "loading.normal={control=\"$control\"}" --csv "$results/maugis_parabola_${control/-/_}.csv" \
+    --force --threads "$threads" --log-level error
+  "$mdrsim" sweep scenes/maugis/maugis_cone.toml --vary "material.adhesive_stress=$stresses" \
+    --set "loading.normal={control=\"$control\"}" --csv "$results/maugis_cone_${control/-/_}.csv" \
+    --force --threads "$threads" --log-level error
+done
+echo
+"$py" scripts/plot_maugis.py --results "$results"
+
 echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
 
