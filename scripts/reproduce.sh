@@ -8,7 +8,8 @@
 # SVG) and prints the comparison table, then measures speed against accuracy (bench/) and
 # draws that chart. Exits non-zero if a run fails, any simulated critical force is further
 # than 2e-3 F0 from the paper's analytic value, the fretting loop is off its closed forms beyond
-# O(1/N), an accuracy target of the bench is missed, or the two engines disagree on a Fig. 2
+# O(1/N), a Maugis-Dugdale pull-off is more than 1e-6 off Maugis' (or a cone's status off pi/4),
+# an accuracy target of the bench is missed, or the two engines disagree on a Fig. 2
 # critical force; never for a speed target (see below).
 # Works from any directory.
 set -euo pipefail
