@@ -184,7 +184,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   j["disk_valid"] = result.disk_valid;
   const auto [normal_control, tangential_control] = final_controls(scene, result.stages.size());
   j["control"] = {{"normal", normal_control}, {"tangential", tangential_control}};
-  j["criterion"] = scene.criterion_name;
+  j["criterion"] = scene.detachment_law();
   const bool continuum = accuracy.route == Accuracy::Route::continuum;
   j["method"] = continuum ? "continuum" : to_string(scene.solver.method);
   if (!continuum) j["springs"] = result.springs;

@@ -135,7 +135,7 @@ void print_summary(std::FILE* out, const Scene& scene, const RunResult& r) {
   fmt::print(out, "status: {}{} (normal {}, tangential {}, criterion {}, {})\n",
              to_string(r.status),
              r.stop_reason ? fmt::format(", stop reason {}", to_string(*r.stop_reason)) : "",
-             normal_control, tangential_control, scene.criterion_name,
+             normal_control, tangential_control, scene.detachment_law(),
              row ? fmt::format("{} springs", r.springs) : std::string("continuum route"));
   print_program(out, r, row);
   print_accuracy(out, scene, r);

@@ -108,6 +108,11 @@ struct Scene {
   std::optional<AxisLoading> tangential;
   std::string criterion_name;
   std::shared_ptr<const DetachmentCriterion> criterion;  ///< shared by the scene's copies
+  /// What lets the edges go, as the outputs name it: "maugis-dugdale" where the Dugdale law's
+  /// edge conditions replace the criterion (docs/maugis.md), else the criterion's name.
+  std::string detachment_law() const {
+    return material.finite_range() ? "maugis-dugdale" : criterion_name;
+  }
   /// [friction] where it acts (docs/friction.md); none: springs not glued push frictionlessly.
   std::optional<FrictionSettings> friction;
   std::int64_t springs = 0;  ///< springs across the glued radius (one half)

@@ -195,7 +195,7 @@ void bind_scenes(py::module_& m) {
       .def_property_readonly("material", [](const SceneHandle& h) { return h.scene->material; })
       .def_property_readonly("profile", [](const SceneHandle& h) { return h.scene->profile_name; })
       .def_property_readonly("criterion",
-                             [](const SceneHandle& h) { return h.scene->criterion_name; })
+                             [](const SceneHandle& h) { return h.scene->detachment_law(); })
       .def_property_readonly("control",
                              [](const SceneHandle& h) { return final_controls(*h.scene); });
 }
