@@ -226,6 +226,7 @@ TEST(RunDugdaleContinuum, TheJsonCarriesTheZoneAndLambda) {
   const RunResult r = run_scene(scene, ObserverList{});
   const auto j = result_to_json(scene, r);
   EXPECT_EQ(j.at("method"), "continuum");
+  EXPECT_EQ(j.at("criterion"), "maugis-dugdale");  // the Dugdale law decides the edges
   EXPECT_GT(j.at("critical").at("cohesive_radius").get<double>(), 0.0);
   EXPECT_GT(j.at("peak_adhesion").at("cohesive_radius").get<double>(), 0.0);
   EXPECT_TRUE(j.at("stages").at(0).at("end").contains("cohesive_radius"));
