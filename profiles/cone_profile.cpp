@@ -31,9 +31,11 @@ double ConeProfile::contact_radius_at_depth(double depth) const {
 double ConeProfile::nonadhesive_force_per_modulus(double a) const { return image_slope_ * a * a; }
 
 // int_a^c k (x - a)/sqrt(c^2 - x^2) dx = k (s - a t) = k a (tan t - t), s = sqrt(c^2 - a^2);
-// at a = 0 it is k c (a -> 0 with t -> pi/2).
-double ConeProfile::dugdale_gap_integral(double a, double c, double t) const {
-  return a > 0.0 ? image_slope_ * a * tan_minus_angle(t) : image_slope_ * c;
+// at a = 0 it is k c (a -> 0 with t -> pi/2). Its slope at fixed a is tan(t) int_a^c k x /
+// sqrt(c^2 - x^2) dx = k s tan(t).
+DugdaleGap ConeProfile::dugdale_gap(double a, double c, double t) const {
+  return {.integral = a > 0.0 ? image_slope_ * a * tan_minus_angle(t) : image_slope_ * c,
+          .angle_slope = image_slope_ * c * std::sin(t) * std::tan(t)};
 }
 
 // k = (pi/2) tan(theta): a0 = 9 pi dgamma/(2 E* k^2), F0 = E* k a0^2/3 = 27 pi^2 dgamma^2/(4 E*

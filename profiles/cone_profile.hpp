@@ -17,8 +17,8 @@ class ConeProfile final : public Profile {
   double mdr_image_slope(double) const override { return image_slope_; }
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;
-  double dugdale_gap_integral(double contact_radius, double cohesive_radius,
-                              double angle) const override;
+  DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
+                         double angle) const override;
   /// The power law's with n = 1: F0 = 54 dgamma^2/(pi E* tan^3 theta),
   /// a0 = 18 dgamma/(pi E* tan^2 theta), d0 = 3 dgamma/(E* tan theta).
   std::optional<PullOffScales> pull_off_scales(double effective_modulus,

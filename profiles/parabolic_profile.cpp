@@ -28,10 +28,13 @@ double ParabolicProfile::nonadhesive_force_per_modulus(double a) const {
 }
 
 // int_a^c (x^2 - a^2)/(R sqrt(c^2 - x^2)) dx = (a s - a^2 t + s^2 t) / (2R) with s = c sin(t) =
-// sqrt(c^2 - a^2); a s - a^2 t = a^2 (tan t - t) cancels at small t and takes its series.
-double ParabolicProfile::dugdale_gap_integral(double a, double c, double t) const {
-  const double s = c * std::sin(t);
-  return (a * a * tan_minus_angle(t) + t * s * s) / (2.0 * radius_);
+// sqrt(c^2 - a^2); a s - a^2 t = a^2 (tan t - t) cancels at small t and takes its series. Its
+// slope at fixed a is tan(t) int_a^c 2 x^2/(R sqrt(c^2 - x^2)) dx = tan(t) c^2 (t + sin t cos t)/R.
+DugdaleGap ParabolicProfile::dugdale_gap(double a, double c, double t) const {
+  const double sin_t = std::sin(t), cos_t = std::cos(t);
+  const double s = c * sin_t;
+  return {.integral = (a * a * tan_minus_angle(t) + t * s * s) / (2.0 * radius_),
+          .angle_slope = std::tan(t) * c * c * (t + sin_t * cos_t) / radius_};
 }
 
 }  // namespace mdrsim

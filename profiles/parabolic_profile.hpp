@@ -15,8 +15,8 @@ class ParabolicProfile final : public Profile {
   double mdr_image_slope(double x) const override { return 2.0 * x / radius_; }
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;
-  double dugdale_gap_integral(double contact_radius, double cohesive_radius,
-                              double angle) const override;
+  DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
+                         double angle) const override;
   std::optional<double> jkr_scale_radius() const override { return radius_; }
 
  private:

@@ -1,6 +1,8 @@
 // The power law's closed forms (Hess's MDR image of r^n).
 #include "profiles/power_law_profile.hpp"
 
+#include <algorithm>
+#include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -20,6 +22,25 @@ PowerLawProfile::PowerLawProfile(double coefficient, double exponent)
   if (!std::isfinite(image_coefficient_)) {
     throw std::invalid_argument("the power law's coefficient overflows its MDR image");
   }
+  // cos^n(psi) = sum_j p_j psi^(2j) by J.C.P. Miller's recurrence for a power of the series
+  // cos = sum_j (-1)^j psi^(2j)/(2j)!; then H(t) = sum_j p_j t^(2j+1)/(2j+1) and, as
+  // t cos^n t = sum_j p_j t^(2j+1), G(t) = -sum_j p_j (2j/(2j+1)) t^(2j+1) without its j = 0
+  // terms that cancel.
+  std::array<double, kZoneSeriesTerms> cosine{}, power{};
+  cosine[0] = power[0] = 1.0;
+  for (int j = 1; j < kZoneSeriesTerms; ++j) {
+    cosine[j] = -cosine[j - 1] / ((2.0 * j - 1.0) * (2.0 * j));
+  }
+  for (int k = 1; k < kZoneSeriesTerms; ++k) {
+    double sum = 0.0;
+    for (int j = 1; j <= k; ++j) sum += ((exponent + 1.0) * j - k) * cosine[j] * power[k - j];
+    power[k] = sum / k;
+  }
+  for (int j = 0; j < kZoneSeriesTerms; ++j) {
+    cosine_power_integral_[j] = power[j] / (2.0 * j + 1.0);
+    cosine_power_excess_[j] = -power[j] * (2.0 * j) / (2.0 * j + 1.0);
+  }
+  half_beta_ = 0.5 * boost::math::beta(0.5, 0.5 * (exponent + 1.0));
 }
 
 // Eq. 4 with f' = n c r^(n-1) and r = x s: g = n c x^n integral_0^1 s^(n-1)/sqrt(1 - s^2) ds
@@ -59,6 +80,35 @@ std::optional<ExactIntegral> PowerLawProfile::squared_gap_integral(double a, dou
   const double image = edge * edge * a / (2.0 * exponent_ + 1.0);
   return ExactIntegral{square - cross + image,
                        std::abs(square) + std::abs(cross) + std::abs(image)};
+}
+
+// J = int_a^c k (x^n - a^n)/sqrt(c^2 - x^2) dx = k c^n int_0^t (cos^n psi - cos^n t) dpsi in
+// x = c cos(psi), a = c cos(t): k c^n (H - t cos^n t), and dJ/dt at fixed a = tan(t) int_a^c
+// x g'(x)/sqrt(c^2 - x^2) dx = k n c^n tan(t) H. H = int_0^t cos^n = int_0^(sin^2 t) (1 -
+// v)^((n-1)/2) v^(-1/2) dv/2 = (B/2) I_(sin^2 t)(1/2, (n+1)/2). H - t cos^n t loses 3/(n t^2)
+// of its digits (H ~ t, G ~ n t^3/3): below t^2 = 0.2/max(n, 1) (at most 15/min(n, 1) ulps
+// there) the series take over, whose terms fall at least 12-fold each (p_j t^(2j) ~ (n t^2/
+// 2)^j/j! for large n, ~ (t/(pi/2))^(2j) for small n): 24 terms end below 1e-25.
+DugdaleGap PowerLawProfile::dugdale_gap(double /*a*/, double c, double t) const {
+  const double n = exponent_;
+  const double scale = image_coefficient_ * std::pow(c, n);
+  double integral = 0.0, excess = 0.0;
+  if (const double t2 = t * t; t2 * std::max(n, 1.0) < 0.2) {
+    for (int j = kZoneSeriesTerms - 1; j >= 0; --j) {
+      integral = integral * t2 + cosine_power_integral_[j];
+      excess = excess * t2 + cosine_power_excess_[j];
+    }
+    integral *= t;
+    excess *= t;
+  } else {
+    const double sin_t = std::sin(t);
+    // In double: Boost's default promotes to long double, 10 times slower (1-6 us a call).
+    const auto in_double =
+        boost::math::policies::make_policy(boost::math::policies::promote_double<false>());
+    integral = half_beta_ * boost::math::ibeta(0.5, 0.5 * (n + 1.0), sin_t * sin_t, in_double);
+    excess = integral - t * std::pow(std::cos(t), n);
+  }
+  return {.integral = scale * excess, .angle_slope = n * scale * std::tan(t) * integral};
 }
 
 // JKR in MDR (paper eqs. 14-15 for any image): the boundary spring lets go at the stretch
