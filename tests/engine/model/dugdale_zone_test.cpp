@@ -1,12 +1,18 @@
 // The MDR's Dugdale zone against Maugis' classical parabola (maugis_reference), its closed-form
-// gap integrals against the quadrature, and its JKR limit for a shape Maugis did not solve.
+// gap integrals against the quadrature, its solved states against their opening condition in
+// 50 digits, and its JKR limit for a shape Maugis did not solve.
 #include "engine/model/dugdale_zone.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include "engine/reference/maugis_reference.hpp"
 #include "profiles/cone_profile.hpp"
@@ -48,21 +54,105 @@ TEST(DugdaleZone, TheParabolaIsMaugis) {
   }
 }
 
-// The closed forms against the base class's quadrature, at angles from the series' range
-// (1e-3) to a zone many times the contact (1.5 rad). The quadrature sums g(c cos psi) - g(a),
-// which cancels to about eps g(a) out of a difference of order g'(a) a t^2: 1e-12 relative, or
-// 4 eps / t^2 where that is larger (9e-10 at t = 1e-3: the closed forms are the better numbers).
+// The closed forms against the quadrature every other profile takes (dugdale_gap_quadrature),
+// at angles from a thin zone (1e-6) to a zone many times the contact (1.5 rad). Neither
+// cancels (the quadrature integrates g' by parts): 2e-14, some tens of ulps of the rule's error
+// and rounding (tests/profiles/dugdale_gap_test.cpp holds both to 50 digits).
 TEST(DugdaleZone, ClosedFormGapIntegralsMatchTheQuadrature) {
   const ParabolicProfile parabola(0.01);
   const ConeProfile cone(30.0);
-  for (const double t : {1e-3, 0.05, 0.3, 1.0, 1.5}) {
+  for (const double t : {1e-6, 1e-3, 0.05, 0.3, 1.0, 1.5}) {
     SCOPED_TRACE(t);
     const double a = 2e-4, c = a / std::cos(t);
-    const double tolerance = std::max(1e-12, 4.0 * 2.220446049250313e-16 / (t * t));
-    const double p = parabola.dugdale_gap_integral(a, c, t);
-    EXPECT_NEAR(p, parabola.Profile::dugdale_gap_integral(a, c, t), tolerance * p);
-    const double k = cone.dugdale_gap_integral(a, c, t);
-    EXPECT_NEAR(k, cone.Profile::dugdale_gap_integral(a, c, t), tolerance * k);
+    for (const Profile* profile :
+         {static_cast<const Profile*>(&parabola), static_cast<const Profile*>(&cone)}) {
+      const DugdaleGap closed = profile->dugdale_gap(a, c, t);
+      const DugdaleGap quadrature = dugdale_gap_quadrature(*profile, a, c, t);
+      EXPECT_NEAR(closed.integral, quadrature.integral, 2e-14 * closed.integral);
+      EXPECT_NEAR(closed.angle_slope, quadrature.angle_slope, 2e-14 * closed.angle_slope);
+    }
+  }
+}
+
+// The solved state satisfies the opening condition: the zone's opening at c, evaluated apart
+// from the solver in 50 digits from the definition (J = int_0^t (g(c cos psi) - g(a)) dpsi,
+// s t - (c - a) without its rewriting), equals h0 within 1e-12 of it, for the sphere (the
+// quadrature) and the parabola, power law and cone (closed forms), from the JKR side (sigma_0
+// = 1e9 Pa, t ~ 1e-3) to the DMT side (1e4 Pa, the zone far beyond the contact). t is the
+// unknown and the opening rises like t^2 at small t: a relative error e in t is 2e in O.
+TEST(DugdaleZone, TheSolvedStateOpensTheZoneByItsRange) {
+  using Wide = boost::multiprecision::cpp_bin_float_50;
+  const double radius = 0.01;
+  const SphereProfile sphere(radius);
+  const ParabolicProfile parabola(radius);
+  const PowerLawProfile power(3e3, 2.5);
+  const ConeProfile cone(10.0);
+  const Wide power_k = power.mdr_image(1.0), cone_k = cone.mdr_image(1.0);
+  struct Case {
+    const Profile* profile;
+    std::function<Wide(const Wide&)> image;
+  };
+  const Case cases[] = {
+      {&sphere, [&](const Wide& x) { return Wide(x * atanh(x / radius)); }},
+      {&parabola, [&](const Wide& x) { return Wide(x * x / radius); }},
+      {&power, [&](const Wide& x) { return Wide(power_k * pow(x, Wide(2.5))); }},
+      {&cone, [&](const Wide& x) { return Wide(cone_k * x); }},
+  };
+  for (const Case& k : cases) {
+    for (const double stress : {1e9, 1e7, 1e5, 1e4}) {
+      const DugdaleLaw law{
+          .adhesive_stress = stress, .work_of_adhesion = 0.05, .effective_modulus = 1e6};
+      for (const double a : {1e-5, 2e-4, 1e-3}) {
+        SCOPED_TRACE(testing::Message() << "sigma_0 " << stress << " a " << a);
+        DugdaleState s;
+        try {
+          s = dugdale_contact_state(*k.profile, law, a);
+        } catch (const std::domain_error&) {
+          continue;  // the sphere's zone would pass its edge
+        }
+        const Wide t = s.angle, wa = a;
+        const Wide c = wa / cos(t);
+        const Wide ga = k.image(wa);
+        // Over psi = t u, u in [0, 1] (Boost's error estimate is not scaled by the width).
+        const Wide gap = boost::math::quadrature::gauss_kronrod<Wide, 61>::integrate(
+            [&](const Wide& u) { return Wide(t * (k.image(c * cos(t * u)) - ga)); }, Wide(0),
+            Wide(1), 12, Wide(1e-30));
+        const Wide stretch = sqrt(c * c - wa * wa) * t - (c - wa);
+        const Wide open =
+            2 / boost::math::constants::pi<Wide>() * (gap + Wide(law.zone_strain()) * stretch);
+        EXPECT_NEAR(static_cast<double>(open / law.range()), 1.0, 1e-12);
+        // c = a / cos t to the rounding of t, which a wide zone magnifies by t tan t.
+        const double c_rounding = 4e-16 * (1.0 + s.angle * std::tan(s.angle));
+        EXPECT_NEAR(s.cohesive_radius, static_cast<double>(c), c_rounding * s.cohesive_radius);
+      }
+    }
+  }
+}
+
+// A curve solved from each point's neighbour is the curve of independent solves: both stop
+// once Newton's step is below 1e-9 of the half-chord, when the root is at its rounding, so the
+// two agree to a few ulps of the force's terms (1e-13 allows the opening's rounding over its
+// slope near the closing point, where the zone is 300 times the contact).
+TEST(DugdaleZone, ACurveFromNeighboursIsTheCurveOfIndependentStates) {
+  const SphereProfile sphere(0.01);
+  const PowerLawProfile power(3e3, 2.5);
+  const DugdaleLaw law{
+      .adhesive_stress = 1.5e4, .work_of_adhesion = 0.05, .effective_modulus = 1e6};
+  std::vector<double> radii;
+  for (int k = 200; k >= 1; --k) radii.push_back(5e-4 * k / 200.0);
+  for (const Profile* profile :
+       {static_cast<const Profile*>(&sphere), static_cast<const Profile*>(&power)}) {
+    const std::vector<DugdaleState> curve = dugdale_contact_states(*profile, law, radii);
+    ASSERT_EQ(curve.size(), radii.size());
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+      const DugdaleState alone = dugdale_contact_state(*profile, law, radii[k]);
+      EXPECT_NEAR(curve[k].cohesive_radius, alone.cohesive_radius, 1e-13 * alone.cohesive_radius);
+      // F = E* nf(a) - 2 sigma_0 (a s + c^2 t) crosses zero: relative to its terms.
+      const double terms =
+          1e6 * profile->nonadhesive_force_per_modulus(radii[k]) +
+          2.0 * law.adhesive_stress * alone.cohesive_radius * alone.cohesive_radius * alone.angle;
+      EXPECT_NEAR(curve[k].normal_force, alone.normal_force, 1e-13 * terms);
+    }
   }
 }
 
