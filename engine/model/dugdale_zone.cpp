@@ -98,7 +98,7 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
       break;
     }
     s = next;
-    if (hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
+    if (hi_known && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
   }
   const auto [t, c] = zone_at(a, s);
   return {.contact_radius = a,
@@ -119,13 +119,43 @@ std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const D
                                                  std::span<const double> contact_radii) {
   std::vector<DugdaleState> states;
   states.reserve(contact_radii.size());
+  const auto half_chord = [](const DugdaleState& z) {
+    return z.cohesive_radius * std::sin(z.angle);
+  };
   for (const double a : contact_radii) {
-    const double first = states.empty()
-                             ? first_half_chord(profile, law, a)
-                             : states.back().cohesive_radius * std::sin(states.back().angle);
+    double first = 0.0;
+    if (states.size() >= 2) {
+      // The line through the last two zones: a guess within the curve's bend times the step^2.
+      const DugdaleState& p = states[states.size() - 2];
+      const DugdaleState& q = states.back();
+      first = half_chord(q) + (half_chord(q) - half_chord(p)) * (a - q.contact_radius) /
+                                  (q.contact_radius - p.contact_radius);
+    }
+    if (!(first > 0.0) || !std::isfinite(first)) {
+      first = states.empty() ? first_half_chord(profile, law, a) : half_chord(states.back());
+    }
     states.push_back(contact_state_from(profile, law, a, first));
   }
   return states;
+}
+
+DugdaleSlopes dugdale_contact_slopes(const Profile& profile, const DugdaleLaw& law,
+                                     const DugdaleState& state) {
+  const double a = state.contact_radius, c = state.cohesive_radius, t = state.angle;
+  const double s = c * std::sin(t);
+  const double z = law.zone_strain(), image_slope = profile.mdr_image_slope(a);
+  const DugdaleGap gap = profile.dugdale_gap(a, c, t);
+  // At fixed s: dc/da = a/c, dt/da = -s/c^2; dJ/da = -g'(a) t (the lower limit, at fixed c)
+  // + (dJ/dt)/(dc/dt) a/c with dc/dt = c tan t = c s/a; d(s t - (c - a))/da = -a (c - a)/c^2.
+  const double opening_a = -image_slope * t + gap.angle_slope * a * a / (c * c * s) -
+                           z * a * (s * s / (c + a)) / (c * c);
+  const double opening_s = gap.angle_slope * a / (c * c) + z * (t - s * s * s / (c * c * (c + a)));
+  const double chord_slope = -opening_a / opening_s;  // ds/da (the factor 2/pi cancels)
+  // F = E* nf(a) - 2 sigma_0 (a s + c^2 t): dF/da at fixed s = 2 E* a g'(a) - 4 sigma_0 a t,
+  // dF/ds = -4 sigma_0 (a + s t); d = g(a) - (2 sigma_0/E*) s.
+  return {.indentation = image_slope - z * chord_slope,
+          .normal_force = 2.0 * law.effective_modulus * a * image_slope -
+                          4.0 * law.adhesive_stress * (a * t + (a + s * t) * chord_slope)};
 }
 
 DugdaleState dugdale_free_state(const Profile& profile, const DugdaleLaw& law, double c) {

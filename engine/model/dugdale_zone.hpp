@@ -36,10 +36,25 @@ struct DugdaleState {
 /// Throws std::domain_error where the zone would reach beyond the profile's outer radius.
 DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a);
 
+/// The contact branch's slopes at one of its states: zero where a control folds (fixed grips:
+/// dd/da, fixed load: dF/da), for a fold search to root.
+struct DugdaleSlopes {
+  double indentation = 0.0;   ///< dd/da [1]
+  double normal_force = 0.0;  ///< dF/da [N/m]
+};
+
+/// dd/da and dF/da along the contact branch at `state` (from dugdale_contact_state), by implicit
+/// differentiation of the opening condition O(a, s) = 0 in the half-chord s = sqrt(c^2 - a^2):
+/// ds/da = -O_a/O_s. O_a holds -g'(a) t + (dJ/dt) a^2/(c^2 s), which cancel to O(t^3) where
+/// the zone is thin: relative accuracy about eps g'(a)/((2 sigma_0/E*) t) there.
+DugdaleSlopes dugdale_contact_slopes(const Profile& profile, const DugdaleLaw& law,
+                                     const DugdaleState& state);
+
 /// The contact branch at each of `contact_radii` (a > 0 [m]), in their order: each solve
-/// starts from the zone of the one before, so that a force curve of close radii costs two or
-/// three Newton steps a point instead of five. The same states as dugdale_contact_state, to
-/// its convergence (the last steps agree to 1e-9 of the half-chord, the root to its rounding).
+/// starts from the zones of the two before (their line), so that a force curve of close radii
+/// costs two or three Newton steps a point instead of five. The same states as
+/// dugdale_contact_state, to its convergence (the last steps agree to 1e-9 of the half-chord, the
+/// root to its rounding).
 std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const DugdaleLaw& law,
                                                  std::span<const double> contact_radii);
 

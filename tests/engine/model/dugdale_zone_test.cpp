@@ -156,6 +156,48 @@ TEST(DugdaleZone, ACurveFromNeighboursIsTheCurveOfIndependentStates) {
   }
 }
 
+// The branch's slopes dd/da and dF/da by implicit differentiation against a fourth-order central
+// difference of the states, step 1e-3 a: its truncation (1e-3)^4 of the scale, its rounding
+// about 1e-16/1e-3 of the force's terms over a. Tolerance 1e-9 of the terms over a (dF/da, dd/da
+// themselves cross zero at the folds), from a thin zone (sigma_0 = 1e8 Pa) to a wide one (1e3).
+TEST(DugdaleZone, BranchSlopesMatchTheStatesDifferences) {
+  const ParabolicProfile parabola(0.01);
+  const SphereProfile sphere(0.01);
+  const PowerLawProfile power(3e3, 2.5);
+  const ConeProfile cone(5.0);
+  for (const Profile* profile :
+       {static_cast<const Profile*>(&parabola), static_cast<const Profile*>(&sphere),
+        static_cast<const Profile*>(&power), static_cast<const Profile*>(&cone)}) {
+    for (const double stress : {1e8, 1.5e4, 1e3}) {
+      const DugdaleLaw law{
+          .adhesive_stress = stress, .work_of_adhesion = 0.05, .effective_modulus = 1e6};
+      for (const double a : {2e-5, 1e-4, 2.5e-4, 5e-4}) {
+        SCOPED_TRACE(testing::Message() << "sigma_0 " << stress << " a " << a);
+        const DugdaleState state = dugdale_contact_state(*profile, law, a);
+        const DugdaleSlopes slopes = dugdale_contact_slopes(*profile, law, state);
+        const double h = 1e-3 * a;
+        const auto at = [&](double x) { return dugdale_contact_state(*profile, law, x); };
+        const auto difference = [&](auto value) {
+          return (8.0 * (value(at(a + h)) - value(at(a - h))) -
+                  (value(at(a + 2 * h)) - value(at(a - 2 * h)))) /
+                 (12.0 * h);
+        };
+        const double force_terms =
+            1e6 * profile->nonadhesive_force_per_modulus(a) +
+            2.0 * stress * state.cohesive_radius * state.cohesive_radius * state.angle;
+        EXPECT_NEAR(slopes.normal_force,
+                    difference([](const DugdaleState& x) { return x.normal_force; }),
+                    1e-9 * force_terms / a);
+        const double depth_terms =
+            profile->mdr_image(a) + law.zone_strain() * state.cohesive_radius;
+        EXPECT_NEAR(slopes.indentation,
+                    difference([](const DugdaleState& x) { return x.indentation; }),
+                    1e-9 * depth_terms / a);
+      }
+    }
+  }
+}
+
 // sigma_0 -> infinity at fixed dgamma is JKR for any shape: the zone shrinks onto the edge
 // and its stretch (2 sigma_0/E*) sqrt(c^2 - a^2) becomes Hess's sqrt(2 pi a dgamma/E*). A power
 // law r^1.5 and the sphere (quadrature); the difference falls like 1/lambda^2 (checked: 1e-4 of
