@@ -171,7 +171,14 @@ DugdaleState dugdale_held_state(const Profile& profile, const DugdaleLaw& law, d
                          : 0.5 * kPi * (1.0 - 4.0 * std::numeric_limits<double>::epsilon());
   double lo = dugdale_contact_state(profile, law, a).angle;
   double hi = lo;
-  if (excess(lo) < 0.0) {
+  // At the branch's own depth the branch's angle is the root, so a rounding-sized excess of
+  // either sign there is the root itself: the opening may turn down again just above it
+  // (lambda = 10, three of Maugis' lengths: -6.6e-4 h0 at 0.99 t, +4.8e-4 h0 at 1.01 t, -3.6e-3
+  // h0 at 1.1 t), and a widening search would pass to another root.
+  const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * law.range();
+  if (std::abs(excess(lo)) <= rounding) {
+    hi = lo;
+  } else if (excess(lo) < 0.0) {
     while (excess(hi) < 0.0) {
       if (hi >= top) {
         throw std::domain_error("the cohesive zone reaches beyond the profile's outer radius");
