@@ -1,7 +1,10 @@
 // Google Benchmark: a Maugis-Dugdale let-go of the spring row beside a JKR let-go, per event at
-// 1e5 springs (the target: at most 3x), whole pull-offs divided by their events.
+// 1e5 springs (the target: at most 3x), whole pull-offs divided by their events: the
+// row alone, and a scene with solver.method = "event" through run_scene as the JKR one.
 #include <benchmark/benchmark.h>
 #include <spdlog/spdlog.h>
+
+#include <fmt/format.h>
 
 #include <cstdint>
 #include <string>
@@ -45,6 +48,23 @@ void dugdale_event(benchmark::State& state, bool grips, double lambda) {
       static_cast<double>(result.counts.opening_evaluations) / events;
 }
 
+/// The same parabola as a scene on the spring row (method = "event", one row), through run_scene.
+void dugdale_scene_event(benchmark::State& state, const std::string& normal, double lambda) {
+  const mdrsim::maugis_reference::MaugisScales scales{.radius = 0.01, .modulus = 1e6, .work = 0.05};
+  const mdrsim::Scene scene = mdrsim::test::build_scene_text(fmt::format(
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\nmaugis_parameter = {}\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[loading]\npreload = {{ contact_radius = {} }}\nnormal = {{ control = \"{}\" }}\n"
+      "[discretization]\nsprings = {}\n[solver]\nmethod = \"event\"\n",
+      lambda, 3.0 * scales.length(), normal, kSprings));
+  mdrsim::RunResult result;
+  for (auto _ : state) {
+    result = mdrsim::run_scene(scene, {});
+    benchmark::DoNotOptimize(result.peak->normal_force);
+  }
+  per_event(state, static_cast<double>(result.counts.events));
+}
+
 /// The JKR shorthand's event method on the same parabola, glued at 2 a0.
 void jkr_event(benchmark::State& state, const std::string& normal) {
   mdrsim::test::JkrScenario s;
@@ -73,6 +93,11 @@ int main(int argc, char** argv) {
                                     std::to_string(lambda).substr(0, 3) + "/springs:100000")
                                        .c_str(),
                                    dugdale_event, normal == "fixed-grips", lambda)
+          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("dugdale_scene_let_go/" + normal + "/lambda:" +
+                                    std::to_string(lambda).substr(0, 3) + "/springs:100000")
+                                       .c_str(),
+                                   dugdale_scene_event, normal, lambda)
           ->Unit(benchmark::kMillisecond);
     }
   }

@@ -12,6 +12,9 @@ set(mdrsim_slow_tests
     "^RandomSet/RtolGuarantee\\.WithinRtolOfTheContinuum/rtol1e[46]_none"
     "^RandomScenes\\.PlainRowAgreesWithTheReference$"  # 7.5 s
     "^EdgeCasesLarge\\."  # 10^7 springs: 4 s
+    # the Dugdale row on the sphere and a power law: a quadrature per let-go
+    "^DugdaleRows\\.RowsConvergeOnQuadratureProfiles$"
+    "^DugdaleRows\\.RichardsonAndRtolMeetTheContinuumOnQuadratureProfiles$"
     "^Determinism\\.SameSceneTwiceGivesByteIdenticalJson$"  # 8 s
     "^PlotProgram\\.AJumpOffUnderFixedLoadDoesNotSetTheRange$"  # 5 s (matplotlib)
     "^Cli\\.EveryKeyOfTheSceneWrongThroughSet$"  # 3.5 s

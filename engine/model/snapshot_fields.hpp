@@ -87,11 +87,13 @@ inline constexpr std::array<SnapshotField, 5> kTrajectoryFields{
     snapshot_field(&ContactSnapshot::tangential_displacement),
     snapshot_field(&ContactSnapshot::tangential_force)};
 
-/// Every quantity that varies smoothly along the branch: the fields above and the normal
-/// control value. Interpolation between springs and extrapolation across rows use these.
-inline constexpr std::array<double ContactSnapshot::*, 6> kBranchQuantities{
+/// Every quantity that varies smoothly along the branch: the fields above, the normal control
+/// value and the cohesive zone's radius. Interpolation between springs and extrapolation across
+/// rows use these.
+inline constexpr std::array<double ContactSnapshot::*, 7> kBranchQuantities{
     &ContactSnapshot::normal_control,   &ContactSnapshot::normal_force,
     &ContactSnapshot::tangential_force, &ContactSnapshot::contact_radius,
-    &ContactSnapshot::indentation,      &ContactSnapshot::tangential_displacement};
+    &ContactSnapshot::indentation,      &ContactSnapshot::tangential_displacement,
+    &ContactSnapshot::cohesive_radius};
 
 }  // namespace mdrsim

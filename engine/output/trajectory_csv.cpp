@@ -9,11 +9,12 @@
 
 namespace mdrsim {
 
-TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, bool friction)
-    : out_(&out), friction_(friction) {
+TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, bool friction, bool cohesive)
+    : out_(&out), friction_(friction), cohesive_(cohesive) {
   *out_ << "stage,event,in_cascade";
   for (const SnapshotField& f : kTrajectoryFields) *out_ << ',' << f.name;
-  *out_ << ",springs_in_contact" << (friction_ ? ",sliding\n" : "\n");
+  *out_ << ",springs_in_contact" << (friction_ ? ",sliding" : "")
+        << (cohesive_ ? ",cohesive_radius\n" : "\n");
 }
 
 void TrajectoryCsvWriter::on_event(const Event& e) {
@@ -23,14 +24,18 @@ void TrajectoryCsvWriter::on_event(const Event& e) {
   static_assert(kTrajectoryFields.size() == 5, "one {} per field in the rows below");
   const auto field = [&s](std::size_t i) { return s.*kTrajectoryFields[i].member; };
   if (e.kind == EventKind::sample) {  // the continuum route counts no springs
-    fmt::print(*out_, "{},{},0,{},{},{},{},{},\n", stage_name(e), to_string(e.kind), field(0),
+    fmt::print(*out_, "{},{},0,{},{},{},{},{},", stage_name(e), to_string(e.kind), field(0),
                field(1), field(2), field(3), field(4));
+    if (friction_) *out_ << ',';
+    if (cohesive_) fmt::print(*out_, ",{}", s.cohesive_radius);
+    *out_ << '\n';
     return;
   }
   fmt::print(*out_, "{},{},{},{},{},{},{},{},{}", stage_name(e), to_string(e.kind),
              e.in_cascade ? 1 : 0, field(0), field(1), field(2), field(3), field(4),
              s.springs_in_contact);
   if (friction_) fmt::print(*out_, ",{}", s.springs_sliding);
+  if (cohesive_) fmt::print(*out_, ",{}", s.cohesive_radius);
   *out_ << '\n';
 }
 

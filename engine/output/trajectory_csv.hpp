@@ -9,15 +9,16 @@ namespace mdrsim {
 
 /// Columns: stage, event, in_cascade, the state's fields (kTrajectoryFields, SI units),
 /// springs_in_contact; with friction also `sliding`, the springs of one half sliding
-/// (docs/friction.md).
+/// (docs/friction.md); with finite-range adhesion also `cohesive_radius` [m] (docs/maugis.md).
 class TrajectoryCsvWriter final : public Observer {
  public:
-  explicit TrajectoryCsvWriter(std::ostream& out, bool friction = false);
+  explicit TrajectoryCsvWriter(std::ostream& out, bool friction = false, bool cohesive = false);
   void on_event(const Event& event) override;
 
  private:
   std::ostream* out_;
   bool friction_;
+  bool cohesive_;
 };
 
 }  // namespace mdrsim

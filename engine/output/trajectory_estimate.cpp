@@ -23,9 +23,10 @@ bool has_tangential(const Scene& scene) {
 /// and an exponent wherever the scene gives a nonzero value.
 double typical_row_bytes(const Scene& scene) {
   std::ostringstream header;
-  TrajectoryCsvWriter header_only(header, scene.friction.has_value());
+  const bool cohesive = scene.material.finite_range();
+  TrajectoryCsvWriter header_only(header, scene.friction.has_value(), cohesive);
   std::ostringstream both;
-  TrajectoryCsvWriter writer(both, scene.friction.has_value());
+  TrajectoryCsvWriter writer(both, scene.friction.has_value(), cohesive);
   const double full = -1.2345678901234567e-05;
   const double tangential = has_tangential(scene) ? full : 0.0;
   Event event{.kind = EventKind::spring_detached,

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "engine/accuracy/adaptive_resolution.hpp"
+#include "engine/accuracy/dugdale_rows.hpp"
 #include "engine/accuracy/program_resolution.hpp"
 #include "engine/accuracy/resolution_warning.hpp"
 #include "engine/accuracy/row_refinement.hpp"
@@ -78,7 +79,8 @@ std::string cannot_tell_status(const RunResult& result) {
 }
 
 void warn_resolution(const Scene& scene, RunResult& result) {
-  if (scene.discretization.rtol) return;  // the zoom resolves the critical point
+  // The zoom resolves the critical point; the Dugdale row locates it between springs.
+  if (scene.discretization.rtol || scene.material.finite_range()) return;
   const std::int64_t springs = result.springs;
   const double glued = scene.glued_radius;
   const ResolvedRow row{springs, glued, "glued", "discretization.rtol zooms in on it"};
@@ -156,6 +158,7 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
 }
 
 RunResult run_on_pull_off_row(const Scene& scene, const ObserverList& observers) {
+  if (scene.material.finite_range()) return run_dugdale_rows(scene, observers);
   switch (scene.plan.driver) {
     case RouteDriver::rtol: {
       std::vector<RunResult> glued_rows;

@@ -29,7 +29,9 @@ Scene as_its_program(const Scene& scene) {
 }
 
 std::optional<Scene> pressed_in_on_a_first_row(const Scene& scene) {
-  if (scene.plan.engine != RouteEngine::pull_off_row || !scene.plan.shorthand_stages) {
+  // The Dugdale row's glue is the zone's, which lets go with the zone pulling, not pressed in.
+  if (scene.plan.engine != RouteEngine::pull_off_row || !scene.plan.shorthand_stages ||
+      scene.material.finite_range()) {
     return std::nullopt;
   }
   const RunResult first = run_row(scene,

@@ -98,11 +98,10 @@ void refuse_outside_dugdale_scope(const TomlReader& root, const TomlReader& load
                  "no detachment criterion applies with material.adhesive_stress: the Dugdale law's "
                  "two edge conditions decide where the contact and its zone end (docs/maugis.md)");
   }
-  if (route_keys.method_given && scene.solver.method != SolverMethod::continuum) {
+  if (route_keys.method_given && scene.solver.method == SolverMethod::stepping) {
     throw SceneError(route_keys.method_at +
-                     fmt::format("material.adhesive_stress is not yet carried by the spring row "
-                                 "(method = \"{}\"); use method = \"continuum\" (docs/maugis.md)",
-                                 to_string(scene.solver.method)));
+                     "material.adhesive_stress is carried by the spring row's event method, not "
+                     "by stepping; use method = \"event\" or \"continuum\" (docs/maugis.md)");
   }
 }
 

@@ -40,7 +40,8 @@ std::string engine_reason(const Scene& scene, const RoutePlan& plan, bool method
     case RouteEngine::continuum:
       if (scene.material.finite_range()) {
         return "material.adhesive_stress: finite-range adhesion (Maugis-Dugdale) runs on the "
-               "continuum route whatever the rtol (the spring row does not carry it yet)";
+               "continuum route whatever the rtol unless solver.method = \"event\" takes the "
+               "spring row";
       }
       return method_given ? "solver.method = \"continuum\""
                           : "discretization.rtol with no solver.method, and the continuum route "
@@ -49,6 +50,10 @@ std::string engine_reason(const Scene& scene, const RoutePlan& plan, bool method
       return scene.shorthand() ? "[friction] on the shorthand: its three stages run as a program"
                                : "a loading program ([[loading.stage]])";
     case RouteEngine::pull_off_row:
+      if (scene.material.finite_range()) {
+        return "material.adhesive_stress with solver.method = \"event\": the Maugis-Dugdale "
+               "spring row (docs/maugis_row.md)";
+      }
       break;
   }
   std::string reason = "the shorthand (preload, tangential load, pull-off)";
@@ -107,7 +112,7 @@ std::string RoutePlan::describe(const Scene& scene) const {
                                  ? std::string()
                                  : fmt::format(" ({} method)", to_string(scene.solver.method));
   std::string line = fmt::format("{}{}, {}: {}", to_string(engine), method, driver_text, reason);
-  if (shorthand_stages && engine == RouteEngine::pull_off_row) {
+  if (shorthand_stages && engine == RouteEngine::pull_off_row && !scene.material.finite_range()) {
     line +=
         "; where a first row finds the glue let go with the indenter pressed in, the shorthand "
         "runs as its three stages on the program row";

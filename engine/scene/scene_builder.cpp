@@ -401,14 +401,15 @@ void read_discretization(TomlReader& root, RouteKeys& route_keys, Scene& scene) 
   }
 }
 
-/// Finite-range adhesion runs on the continuum route (the spring row does not carry it yet),
-/// with or without solver.method = "continuum"; the resolved scene names it, and leaves out the
-/// defaults it would refuse given (a criterion, an approach work of adhesion).
-void use_continuum_route(nlohmann::json& resolved, Scene& scene) {
+/// Finite-range adhesion runs on the continuum route unless solver.method = "event" takes the
+/// spring row; the resolved scene names the route, and leaves out the defaults it would refuse
+/// given (a criterion, an approach work of adhesion).
+void use_dugdale_route(nlohmann::json& resolved, Scene& scene, const RouteKeys& keys) {
   resolved.erase("detachment");
   if (auto material = resolved.find("material"); material != resolved.end()) {
     material->erase("approach_work_of_adhesion");
   }
+  if (keys.method_given && scene.solver.method == SolverMethod::event) return;
   scene.solver.method = SolverMethod::continuum;
   nlohmann::json& solver = resolved["solver"];
   if (solver.is_object()) {
@@ -488,7 +489,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                            {"max_events_per_spring", scene.solver.max_events_per_spring}});
   }
   refuse_outside_dugdale_scope(root, loading, route_keys, scene);
-  if (scene.material.finite_range()) use_continuum_route(*resolved, scene);
+  if (scene.material.finite_range()) use_dugdale_route(*resolved, scene, route_keys);
   read_discretization(root, route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);
   root.finish();

@@ -121,14 +121,10 @@ TEST(DugdaleReader, RefusesWhatTheLawDoesNotYetTake) {
                    "md.toml:12:1: detachment: no detachment criterion applies with "
                    "material.adhesive_stress: the Dugdale law's two edge conditions decide where "
                    "the contact and its zone end (docs/maugis.md)");
-  EXPECT_THROW_MSG(build(scene(md, "[solver]\nmethod = \"event\"\n")), SceneError,
-                   "md.toml:13:10: solver.method: material.adhesive_stress is not yet carried by "
-                   "the spring row (method = \"event\"); use method = \"continuum\" "
-                   "(docs/maugis.md)");
   EXPECT_THROW_MSG(build(scene(md, "[solver]\nmethod = \"stepping\"\n")), SceneError,
-                   "md.toml:13:10: solver.method: material.adhesive_stress is not yet carried by "
-                   "the spring row (method = \"stepping\"); use method = \"continuum\" "
-                   "(docs/maugis.md)");
+                   "md.toml:13:10: solver.method: material.adhesive_stress is carried by the "
+                   "spring row's event method, not by stepping; use method = \"event\" or "
+                   "\"continuum\" (docs/maugis.md)");
   const std::string program =
       "rebinding = false\n[[loading.stage]]\nname = \"press\"\n"
       "normal = { control = \"fixed-grips\", to = 1e-6 }";
@@ -147,6 +143,9 @@ TEST(DugdaleReader, RefusesWhatTheLawDoesNotYetTake) {
   // With method = "continuum" given, or none, the shorthand runs.
   EXPECT_EQ(build(scene(md, "[solver]\nmethod = \"continuum\"\n")).plan.engine,
             RouteEngine::continuum);
+  // method = "event" takes the spring row.
+  EXPECT_EQ(build(scene(md, "[solver]\nmethod = \"event\"\n")).plan.engine,
+            RouteEngine::pull_off_row);
 }
 
 }  // namespace
