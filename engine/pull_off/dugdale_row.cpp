@@ -13,6 +13,7 @@
 #include "engine/base/bracketed_root.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/fold_refinement.hpp"
+#include "engine/model/machine_work.hpp"
 #include "engine/model/spring_foundation.hpp"
 
 namespace mdrsim {
@@ -197,9 +198,17 @@ DugdaleRowResult run_dugdale_row(const Profile& profile, const DugdaleLaw& law,
   };
   const auto force_of = [](const Held& h) { return h.state.normal_force; };
   const auto held_of = [](const Held& h) { return h.control; };
+  const auto point_of = [&](const DugdaleRowState& s) {
+    return AxisPoint{s.normal_force, driving_point(normal, control_of(normal, s), s.indentation)};
+  };
+  const auto add_work = [&](const DugdaleRowState& from, const DugdaleRowState& to) {
+    result.work += trapezoid_work(point_of(from), point_of(to));
+  };
+  if (spec.record_path) result.path.reserve(static_cast<std::size_t>(spec.springs) + 3);
 
   std::optional<Held> outer;
   Held at = let_go(spec.springs);
+  result.first = at.state;
   double lowest = std::numeric_limits<double>::infinity();  // the smallest F at a let-go [N]
   for (;;) {
     if (spec.record_path) result.path.push_back(at.state);
@@ -220,8 +229,10 @@ DugdaleRowResult run_dugdale_row(const Profile& profile, const DugdaleLaw& law,
     if (inner.control >= at.control - tolerance) {
       result.critical = vertex(outer, at, inner, held_of);
       result.instability = true;
+      add_work(at.state, result.critical);
       return result;
     }
+    add_work(at.state, inner.state);
     outer = at;
     at = inner;
   }
@@ -238,6 +249,8 @@ DugdaleRowResult run_dugdale_row(const Profile& profile, const DugdaleLaw& law,
   }
   const DugdaleRowState closed = free_state(profile, law, closing);
   if (spec.record_path) result.path.push_back(closed);
+  add_work(at.state, closed);
+  result.no_contact_start = closing;
   if (closed.normal_force < result.peak.normal_force) result.peak = closed;
   // Down from c0 while the control falls: the first c where it turns, on a geometric scan to
   // 1e-12 of c0, below which the zone carries nothing a force could show.

@@ -65,6 +65,15 @@ struct DugdaleRowResult {
   bool instability = true;
   /// The most tensile force on the path up to the critical point, between springs likewise.
   DugdaleRowState peak;
+  /// The first let-go's equilibrium (n = N): where the path starts.
+  DugdaleRowState first;
+  /// The machine's work int F dp along the path by trapezoids between its equilibria [J], p the
+  /// driving point (the held value through a spring, else d; machine_work.hpp): from the first
+  /// let-go to the critical point, or to the no-contact branch's start where the path reaches
+  /// it (that branch's part is the caller's, in closed form in c).
+  double work = 0.0;
+  /// c0 where the path joined the no-contact branch [m]; 0 where it did not.
+  double no_contact_start = 0.0;
   /// With record_path: the equilibrium at each let-go (n = N down), then the no-contact
   /// branch's start and end where the path reaches it.
   std::vector<DugdaleRowState> path;

@@ -73,9 +73,13 @@ RunResult run_dugdale_row_scene(const Scene& scene, std::int64_t springs, double
   const Profile& profile = *scene.profile;
   const AffineConstraint normal = scene.normal.controller->constraint();
   const DugdaleLaw law = dugdale_law(scene.material);
-  const DugdaleRowResult row = run_dugdale_row(
-      profile, law,
-      {.springs = springs, .glued_radius = preload_radius, .normal = normal, .record_path = true});
+  // The path is kept only for the trajectory: the row sums the work as it goes.
+  const bool trajectory = observers.wants(EventKind::spring_detached);
+  const DugdaleRowResult row = run_dugdale_row(profile, law,
+                                               {.springs = springs,
+                                                .glued_radius = preload_radius,
+                                                .normal = normal,
+                                                .record_path = trajectory});
 
   RunResult result;
   result.springs = springs;
@@ -85,9 +89,9 @@ RunResult run_dugdale_row_scene(const Scene& scene, std::int64_t springs, double
   result.counts.events = row.counts.events;
   result.counts.root_iterations = row.counts.opening_evaluations;
 
-  const ContactSnapshot preload = snapshot_of(row.path.front(), normal);
+  const ContactSnapshot preload = snapshot_of(row.first, normal);
   observers.emit({.kind = EventKind::preload_reached, .state = preload});
-  if (observers.wants(EventKind::spring_detached)) {
+  if (trajectory) {
     for (const DugdaleRowState& s : row.path) {
       if (s.springs_in_contact == 0) break;
       observers.emit({.kind = EventKind::spring_detached,
@@ -105,36 +109,17 @@ RunResult run_dugdale_row_scene(const Scene& scene, std::int64_t springs, double
   result.stages.push_back({"tangential", preload, {}, {}, preload});
 
   const ContactSnapshot end = snapshot_of(row.critical, normal);
-  // The path's work by trapezoids of F against the driving point up to the critical point;
-  // the no-contact branch's part (between its start and the critical point) in closed form.
-  double work = 0.0;
-  double force = preload.normal_force;
-  double driving = driving_point(normal, preload.normal_control, preload.indentation);
-  const auto step_to = [&](const ContactSnapshot& s) {
-    const double to = driving_point(normal, s.normal_control, s.indentation);
-    work += trapezoid_work({force, driving}, {s.normal_force, to});
-    force = s.normal_force;
-    driving = to;
-  };
-  const DugdaleRowState* free_start = nullptr;
-  for (std::size_t k = 1; k < row.path.size(); ++k) {
-    const DugdaleRowState& s = row.path[k];
-    if (s.springs_in_contact == 0) {
-      step_to(snapshot_of(s, normal));
-      free_start = &s;
-      break;
-    }
-    step_to(snapshot_of(s, normal));
-  }
-  if (free_start) {
-    work += no_contact_work(profile, law, free_start->cohesive_radius, end.cohesive_radius);
+  // The row's trapezoids up to the critical point or the no-contact branch's start; that
+  // branch's part in closed form in c.
+  double work = row.work;
+  if (row.no_contact_start > 0.0) {
+    const double start_force = dugdale_free_state(profile, law, row.no_contact_start).normal_force;
+    work += no_contact_work(profile, law, row.no_contact_start, end.cohesive_radius);
     if (drives_through_spring(normal)) {
       // The machine's end moves by d + F/k: its spring's energy change on top of int F dd.
-      work +=
-          0.5 * normal.force_coefficient * (end.normal_force * end.normal_force - force * force);
+      work += 0.5 * normal.force_coefficient *
+              (end.normal_force * end.normal_force - start_force * start_force);
     }
-  } else {
-    step_to(end);
   }
 
   StageRecord pull_off{"pull-off", end, {}};
