@@ -29,6 +29,7 @@ struct Case {
   std::string material_and_profile;  ///< [material] and [profile] text
   double glued;                      ///< preload contact radius [m]
   bool grips;
+  std::string normal = {};  ///< the [loading] normal table's content, where not grips or load
 };
 
 /// Maugis' parabola (R = 1 cm, E* = 1 MPa, dgamma = 0.05 J/m^2) at lambda, glued at three of
@@ -67,9 +68,12 @@ Case power_law(bool grips) {
 }
 
 std::string scene_text(const Case& c, const std::string& tail) {
-  return fmt::format(
-      "{}[loading]\npreload = {{ contact_radius = {} }}\nnormal = {{ control = \"{}\" }}\n{}",
-      c.material_and_profile, c.glued, c.grips ? "fixed-grips" : "fixed-load", tail);
+  return fmt::format("{}[loading]\npreload = {{ contact_radius = {} }}\nnormal = {{ {} }}\n{}",
+                     c.material_and_profile, c.glued,
+                     c.normal.empty()
+                         ? fmt::format("control = \"{}\"", c.grips ? "fixed-grips" : "fixed-load")
+                         : c.normal,
+                     tail);
 }
 
 RunResult run(const Case& c, const std::string& tail, const ObserverList& observers = {}) {
@@ -95,6 +99,12 @@ std::vector<Case> closed_form_cases() {
   }
   out.push_back(cone(0.7, true));   // no jump: below pi/4
   out.push_back(cone(0.85, true));  // a jump: above it
+  // A compliant machine (about a fifth of the contact's stiffness 2 E* a at the pull-off): its
+  // work holds the machine spring's energy.
+  Case compliant = parabola(1.0, true);
+  compliant.name = "parabola lambda 1 compliant";
+  compliant.normal = "control = \"compliant\", stiffness = 100.0";
+  out.push_back(compliant);
   return out;
 }
 

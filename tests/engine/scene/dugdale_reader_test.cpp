@@ -143,7 +143,9 @@ TEST(DugdaleReader, RefusesWhatTheLawDoesNotYetTake) {
   // With method = "continuum" given, or none, the shorthand runs.
   EXPECT_EQ(build(scene(md, "[solver]\nmethod = \"continuum\"\n")).plan.engine,
             RouteEngine::continuum);
-  // method = "event" takes the spring row.
+  // rtol without a method keeps the continuum route; method = "event" takes the spring row.
+  EXPECT_EQ(build(scene(md, "[discretization]\nrtol = 1e-6\n")).plan.engine,
+            RouteEngine::continuum);
   EXPECT_EQ(build(scene(md, "[solver]\nmethod = \"event\"\n")).plan.engine,
             RouteEngine::pull_off_row);
 }
