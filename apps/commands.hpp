@@ -42,10 +42,23 @@ struct MergeOptions {
   std::vector<std::string> shards;  ///< the shard CSVs, in any order
 };
 
+struct FitOptions {
+  std::vector<std::string> curves;  ///< measured files
+  std::string tip;                  ///< SPEC's tip text
+  std::string model = "hertz";
+  double poisson_ratio = 0.5;
+  std::string segment = "approach";
+  std::vector<std::string> fixes;  ///< NAME=VALUE
+  std::string json;                ///< path, "-" or empty
+  std::string csv;                 ///< path, "-" or empty
+};
+
 /// Each returns the process exit code; bad input throws SceneError or UsageError.
 int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
 int merge_command(const MergeOptions& options);
+/// `mdrsim fit`: Hertz fitted to measured force curves (docs/afm.md).
+int fit_command(const FitOptions& options);
 /// `mdrsim list`: the registered parts with their keys and units, on standard output.
 int list_command();
 

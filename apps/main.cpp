@@ -198,9 +198,33 @@ int main(int argc, char** argv) {
   merge_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 
+  mdrsim::cli::FitOptions fit;
+  CLI::App* fit_app = app.add_subcommand(
+      "fit", "fit a contact model to measured force curves (AFM files; docs/afm.md)");
+  fit_app->add_option("curves", fit.curves, "measured files (JPK, HDF5, Igor .ibw, CSV/TSV)")
+      ->required();
+  fit_app
+      ->add_option("--tip", fit.tip,
+                   "parabolic:radius=R, sphere:radius=R or cone:half_angle_deg=A (SI units)")
+      ->required();
+  fit_app->add_option("--model", fit.model, "hertz (dmt, jkr, maugis, auto: not yet)");
+  fit_app->add_option("--poisson-ratio", fit.poisson_ratio, "the sample's (default 0.5)");
+  fit_app->add_option("--segment", fit.segment, "approach (default) or retract");
+  fit_app
+      ->add_option("--fix", fit.fixes,
+                   "hold NAME=VALUE (youngs_modulus, contact_point, baseline_offset, "
+                   "baseline_slope) or override the calibration (spring_constant, sensitivity); "
+                   "repeatable")
+      ->allow_extra_args(false);
+  fit_app->add_option("--json", fit.json,
+                      "write one JSON object per curve (an array) to PATH or -");
+  fit_app->add_option("--csv", fit.csv, "write one CSV row per curve to PATH or -");
+  fit_app->add_option("--log-level", level, "log level on standard error")
+      ->check(CLI::IsMember(levels));
+
   // A single-valued option given twice takes the later value, as users expect of a command
   // line they append to (CLI11 refuses it by default); --set and --vary collect every one.
-  for (CLI::App* sub : {run_app, sweep_app, merge_app}) {
+  for (CLI::App* sub : {run_app, sweep_app, merge_app, fit_app}) {
     for (CLI::Option* option : sub->get_options()) {
       if (option->get_expected_max() == 1 && !option->get_positional()) {
         option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
@@ -236,8 +260,11 @@ int main(int argc, char** argv) {
   }
   try {
     // An empty PATH (say an unset shell variable) must not silently mean "not given".
-    const std::pair<CLI::App*, const char*> path_flags[] = {
-        {run_app, "--json"}, {run_app, "--trajectory"}, {sweep_app, "--csv"}};
+    const std::pair<CLI::App*, const char*> path_flags[] = {{run_app, "--json"},
+                                                            {run_app, "--trajectory"},
+                                                            {sweep_app, "--csv"},
+                                                            {fit_app, "--json"},
+                                                            {fit_app, "--csv"}};
     for (const auto& [sub, flag] : path_flags) {
       if (sub->parsed() && sub->count(flag) > 0 &&
           sub->get_option(flag)->as<std::string>().empty()) {
@@ -259,6 +286,7 @@ int main(int argc, char** argv) {
     if (list_app->parsed()) return mdrsim::cli::list_command();
     if (run_app->parsed()) return mdrsim::cli::run_command(run);
     if (merge_app->parsed()) return mdrsim::cli::merge_command(merge);
+    if (fit_app->parsed()) return mdrsim::cli::fit_command(fit);
     return mdrsim::cli::sweep_command(sweep);
   } catch (const mdrsim::SceneError& e) {
     std::cerr << one_line(e.what()) << '\n';

@@ -1,0 +1,96 @@
+// mdrsim fit on the command line: the JSON and CSV of the real JPK curve, the refusals (exit 2,
+// one line) and a map whose bad curve gets its status.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/support/run_command.hpp"
+
+using mdrsim::test::run_mdrsim;
+
+namespace {
+
+constexpr const char* kSpot3 = "tests/data/afm/fmt-jpk-fd_spot3-0192.jpk-force";
+
+TEST(FitCommand, HertzOnTheJpkCurveAsJson) {
+  const auto result = run_mdrsim(std::string("fit ") + kSpot3 +
+                                 " --tip parabolic:radius=1e-5 --poisson-ratio 0.5 "
+                                 "--fix baseline_slope=0 --json -");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto all = nlohmann::json::parse(result.out);
+  ASSERT_EQ(all.size(), 1U);
+  const auto& fit = all[0];
+  EXPECT_EQ(fit["status"], "fitted");
+  EXPECT_EQ(fit["model"], "hertz");
+  EXPECT_EQ(fit["segment"], "approach");
+  EXPECT_EQ(fit["tip_position_from"], "measured_height");
+  // nanite's value (tests/test_indent.py), 1e-3 relative as in the engine's test.
+  EXPECT_NEAR(fit["youngs_modulus"]["value"].get<double>(), 14741.96, 14.74);
+  EXPECT_GT(fit["youngs_modulus"]["standard_error"].get<double>(), 0.0);
+  EXPECT_EQ(fit["baseline_slope"]["fixed"], true);
+  EXPECT_EQ(fit["baseline_slope"]["value"].get<double>(), 0.0);
+  EXPECT_EQ(fit["points"], 2000);
+  EXPECT_NEAR(fit["calibration"]["spring_constant"]["value"].get<double>(), 0.043493666407368466,
+              1e-15);
+}
+
+TEST(FitCommand, CsvHasOneRowPerCurveOfAMap) {
+  const auto result = run_mdrsim(
+      "fit tests/data/afm/fmt-jpk-fd_map-data-reference-points.jpk-force-map "
+      "--tip sphere:radius=5e-6 --csv -");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  int lines = 0;
+  for (const char c : result.out) lines += c == '\n';
+  EXPECT_EQ(lines, 4) << result.out;  // header + 3 curves
+  EXPECT_EQ(result.out.rfind("file,curve,x,y,index,status,youngs_modulus,", 0), 0U);
+  EXPECT_EQ(result.out.find("nan"), std::string::npos);
+}
+
+TEST(FitCommand, RefusesWithOneLine) {
+  const struct {
+    std::string args;
+    std::string message;
+  } cases[] = {
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model jkr",
+       "--model jkr: not yet (hertz only)\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model foo",
+       "--model foo: unknown (known: hertz, dmt, jkr, maugis, auto)\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --fix work_of_adhesion=1",
+       "--fix work_of_adhesion: not a parameter of --model hertz\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --fix youngs=1",
+       "--fix youngs: unknown (known: youngs_modulus, contact_point, baseline_offset, "
+       "baseline_slope, spring_constant, sensitivity)\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --segment both",
+       "--segment both: not yet (approach or retract)\n"},
+      {std::string("fit ") + kSpot3 + " --tip blunt:radius=1",
+       "--tip: 'blunt:radius=1' is not a tip (known: parabolic:radius=R, sphere:radius=R, "
+       "cone:half_angle_deg=A)\n"},
+      {"fit tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force --tip "
+       "parabolic:radius=1e-5",
+       "tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force: segment extend-cellhesion200: no "
+       "spring "
+       "constant to turn the deflection into a force (give --fix spring_constant=K [N/m])\n"},
+      {"fit tests/data/afm/README.md --tip parabolic:radius=1e-5",
+       "tests/data/afm/README.md: unknown kind of file '.md' (known: .jpk-force, "
+       ".jpk-force-map, .jpk-qi-data, .jpk-qi-series, .h5, .hdf5, .ibw, .csv, .tsv, .txt)\n"},
+  };
+  for (const auto& c : cases) {
+    const auto result = run_mdrsim(c.args);
+    EXPECT_EQ(result.exit_code, 2) << c.args;
+    EXPECT_EQ(result.err, c.message) << c.args;
+    EXPECT_EQ(result.out, "") << c.args;
+  }
+}
+
+TEST(FitCommand, SpringConstantGivenFitsTheDeflectionOnlyFile) {
+  const auto result = run_mdrsim(
+      "fit tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force --tip parabolic:radius=1e-5 "
+      "--fix spring_constant=0.05 --json -");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto all = nlohmann::json::parse(result.out);
+  EXPECT_EQ(all[0]["calibration"]["spring_constant"]["source"], "override");
+}
+
+}  // namespace
