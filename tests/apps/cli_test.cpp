@@ -724,13 +724,14 @@ TEST_F(Cli, UnknownFlag) {
 
 TEST_F(Cli, MissingOrUnknownSubcommand) {
   const std::string hint =
-      "mdrsim: a command is required (run, sweep, merge, list), e.g. mdrsim run SCENE.toml; see "
+      "mdrsim: a command is required (run, sweep, merge, fit, list), e.g. mdrsim run SCENE.toml; "
+      "see "
       "mdrsim --help";
   EXPECT_TRUE(bad_input(run_mdrsim(""), hint));
   EXPECT_TRUE(bad_input(run_mdrsim("--json -"), hint));
   EXPECT_TRUE(bad_input(run_mdrsim("simulate " + scene_),
                         "mdrsim: unknown command 'simulate' (known: "
-                        "run, sweep, merge, list; see mdrsim --help)"));
+                        "run, sweep, merge, fit, list; see mdrsim --help)"));
   EXPECT_TRUE(bad_input(run_mdrsim("run"), "mdrsim: scene is required"));
 }
 
