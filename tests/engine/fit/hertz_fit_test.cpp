@@ -253,6 +253,19 @@ TEST(HertzFit, FlatCurveHasNoContact) {
   EXPECT_EQ(fit_hertz(segment, options).status, FitStatus::no_contact);
 }
 
+TEST(TipShape, ProfilesGiveSneddonsClosedForms) {
+  const TipShape parabolic = parse_tip("parabolic:radius=1e-5");
+  const TipShape cone = parse_tip("cone:half_angle_deg=35");
+  for (const double delta : {1e-9, 2e-7, 3e-6}) {
+    // The profiles' closed forms and these differ only in rounding: 1e-14 relative.
+    const double hertz = 4.0 / 3.0 * std::sqrt(1e-5) * std::pow(delta, 1.5);
+    EXPECT_NEAR(parabolic.force_per_modulus(delta), hertz, 1e-14 * hertz);
+    const double sneddon =
+        2.0 / std::numbers::pi * std::tan(35.0 * std::numbers::pi / 180.0) * delta * delta;
+    EXPECT_NEAR(cone.force_per_modulus(delta), sneddon, 1e-14 * sneddon);
+  }
+}
+
 TEST(TipShape, StiffnessIsTheForceDerivative) {
   for (const char* text :
        {"parabolic:radius=1e-5", "sphere:radius=2e-6", "cone:half_angle_deg=35"}) {
