@@ -201,44 +201,52 @@ PreparedSegment synthetic(const Truth& truth, unsigned seed, const fs::path& fol
 // indentation every time; the one-sigma intervals (J^T J)^-1 s^2 cover the truth in about
 // 68.3 % of the seeds: a binomial count of 100 at p = 0.683 lies in [55, 81] with probability
 // 0.995 (+-2.8 standard deviations), so a wrong error formula (off by 1.5x) fails.
-TEST(HertzFitSynthetic, RecoversKnownParametersWithHonestErrors) {
-  const Truth truths[] = {
-      {"parabolic:radius=1e-5", 15e3, 1.8e-5, 2e-10, 3e-4, 1e-6},
-      {"sphere:radius=2e-6", 50e3, 5e-6, -1e-10, -2e-4, 1.5e-6},
-      {"cone:half_angle_deg=35", 4e6, 1e-6, 0.0, 1e-3, 2e-7},
-  };
-  const fs::path folder = fs::temp_directory_path() / ("mdrsim-hertz-" + std::to_string(getpid()));
+class HertzFitSynthetic : public ::testing::TestWithParam<Truth> {};
+
+TEST_P(HertzFitSynthetic, RecoversKnownParametersWithHonestErrors) {
+  const Truth& truth = GetParam();
+  const fs::path folder =
+      fs::temp_directory_path() / ("mdrsim-hertz-" + std::to_string(getpid()) + "-" +
+                                   std::to_string(static_cast<int>(truth.depth * 1e9)));
   fs::create_directories(folder);
-  for (const Truth& truth : truths) {
-    HertzFitOptions options;
-    options.tip = parse_tip(truth.tip);
-    int covered_e = 0, covered_c = 0;
-    double worst_e = 0, worst_c = 0;
-    for (unsigned seed = 1; seed <= 100; ++seed) {
-      const HertzFit fit = fit_hertz(synthetic(truth, seed, folder), options);
-      ASSERT_EQ(fit.status, FitStatus::fitted) << truth.tip << " seed " << seed;
-      const double error_e = std::abs(fit.youngs_modulus.value / truth.youngs_modulus - 1);
-      const double error_c = std::abs(fit.contact_point.value - truth.contact_point) / truth.depth;
-      worst_e = std::max(worst_e, error_e);
-      worst_c = std::max(worst_c, error_c);
-      covered_e += std::abs(fit.youngs_modulus.value - truth.youngs_modulus) <=
-                   fit.youngs_modulus.standard_error;
-      covered_c += std::abs(fit.contact_point.value - truth.contact_point) <=
-                   fit.contact_point.standard_error;
-    }
-    std::printf(
-        "recovery %-24s worst |dE|/E = %.3f %%, worst |dc|/depth = %.3f %%, "
-        "1-sigma coverage E %d/100, contact point %d/100\n",
-        truth.tip, 100 * worst_e, 100 * worst_c, covered_e, covered_c);
-    EXPECT_LT(worst_e, 0.02) << truth.tip;
-    EXPECT_LT(worst_c, 0.01) << truth.tip;
-    EXPECT_GE(covered_e, 55) << truth.tip;
-    EXPECT_LE(covered_e, 81) << truth.tip;
-    EXPECT_GE(covered_c, 55) << truth.tip;
-    EXPECT_LE(covered_c, 81) << truth.tip;
+  HertzFitOptions options;
+  options.tip = parse_tip(truth.tip);
+  int covered_e = 0, covered_c = 0;
+  double worst_e = 0, worst_c = 0;
+  for (unsigned seed = 1; seed <= 100; ++seed) {
+    const HertzFit fit = fit_hertz(synthetic(truth, seed, folder), options);
+    ASSERT_EQ(fit.status, FitStatus::fitted) << truth.tip << " seed " << seed;
+    const double error_e = std::abs(fit.youngs_modulus.value / truth.youngs_modulus - 1);
+    const double error_c = std::abs(fit.contact_point.value - truth.contact_point) / truth.depth;
+    worst_e = std::max(worst_e, error_e);
+    worst_c = std::max(worst_c, error_c);
+    covered_e += std::abs(fit.youngs_modulus.value - truth.youngs_modulus) <=
+                 fit.youngs_modulus.standard_error;
+    covered_c +=
+        std::abs(fit.contact_point.value - truth.contact_point) <= fit.contact_point.standard_error;
   }
+  std::printf(
+      "recovery %-24s worst |dE|/E = %.3f %%, worst |dc|/depth = %.3f %%, "
+      "1-sigma coverage E %d/100, contact point %d/100\n",
+      truth.tip, 100 * worst_e, 100 * worst_c, covered_e, covered_c);
+  EXPECT_LT(worst_e, 0.02) << truth.tip;
+  EXPECT_LT(worst_c, 0.01) << truth.tip;
+  EXPECT_GE(covered_e, 55) << truth.tip;
+  EXPECT_LE(covered_e, 81) << truth.tip;
+  EXPECT_GE(covered_c, 55) << truth.tip;
+  EXPECT_LE(covered_c, 81) << truth.tip;
   fs::remove_all(folder);
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Tips, HertzFitSynthetic,
+    ::testing::Values(Truth{"parabolic:radius=1e-5", 15e3, 1.8e-5, 2e-10, 3e-4, 1e-6},
+                      Truth{"sphere:radius=2e-6", 50e3, 5e-6, -1e-10, -2e-4, 1.5e-6},
+                      Truth{"cone:half_angle_deg=35", 4e6, 1e-6, 0.0, 1e-3, 2e-7}),
+    [](const ::testing::TestParamInfo<Truth>& info) {
+      const std::string tip = info.param.tip;
+      return tip.substr(0, tip.find(':'));
+    });
 
 TEST(HertzFit, FlatCurveHasNoContact) {
   PreparedSegment segment;
