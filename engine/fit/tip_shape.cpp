@@ -24,15 +24,28 @@ namespace {
 
 }  // namespace
 
-double TipShape::force_per_modulus(double delta) const {
+double TipShape::contact_radius(double delta) const {
   if (delta <= 0.0) return 0.0;
-  return profile->nonadhesive_force_per_modulus(profile->contact_radius_at_depth(delta));
+  if (kind != TipKind::sphere) return profile->contact_radius_at_depth(delta);
+  // The sphere's image x artanh(x/R) is convex and rises from 0, and sqrt(R delta) lies right of
+  // its root (artanh t >= t): Newton from there falls monotonically onto it, in a few steps
+  // where the profile's bracketing search takes some forty evaluations.
+  double a = std::sqrt(radius * delta);
+  if (!(a < radius)) return profile->contact_radius_at_depth(delta);
+  for (int i = 0; i < 50; ++i) {
+    const double next = a - (profile->mdr_image(a) - delta) / profile->mdr_image_slope(a);
+    if (!(next < a) || next <= 0.0) break;
+    a = next;
+  }
+  return a;
 }
 
-double TipShape::stiffness_per_modulus(double delta) const {
+double TipShape::force_per_modulus(double delta) const {
   if (delta <= 0.0) return 0.0;
-  return 2.0 * profile->contact_radius_at_depth(delta);
+  return profile->nonadhesive_force_per_modulus(contact_radius(delta));
 }
+
+double TipShape::stiffness_per_modulus(double delta) const { return 2.0 * contact_radius(delta); }
 
 TipShape parse_tip(std::string_view text) {
   const std::size_t colon = text.find(':');

@@ -26,6 +26,8 @@ struct TipShape {
   double force_per_modulus(double delta) const;
   /// g'(delta) [m]: the contact stiffness per unit E*, 2 a(delta) for every axisymmetric tip.
   double stiffness_per_modulus(double delta) const;
+  /// a(delta) [m]: the contact radius where the MDR image reaches delta.
+  double contact_radius(double delta) const;
 };
 
 /// Parses `parabolic:radius=R`, `sphere:radius=R`, `cone:half_angle_deg=A`. Throws

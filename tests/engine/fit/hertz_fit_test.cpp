@@ -13,6 +13,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <ostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -149,6 +150,8 @@ struct Truth {
   double depth;            // [m] largest indentation
 };
 
+void PrintTo(const Truth& truth, std::ostream* out) { *out << truth.tip; }
+
 /// A synthetic approach of 1000 points from 3 depths above contact to `depth` below it, the
 /// closed-form Hertz force, a tilted baseline and Gaussian noise of 1 % of the largest force,
 /// written as SPEC's table and read back.
@@ -271,6 +274,15 @@ TEST(TipShape, ProfilesGiveSneddonsClosedForms) {
     const double sneddon =
         2.0 / std::numbers::pi * std::tan(35.0 * std::numbers::pi / 180.0) * delta * delta;
     EXPECT_NEAR(cone.force_per_modulus(delta), sneddon, 1e-14 * sneddon);
+  }
+}
+
+TEST(TipShape, SphereContactRadiusIsTheProfilesRoot) {
+  const TipShape sphere = parse_tip("sphere:radius=2e-6");
+  for (const double delta : {1e-10, 1e-8, 1e-7, 1e-6, 5e-6}) {
+    // Newton's root against the profile's bracketing search: both to about 1e-15 relative.
+    const double a = sphere.profile->contact_radius_at_depth(delta);
+    EXPECT_NEAR(sphere.contact_radius(delta), a, 1e-13 * a) << delta;
   }
 }
 
