@@ -15,6 +15,7 @@
 #include "engine/accuracy/shorthand_accuracy.hpp"
 #include "engine/base/engine_logger.hpp"
 #include "engine/base/zero_scale.hpp"
+#include "engine/continuum/dugdale_program.hpp"
 #include "engine/continuum/run_continuum.hpp"
 #include "engine/continuum/run_continuum_program.hpp"
 #include "engine/continuum/run_dugdale_continuum.hpp"
@@ -124,7 +125,10 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
 RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
                            std::int64_t samples) {
   const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
-  if (scene.material.finite_range()) return run_dugdale_continuum(scene, rtol, samples, observers);
+  if (scene.material.finite_range()) {
+    return scene.program ? run_dugdale_program(scene, rtol, samples, observers)
+                         : run_dugdale_continuum(scene, rtol, samples, observers);
+  }
   if (!scene.program) return run_continuum(scene, rtol, samples, observers);
   ContinuumProgramRun run = run_continuum_program(scene, rtol, samples, observers);
   if (run.cannot_follow) {

@@ -79,10 +79,20 @@ void refuse_outside_dugdale_scope(const TomlReader& root, const TomlReader& load
                                   "a spring that let go back as it nears (rebinding is implied)") +
                           kScope);
     }
-    loading.fail_at("stage",
-                    "loading programs with material.adhesive_stress are not yet carried by the "
-                    "spring row or the continuum route; the shorthand (preload and normal) is "
-                    "(docs/maugis.md)");
+    if (route_keys.method_given && scene.solver.method != SolverMethod::continuum) {
+      throw SceneError(route_keys.method_at +
+                       fmt::format("loading programs with material.adhesive_stress are not yet "
+                                   "carried by the spring row (method = \"{}\"); use method = "
+                                   "\"continuum\" (docs/maugis.md \"Programs\")",
+                                   to_string(scene.solver.method)));
+    }
+    for (const Stage& stage : scene.program->stages) {
+      if (stage.tangential) {
+        loading.fail_at("stage", fmt::format("stage '{}': a tangential axis is not taken with "
+                                             "material.adhesive_stress{}",
+                                             stage.name, kScope));
+      }
+    }
   }
   if (loading.has("tangential")) {
     loading.fail_at("tangential", std::string("a tangential load is not taken with "

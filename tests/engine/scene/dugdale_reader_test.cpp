@@ -132,14 +132,26 @@ TEST(DugdaleReader, RefusesWhatTheLawDoesNotYetTake) {
                    "md.toml:10:13: loading.rebinding: not taken with material.adhesive_stress: the "
                    "Dugdale zone pulls a spring that let go back as it nears (rebinding is "
                    "implied) (docs/maugis.md \"Scope\")");
+  // A normal program runs on the continuum route; the spring row and a tangential axis do not
+  // take it yet.
+  const std::string press =
+      "[[loading.stage]]\nname = \"press\"\nnormal = { control = \"fixed-grips\", to = 1e-6 }";
+  EXPECT_EQ(build(scene(md, "", "type = \"parabolic\"\nradius = 0.01", press)).plan.engine,
+            RouteEngine::continuum);
+  EXPECT_THROW_MSG(
+      build(scene(md, "[solver]\nmethod = \"event\"\n", "type = \"parabolic\"\nradius = 0.01",
+                  press)),
+      SceneError,
+      "md.toml:14:10: solver.method: loading programs with material.adhesive_stress are not yet "
+      "carried by the spring row (method = \"event\"); use method = \"continuum\" "
+      "(docs/maugis.md \"Programs\")");
   EXPECT_THROW_MSG(
       build(scene(md, "", "type = \"parabolic\"\nradius = 0.01",
-                  "[[loading.stage]]\nname = \"press\"\n"
-                  "normal = { control = \"fixed-grips\", to = 1e-6 }")),
+                  press + "\n[[loading.stage]]\nname = \"shear\"\n"
+                          "tangential = { control = \"fixed-grips\", by = 1e-6 }")),
       SceneError,
-      "md.toml:10:1: loading.stage: loading programs with material.adhesive_stress are not yet "
-      "carried by the spring row or the continuum route; the shorthand (preload and normal) is "
-      "(docs/maugis.md)");
+      "md.toml:10:1: loading.stage: stage 'shear': a tangential axis is not taken with "
+      "material.adhesive_stress (docs/maugis.md \"Scope\")");
   // With method = "continuum" given, or none, the shorthand runs.
   EXPECT_EQ(build(scene(md, "[solver]\nmethod = \"continuum\"\n")).plan.engine,
             RouteEngine::continuum);
