@@ -36,8 +36,8 @@ constexpr double kSlopeStep = 1e-5;  ///< the fold's difference quotients' step 
 /// h0 + u h0 and F = 0; [0, 1] the no-contact branch, c = c0 u; [1, 3] the contact branch up to
 /// a = 4 c0 as the shorthand's path runs it backwards (s = 4 - u: in the zone's angle next to
 /// the closing point, where a radius would round c, then in a); u > 3 the contact branch at
-/// a = 4 c0 e^(u - 3). Its corners, where the branches meet, are u = 0 and u = 1; the
-/// parameter's own are u = 2 and 3.
+/// a = 4 c0 e^(u - 3) (a sphere: halfway from c0 to its radius in place of 4 c0). Its corners,
+/// where the branches meet, are u = 0 and u = 1; the parameter's own are u = 2 and 3.
 class Equilibria {
  public:
   static constexpr double kStretchEnds[] = {0.0, 1.0, 2.0, kFar};
@@ -47,7 +47,10 @@ class Equilibria {
         law_(law),
         closing_(dugdale_closing_radius(profile, law)),
         open_depth_(dugdale_free_state(profile, law, 0.0).indentation),
-        near_(profile, law, 4.0 * closing_, -std::numeric_limits<double>::infinity()) {}
+        near_radius_(std::isfinite(profile.outer_radius())
+                         ? std::min(4.0 * closing_, 0.5 * (closing_ + profile.outer_radius()))
+                         : 4.0 * closing_),
+        near_(profile, law, near_radius_, -std::numeric_limits<double>::infinity()) {}
 
   DugdaleState at(double u) const {
     if (u <= 0.0) {
@@ -57,7 +60,7 @@ class Equilibria {
     }
     if (u <= 1.0) return dugdale_free_state(profile_, law_, closing_ * u);
     if (u <= kFar) return near_.at(path_of(u));
-    return dugdale_contact_state(profile_, law_, 4.0 * closing_ * std::exp(u - kFar));
+    return dugdale_contact_state(profile_, law_, near_radius_ * std::exp(u - kFar));
   }
   /// u of the separated state at depth d [m].
   double separated_at(double depth) const { return (depth - open_depth_) / law_.range(); }
@@ -137,9 +140,10 @@ class Equilibria {
 
   const Profile& profile_;
   DugdaleLaw law_;
-  double closing_;     ///< c0 [m]
-  double open_depth_;  ///< f(0) - h0 [m]: where the zone appears
-  DugdalePath near_;   ///< the contact branch from 4 c0 to the closing point
+  double closing_;      ///< c0 [m]
+  double open_depth_;   ///< f(0) - h0 [m]: where the zone appears
+  double near_radius_;  ///< 4 c0, or halfway from c0 to a body's outer radius [m]
+  DugdalePath near_;    ///< the contact branch from near_radius_ to the closing point
 };
 
 /// Where a march along the curve stopped: at the stage's control, at a fold of it, or nowhere

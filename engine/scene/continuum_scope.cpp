@@ -74,6 +74,8 @@ bool continuum_answers(const Scene& scene) {
 
 std::optional<std::string> continuum_program_refusal(const Scene& scene) {
   if (!scene.program) return std::nullopt;
+  // The Dugdale law is one law both ways (rebinding implied); its scope is dugdale_reader's.
+  if (scene.material.finite_range()) return std::nullopt;
   if (scene.friction) {
     return "a loading program with [friction] needs the spring row (stick and slip spring by "
            "spring)";

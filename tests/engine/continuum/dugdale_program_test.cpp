@@ -38,12 +38,15 @@ RunResult run(const std::string& text) {
 std::string cycle(double lambda, const std::string& control, double top,
                   std::optional<double> bottom) {
   const std::string back = bottom ? fmt::format("to = {}", *bottom) : "by = -1e-6";
+  // A controller's name, or its keys as they stand in the stage's table.
+  const std::string axis =
+      control.find('=') == std::string::npos ? fmt::format("control = \"{}\"", control) : control;
   return fmt::format(
       "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\nmaugis_parameter = {}\n"
       "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
-      "[[loading.stage]]\nname = \"approach\"\nnormal = {{ control = \"{}\", to = {} }}\n"
-      "[[loading.stage]]\nname = \"retract\"\nnormal = {{ control = \"{}\", {} }}\n{}",
-      lambda, control, top, control, back, bottom ? "" : "until = \"separation\"\n");
+      "[[loading.stage]]\nname = \"approach\"\nnormal = {{ {}, to = {} }}\n"
+      "[[loading.stage]]\nname = \"retract\"\nnormal = {{ {}, {} }}\n{}",
+      lambda, axis, top, axis, back, bottom ? "" : "until = \"separation\"\n");
 }
 
 /// A fixed-grips cycle from far to D = 3 and back beyond the zone's range, D = -2/(pi lambda)
@@ -289,6 +292,48 @@ TEST(DugdaleProgram, TheConeBelowPiOverFourHasNoLoop) {
                 std::abs(jumps.stages[0].work.normal));
     EXPECT_GT(jumps.work->normal, previous + 1e-9 * std::abs(jumps.stages[0].work.normal));
     previous = jumps.work->normal;
+  }
+}
+
+// One law both ways: a second cycle repeats the first (the same jumps, the same loop, rebinding
+// implied), and a compliant machine's jump out lies between the grips' and the fixed load's
+// (a stiffer spring nearer the grips').
+TEST(DugdaleProgram, CyclesRepeatAndACompliantMachineJumpsBetween) {
+  const MaugisUnits u;
+  const double top = 3.0 * u.depth();
+  const double bottom = -5.0 * u.depth();
+  const RunResult twice = run(fmt::format(
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\nmaugis_parameter = 1.0\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+      "[[loading.stage]]\nnormal = {{ control = \"fixed-grips\", to = {0} }}\n"
+      "[[loading.stage]]\nnormal = {{ control = \"fixed-grips\", to = {1} }}\n"
+      "[[loading.stage]]\nnormal = {{ control = \"fixed-grips\", to = {0} }}\n"
+      "[[loading.stage]]\nnormal = {{ control = \"fixed-grips\", to = {1} }}\n",
+      top, bottom));
+  ASSERT_EQ(twice.jumps.size(), 4u);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(twice.jumps[k + 2].inward, twice.jumps[k].inward);
+    EXPECT_NEAR(twice.jumps[k + 2].after.normal_force, twice.jumps[k].after.normal_force,
+                1e-12 * u.force());
+    EXPECT_NEAR(twice.jumps[k + 2].critical.normal_force, twice.jumps[k].critical.normal_force,
+                1e-12 * u.force());
+  }
+  const double first = twice.stages[0].work.normal + twice.stages[1].work.normal;
+  const double second = twice.stages[2].work.normal + twice.stages[3].work.normal;
+  EXPECT_NEAR(second, first, 1e-9 * std::abs(first));
+
+  const double grips = maugis::fixed_grips_jump(1.0).force;
+  const double load = maugis::fixed_load_pull_off(1.0).force;
+  double previous = load;
+  for (const double stiffness : {1.0, 100.0}) {  // [N/m]
+    SCOPED_TRACE(stiffness);
+    const RunResult r = run(cycle(
+        1.0, fmt::format("control = \"compliant\", stiffness = {}", stiffness), top, std::nullopt));
+    ASSERT_EQ(r.status, RunStatus::instability);
+    const double p = r.critical->normal_force / u.force();
+    EXPECT_GT(p, previous);
+    EXPECT_LT(p, grips);
+    previous = p;
   }
 }
 
