@@ -8,7 +8,8 @@ plain-text table  case | analytic | simulated | error | time [s] | continuum | c
 c. time [s]  followed by the largest error over every point of each Fig. 3a sweep. The
 continuum columns are the same case on the continuum route (*_continuum.json/.csv: no
 springs, rtol 1e-10; docs/continuum.md), "-" where the route does not apply (programs). The analytic values come from
-scripts/paper_reference.py (independent of the engine). Forces and displacements are made
+scripts/paper_reference.py (independent of the engine); the Maugis-Dugdale rows (P = F / (pi
+dgamma R), the spring row at rtol 1e-6 as "simulated") from scripts/maugis_reference.py. Forces and displacements are made
 dimensionless here, from the SI columns and the scene's material (F0, d0 of paper eq. 17),
 not with the engine's own dimensionless columns; those are only cross-checked.
 
@@ -20,6 +21,7 @@ fails loudly if the engine regresses.
 import argparse
 import csv
 import json
+import math
 import os
 import sys
 
@@ -272,6 +274,29 @@ def main(argv=None):
                          jumps[1]["critical"]["normal_force"] / scale.f0, None, None))
     except (OSError, ValueError, KeyError, TypeError) as err:
         problems.append(f"{path}: {err}")
+
+    # ---- Finite-range adhesion: Maugis' parabola at three lambdas (scripts/plot_maugis.py draws
+    # and checks them all); P = F / (pi dgamma R), analytic from scripts/maugis_reference.py.
+    try:
+        import maugis_reference
+        with open(result("maugis_parabola.json")) as f:
+            run = json.load(f)
+        md_scale = math.pi * run["material"]["work_of_adhesion"] * run["scene"]["profile"]["radius"]
+        for control in ("fixed_load", "fixed_grips"):
+            on_route = {}
+            for route in ("", "_row"):
+                for row in csv.DictReader(line for line in open(result(
+                        f"maugis_parabola{route}_{control}.csv")) if not line.startswith("#")):
+                    on_route[(route, float(row["material.maugis_parameter"]))] = \
+                        float(row["normal_force"]) / md_scale
+            for lam in (0.1, 1.0, 10.0):
+                analytic = (maugis_reference.fixed_load_pull_off(lam) if control == "fixed_load"
+                            else maugis_reference.fixed_grips_jump(lam)[0])
+                rows.append((f"Maugis-Dugdale lambda {lam:g}, {control.replace('_', ' ')}, P",
+                             analytic, on_route[("_row", lam)], None,
+                             (on_route[("", lam)], analytic, None)))
+    except (OSError, ValueError, KeyError, TypeError) as err:
+        problems.append(f"maugis: {err}")
 
     # ---- print
     width = max([len(r[0]) for r in rows] + [40])

@@ -144,7 +144,9 @@ echo
 # pull-off against Maugis' parameter lambda under a fixed load and fixed grips on the continuum
 # route (rtol 1e-10), against Maugis' own equations written apart (scripts/maugis_reference.py);
 # the cone's against sigma_0 / (E* tan theta), with the fixed-grips threshold pi/4 and the DMT and
-# JKR limits. A P beyond 1e-6 of Maugis' or a cone status against pi/4 fails the job (about 1 s).
+# JKR limits, on the continuum route and on the spring row; the approach-retract loop against
+# lambda. A P beyond 1e-6 of Maugis' (2e-6 on the row) or a cone status against pi/4 fails the
+# job (about 15 s).
 echo "== finite-range adhesion: the Maugis-Dugdale transition" >&2
 lambdas="0.01,0.02,0.05,0.1,0.2,0.5,0.8,0.9,1,1.2,1.5,2,3,5,10,20,50,100"
 # sigma_0 = x E* tan(10 deg) for x = 0.01, 0.03, 0.1, 0.3, 0.5, 0.7, 0.9, 1.2, 2, 5, 10, 30, 100
@@ -153,14 +155,30 @@ stresses+=",211592.3769,352653.9614,881634.9035,1763269.807,5289809.421,17632698
 "$mdrsim" run scenes/maugis/maugis_parabola.toml --json "$results/maugis_parabola.json" \
   --log-level warn
 "$mdrsim" run scenes/maugis/maugis_cone.toml --json "$results/maugis_cone.json" --log-level warn
+# Each on both routes: the continuum's (the scenes' rtol 1e-10) and the spring row's (rtol 1e-6).
+row=(--set 'solver={method="event"}' --set 'discretization={rtol=1e-6}')
 for control in fixed-load fixed-grips; do
-  "$mdrsim" sweep scenes/maugis/maugis_parabola.toml --vary "material.maugis_parameter=$lambdas" \
-    --set "loading.normal={control=\"$control\"}" --csv "$results/maugis_parabola_${control/-/_}.csv" \
-    --force --threads "$threads" --log-level error
-  "$mdrsim" sweep scenes/maugis/maugis_cone.toml --vary "material.adhesive_stress=$stresses" \
-    --set "loading.normal={control=\"$control\"}" --csv "$results/maugis_cone_${control/-/_}.csv" \
-    --force --threads "$threads" --log-level error
+  held=(--set "loading.normal={control=\"$control\"}")
+  for route in "" _row; do
+    on_route=()
+    if [ -n "$route" ]; then on_route=("${row[@]}"); fi
+    "$mdrsim" sweep scenes/maugis/maugis_parabola.toml --vary "material.maugis_parameter=$lambdas" \
+      "${held[@]}" "${on_route[@]}" --csv "$results/maugis_parabola${route}_${control/-/_}.csv" \
+      --force --threads "$threads" --log-level error
+    "$mdrsim" sweep scenes/maugis/maugis_cone.toml --vary "material.adhesive_stress=$stresses" \
+      "${held[@]}" "${on_route[@]}" --csv "$results/maugis_cone${route}_${control/-/_}.csv" \
+      --force --threads "$threads" --log-level error
+  done
 done
+# The approach-retract cycle's loop against lambda: retracted to D = -(3/(pi lambda) + 3) in
+# Maugis' depths (0.652 nm here), past every jump out.
+cycle_lambdas="0.1,0.2,0.3,0.5,0.7,0.9,1,1.5,2,3,5,10,20"
+cycle_ends="-8.18622e-09,-5.0716e-09,-4.03339e-09,-3.20282e-09,-2.84687e-09,-2.64911e-09"
+cycle_ends+=",-2.5799e-09,-2.37226e-09,-2.26844e-09,-2.16462e-09,-2.08156e-09,-2.01927e-09"
+cycle_ends+=",-1.98812e-09"
+"$mdrsim" sweep scenes/maugis/maugis_cycle.toml --vary "material.maugis_parameter=$cycle_lambdas" \
+  --link "loading.stage.2.normal.to=$cycle_ends" --csv "$results/maugis_cycle.csv" --force \
+  --threads "$threads" --log-level error
 echo
 "$py" scripts/plot_maugis.py --results "$results"
 
