@@ -57,7 +57,7 @@ struct FitOptions {
 int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
 int merge_command(const MergeOptions& options);
-/// `mdrsim fit`: Hertz fitted to measured force curves (docs/afm.md).
+/// `mdrsim fit`: Hertz, DMT or JKR fitted to measured force curves (docs/afm.md).
 int fit_command(const FitOptions& options);
 /// `mdrsim list`: the registered parts with their keys and units, on standard output.
 int list_command();

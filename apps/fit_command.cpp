@@ -22,15 +22,15 @@ namespace mdrsim::cli {
 namespace {
 
 constexpr const char* kParameters =
-    "youngs_modulus, contact_point, baseline_offset, "
+    "youngs_modulus, work_of_adhesion, contact_point, baseline_offset, "
     "baseline_slope, spring_constant, sensitivity";
 
 struct Fixed {
-  fit::HertzFixed parameters;
+  fit::AdhesiveFixed parameters;
   measured::CalibrationOverride calibration;
 };
 
-Fixed parse_fixes(const std::vector<std::string>& fixes) {
+Fixed parse_fixes(const std::vector<std::string>& fixes, fit::FitModel model) {
   Fixed fixed;
   for (const std::string& text : fixes) {
     const std::size_t eq = text.find('=');
@@ -64,9 +64,13 @@ Fixed parse_fixes(const std::vector<std::string>& fixes) {
     } else if (name == "sensitivity") {
       positive();
       fixed.calibration.sensitivity = value;
+    } else if (name == "work_of_adhesion" && model != fit::FitModel::hertz) {
+      positive();
+      fixed.parameters.work_of_adhesion = value;
     } else if (name == "work_of_adhesion" || name == "approach_work_of_adhesion" ||
                name == "maugis_parameter") {
-      throw UsageError(fmt::format("--fix {}: not a parameter of --model hertz", name));
+      throw UsageError(
+          fmt::format("--fix {}: not a parameter of --model {}", name, fit::fit_model_name(model)));
     } else {
       throw UsageError(
           fmt::format("--fix {}: unknown (known: {})", printable(name, 40), kParameters));
@@ -78,11 +82,14 @@ Fixed parse_fixes(const std::vector<std::string>& fixes) {
 }  // namespace
 
 int fit_command(const FitOptions& options) {
-  if (options.model == "dmt" || options.model == "jkr" || options.model == "maugis" ||
-      options.model == "auto") {
-    throw UsageError(fmt::format("--model {}: not yet (hertz only)", options.model));
-  }
-  if (options.model != "hertz") {
+  fit::FitModel model = fit::FitModel::hertz;
+  if (options.model == "dmt") {
+    model = fit::FitModel::dmt;
+  } else if (options.model == "jkr") {
+    model = fit::FitModel::jkr;
+  } else if (options.model == "maugis" || options.model == "auto") {
+    throw UsageError(fmt::format("--model {}: not yet (hertz, dmt or jkr)", options.model));
+  } else if (options.model != "hertz") {
     throw UsageError(fmt::format("--model {}: unknown (known: hertz, dmt, jkr, maugis, auto)",
                                  printable(options.model, 40)));
   }
@@ -102,12 +109,19 @@ int fit_command(const FitOptions& options) {
     throw UsageError("--csv: cannot share standard output with --json -");
   }
   require_distinct_outputs({{"--json", options.json}, {"--csv", options.csv}}, std::string());
-  const Fixed fixed = parse_fixes(options.fixes);
-  fit::HertzFitOptions fit_options;
+  const Fixed fixed = parse_fixes(options.fixes, model);
+  fit::CurveFitOptions fit_options;
+  fit_options.model = model;
   fit_options.tip = fit::parse_tip(options.tip);
   fit_options.poisson_ratio = options.poisson_ratio;
   fit_options.fixed = fixed.parameters;
-  fit_options.far_first = segment == measured::SegmentKind::approach;
+  if (model == fit::FitModel::dmt && fit_options.tip.kind == fit::TipKind::cone) {
+    // A cone's adhesion outside the contact depends on the range of the attraction, not on
+    // work_of_adhesion alone: DMT's limit has no closed form in w for it.
+    throw UsageError(
+        "--model dmt: not for a cone (its DMT adhesion depends on the attraction's range; use "
+        "--model jkr)");
+  }
 
   // Every file is read before any is fitted: a bad file is refused before output is written.
   std::vector<measured::MeasuredFile> files;
@@ -136,12 +150,13 @@ int fit_command(const FitOptions& options) {
   }
   if (csv_file) {
     csv_file->stream() << fit::curve_fit_csv_header() << '\n';
-    for (const fit::CurveFit& one : fits) csv_file->stream() << fit::curve_fit_csv_row(one) << '\n';
+    for (const fit::CurveFit& one : fits)
+      csv_file->stream() << fit::curve_fit_csv_row(one, model) << '\n';
     csv_file->commit();
   }
   if (!json_file && !csv_file) {
     for (const fit::CurveFit& one : fits) {
-      std::fputs((fit::curve_fit_summary(one) + "\n").c_str(), stdout);
+      std::fputs((fit::curve_fit_summary(one, model) + "\n").c_str(), stdout);
     }
   }
   return 0;

@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
       ->add_option("--tip", fit.tip,
                    "parabolic:radius=R, sphere:radius=R or cone:half_angle_deg=A (SI units)")
       ->required();
-  fit_app->add_option("--model", fit.model, "hertz (dmt, jkr, maugis, auto: not yet)");
+  fit_app->add_option("--model", fit.model, "hertz, dmt, jkr (maugis, auto: not yet)");
   fit_app->add_option("--poisson-ratio", fit.poisson_ratio, "the sample's (default 0.5)");
   fit_app->add_option("--segment", fit.segment, "approach (default) or retract");
   fit_app

@@ -53,14 +53,18 @@ TEST(FitCommand, RefusesWithOneLine) {
     std::string args;
     std::string message;
   } cases[] = {
-      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model jkr",
-       "--model jkr: not yet (hertz only)\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model maugis",
+       "--model maugis: not yet (hertz, dmt or jkr)\n"},
+      {std::string("fit ") + kSpot3 + " --tip cone:half_angle_deg=20 --model dmt",
+       "--model dmt: not for a cone (its DMT adhesion depends on the attraction's range; use "
+       "--model jkr)\n"},
       {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model foo",
        "--model foo: unknown (known: hertz, dmt, jkr, maugis, auto)\n"},
       {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --fix work_of_adhesion=1",
        "--fix work_of_adhesion: not a parameter of --model hertz\n"},
       {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --fix youngs=1",
-       "--fix youngs: unknown (known: youngs_modulus, contact_point, baseline_offset, "
+       "--fix youngs: unknown (known: youngs_modulus, work_of_adhesion, contact_point, "
+       "baseline_offset, "
        "baseline_slope, spring_constant, sensitivity)\n"},
       {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --segment both",
        "--segment both: not yet (approach or retract)\n"},
