@@ -237,11 +237,12 @@ JkrBranch::State JkrBranch::at(double depth) const {
   }
   State out;
   out.contact_radius = a;
-  out.force = reduced_ * profile_.nonadhesive_force_per_modulus(a) - 2.0 * reduced_ * a * s;
+  const double hertz = profile_.nonadhesive_force_per_modulus(a);
+  out.force = reduced_ * hertz - 2.0 * reduced_ * a * s;
   // At fixed a: dF/dE* = h - a s, dF/dw = -E* a s / w, dd/dE* = s / (2 E*), dd/dw = -s / (2 w);
   // dF/da = 2 E* a g' - 3 E* s. At fixed depth, a moves by -(dd/dp) / (dd/da).
   const double d_force_d_a = 2.0 * reduced_ * a * slope - 3.0 * reduced_ * s;
-  out.d_force_d_modulus = profile_.nonadhesive_force_per_modulus(a) - a * s;
+  out.d_force_d_modulus = hertz - a * s;
   out.d_force_d_work = -reduced_ * a * s / work_;
   if (!end && d_depth_d_a > 1e-9 * slope) {
     out.d_force_d_depth = d_force_d_a / d_depth_d_a;
@@ -336,7 +337,8 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
   } else {
     // The w whose fixed-load pull-off is the measured adhesion force, by bisection in log w.
     double low = -60.0, high = 10.0;
-    for (int k = 0; k < 40; ++k) {
+    // 24 halvings of a span of 70 in log w: w to 4e-6, for a start.
+    for (int k = 0; k < 24; ++k) {
       const double mid = 0.5 * (low + high);
       const JkrBranch branch(*options.tip.profile, reduced, std::exp(mid), deepest);
       (-branch.lowest_force() < fit.adhesion_force_measured ? low : high) = mid;
