@@ -88,6 +88,30 @@ TEST(FitCommand, RefusesWithOneLine) {
   }
 }
 
+TEST(FitCommand, JkrOnTheIgorRetractAsJson) {
+  const auto result = run_mdrsim(
+      "fit tests/data/afm/fmt-igor-fd_SiN_FD_plot.ibw --tip parabolic:radius=1e-5 --model jkr "
+      "--segment retract --json -");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto fit = nlohmann::json::parse(result.out)[0];
+  EXPECT_EQ(fit["status"], "fitted");
+  EXPECT_EQ(fit["model"], "jkr");
+  EXPECT_EQ(fit["segment"], "retract");
+  EXPECT_GT(fit["work_of_adhesion"]["value"].get<double>(), 0.0);
+  EXPECT_GT(fit["work_of_adhesion"]["standard_error"].get<double>(), 0.0);
+  // JKR's fixed-load pull-off of the paraboloid, (3/2) pi w R, to the branch's sampling.
+  EXPECT_NEAR(fit["adhesion_force"]["fitted"].get<double>(),
+              1.5 * M_PI * fit["work_of_adhesion"]["value"].get<double>() * 1e-5,
+              1e-4 * fit["adhesion_force"]["fitted"].get<double>());
+  EXPECT_GT(fit["adhesion_force"]["measured"].get<double>(), 0.0);
+
+  const auto held = run_mdrsim(
+      "fit tests/data/afm/fmt-igor-fd_SiN_FD_plot.ibw --tip parabolic:radius=1e-5 --model dmt "
+      "--segment retract --fix work_of_adhesion=0.001 --csv -");
+  ASSERT_EQ(held.exit_code, 0) << held.err;
+  EXPECT_NE(held.out.find(",dmt,0.001,0,"), std::string::npos) << held.out;
+}
+
 TEST(FitCommand, SpringConstantGivenFitsTheDeflectionOnlyFile) {
   const auto result = run_mdrsim(
       "fit tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force --tip parabolic:radius=1e-5 "
