@@ -1,8 +1,6 @@
 // The continuum route's pull-off with finite-range adhesion: folds of F(a), d(a) and d(c).
 #include "engine/continuum/dugdale_pull_off.hpp"
 
-#include <boost/math/tools/minima.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,34 +14,40 @@ namespace mdrsim {
 namespace {
 
 /// Samples of the contact branch from a_g down: a_k = a_g (k/K)^2, denser near the closing
-/// point, where the DMT side's folds sit (a fold at 1e-2 of a_g is 13 samples above a = 0).
-constexpr int kSamples = 512;
+/// point, where the DMT side's folds sit (a fold at 1e-2 of a_g lies between the last two);
+/// below a_g / K^2 the scan goes on in halvings down to 2^-18 a_g, where the fixed-grips fold
+/// meets the closing point (lambda = 0.938).
+constexpr int kSamples = 16;
+constexpr int kHalvings = 10;
 
-double sample_radius(double glued_radius, int k) {
-  const double s = static_cast<double>(k) / kSamples;
-  return glued_radius * s * s;
+std::vector<double> sample_radii(double glued_radius) {
+  std::vector<double> radii;
+  for (int k = kSamples; k >= 1; --k) {
+    const double u = static_cast<double>(k) / kSamples;
+    radii.push_back(glued_radius * u * u);
+  }
+  for (int k = 1; k <= kHalvings; ++k) radii.push_back(std::ldexp(radii[kSamples - 1], -k));
+  return radii;
 }
 
-/// The first local minimum of value(a) going down from a_g over the samples, refined by Brent
-/// (its place to sqrt(eps), its value, quadratic there, to the last bits); nullopt where value
-/// falls all the way to the smallest sample.
-template <class Value>
-std::optional<double> first_minimum_going_down(double glued_radius, Value value) {
-  double above = value(glued_radius);
-  for (int k = kSamples - 1; k >= 1; --k) {
-    const double here = value(sample_radius(glued_radius, k));
-    if (here >= above) {
-      const double lo = sample_radius(glued_radius, k);
-      const double width = sample_radius(glued_radius, std::min(kSamples, k + 2)) - lo;
-      // Over the bracket's unit interval: Brent's tolerance has an absolute part (a quarter of
-      // its relative one) that in metres would stop it 1e-5 of a radius off the minimum.
-      const double s =
-          boost::math::tools::brent_find_minima([&](double u) { return value(lo + u * width); },
-                                                0.0, 1.0, std::numeric_limits<double>::digits)
-              .first;
-      return lo + s * width;
-    }
-    above = here;
+/// The first fold going down from a_g of a control whose slope along the contact branch is
+/// `slope(DugdaleSlopes)`: the first sample where that slope stops being positive, then its
+/// root (dugdale_contact_slopes, exact to rounding) by TOMS 748 between that sample and the one
+/// above; a_g itself where it is not positive there; nullopt where it stays positive to the
+/// smallest sample. The samples are taken one at a time: most folds lie within the first few.
+template <class Slope>
+std::optional<double> first_fold_going_down(const Profile& profile, const DugdaleLaw& law,
+                                            double glued_radius, Slope slope) {
+  const auto slope_at = [&](double a) {
+    return slope(dugdale_contact_slopes(profile, law, dugdale_contact_state(profile, law, a)));
+  };
+  const std::vector<double> radii = sample_radii(glued_radius);
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    if (slope_at(radii[k]) > 0.0) continue;
+    if (k == 0) return glued_radius;
+    // The radius to 2^-40 of itself: the value there is flat, F'' da^2 / 2 below its rounding.
+    const RootBracket root = bracket_root(slope_at, radii[k], radii[k - 1], 40);
+    return 0.5 * (root.lo + root.hi);
   }
   return std::nullopt;
 }
@@ -52,8 +56,8 @@ std::optional<double> first_minimum_going_down(double glued_radius, Value value)
 
 DugdalePullOff dugdale_fixed_load_pull_off(const Profile& profile, const DugdaleLaw& law,
                                            double glued_radius) {
-  const auto force = [&](double a) { return dugdale_contact_state(profile, law, a).normal_force; };
-  if (const auto a = first_minimum_going_down(glued_radius, force)) {
+  const auto force = [](const DugdaleSlopes& s) { return s.normal_force; };
+  if (const auto a = first_fold_going_down(profile, law, glued_radius, force)) {
     return {dugdale_contact_state(profile, law, *a), true};
   }
   return {dugdale_free_state(profile, law, dugdale_closing_radius(profile, law)), true};
@@ -61,8 +65,8 @@ DugdalePullOff dugdale_fixed_load_pull_off(const Profile& profile, const Dugdale
 
 DugdalePullOff dugdale_fixed_grips_pull_off(const Profile& profile, const DugdaleLaw& law,
                                             double glued_radius) {
-  const auto depth = [&](double a) { return dugdale_contact_state(profile, law, a).indentation; };
-  if (const auto a = first_minimum_going_down(glued_radius, depth)) {
+  const auto depth = [](const DugdaleSlopes& s) { return s.indentation; };
+  if (const auto a = first_fold_going_down(profile, law, glued_radius, depth)) {
     return {dugdale_contact_state(profile, law, *a), true};
   }
   // The contact closed: d(c) on the no-contact branch from c0 down, with d'(c) = f'(c) - p.

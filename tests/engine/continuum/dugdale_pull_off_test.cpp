@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "engine/base/bracketed_root.hpp"
 #include "engine/reference/maugis_reference.hpp"
 #include "profiles/cone_profile.hpp"
 #include "profiles/parabolic_profile.hpp"
@@ -27,7 +28,7 @@ using test::MaugisUnits;
 // tolerance times the slope F'(A) ~ 2). The place of a minimum found from values is good to about
 // sqrt(2 eps / P''(A)): 1e-8 where the branch bends, but the DMT side's F(A) and the fixed-grips
 // fold next to the closing point are so flat that the two differ by up to 3.9e-6 in A there
-// (lambda = 0.01 and 0.95): 1e-5 on A until both find the fold as the root of its slope.
+// (lambda = 0.01 and 0.95): 1e-5 on A, where the reference places its minimum from values.
 TEST(DugdalePullOff, TheParabolaIsMaugisFromDmtToJkr) {
   const MaugisUnits u;
   const ParabolicProfile parabola(u.radius);
@@ -51,6 +52,41 @@ TEST(DugdalePullOff, TheParabolaIsMaugisFromDmtToJkr) {
     std::printf("lambda %6.3f: fixed load P = %.9f (Maugis %.9f), fixed grips P = %.9f (%.9f)\n",
                 lambda, load.critical.normal_force / u.force(), load_ref.force,
                 grips.critical.normal_force / u.force(), grips_ref.force);
+  }
+}
+
+// The fold's radius against the root of a fourth-order difference quotient of the branch's own
+// F(a) and d(a) (dugdale_contact_state alone, not its implicit slopes), step 1e-3 of the radius:
+// the search must place A where the control stops falling, not merely where its value is
+// within rounding of the minimum (about sqrt(eps / P'') of A off, more where the branch is
+// flat). Tolerance 1e-9 on A: the quotient's own root is good to 1e-10 at lambda = 0.01 (its
+// rounding eps |F| / (h F''), F'' small there) and to 3e-12 elsewhere (steps 1e-3 and 2e-3 of
+// A agree to that); the folds next to the closing point (A < 1e-2) are left out, where the step
+// would reach a = 0.
+TEST(DugdalePullOff, TheFoldIsTheRootOfTheSlope) {
+  const MaugisUnits u;
+  const ParabolicProfile parabola(u.radius);
+  const auto fold_by_quotient = [&](const DugdaleLaw& law, double a, auto value) {
+    const double h = 1e-3 * a;
+    const auto v = [&](double x) { return value(dugdale_contact_state(parabola, law, x)); };
+    const auto quotient = [&](double x) {
+      return 8.0 * (v(x + h) - v(x - h)) - (v(x + 2.0 * h) - v(x - 2.0 * h));
+    };
+    return bracketed_root(quotient, 0.95 * a, 1.05 * a);
+  };
+  const auto force = [](const DugdaleState& s) { return s.normal_force; };
+  const auto depth = [](const DugdaleState& s) { return s.indentation; };
+  for (const double lambda : {0.01, 0.1, 0.5, 0.9, 1.0, 2.0, 10.0, 100.0}) {
+    SCOPED_TRACE(lambda);
+    const DugdaleLaw law = u.law(lambda);
+    const double a_load =
+        dugdale_fixed_load_pull_off(parabola, law, 3.0 * u.length()).critical.contact_radius;
+    EXPECT_NEAR(a_load / u.length(), fold_by_quotient(law, a_load, force) / u.length(), 1e-9);
+    const double a_grips =
+        dugdale_fixed_grips_pull_off(parabola, law, 3.0 * u.length()).critical.contact_radius;
+    if (a_grips / u.length() > 1e-2) {
+      EXPECT_NEAR(a_grips / u.length(), fold_by_quotient(law, a_grips, depth) / u.length(), 1e-9);
+    }
   }
 }
 
