@@ -115,6 +115,14 @@ DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law
   return contact_state_from(profile, law, a, first_half_chord(profile, law, a));
 }
 
+DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a,
+                                   double half_chord_guess) {
+  if (!(half_chord_guess > 0.0) || !std::isfinite(half_chord_guess)) {
+    return dugdale_contact_state(profile, law, a);
+  }
+  return contact_state_from(profile, law, a, half_chord_guess);
+}
+
 std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const DugdaleLaw& law,
                                                  std::span<const double> contact_radii) {
   std::vector<DugdaleState> states;

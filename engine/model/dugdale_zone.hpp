@@ -36,6 +36,11 @@ struct DugdaleState {
 /// Throws std::domain_error where the zone would reach beyond the profile's outer radius.
 DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a);
 
+/// The same state from a first guess of its half-chord sqrt(c^2 - a^2) [m] (a neighbour's
+/// zone): Newton's steps start there, one or two where the guess is close.
+DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a,
+                                   double half_chord_guess);
+
 /// The contact branch's slopes at one of its states: zero where a control folds (fixed grips:
 /// dd/da, fixed load: dF/da), for a fold search to root.
 struct DugdaleSlopes {

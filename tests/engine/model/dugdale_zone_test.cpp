@@ -156,6 +156,32 @@ TEST(DugdaleZone, ACurveFromNeighboursIsTheCurveOfIndependentStates) {
   }
 }
 
+// A state solved from a guess of its half-chord is the state from the small-t cubic: near
+// guesses (1e-6 off, a root search's neighbour) and far ones (half, twice) alike, to the same
+// 1e-13 of the force's terms as a curve from neighbours, for the same reason.
+TEST(DugdaleZone, AStateFromAGuessIsTheIndependentState) {
+  const SphereProfile sphere(0.01);
+  const PowerLawProfile power(3e3, 2.5);
+  const DugdaleLaw law{
+      .adhesive_stress = 1.5e4, .work_of_adhesion = 0.05, .effective_modulus = 1e6};
+  for (const Profile* profile :
+       {static_cast<const Profile*>(&sphere), static_cast<const Profile*>(&power)}) {
+    for (const double a : {1e-5, 1e-4, 5e-4}) {
+      const DugdaleState alone = dugdale_contact_state(*profile, law, a);
+      const double half_chord = alone.cohesive_radius * std::sin(alone.angle);
+      const double terms =
+          1e6 * profile->nonadhesive_force_per_modulus(a) +
+          2.0 * law.adhesive_stress * alone.cohesive_radius * alone.cohesive_radius * alone.angle;
+      for (const double factor : {1.0 - 1e-6, 1.0 + 1e-6, 0.5, 2.0}) {
+        SCOPED_TRACE(testing::Message() << "a " << a << " guess " << factor);
+        const DugdaleState guessed = dugdale_contact_state(*profile, law, a, factor * half_chord);
+        EXPECT_NEAR(guessed.cohesive_radius, alone.cohesive_radius, 1e-13 * alone.cohesive_radius);
+        EXPECT_NEAR(guessed.normal_force, alone.normal_force, 1e-13 * terms);
+      }
+    }
+  }
+}
+
 // The branch's slopes dd/da and dF/da by implicit differentiation against a fourth-order central
 // difference of the states, step 1e-3 a: its truncation (1e-3)^4 of the scale, its rounding
 // about 1e-16/1e-3 of the force's terms over a. Tolerance 1e-9 of the terms over a (dF/da, dd/da
