@@ -1,15 +1,19 @@
 // Google Benchmark: the Maugis-Dugdale zone per profile: one contact state, the fixed-load
 // pull-off search from a glued radius, and a 1000-point force curve down to the closing point
-// (independent states, and each from its neighbour's zone).
+// (independent states, and each from its neighbour's zone); the shorthand's path: its first fold
+// under each control, its most tensile state and its work up to the fold (a scene run's parts).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "controllers/controller.hpp"
+#include "engine/continuum/dugdale_path.hpp"
 #include "engine/continuum/dugdale_pull_off.hpp"
 #include "engine/model/dugdale_zone.hpp"
 #include "profiles/cone_profile.hpp"
@@ -107,6 +111,49 @@ void continued_force_curve(benchmark::State& state, const std::string& name) {
   state.counters["points"] = kCurvePoints;
 }
 
+/// The path from a preload pressed to the glued radius's own depth (a_p = a_g).
+mdrsim::DugdalePath path_of(const mdrsim::Profile& profile) {
+  return {profile, kLaw, kGluedRadius,
+          mdrsim::dugdale_contact_state(profile, kLaw, kGluedRadius).indentation};
+}
+
+/// The machine's control: fixed load, fixed grips, or a 1 N/m cantilever.
+mdrsim::AffineConstraint control_of(const std::string& control) {
+  if (control == "fixed-load") return {0.0, 1.0};
+  if (control == "fixed-grips") return {1.0, 0.0};
+  return {1.0, 1.0};
+}
+
+/// The path's first fold (first_fold), as a scene run finds its critical point.
+void path_first_fold(benchmark::State& state, const std::string& name, const std::string& control) {
+  const auto profile = profile_of(name);
+  const mdrsim::DugdalePath path = path_of(*profile);
+  const mdrsim::AffineConstraint c = control_of(control);
+  std::optional<mdrsim::DugdaleFold> fold;
+  for (auto _ : state) {
+    fold = mdrsim::first_fold(path, c);
+    benchmark::DoNotOptimize(fold);
+  }
+  state.counters["normal_force"] = fold ? fold->state.normal_force : 0.0;
+  state.counters["contact_radius"] = fold ? fold->state.contact_radius : 0.0;
+}
+
+/// The most tensile state and the work up to the fixed-load fold: the rest of a run's cost.
+void path_peak_and_work(benchmark::State& state, const std::string& name) {
+  const auto profile = profile_of(name);
+  const mdrsim::DugdalePath path = path_of(*profile);
+  const double s_end = mdrsim::first_fold(path, control_of("fixed-load"))->s;
+  double work = 0.0;
+  for (auto _ : state) {
+    const mdrsim::DugdaleFold peak = mdrsim::most_tensile(path, s_end);
+    double error = 0.0;
+    work = mdrsim::path_work(path, 0.0, s_end, error);
+    benchmark::DoNotOptimize(peak);
+    benchmark::DoNotOptimize(work);
+  }
+  state.counters["work"] = work;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -120,6 +167,14 @@ int main(int argc, char** argv) {
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("dugdale_force_curve_1000_continued/" + name).c_str(),
                                  continued_force_curve, name)
+        ->Unit(benchmark::kMicrosecond);
+    for (const std::string control : {"fixed-load", "fixed-grips", "compliant"}) {
+      benchmark::RegisterBenchmark(("dugdale_path_first_fold/" + name + "/" + control).c_str(),
+                                   path_first_fold, name, control)
+          ->Unit(benchmark::kMicrosecond);
+    }
+    benchmark::RegisterBenchmark(("dugdale_path_peak_and_work/" + name).c_str(), path_peak_and_work,
+                                 name)
         ->Unit(benchmark::kMicrosecond);
   }
   benchmark::Initialize(&argc, argv);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/base/bracketed_root.hpp"
+#include "engine/continuum/dugdale_branch_walk.hpp"
 
 namespace mdrsim {
 namespace {
@@ -285,72 +286,190 @@ std::optional<DugdaleFold> no_contact_fold(const DugdalePath& path, const Affine
 
 }  // namespace
 
-std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConstraint& control) {
-  const auto value = [&](const DugdaleState& st) {
+namespace {
+
+/// The contact branch's samples for the fold scan: above a_g (a linear in s) and below it down
+/// to a_t (a quadratic in s, as the path runs), then in the zone's angle up to 2^-8 of the
+/// way from the closing point (its halvings, where the DMT side's folds sit).
+constexpr int kFoldAboveGlued = 8;
+constexpr int kFoldBranch = 16;
+constexpr int kFoldAngle = 16;
+constexpr int kFoldAngleHalvings = 4;
+
+/// dv/da along the contact branch: positive while v falls with a, zero at a fold.
+double control_slope(const AffineConstraint& control, const DugdaleSlopes& slopes) {
+  return control.displacement_coefficient * slopes.indentation +
+         control.force_coefficient * slopes.normal_force;
+}
+
+/// The radii from a_p down to a_t, each with its place s on the path.
+struct BranchSample {
+  double radius;
+  double s;
+};
+
+std::vector<BranchSample> branch_samples(const DugdalePath& path) {
+  const double a_p = path.preload_radius(), a_g = path.glued_radius();
+  const double a_t = path.angle_state().contact_radius;
+  std::vector<BranchSample> samples;
+  if (a_p > a_g) {
+    for (int k = 0; k < kFoldAboveGlued; ++k) {
+      const double s = static_cast<double>(k) / kFoldAboveGlued;
+      samples.push_back({a_p - s * (a_p - a_g), s});
+    }
+  }
+  samples.push_back({a_g, 1.0});
+  if (a_g > a_t) {
+    for (int k = kFoldBranch - 1; k >= 0; --k) {
+      const double u = static_cast<double>(k) / kFoldBranch;
+      samples.push_back({a_t + (a_g - a_t) * u * u, 2.0 - u});
+    }
+  }
+  return samples;
+}
+
+/// s on the path of a contact radius a in [a_t, a_p] (phases [0, 1] and [1, 2] inverted).
+double s_of_radius(const DugdalePath& path, double a) {
+  const double a_p = path.preload_radius(), a_g = path.glued_radius();
+  const double a_t = path.angle_state().contact_radius;
+  if (a >= a_g) return a_p > a_g ? std::clamp((a_p - a) / (a_p - a_g), 0.0, 1.0) : 1.0;
+  if (!(a_g > a_t)) return 1.0;
+  return 2.0 - std::sqrt(std::clamp((a - a_t) / (a_g - a_t), 0.0, 1.0));
+}
+
+/// The error of F at a fold located as a root of dv/da between the radii lo and hi: the slope
+/// is good to about eps (1 + g'(a)/((2 sigma_0/E*) t)) of its terms (dugdale_contact_slopes),
+/// which moves its root by that over dv/da's rate (`slope_rate`, over the scan's bracket); F
+/// moves by dF/da times that and the root's bracket.
+double contact_fold_force_error(const Profile& profile, const DugdaleLaw& law,
+                                const AffineConstraint& control, const DugdaleState& state,
+                                double bracket, double slope_rate) {
+  const DugdaleSlopes slopes = dugdale_contact_slopes(profile, law, state);
+  const double a = state.contact_radius, t = state.angle;
+  const double s = state.cohesive_radius * std::sin(t);
+  const double z = law.zone_strain();
+  const double image_slope = std::abs(profile.mdr_image_slope(a));
+  const double chord_slope = std::abs((profile.mdr_image_slope(a) - slopes.indentation) / z);
+  const double terms =
+      std::abs(control.displacement_coefficient) * (image_slope + z * chord_slope) +
+      std::abs(control.force_coefficient) *
+          (2.0 * law.effective_modulus * a * image_slope +
+           4.0 * law.adhesive_stress * (a * t + (a + s * t) * chord_slope));
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double noise = 16.0 * eps * (1.0 + image_slope / (z * t)) * terms;
+  const double place = bracket + (slope_rate > 0.0 ? noise / slope_rate : 0.0);
+  return std::abs(slopes.normal_force) * place + 4.0 * eps * std::abs(state.normal_force);
+}
+
+/// The first fold on the contact branch from a_p down to the closing point (s in [0, 3)).
+std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
+                                               const AffineConstraint& control) {
+  const Profile& profile = path.profile();
+  const DugdaleLaw& law = path.law();
+  const double eps = std::numeric_limits<double>::epsilon();
+  DugdaleBranchWalk walk(profile, law);
+  const auto slope_at_radius = [&](double a) { return control_slope(control, walk.slopes_at(a)); };
+  const std::vector<BranchSample> samples = branch_samples(path);
+  double above = 0.0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const double here = slope_at_radius(samples[k].radius);
+    if (here > 0.0) {
+      above = here;
+      continue;
+    }
+    if (k == 0) {  // v rises from the start: the corner s = 0
+      DugdaleFold fold{.s = 0.0, .state = path.at(0.0), .force_error = 0.0};
+      fold.force_error = 4.0 * eps * std::abs(fold.state.normal_force);
+      return fold;
+    }
+    const double lo = samples[k].radius, hi = samples[k - 1].radius;
+    const RootBracket root = bracket_root(slope_at_radius, lo, hi);
+    const double a = 0.5 * (root.lo + root.hi);
+    DugdaleFold fold{.s = s_of_radius(path, a), .state = walk.at(a), .force_error = 0.0};
+    fold.force_error = contact_fold_force_error(profile, law, control, fold.state,
+                                                root.hi - root.lo, (above - here) / (hi - lo));
+    return fold;
+  }
+  // On in the zone's angle, s from 2 (a_t) towards the closing point.
+  const auto slope_at_s = [&](double s) {
+    return control_slope(control, dugdale_contact_slopes(profile, law, path.at(s)));
+  };
+  double s_above = 2.0;
+  double a_above = path.angle_state().contact_radius;
+  std::vector<double> gaps;
+  for (int k = kFoldAngle - 1; k >= 1; --k) gaps.push_back(static_cast<double>(k) / kFoldAngle);
+  for (int k = 1; k <= kFoldAngleHalvings; ++k) gaps.push_back(std::ldexp(gaps.back(), -1));
+  for (const double gap : gaps) {
+    const double s = DugdalePath::kClosing - gap;
+    const DugdaleState state = path.at(s);
+    const double here = control_slope(control, dugdale_contact_slopes(profile, law, state));
+    if (here > 0.0) {
+      above = here;
+      s_above = s;
+      a_above = state.contact_radius;
+      continue;
+    }
+    const RootBracket root = bracket_root(slope_at_s, s_above, s);
+    const double at = 0.5 * (root.lo + root.hi);
+    DugdaleFold fold{.s = at, .state = path.at(at), .force_error = 0.0};
+    const double bracket =
+        std::abs(path.at(root.lo).contact_radius - path.at(root.hi).contact_radius);
+    fold.force_error =
+        contact_fold_force_error(profile, law, control, fold.state, bracket,
+                                 (above - here) / std::abs(a_above - state.contact_radius));
+    return fold;
+  }
+  return std::nullopt;
+}
+
+/// The first fold from the closing point on (s in [3, 4]): v sampled, Brent about the first
+/// rise, the closing point where that is its corner, else the no-contact branch's root of dv/dc.
+std::optional<DugdaleFold> closing_or_free_fold(const DugdalePath& path,
+                                                const AffineConstraint& control) {
+  const auto value_at = [&](double s) {
+    const DugdaleState st = path.at(s);
     return control.displacement_coefficient * st.indentation +
            control.force_coefficient * st.normal_force;
   };
-  const auto value_at = [&](double s) { return value(path.at(s)); };
-  const std::vector<double> samples = sample_parameters();
+  std::vector<double> samples;
+  for (int k = 0; k <= kFreeSamples; ++k) {
+    samples.push_back(DugdalePath::kClosing + static_cast<double>(k) / kFreeSamples);
+  }
   double before = value_at(samples[0]);
   for (std::size_t k = 1; k < samples.size(); ++k) {
     const double here = value_at(samples[k]);
-    if (here <= before) {  // a phase of one state (a_p = a_g, a_t = a_g) stands still
+    if (here <= before) {
       before = here;
       continue;
     }
     const double lo = samples[k >= 2 ? k - 2 : 0];
     const double hi = samples[k];
     double s = brent_minimum(value_at, lo, hi);
-    // The path's corners: its start and the closing point (a = a_g, s = 1, is no corner).
-    for (const double corner : {0.0, DugdalePath::kClosing}) {
-      if (corner >= lo && corner <= hi && std::abs(s - corner) < kCornerWidth) s = corner;
-    }
-    DugdaleFold fold{.s = s, .state = path.at(s), .force_error = 0.0};
-    if (s == 0.0 || s == DugdalePath::kClosing) {
+    if (lo == DugdalePath::kClosing && s - lo < kCornerWidth) s = DugdalePath::kClosing;
+    if (s == DugdalePath::kClosing) {
+      DugdaleFold fold{.s = s, .state = path.at(s), .force_error = 0.0};
       fold.force_error =
           4.0 * std::numeric_limits<double>::epsilon() * std::abs(fold.state.normal_force);
       return fold;
     }
-    const int phase = phase_of(s);
-    if (phase == kFreePhase) {
-      if (auto zone_fold = no_contact_fold(path, control, lo, hi)) return *zone_fold;
-    }
-    // A smooth fold: the root of v'(s) near Brent's place, whose value Brent only has to
-    // sqrt(eps); the roots with steps h and 2h bound the force's error.
-    const double phase_lo = static_cast<double>(phase);
-    const auto in_phase = [&](double x) {
-      return std::clamp(x, phase_lo + 1e-12, phase_lo + 1.0 - 1e-12);
-    };
-    const auto root_with = [&](double h) -> std::optional<double> {
-      const auto dv = [&](double x) { return slope(value_at, x, h); };
-      const double w = 1e-5;
-      const double a = in_phase(s - w);
-      const double b = in_phase(s + w);
-      if (phase_of(a - 2.0 * h) != phase || phase_of(b + 2.0 * h) != phase) return std::nullopt;
-      if (!(dv(a) < 0.0 && dv(b) > 0.0)) return std::nullopt;
-      return bracketed_root(dv, a, b);
-    };
-    const double step = step_of(phase);
-    const auto fine = root_with(step);
-    const auto coarse = root_with(2.0 * step);
-    if (fine && coarse) {
-      const DugdaleState at_coarse = path.at(*coarse);
-      fold.s = *fine;
-      fold.state = path.at(*fine);
-      // The rule's error falls as h^4: the fine root's is a fifteenth of the two roots' gap.
-      fold.force_error = std::abs(fold.state.normal_force - at_coarse.normal_force) / 15.0;
-    } else {
-      // Brent's place to sqrt(eps) of the bracket: the force moves by F' times that.
-      const double d = std::sqrt(std::numeric_limits<double>::epsilon()) * (hi - lo);
-      fold.force_error = std::max(std::abs(path.at(s + d).normal_force - fold.state.normal_force),
-                                  std::abs(path.at(s - d).normal_force - fold.state.normal_force));
-    }
-    fold.force_error +=
+    if (auto zone_fold = no_contact_fold(path, control, lo, hi)) return *zone_fold;
+    // Brent's place to sqrt(eps) of the bracket: the force moves by F' times that.
+    DugdaleFold fold{.s = s, .state = path.at(s), .force_error = 0.0};
+    const double d = std::sqrt(std::numeric_limits<double>::epsilon()) * (hi - lo);
+    fold.force_error =
+        std::max(std::abs(path.at(s + d).normal_force - fold.state.normal_force),
+                 std::abs(path.at(s - d).normal_force - fold.state.normal_force)) +
         4.0 * std::numeric_limits<double>::epsilon() * std::abs(fold.state.normal_force);
     return fold;
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConstraint& control) {
+  if (auto fold = contact_branch_fold(path, control)) return fold;
+  return closing_or_free_fold(path, control);
 }
 
 DugdaleFold most_tensile(const DugdalePath& path, double s_end) {

@@ -33,6 +33,9 @@ class DugdalePath {
   double depth_slope(double s) const;
 
   double preload_radius() const { return preload_radius_; }  ///< a_p [m]
+  double glued_radius() const { return glued_radius_; }      ///< a_g [m]
+  /// The branch's state at a_t, where phase [1, 2] ends and [2, 3] begins.
+  const DugdaleState& angle_state() const { return angle_state_; }
   const Profile& profile() const { return profile_; }
   const DugdaleLaw& law() const { return law_; }
   double closing_radius() const { return closing_radius_; }  ///< c0 [m]
@@ -66,8 +69,10 @@ struct DugdaleFold {
 };
 
 /// The first fold of v going along the path from s = 0, or nullopt where v falls to the end
-/// (no instability). A fold on a smooth stretch is a root of v'(s), found by Brent then
-/// refined on the difference quotient; a fold at a phase's end (a corner) is that end exactly.
+/// (no instability). On the contact branch ([0, 3)) a fold is a root of dv/da = a_u dd/da +
+/// a_F dF/da (dugdale_contact_slopes) after a scan of its sign, in a where the path runs in a
+/// and in s where it runs in the zone's angle; on the no-contact branch a root of dv/dc after a
+/// scan of v; a fold at a corner (the start, the closing point) is that corner exactly.
 std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConstraint& control);
 
 /// The most tensile state on [0, s_end] (Brent about the most tensile sample), with its error.

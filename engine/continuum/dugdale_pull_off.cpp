@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/base/bracketed_root.hpp"
+#include "engine/continuum/dugdale_branch_walk.hpp"
 
 namespace mdrsim {
 namespace {
@@ -34,30 +35,13 @@ std::vector<double> sample_radii(double glued_radius) {
 /// `slope(DugdaleSlopes)`: the first sample where that slope stops being positive, then its
 /// root (dugdale_contact_slopes, exact to rounding) by TOMS 748 between that sample and the one
 /// above; a_g itself where it is not positive there; nullopt where it stays positive to the
-/// smallest sample. The samples are taken one at a time: most folds lie within the first few.
-double half_chord(const DugdaleState& state) {
-  return state.cohesive_radius * std::sin(state.angle);
-}
-
+/// smallest sample. The samples are taken one at a time (most folds lie within the first few),
+/// each state from its neighbours' zones.
 template <class Slope>
 std::optional<double> first_fold_going_down(const Profile& profile, const DugdaleLaw& law,
                                             double glued_radius, Slope slope) {
-  // Each state starts from the line through the zones of the last two: along the scan a
-  // neighbour's, in the root search the bracket's latest ends.
-  DugdaleState before, last;
-  int solved = 0;
-  const auto slope_at = [&](double a) {
-    double guess = 0.0;
-    if (solved >= 2 && last.contact_radius != before.contact_radius) {
-      const double s_last = half_chord(last), s_before = half_chord(before);
-      guess = s_last + (s_last - s_before) * (a - last.contact_radius) /
-                           (last.contact_radius - before.contact_radius);
-    }
-    before = last;
-    last = dugdale_contact_state(profile, law, a, guess);
-    ++solved;
-    return slope(dugdale_contact_slopes(profile, law, last));
-  };
+  DugdaleBranchWalk walk(profile, law);
+  const auto slope_at = [&](double a) { return slope(walk.slopes_at(a)); };
   const std::vector<double> radii = sample_radii(glued_radius);
   for (std::size_t k = 0; k < radii.size(); ++k) {
     if (slope_at(radii[k]) > 0.0) continue;
