@@ -143,7 +143,9 @@ GapPanel gap_panel(const GapIntegrand& f, double lo, double hi) {
 void add_gap_panels(const GapIntegrand& f, double lo, double hi, int depth, double tolerance,
                     GapPanel& total) {
   const GapPanel p = gap_panel(f, lo, hi);
-  if (depth == 0 || p.converged(tolerance)) {
+  // A panel that is not finite (a sphere's image diverges at its radius) stays so when halved:
+  // it ends the sum at once, and the zone's solve reads the excess as lying past the root.
+  if (depth == 0 || p.converged(tolerance) || !std::isfinite(p.gap) || !std::isfinite(p.slope)) {
     total.gap += p.gap;
     total.slope += p.slope;
     return;
