@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "engine/base/bracketed_root.hpp"
@@ -136,11 +137,18 @@ double radius_at_preload_depth(const Profile& profile, const DugdaleLaw& law, do
   const auto excess = [&](double a) {
     return dugdale_contact_state(profile, law, a).indentation - preload_depth;
   };
+  // Widened by half its radius, or halfway to a body's edge, where the contact state throws
+  // once its zone reaches past the edge.
+  const double outer = profile.outer_radius();
+  const auto wider = [&](double a) { return std::min(1.5 * a, 0.5 * (a + outer)); };
   double lo = glued_radius;
-  double hi = 1.5 * glued_radius;
+  double hi = wider(glued_radius);
   while (excess(hi) < 0.0) {
+    if (!(hi < outer * (1.0 - 1e-12))) {
+      throw std::domain_error("the cohesive zone reaches beyond the profile's outer radius");
+    }
     lo = hi;
-    hi *= 1.5;
+    hi = wider(hi);
   }
   return bracket_root(excess, lo, hi, std::numeric_limits<double>::digits - 2).hi;
 }

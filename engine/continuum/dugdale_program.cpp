@@ -146,10 +146,12 @@ class Equilibria {
   DugdalePath near_;    ///< the contact branch from near_radius_ to the closing point
 };
 
-/// Where a march along the curve stopped: at the stage's control, at a fold of it, or nowhere
-/// (a tensile fixed load past the separated end: nothing holds the indenter).
+/// Where a march along the curve stopped: at the stage's control, at a fold of it, nowhere
+/// (a tensile fixed load past the separated end: nothing holds the indenter), or at the last
+/// state before the contact branch leaves the body (its zone past a sphere's radius) or grows
+/// without bound.
 struct Reach {
-  enum class Kind { reached, fold, flies } kind;
+  enum class Kind { reached, fold, flies, edge } kind;
   double u = 0.0;
   double force_error = 0.0;  ///< a fold's: a bound on the error of its normal force [N]
 };
@@ -193,11 +195,15 @@ class ControlWalk {
         v_prev = value_at(0.0);
         continue;
       }
-      if (dir > 0 && prev >= kLast) {
-        throw std::runtime_error("dugdale program: the contact grows without bound");
-      }
+      if (dir > 0 && prev >= kLast) return {Reach::Kind::edge, prev};
       const double p = Equilibria::next(prev, dir);
-      const double vp = value_at(p);
+      double vp = 0.0;
+      try {
+        vp = value_at(p);
+      } catch (const std::domain_error&) {
+        if (dir < 0) throw;
+        return {Reach::Kind::edge, prev};
+      }
       if (dir < 0 && p <= 0.0 && !std::isfinite(target) && vp <= v_prev) {
         return {Reach::Kind::reached, 0.0};  // the zone shrank to nothing without a fold
       }
@@ -375,6 +381,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
   double work_scale = 0.0;  // int |F dd| over the path [J]
   double critical_error = 0.0;
   double largest_radius = 0.0;
+  bool at_edge = false;
   std::vector<Piece> pieces;
   std::vector<std::string> not_run;
   std::vector<Event> stage_ends;
@@ -384,7 +391,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
     result.critical_stage = stage.name;
   };
   for (const Stage& stage : scene.program->stages) {
-    if (flying) {
+    if (flying || at_edge) {
       not_run.push_back(stage.name);
       continue;
     }
@@ -399,7 +406,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
     }
     if (stage.until_separation) target = -std::numeric_limits<double>::infinity();
     const int dir = target > v0 ? 1 : (target < v0 ? -1 : 0);
-    while (dir != 0 && !flying && !(stage.until_separation && u <= 0.0)) {
+    while (dir != 0 && !flying && !at_edge && !(stage.until_separation && u <= 0.0)) {
       const Reach r = walk.march(u, dir, target);
       if (r.kind == Reach::Kind::flies) {
         // A tension held with no zone: nothing holds the indenter.
@@ -414,6 +421,13 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
       u = r.u;
       largest_radius = std::max(largest_radius, eq.at(u).contact_radius);
       if (r.kind == Reach::Kind::reached) break;
+      if (r.kind == Reach::Kind::edge) {
+        at_edge = true;
+        result.status = RunStatus::step_limit;
+        result.stop_reason = StopReason::outgrew_row;
+        result.critical_stage = stage.name;
+        break;
+      }
 
       const DugdaleState from = eq.at(u);
       const std::optional<double> landing = walk.land(u, dir);
@@ -451,7 +465,19 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
     stage_ends.push_back(e);
   }
   for (const Event& e : stage_ends) observers.emit(e);
-  if (!not_run.empty()) {
+  if (at_edge) {
+    const double outer = scene.profile->outer_radius();
+    result.warnings.push_back(fmt::format(
+        "stage '{}': the contact grows to a = {:.6g} m and no equilibrium lies beyond it "
+        "before the stage's control is reached ({}): the program stops here{}",
+        result.critical_stage, largest_radius,
+        std::isfinite(outer) ? fmt::format("its cohesive zone reaches the profile's outer radius "
+                                           "{:.6g} m",
+                                           outer)
+                             : std::string("the contact grows without bound"),
+        not_run.empty() ? std::string()
+                        : fmt::format("; stages not run: {}", quoted_names(not_run))));
+  } else if (!not_run.empty()) {
     result.warnings.push_back(fmt::format(
         "stage '{}': the normal fixed load lost what held it and the indenter separates: the "
         "program ends there; stages not run: {}",

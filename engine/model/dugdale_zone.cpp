@@ -70,7 +70,12 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
   // radius) is read only when a step would leave the bracket before a point past the root is
   // known (a sphere's image diverges there).
   const double outer = profile.outer_radius();
-  const double widest = std::isfinite(outer) ? std::sqrt(std::max(0.0, (outer - a) * (outer + a)))
+  // A contact at or past the body's edge has no zone outside it (a sphere's image there is
+  // not the body's): refused before the opening is read.
+  if (!(a < outer)) {
+    throw std::domain_error("the cohesive zone reaches beyond the profile's outer radius");
+  }
+  const double widest = std::isfinite(outer) ? std::sqrt((outer - a) * (outer + a))
                                              : std::numeric_limits<double>::infinity();
   double lo = 0.0, hi = widest;
   bool hi_known = false;

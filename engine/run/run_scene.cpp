@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "engine/accuracy/adaptive_resolution.hpp"
 #include "engine/accuracy/dugdale_rows.hpp"
@@ -120,14 +121,31 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (!status_resolved(result)) result.warnings.push_back(cannot_tell_status(result));
 }
 
+/// A Dugdale shorthand whose zone would reach past a body's edge from the preload on: refused
+/// at the preload, which only the run's first state (the contact branch at the preload depth)
+/// finds too wide.
+template <class Run>
+RunResult refusing_zone_past_edge(const Scene& scene, const Run& run) {
+  try {
+    return run();
+  } catch (const std::domain_error&) {
+    throw SceneError(scene.preload_at +
+                     fmt::format("with material.adhesive_stress the contact and its cohesive "
+                                 "zone reach beyond the profile's outer radius ({} m) from this "
+                                 "preload on; give a smaller preload",
+                                 scene.profile->outer_radius()));
+  }
+}
+
 /// The continuum route: one answer to rtol from the branch. A program it finds it cannot follow
 /// as it runs is refused at the key that chose the route (SPEC "Continuum route").
 RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
                            std::int64_t samples) {
   const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
   if (scene.material.finite_range()) {
-    return scene.program ? run_dugdale_program(scene, rtol, samples, observers)
-                         : run_dugdale_continuum(scene, rtol, samples, observers);
+    if (scene.program) return run_dugdale_program(scene, rtol, samples, observers);
+    return refusing_zone_past_edge(
+        scene, [&] { return run_dugdale_continuum(scene, rtol, samples, observers); });
   }
   if (!scene.program) return run_continuum(scene, rtol, samples, observers);
   ContinuumProgramRun run = run_continuum_program(scene, rtol, samples, observers);
@@ -162,7 +180,9 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
 }
 
 RunResult run_on_pull_off_row(const Scene& scene, const ObserverList& observers) {
-  if (scene.material.finite_range()) return run_dugdale_rows(scene, observers);
+  if (scene.material.finite_range()) {
+    return refusing_zone_past_edge(scene, [&] { return run_dugdale_rows(scene, observers); });
+  }
   switch (scene.plan.driver) {
     case RouteDriver::rtol: {
       std::vector<RunResult> glued_rows;

@@ -101,6 +101,9 @@ struct Scene {
   /// "file:line:col: profile.type: ", for a refusal of the shape that only the run finds (a
   /// program's rows too coarse for a ripple: their radius is known once its pilot has run).
   std::string profile_at;
+  /// "file:line:col: loading.preload: ", for a preload whose Dugdale zone only the run finds
+  /// reaching past a body's edge.
+  std::string preload_at;
   double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
   double preload_depth = 0.0;  ///< indentation at the preload [m]
   double preload_force = 0.0;  ///< normal force at the preload, without adhesion [N]

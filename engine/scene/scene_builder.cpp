@@ -238,6 +238,7 @@ void check_dimensionless_tangential(TomlReader& t, const Scene& scene) {
 /// The paper's one path: the preload, the tangential load held during the pull-off, and the
 /// pull-off's control.
 void read_shorthand(TomlReader& loading, const ControllerRegistry& controllers, Scene& scene) {
+  scene.preload_at = loading.message_at("preload", "");
   TomlReader preload = loading.table("preload");
   resolve_preload(preload, scene);
   if (auto tangential = loading.optional_table("tangential")) {
