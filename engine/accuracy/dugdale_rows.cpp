@@ -156,7 +156,13 @@ RunResult run_dugdale_rows(const Scene& scene, const ObserverList& observers) {
     case RouteDriver::one_row:
       return row(n, observers);
     case RouteDriver::richardson: {
-      std::vector<RunResult> rows{row(n / 2, {}), row(n, {}), row(2 * n, observers)};
+      // A row stopped at solver.max_events has no critical point to extrapolate: the first
+      // such is the run's answer, as the JKR rows' pilot is.
+      std::vector<RunResult> rows;
+      for (const std::int64_t springs : {n / 2, n, 2 * n}) {
+        rows.push_back(row(springs, springs == 2 * n ? observers : ObserverList{}));
+        if (rows.back().status == RunStatus::step_limit) return rows.back();
+      }
       RunResult result = combine_rows(rows, Accuracy::Route::richardson, std::nullopt).result;
       result.springs = 2 * n;
       return result;
@@ -171,6 +177,13 @@ RunResult run_dugdale_rows(const Scene& scene, const ObserverList& observers) {
   std::vector<RunResult> rows{row(kFirstRow, {})};
   Outcome outcome{rows.back(), false};
   for (;;) {
+    if (rows.back().status == RunStatus::step_limit) {
+      if (observers.wants(EventKind::spring_detached) ||
+          observers.wants(EventKind::preload_reached)) {
+        row(rows.back().springs, observers);
+      }
+      return rows.back();
+    }
     if (rows.size() >= 4) {
       // The route predicted to meet rtol with fewer springs, as for the JKR rows.
       const Target target =

@@ -217,6 +217,13 @@ DugdaleRowResult run_dugdale_row(const Profile& profile, const DugdaleLaw& law,
       if (at.state.normal_force < lowest) result.peak = at.state;
       break;
     }
+    if (result.counts.events >= spec.max_events) {
+      if (at.state.normal_force < lowest) result.peak = at.state;
+      result.critical = at.state;
+      result.instability = false;
+      result.event_limit = true;
+      return result;
+    }
     images.add(-foundation.image(at.state.springs_in_contact));
     const Held inner = let_go(at.state.springs_in_contact - 1);
     if (at.state.normal_force < lowest) {

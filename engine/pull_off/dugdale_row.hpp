@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "controllers/controller.hpp"
@@ -50,6 +51,8 @@ struct DugdaleRowSpec {
   /// compliant (1, 1/k)).
   AffineConstraint normal{1.0, 0.0};
   bool record_path = false;  ///< keep every let-go's equilibrium and the zone's branch
+  /// solver.max_events: the row stops at this many let-gos with its contact still in place.
+  std::int64_t max_events = std::numeric_limits<std::int64_t>::max();
 };
 
 struct DugdaleRowCounts {
@@ -63,6 +66,9 @@ struct DugdaleRowResult {
   /// folds on the contact branch; with no jump, the state where the zone shrinks to nothing.
   DugdaleRowState critical;
   bool instability = true;
+  /// The row met spec.max_events before its contact was lost: `critical` is the last let-go's
+  /// equilibrium and no jump is known.
+  bool event_limit = false;
   /// The most tensile force on the path up to the critical point, between springs likewise.
   DugdaleRowState peak;
   /// The first let-go's equilibrium (n = N): where the path starts.

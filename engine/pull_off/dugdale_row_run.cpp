@@ -2,6 +2,8 @@
 // pull-off stages with their work, the jump and the let-go events.
 #include "engine/pull_off/dugdale_row_run.hpp"
 
+#include <fmt/format.h>
+
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include <cmath>
@@ -79,7 +81,8 @@ RunResult run_dugdale_row_scene(const Scene& scene, std::int64_t springs, double
                                                {.springs = springs,
                                                 .glued_radius = preload_radius,
                                                 .normal = normal,
-                                                .record_path = trajectory});
+                                                .record_path = trajectory,
+                                                .max_events = scene.solver.max_events});
 
   RunResult result;
   result.springs = springs;
@@ -125,7 +128,14 @@ RunResult run_dugdale_row_scene(const Scene& scene, std::int64_t springs, double
   StageRecord pull_off{"pull-off", end, {}};
   pull_off.work.normal = work;
   pull_off.refined_end = end;
-  if (row.instability) {
+  if (row.event_limit) {
+    // As the JKR row: no critical point, the path up to the last let-go.
+    stop_at_limit(result, StopReason::max_events);
+    result.warnings.push_back(fmt::format(
+        "the row reached solver.max_events = {} before the contact was lost: there is no "
+        "critical point",
+        scene.solver.max_events));
+  } else if (row.instability) {
     result.status = RunStatus::instability;
     result.critical = end;
     result.refined_critical = end;

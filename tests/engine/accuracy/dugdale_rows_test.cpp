@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "engine/accuracy/row_sequence.hpp"
+#include "engine/events/event_recorder.hpp"
 #include "engine/output/trajectory_csv.hpp"
 #include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
@@ -229,6 +230,52 @@ TEST(DugdaleRows, ResultsHaveTheContinuumsShape) {
             "tangential_displacement,tangential_force,springs_in_contact,cohesive_radius");
   EXPECT_NE(text.find("\npreload,preload,0,"), std::string::npos);
   EXPECT_NE(text.find("\npull-off,detached,0,"), std::string::npos);
+}
+
+// solver.max_events as on the JKR row: the run stops at that many let-gos with step-limit,
+// the limit named, no critical point, and the pull-off stage ending at the last let-go, which
+// is the unlimited row's own state there (the same let-go, to the bit); the rtol and
+// Richardson drivers return that row as the JKR rows return their pilot.
+TEST(DugdaleRows, MaxEventsStopsTheRowAsOnTheJkrRow) {
+  const Case c = parabola(1.0, true);
+  const std::string limit = "[solver]\nmethod = \"event\"\nmax_events = 10\n";
+  EventRecorder recorder;
+  ObserverList observers;
+  observers.add(recorder);
+  const RunResult free =
+      run(c, "[discretization]\nsprings = 200\n[solver]\nmethod = \"event\"\n", observers);
+  ASSERT_GT(free.counts.events, 10);
+  const Event* tenth = nullptr;  // the unlimited row's tenth let-go
+  for (const Event& e : recorder.events()) {
+    if (e.kind == EventKind::spring_detached && e.state.springs_in_contact == 200 - 10 + 1) {
+      tenth = &e;
+    }
+  }
+  ASSERT_NE(tenth, nullptr);
+  const RunResult stopped = run(c, "[discretization]\nsprings = 200\n" + limit);
+  EXPECT_EQ(stopped.status, RunStatus::step_limit);
+  ASSERT_TRUE(stopped.stop_reason.has_value());
+  EXPECT_EQ(*stopped.stop_reason, StopReason::max_events);
+  EXPECT_EQ(stopped.counts.events, 10);
+  EXPECT_FALSE(stopped.critical.has_value());
+  EXPECT_TRUE(stopped.jumps.empty());
+  ASSERT_EQ(stopped.stages.size(), 3U);
+  const ContactSnapshot& end = stopped.stages[2].end;
+  EXPECT_EQ(end.springs_in_contact, 200 - 10 + 1);
+  EXPECT_EQ(end.normal_force, tenth->state.normal_force);
+  EXPECT_EQ(end.indentation, tenth->state.indentation);
+  EXPECT_EQ(end.cohesive_radius, tenth->state.cohesive_radius);
+  ASSERT_FALSE(stopped.warnings.empty());
+  EXPECT_EQ(stopped.warnings.back(),
+            "the row reached solver.max_events = 10 before the contact was lost: there is no "
+            "critical point");
+  for (const char* driver : {"rtol = 1e-6\n", "springs = 200\nextrapolation = \"richardson\"\n"}) {
+    SCOPED_TRACE(driver);
+    const RunResult r = run(c, std::string("[discretization]\n") + driver + limit);
+    EXPECT_EQ(r.status, RunStatus::step_limit);
+    EXPECT_EQ(r.counts.events, 10);
+    EXPECT_FALSE(r.critical.has_value());
+  }
 }
 
 }  // namespace
