@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "engine/accuracy/adaptive_resolution.hpp"
 #include "engine/accuracy/dugdale_rows.hpp"
@@ -121,19 +122,20 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (!status_resolved(result)) result.warnings.push_back(cannot_tell_status(result));
 }
 
-/// A Dugdale shorthand whose zone would reach past a body's edge from the preload on: refused
-/// at the preload, which only the run's first state (the contact branch at the preload depth)
-/// finds too wide.
+/// A Dugdale run whose zone would reach past a body's edge (a sphere's radius, a table's last
+/// point), which only the run finds: refused in one line at `at`, the shorthand's preload (its
+/// first state, the contact branch at the preload depth, is too wide) or a program's profile.
 template <class Run>
-RunResult refusing_zone_past_edge(const Scene& scene, const Run& run) {
+RunResult refusing_zone_past_edge(const Scene& scene, const std::string& at, const Run& run) {
   try {
     return run();
   } catch (const std::domain_error&) {
-    throw SceneError(scene.preload_at +
-                     fmt::format("with material.adhesive_stress the contact and its cohesive "
-                                 "zone reach beyond the profile's outer radius ({} m) from this "
-                                 "preload on; give a smaller preload",
-                                 scene.profile->outer_radius()));
+    throw SceneError(at + fmt::format("with material.adhesive_stress the contact and its cohesive "
+                                      "zone reach beyond the profile's outer radius ({} m) {}",
+                                      scene.profile->outer_radius(),
+                                      scene.program ? "on the program's path"
+                                                    : "from this preload on; give a smaller "
+                                                      "preload"));
   }
 }
 
@@ -143,9 +145,14 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
                            std::int64_t samples) {
   const double rtol = scene.discretization.rtol.value_or(kContinuumRtol);
   if (scene.material.finite_range()) {
-    if (scene.program) return run_dugdale_program(scene, rtol, samples, observers);
-    return refusing_zone_past_edge(
-        scene, [&] { return run_dugdale_continuum(scene, rtol, samples, observers); });
+    if (scene.program) {
+      return refusing_zone_past_edge(scene, scene.profile_at, [&] {
+        return run_dugdale_program(scene, rtol, samples, observers);
+      });
+    }
+    return refusing_zone_past_edge(scene, scene.preload_at, [&] {
+      return run_dugdale_continuum(scene, rtol, samples, observers);
+    });
   }
   if (!scene.program) return run_continuum(scene, rtol, samples, observers);
   ContinuumProgramRun run = run_continuum_program(scene, rtol, samples, observers);
@@ -181,7 +188,8 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
 
 RunResult run_on_pull_off_row(const Scene& scene, const ObserverList& observers) {
   if (scene.material.finite_range()) {
-    return refusing_zone_past_edge(scene, [&] { return run_dugdale_rows(scene, observers); });
+    return refusing_zone_past_edge(scene, scene.preload_at,
+                                   [&] { return run_dugdale_rows(scene, observers); });
   }
   switch (scene.plan.driver) {
     case RouteDriver::rtol: {

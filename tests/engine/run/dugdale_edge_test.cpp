@@ -1,6 +1,7 @@
-// A Maugis-Dugdale sphere whose contact and cohesive zone would reach past its radius: the
-// shorthand refused at its preload in one line, on both routes; a program ends with step-limit
-// and a warning at the last equilibrium inside the body.
+// A Maugis-Dugdale contact whose zone would reach past the body (a sphere's radius, a table's end):
+// the shorthand refused at its preload in one line, on both routes; a program ends with step-limit
+// and a warning at the last equilibrium inside the body, or is refused at its profile where
+// no path exists.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -81,6 +82,22 @@ TEST(DugdaleEdge, ProgramPressedPastTheRadiusStopsWithAWarning) {
   EXPECT_NE(r.warnings.back().find("the program stops here; stages not run: 'retract'"),
             std::string::npos)
       << r.warnings.back();
+}
+
+// A table of the parabola R = 20 nm that ends at 12 nm, under sigma_0 = 10 MPa (h0 = 5 nm):
+// the zone's closing radius alone lies past the table's end, so that no program's path exists;
+// refused at the profile in one line.
+TEST(DugdaleEdge, ProgramOnATableEndingInsideTheZoneIsRefusedAtTheProfile) {
+  const std::string text =
+      "[material]\neffective_modulus = 1.0e9\nwork_of_adhesion = 0.05\nadhesive_stress = 1.0e7\n"
+      "[profile]\ntype = \"tabulated\"\nr = [0.0, 0.5e-8, 1.0e-8, 1.1e-8, 1.2e-8]\n"
+      "f = [0.0, 6.25e-10, 2.5e-9, 3.025e-9, 3.6e-9]\n"
+      "[[loading.stage]]\nname = \"approach\"\nnormal = { control = \"fixed-grips\", to = 3.0e-9 "
+      "}\n";
+  EXPECT_THROW_MSG(run_text(text), SceneError,
+                   "md.toml:6:8: profile.type: with material.adhesive_stress the contact and its "
+                   "cohesive zone reach beyond the profile's outer radius (1.2e-08 m) on the "
+                   "program's path");
 }
 
 }  // namespace
