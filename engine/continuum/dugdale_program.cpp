@@ -225,8 +225,8 @@ class ControlWalk {
 
   /// The equilibrium a jump from the fold at u_f lands on: the first beyond it, the way of
   /// dir, where the control returns to its value at the fold; none under a fixed load past the
-  /// separated end.
-  std::optional<double> land(double u_f, int dir) const {
+  /// separated end; `edge` where the contact branch leaves the body before it.
+  std::optional<double> land(double u_f, int dir, bool& edge) const {
     const double v_f = value_at(u_f);
     double prev = u_f;
     bool beyond = false;  // the control has left v_f the wrong way (the fold's other side)
@@ -235,11 +235,16 @@ class ControlWalk {
         if (!holds_depth()) return std::nullopt;
         return std::min(prev, eq_.separated_at(v_f / n_.displacement_coefficient));
       }
-      if (dir > 0 && prev >= kLast) {
-        throw std::runtime_error("dugdale program: no equilibrium beyond the fold");
-      }
       const double p = Equilibria::next(prev, dir);
-      const double vp = value_at(p);
+      double vp = 0.0;
+      try {
+        if (dir > 0 && prev >= kLast) throw std::domain_error("the contact grows without bound");
+        vp = value_at(p);
+      } catch (const std::domain_error&) {
+        if (dir < 0) throw;
+        edge = true;
+        return std::nullopt;
+      }
       if (beyond && dir * (vp - v_f) >= 0.0) return crossing(prev, p, v_f);
       if (dir * (vp - v_f) < 0.0) beyond = true;
       prev = p;
@@ -430,7 +435,15 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
       }
 
       const DugdaleState from = eq.at(u);
-      const std::optional<double> landing = walk.land(u, dir);
+      bool no_landing_inside = false;
+      const std::optional<double> landing = walk.land(u, dir, no_landing_inside);
+      if (no_landing_inside) {
+        at_edge = true;
+        result.status = RunStatus::step_limit;
+        result.stop_reason = StopReason::outgrew_row;
+        result.critical_stage = stage.name;
+        break;
+      }
       JumpRecord jump{
           .stage = stage.name, .inward = dir > 0, .critical = snapshot_of(from, control)};
       if (dir < 0 && result.status == RunStatus::completed) {
