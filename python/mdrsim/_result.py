@@ -242,7 +242,8 @@ class Result:
         """One row per event, as `mdrsim run --trajectory` writes them: a dict of NumPy
         arrays (read-only views of the engine's own buffers, no copy), and the lists
         "stage" and "event"; None for mdrsim.run(scene, trajectory=False). Within the row
-        budget of mdrsim.run (trajectory_stride > 1 when rows were thinned)."""
+        budget of mdrsim.run (trajectory_stride > 1 when rows were thinned). As the CSV's
+        columns: "sliding" with friction, "cohesive_radius" [m] with finite-range adhesion."""
         return self._raw.trajectory()
 
     @property

@@ -102,8 +102,9 @@ py::array take_column(std::vector<T>& column, const py::dtype& dtype) {
   return array;
 }
 
-/// With friction the arrays gain `sliding`, as the CSV gains its column (docs/friction.md).
-py::dict take_trajectory(TrajectoryColumns& c, bool friction) {
+/// With friction the arrays gain `sliding`, and with finite-range adhesion `cohesive_radius`,
+/// as the CSV gains its columns (docs/friction.md, docs/maugis.md).
+py::dict take_trajectory(TrajectoryColumns& c, bool friction, bool cohesive) {
   std::vector<py::str> stage_names;
   for (const std::string& name : c.stage_names) stage_names.emplace_back(name);
   py::list stage(c.stage.size());
@@ -129,6 +130,7 @@ py::dict take_trajectory(TrajectoryColumns& c, bool friction) {
   t["springs_in_contact"] = take_column(c.springs_in_contact, py::dtype::of<std::int64_t>());
   t["normal_control"] = take_column(c.normal_control, f8);
   if (friction) t["sliding"] = take_column(c.springs_sliding, py::dtype::of<std::int64_t>());
+  if (cohesive) t["cohesive_radius"] = take_column(c.cohesive_radius, f8);
   return t;
 }
 
@@ -302,7 +304,7 @@ void bind_results(py::module_& m) {
         if (!r.trajectory && r.rows) {
           TrajectoryColumns columns = r.rows->columns();
           r.rows.reset();
-          r.trajectory = take_trajectory(columns, has_friction(r));
+          r.trajectory = take_trajectory(columns, has_friction(r), has_zone(r));
         }
         return r.trajectory ? r.trajectory : py::object(py::none());
       });

@@ -103,6 +103,7 @@ TrajectoryColumns TrajectoryRows::columns() const {
   for (std::vector<double>& column : c.state) column.resize(n);
   c.springs_in_contact.resize(n);
   c.springs_sliding.resize(n);
+  c.cohesive_radius.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const TrajectoryRow& row = rows[i];
     const ContactSnapshot& s = row.state;
@@ -115,6 +116,7 @@ TrajectoryColumns TrajectoryRows::columns() const {
     }
     c.springs_in_contact[i] = s.springs_in_contact;
     c.springs_sliding[i] = s.springs_sliding;
+    c.cohesive_radius[i] = s.cohesive_radius;
   }
   return c;
 }

@@ -25,6 +25,7 @@ struct TrajectoryColumns {
   std::array<std::vector<double>, kTrajectoryFields.size()> state;
   std::vector<std::int64_t> springs_in_contact;
   std::vector<std::int64_t> springs_sliding;  ///< the CSV's `sliding` (docs/friction.md)
+  std::vector<double> cohesive_radius;        ///< the CSV's `cohesive_radius` [m] (docs/maugis.md)
 };
 
 struct TrajectoryRow {

@@ -3,6 +3,7 @@ against the paper's closed forms (scripts/paper_reference.py, which shares no co
 engine)."""
 
 import math
+import subprocess
 import sys
 
 import numpy as np
@@ -151,3 +152,41 @@ def test_maugis_keys_pass_through_a_python_built_scene():
     assert mdrsim.run(stress, trajectory=False).maugis_parameter == pytest.approx(2.0, rel=1e-14)
     # Without the keys: no zone in the states.
     assert mdrsim.run(FIG2, method="continuum", trajectory=False).critical.cohesive_radius is None
+
+
+@pytest.mark.parametrize("path, method", [
+    ("scenes/maugis/maugis_parabola.toml", None),      # continuum shorthand, with samples
+    ("scenes/maugis/maugis_parabola.toml", "event"),   # the spring row's let-gos
+    ("scenes/maugis/maugis_cycle.toml", None),         # a program on the continuum route
+])
+def test_maugis_trajectories_carry_the_cohesive_radius_as_the_csv(cli, tmp_path, path, method):
+    # The arrays gain cohesive_radius as the CLI's trajectory CSV gains its column: the same
+    # numbers row by row (both print shortest round-trip doubles), and c >= a on every row.
+    scene = mdrsim.Scene.from_file(ROOT / path)
+    if method:
+        scene = scene.with_method(method)
+    result = mdrsim.run(scene, samples=50)
+    t = result.trajectory
+    c = t["cohesive_radius"]
+    assert c.dtype == np.float64 and len(c) == len(t["event"])
+    assert np.all(c >= t["contact_radius"])
+    assert np.any(c > 0.0)
+    if result.critical is not None:
+        rows = [i for i, e in enumerate(t["event"]) if e == "instability"]
+        assert rows and c[rows[-1]] == result.critical.cohesive_radius
+    # The CLI's CSV of the same scene.
+    scene_file = tmp_path / "scene.toml"
+    scene_file.write_text((ROOT / path).read_text() + (
+        '\n[solver]\nmethod = "event"\n' if method else ""))
+    csv = tmp_path / "trajectory.csv"
+    subprocess.run([cli, "run", str(scene_file), "--trajectory", str(csv), "--samples", "50"],
+                   check=True, capture_output=True)
+    lines = csv.read_text().splitlines()
+    header = lines[0].split(",")
+    column = header.index("cohesive_radius")
+    from_csv = np.array([float(line.split(",")[column]) for line in lines[1:]])
+    assert np.array_equal(from_csv, c)
+
+
+def test_without_the_maugis_keys_the_arrays_have_no_cohesive_radius():
+    assert "cohesive_radius" not in mdrsim.run(FIG2, method="continuum", samples=10).trajectory
