@@ -135,7 +135,8 @@ RunResult refusing_zone_past_edge(const Scene& scene, const std::string& at, con
                                       scene.profile->outer_radius(),
                                       scene.program ? "on the program's path"
                                                     : "from this preload on; give a smaller "
-                                                      "preload"));
+                                                      "preload, a wider body or a shorter range "
+                                                      "(a larger adhesive_stress)"));
   }
 }
 

@@ -30,7 +30,7 @@ RunResult run_text(const std::string& text) {
 constexpr const char* kRefusal =
     "md.toml:9:11: loading.preload: with material.adhesive_stress the contact and its cohesive "
     "zone reach beyond the profile's outer radius (2e-08 m) from this preload on; give a smaller "
-    "preload";
+    "preload, a wider body or a shorter range (a larger adhesive_stress)";
 
 // At lambda = 0.1 the zone is wide (h0 = 4.2 nm): glued at 0.995 R, the branch at the preload
 // depth would need a zone past R.
