@@ -534,4 +534,15 @@ double path_work(const DugdalePath& path, double s0, double s1, double& error) {
   return total;
 }
 
+ContactSnapshot dugdale_snapshot(const DugdaleState& s, const AffineConstraint& normal) {
+  ContactSnapshot c;
+  c.indentation = s.indentation;
+  c.normal_force = s.normal_force;
+  c.contact_radius = s.contact_radius;
+  c.cohesive_radius = s.cohesive_radius;
+  c.normal_control =
+      normal.displacement_coefficient * s.indentation + normal.force_coefficient * s.normal_force;
+  return c;
+}
+
 }  // namespace mdrsim

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "controllers/controller.hpp"
+#include "engine/model/contact_snapshot.hpp"
 #include "engine/model/dugdale_zone.hpp"
 #include "profiles/profile.hpp"
 
@@ -77,6 +78,9 @@ std::optional<DugdaleFold> first_fold(const DugdalePath& path, const AffineConst
 
 /// The most tensile state on [0, s_end] (Brent about the most tensile sample), with its error.
 DugdaleFold most_tensile(const DugdalePath& path, double s_end);
+
+/// A Dugdale state as the results carry it, with the control `normal` holds there.
+ContactSnapshot dugdale_snapshot(const DugdaleState& s, const AffineConstraint& normal);
 
 /// The machine's work int F dd along [s0, s1] [J] (the pinned phase exactly linear in d, the
 /// branches by Gauss-Kronrod on F d'(s)); `error` gains its bound.

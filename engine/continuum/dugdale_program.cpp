@@ -311,17 +311,6 @@ class ControlWalk {
   AffineConstraint n_;
 };
 
-ContactSnapshot snapshot_of(const DugdaleState& s, const AffineConstraint& normal) {
-  ContactSnapshot c;
-  c.indentation = s.indentation;
-  c.normal_force = s.normal_force;
-  c.contact_radius = s.contact_radius;
-  c.cohesive_radius = s.cohesive_radius;
-  c.normal_control =
-      normal.displacement_coefficient * s.indentation + normal.force_coefficient * s.normal_force;
-  return c;
-}
-
 /// One stretch of a stage's path on the curve, from u0 to u1 under `control`.
 struct Piece {
   const Stage* stage;
@@ -445,7 +434,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
         break;
       }
       JumpRecord jump{
-          .stage = stage.name, .inward = dir > 0, .critical = snapshot_of(from, control)};
+          .stage = stage.name, .inward = dir > 0, .critical = dugdale_snapshot(from, control)};
       if (dir < 0 && result.status == RunStatus::completed) {
         result.status = RunStatus::instability;
         result.critical = jump.critical;
@@ -459,7 +448,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
         break;
       }
       const DugdaleState to = eq.at(*landing);
-      jump.after = snapshot_of(to, control);
+      jump.after = dugdale_snapshot(to, control);
       result.jumps.push_back(jump);
       // At fixed grips or through a spring the machine's end stands still; a fixed load
       // moves with the indenter.
@@ -468,7 +457,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
       u = *landing;
       largest_radius = std::max(largest_radius, to.contact_radius);
     }
-    const ContactSnapshot end = snapshot_of(eq.at(u), control);
+    const ContactSnapshot end = dugdale_snapshot(eq.at(u), control);
     StageRecord record{stage.name, end, {}};
     if (flying) record.end = result.critical.value_or(end);
     record.work = stage_work;
@@ -505,7 +494,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
       for (std::int64_t k = 0; k < per_piece; ++k) {
         const double t = static_cast<double>(k) / static_cast<double>(per_piece - 1);
         Event e{.kind = EventKind::sample,
-                .state = snapshot_of(eq.at(p.u0 + (p.u1 - p.u0) * t), p.control)};
+                .state = dugdale_snapshot(eq.at(p.u0 + (p.u1 - p.u0) * t), p.control)};
         e.stage = p.stage->name;
         observers.emit(e);
       }
@@ -516,7 +505,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
     const auto [at, error] = most_tensile(eq, p);
     const DugdaleState s = eq.at(at);
     if (s.normal_force < 0.0 && (!result.peak || s.normal_force < result.peak->normal_force)) {
-      result.peak = snapshot_of(s, p.control);
+      result.peak = dugdale_snapshot(s, p.control);
       peak_error = error;
     }
   }

@@ -17,17 +17,6 @@
 namespace mdrsim {
 namespace {
 
-ContactSnapshot snapshot_of(const DugdaleState& s, const AffineConstraint& normal) {
-  ContactSnapshot c;
-  c.indentation = s.indentation;
-  c.normal_force = s.normal_force;
-  c.contact_radius = s.contact_radius;
-  c.cohesive_radius = s.cohesive_radius;
-  c.normal_control =
-      normal.displacement_coefficient * s.indentation + normal.force_coefficient * s.normal_force;
-  return c;
-}
-
 /// The empty contact the machine holds after the jump: at the held value over a_u, or under a
 /// fixed load where the critical state left it (as the JKR route reports it).
 ContactSnapshot after_jump(const AffineConstraint& normal, double held, const DugdaleState& last) {
@@ -62,7 +51,7 @@ RunResult run_dugdale_continuum(const Scene& scene, double rtol, std::int64_t sa
   // the zone then pulls the contact out to a_p at that depth, where the grips do no work. Its
   // work is the energy the springs store, as on the JKR route.
   const DugdaleState preload = path.at(0.0);
-  const ContactSnapshot preload_snapshot = snapshot_of(preload, normal);
+  const ContactSnapshot preload_snapshot = dugdale_snapshot(preload, normal);
   observers.emit({.kind = EventKind::preload_reached, .state = preload_snapshot});
   const FixedGripsController grips;
   ContinuumBranch pressed(*scene.profile, *scene.criterion, scene.material, grips.constraint(),
@@ -90,11 +79,11 @@ RunResult run_dugdale_continuum(const Scene& scene, double rtol, std::int64_t sa
   if (samples >= 2) {
     for (std::int64_t k = 0; k < samples; ++k) {
       const double s = s_end * static_cast<double>(k) / static_cast<double>(samples - 1);
-      observers.emit({.kind = EventKind::sample, .state = snapshot_of(path.at(s), normal)});
+      observers.emit({.kind = EventKind::sample, .state = dugdale_snapshot(path.at(s), normal)});
     }
   }
 
-  const ContactSnapshot end_snapshot = snapshot_of(end, normal);
+  const ContactSnapshot end_snapshot = dugdale_snapshot(end, normal);
   const double held = end_snapshot.normal_control;
   StageRecord pull_off{"pull-off", end_snapshot, {}};
   pull_off.work.normal = work;
@@ -121,7 +110,7 @@ RunResult run_dugdale_continuum(const Scene& scene, double rtol, std::int64_t sa
       peak.state.normal_force >= fold->state.normal_force - peak.force_error - fold->force_error) {
     peak = *fold;
   }
-  result.peak = snapshot_of(peak.state, normal);
+  result.peak = dugdale_snapshot(peak.state, normal);
   result.accuracy.peak_error_estimate =
       with_rounding(peak.force_error, force_terms(*scene.profile, law, peak.state));
 
