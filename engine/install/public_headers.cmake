@@ -13,6 +13,8 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/base/parameters.hpp
     engine/base/part_registry.hpp
     engine/base/pull_off_scales.hpp
+    # what is zero on a run (RowSpec::zero of engine/pull_off/pull_off.hpp: the engine's own use)
+    engine/base/zero_scale.hpp
     # the part interfaces and their registries
     profiles/profile.hpp
     profiles/profile_registry.hpp
