@@ -19,7 +19,7 @@
 namespace mdrsim {
 namespace {
 
-constexpr std::int64_t kFirstRow = 512;
+constexpr std::int64_t kFirstDugdaleRow = 512;
 /// Each row keeps its path for the work (40 bytes a let-go): 2^22 springs hold 170 MB, and
 /// Richardson's second order meets rtol 1e-12 well before them (docs/maugis_row.md).
 constexpr std::int64_t kMaxDugdaleRowSprings = std::int64_t{1} << 22;
@@ -174,7 +174,7 @@ RunResult run_dugdale_rows(const Scene& scene, const ObserverList& observers) {
   const std::optional<Accuracy::Route> forced = forced_route(scene.discretization);
   const std::int64_t max_springs =
       std::min(scene.discretization.max_row_springs, kMaxDugdaleRowSprings);
-  std::vector<RunResult> rows{row(kFirstRow, {})};
+  std::vector<RunResult> rows{row(kFirstDugdaleRow, {})};
   Outcome outcome{rows.back(), false};
   for (;;) {
     if (rows.back().status == RunStatus::step_limit) {

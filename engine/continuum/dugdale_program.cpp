@@ -28,9 +28,9 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kNearStep = 1.0 / 128.0;  ///< the grid on u in [0, 3]
 constexpr double kFarStep = 1.0 / 32.0;    ///< beyond: a grows by e^(1/32) a step
 constexpr double kFar = 3.0;
-constexpr double kLast = kFar + 100.0;  ///< a = 4 c0 e^100: a front that never stops
-constexpr double kCornerWidth = 1e-6;
-constexpr double kSlopeStep = 1e-5;  ///< the fold's difference quotients' step in u
+constexpr double kLast = kFar + 100.0;        ///< a = 4 c0 e^100: a front that never stops
+constexpr double kProgramCornerWidth = 1e-6;  ///< a fold this close to a corner is the corner
+constexpr double kSlopeStep = 1e-5;           ///< the fold's difference quotients' step in u
 
 /// The equilibria as one curve of u (docs/maugis.md "Programs"): u <= 0 separated, d = f(0) -
 /// h0 + u h0 and F = 0; [0, 1] the no-contact branch, c = c0 u; [1, 3] the contact branch up to
@@ -272,7 +272,7 @@ class ControlWalk {
     const auto along = [&](double u) { return dir * value_at(u); };
     double u = brent_maximum(along, lo, hi);
     for (const double corner : {0.0, 1.0}) {
-      if (corner >= lo && corner <= hi && std::abs(u - corner) < kCornerWidth) {
+      if (corner >= lo && corner <= hi && std::abs(u - corner) < kProgramCornerWidth) {
         return {Reach::Kind::fold, corner, 4.0 * kEps * std::abs(eq_.at(corner).normal_force)};
       }
     }

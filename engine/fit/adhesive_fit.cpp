@@ -14,7 +14,8 @@
 namespace mdrsim::fit {
 namespace {
 
-constexpr int kParameters = 5;  // youngs_modulus, work_of_adhesion, contact_point, offset, slope
+constexpr int kAdhesiveParameters =
+    5;  // youngs_modulus, work_of_adhesion, contact_point, offset, slope
 constexpr std::size_t kBranchSamples = 256;
 
 /// The model's force (less the baseline) and its partial derivatives at one indentation.
@@ -35,14 +36,14 @@ ContactForce dmt_force(const TipShape& tip, double reduced, double work, double 
   return {reduced * g - pull * work, reduced * tip.stiffness_per_modulus(delta), g, -pull};
 }
 
-struct Line {
+struct FreeLine {
   double offset = 0.0;  // at z_ref
   double slope = 0.0;
   double z_ref = 0.0;
 };
 
-Line fit_line(const std::vector<double>& z, const std::vector<double>& f, std::size_t from,
-              std::size_t to) {
+FreeLine fit_free_line(const std::vector<double>& z, const std::vector<double>& f, std::size_t from,
+                       std::size_t to) {
   double mz = 0.0, mf = 0.0;
   const auto n = static_cast<double>(to - from);
   for (std::size_t i = from; i < to; ++i) {
@@ -66,8 +67,8 @@ struct ScaledAdhesive : Eigen::DenseFunctor<double> {
   const std::vector<double>& force;
   std::size_t jump;  // retract: samples [0, jump] in contact; approach: [jump, n)
   double deepest;
-  std::array<double, kParameters> start{};
-  std::array<double, kParameters> scale{};
+  std::array<double, kAdhesiveParameters> start{};
+  std::array<double, kAdhesiveParameters> scale{};
   std::vector<int> free;
   double force_scale = 1.0;
 
@@ -85,8 +86,8 @@ struct ScaledAdhesive : Eigen::DenseFunctor<double> {
 
   /// E and w as start x exp(x): both stay positive, and the minimiser walks a curve whose
   /// adhesion fades towards w -> 0 instead of through it. The rest as start + scale x.
-  std::array<double, kParameters> parameters(const InputType& x) const {
-    std::array<double, kParameters> p = start;
+  std::array<double, kAdhesiveParameters> parameters(const InputType& x) const {
+    std::array<double, kAdhesiveParameters> p = start;
     for (std::size_t j = 0; j < free.size(); ++j) {
       const double xj = x[static_cast<Eigen::Index>(j)];
       const int k = free[j];
@@ -96,7 +97,7 @@ struct ScaledAdhesive : Eigen::DenseFunctor<double> {
   }
 
   /// dp/dx of the free parameter k at p.
-  double slope(int k, const std::array<double, kParameters>& p) const {
+  double slope(int k, const std::array<double, kAdhesiveParameters>& p) const {
     return k < 2 ? p[k] : scale[k];
   }
 
@@ -104,7 +105,7 @@ struct ScaledAdhesive : Eigen::DenseFunctor<double> {
 
   /// Calls visit(i, contact force or nullptr) for every sample at parameters p.
   template <class Visit>
-  void each(const std::array<double, kParameters>& p, Visit visit) const {
+  void each(const std::array<double, kAdhesiveParameters>& p, Visit visit) const {
     const double reduced = p[0] / compliance;
     const double work = p[1];
     const double deep = std::max(deepest, p[2] - *std::min_element(z.begin(), z.end()));
@@ -145,9 +146,9 @@ struct ScaledAdhesive : Eigen::DenseFunctor<double> {
   int df(const InputType& x, JacobianType& jacobian) const {
     const auto p = parameters(x);
     each(p, [&](std::size_t i, const ContactForce* c) {
-      const std::array<double, kParameters> d = {c ? c->d_modulus / compliance : 0.0,
-                                                 c ? c->d_work : 0.0,
-                                                 -p[4] + (c ? c->d_depth : 0.0), 1.0, z[i] - p[2]};
+      const std::array<double, kAdhesiveParameters> d = {
+          c ? c->d_modulus / compliance : 0.0, c ? c->d_work : 0.0, -p[4] + (c ? c->d_depth : 0.0),
+          1.0, z[i] - p[2]};
       for (std::size_t j = 0; j < free.size(); ++j) {
         jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
             d[free[j]] * slope(free[j], p) / force_scale;
@@ -294,7 +295,7 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
     fit.message = "no jump off the contact branch and baseline to fit";
     return fit;
   }
-  const Line base = fit_line(z, f, free_from, free_to);
+  const FreeLine base = fit_free_line(z, f, free_from, free_to);
   const double contact_guess = options.fixed.contact_point.value_or(z[jump]);
   const double base_at_contact = base.offset + base.slope * (contact_guess - base.z_ref);
   fit.adhesion_force_measured = base.offset + base.slope * (z[lowest] - base.z_ref) - f[lowest];
@@ -347,13 +348,13 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
   }
   if (options.fixed.work_of_adhesion) work = *options.fixed.work_of_adhesion;
 
-  const std::array<std::optional<double>, kParameters> held = {
+  const std::array<std::optional<double>, kAdhesiveParameters> held = {
       options.fixed.youngs_modulus, options.fixed.work_of_adhesion, options.fixed.contact_point,
       options.fixed.baseline_offset, options.fixed.baseline_slope};
-  std::array<double, kParameters> start = {reduced * compliance, work, contact_guess,
-                                           base_at_contact, base.slope};
+  std::array<double, kAdhesiveParameters> start = {reduced * compliance, work, contact_guess,
+                                                   base_at_contact, base.slope};
   std::vector<int> free;
-  for (int j = 0; j < kParameters; ++j) {
+  for (int j = 0; j < kAdhesiveParameters; ++j) {
     if (held[j]) {
       start[j] = *held[j];
     } else {
@@ -378,9 +379,10 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
     fit.evaluations = static_cast<long>(minimizer.nfev());
   }
   const auto p = model.parameters(x);
-  FitParameter* out[kParameters] = {&fit.youngs_modulus, &fit.work_of_adhesion, &fit.contact_point,
-                                    &fit.baseline_offset, &fit.baseline_slope};
-  for (int j = 0; j < kParameters; ++j) {
+  FitParameter* out[kAdhesiveParameters] = {&fit.youngs_modulus, &fit.work_of_adhesion,
+                                            &fit.contact_point, &fit.baseline_offset,
+                                            &fit.baseline_slope};
+  for (int j = 0; j < kAdhesiveParameters; ++j) {
     out[j]->value = p[j];
     out[j]->fixed = held[j].has_value();
   }

@@ -9,14 +9,10 @@
 #include "engine/model/snapshot_fields.hpp"
 
 namespace mdrsim {
-namespace {
 
-/// The quadratic through q(-1) = inner, q(0) = at, q(1) = outer, at s.
-double quadratic(double inner, double at, double outer, double s) {
+double quadratic_through(double inner, double at, double outer, double s) {
   return at + 0.5 * s * (outer - inner) + 0.5 * s * s * (inner - 2.0 * at + outer);
 }
-
-}  // namespace
 
 std::optional<double> parabola_vertex(double inner, double at, double outer) {
   const double curvature = inner - 2.0 * at + outer;
@@ -28,7 +24,7 @@ ContactSnapshot interpolate_snapshots(const ContactSnapshot& in, const ContactSn
                                       const ContactSnapshot& out, double s) {
   ContactSnapshot q = at;
   for (const auto member : kBranchQuantities) {
-    q.*member = quadratic(in.*member, at.*member, out.*member, s);
+    q.*member = quadratic_through(in.*member, at.*member, out.*member, s);
   }
   return q;
 }

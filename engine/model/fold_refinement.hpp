@@ -10,6 +10,9 @@ namespace mdrsim {
 
 /// The vertex in [-1, 1] of the parabola through q(-1) = inner, q(0) = at, q(1) = outer, or
 /// nothing where it does not open upwards.
+/// The quadratic through q(-1) = inner, q(0) = at, q(1) = outer, at s.
+double quadratic_through(double inner, double at, double outer, double s);
+
 std::optional<double> parabola_vertex(double inner, double at, double outer);
 
 /// Every field of a snapshot on the parabola through q(-1) = inner, q(0) = at, q(1) = outer,

@@ -9,15 +9,6 @@
 #include "engine/model/fold_refinement.hpp"
 
 namespace mdrsim {
-namespace {
-
-/// The quadratic through q(-1) = inner, q(0) = at, q(1) = outer, at s.
-double quadratic(double inner, double at, double outer, double s) {
-  return at + 0.5 * s * (outer - inner) + 0.5 * s * s * (inner - 2.0 * at + outer);
-}
-
-}  // namespace
-
 void StageLine::place(ProgramRow& row, double t) const {
   if (normal.rate != 0.0) row.set_normal_held(normal.start + normal.rate * t);
   if (tangential.rate != 0.0) row.set_tangential_held(tangential.start + tangential.rate * t);
@@ -164,7 +155,7 @@ std::optional<ContactSnapshot> ProgramFront::fold(ProgramRow& row, const StageLi
   // The fold is the largest parameter of the let-go branch: the vertex of -t.
   const auto vertex = parabola_vertex(-t_inner, -t, -previous->t);
   if (!vertex) return std::nullopt;
-  fold_parameter_ = quadratic(t_inner, t, previous->t, *vertex);
+  fold_parameter_ = quadratic_through(t_inner, t, previous->t, *vertex);
   ContactSnapshot q = interpolate_snapshots(inner, before, previous->before, *vertex);
   q.springs_in_contact = before.springs_in_contact;
   return q;
@@ -196,7 +187,7 @@ std::optional<ContactSnapshot> ProgramFront::advancing_fold(ProgramRow& row, con
   // The fold is the largest parameter of the gluing branch: the vertex of -t.
   const auto vertex = parabola_vertex(-previous->t, -t, -t_outer);
   if (!vertex) return std::nullopt;
-  fold_parameter_ = quadratic(previous->t, t, t_outer, *vertex);
+  fold_parameter_ = quadratic_through(previous->t, t, t_outer, *vertex);
   ContactSnapshot q = interpolate_snapshots(previous->before, before, outer, *vertex);
   q.springs_in_contact = before.springs_in_contact;
   return q;

@@ -113,22 +113,18 @@ double control_of(const AffineConstraint& normal, const DugdaleRowState& s) {
          normal.force_coefficient * s.normal_force;
 }
 
-/// The quadratic through q(-1) = inner, q(0) = at, q(1) = outer, at s.
-double quadratic(double inner, double at, double outer, double s) {
-  return at + 0.5 * s * (outer - inner) + 0.5 * s * s * (inner - 2.0 * at + outer);
-}
-
 /// The state at s on the parabolas through the let-gos at n - 1 (inner), n and n + 1 (outer):
 /// the row's branch between springs, in n, where every quantity is smooth.
 DugdaleRowState between_springs(const DugdaleRowState& inner, const DugdaleRowState& at,
                                 const DugdaleRowState& outer, double s) {
-  return {
-      .springs_in_contact = at.springs_in_contact,
-      .contact_radius = quadratic(inner.contact_radius, at.contact_radius, outer.contact_radius, s),
-      .cohesive_radius =
-          quadratic(inner.cohesive_radius, at.cohesive_radius, outer.cohesive_radius, s),
-      .indentation = quadratic(inner.indentation, at.indentation, outer.indentation, s),
-      .normal_force = quadratic(inner.normal_force, at.normal_force, outer.normal_force, s)};
+  return {.springs_in_contact = at.springs_in_contact,
+          .contact_radius =
+              quadratic_through(inner.contact_radius, at.contact_radius, outer.contact_radius, s),
+          .cohesive_radius = quadratic_through(inner.cohesive_radius, at.cohesive_radius,
+                                               outer.cohesive_radius, s),
+          .indentation = quadratic_through(inner.indentation, at.indentation, outer.indentation, s),
+          .normal_force =
+              quadratic_through(inner.normal_force, at.normal_force, outer.normal_force, s)};
 }
 
 /// The smallest of `value` over the let-gos n - 1, n, n + 1, between springs: the vertex of
