@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/csv_sink.hpp"
 #include "apps/output_file.hpp"
 #include "apps/scene_input.hpp"
 #include "apps/write_error.hpp"
@@ -94,62 +95,6 @@ class SignalWatch {
   int signal_fd_ = -1;
   int wake_[2] = {-1, -1};
   std::thread watcher_;
-};
-
-/// The --csv target: a file written in place (not renamed on completion) or standard output,
-/// one write() per line, so that whatever kills the sweep leaves whole lines behind.
-class CsvSink {
- public:
-  explicit CsvSink(std::string path) : path_(std::move(path)) {}
-  CsvSink(const CsvSink&) = delete;
-  CsvSink& operator=(const CsvSink&) = delete;
-  ~CsvSink() {
-    if (fd_ > 1) close(fd_);
-  }
-
-  /// Creates (or empties) the file and writes `head`.
-  void open_fresh(const std::string& head) {
-    if (path_ == "-") {
-      fd_ = STDOUT_FILENO;
-    } else {
-      struct stat st {};
-      if (stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) cannot_write("it is a directory");
-      fd_ = open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-      if (fd_ < 0) cannot_write(system_reason(errno));
-    }
-    write_all(head);
-  }
-  /// Opens the file to append after its first `keep` bytes (a torn last line is cut off).
-  void open_resumed(std::uint64_t keep) {
-    fd_ = open(path_.c_str(), O_WRONLY | O_CLOEXEC);
-    if (fd_ < 0) cannot_write(system_reason(errno));
-    if (ftruncate(fd_, static_cast<off_t>(keep)) != 0 || lseek(fd_, 0, SEEK_END) < 0) {
-      cannot_write(system_reason(errno));
-    }
-  }
-
-  void write_all(std::string_view text) {
-    while (!text.empty()) {
-      const ssize_t n = write(fd_, text.data(), text.size());
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        if (n < 0 && errno == EPIPE && path_ == "-") throw StandardOutputClosed();
-        throw WriteError(path_ == "-" ? fmt::format("--csv: writing standard output failed ({})",
-                                                    system_reason(errno))
-                                      : fmt::format("--csv: writing '{}' failed ({})",
-                                                    printable(path_), system_reason(errno)));
-      }
-      text.remove_prefix(static_cast<std::size_t>(n));
-    }
-  }
-
- private:
-  [[noreturn]] void cannot_write(const std::string& why) const {
-    throw UsageError(fmt::format("--csv: cannot write '{}' ({})", printable(path_), why));
-  }
-
-  std::string path_;
-  int fd_ = -1;
 };
 
 /// Where a --resume sweep starts: the shard's rows already in the CSV. Refuses a CSV of

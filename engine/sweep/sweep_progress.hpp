@@ -1,4 +1,5 @@
-// The progress lines of a long sweep: rows written and the time to go at the rate so far.
+// The progress lines of a long sweep (or fit of many curves): rows written and the time to go
+// at the rate so far.
 #pragma once
 
 #include <chrono>
@@ -14,9 +15,11 @@ class SweepProgress {
   static constexpr std::chrono::seconds kInterval{10};
 
   /// A sweep of `rows` rows started at `started` with `done` of them in the CSV already,
-  /// saying how far it is every `interval`.
+  /// saying how far it is every `interval`; `command` and `unit` name the run and what it
+  /// counts ("fit", "curves").
   SweepProgress(std::uint64_t done, std::uint64_t rows, Clock::time_point started,
-                Clock::duration interval = kInterval);
+                Clock::duration interval = kInterval, std::string command = "sweep",
+                std::string unit = "rows");
 
   /// Called as rows are written (`written` in all): the line to log when the interval has
   /// passed since the start or the last line, e.g.
@@ -29,6 +32,8 @@ class SweepProgress {
   Clock::time_point started_;
   Clock::time_point last_;
   Clock::duration interval_;
+  std::string command_;
+  std::string unit_;
 };
 
 /// A duration for people: "40 s", "8 min", "2.5 h".
