@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <exception>
+#include <string>
 #include <utility>
 
 #include "engine/fit/prepared_curve.hpp"
@@ -64,6 +67,42 @@ AdhesiveFit fit_one(const PreparedSegment& prepared, measured::SegmentKind segme
   return fit_adhesive(prepared, adhesive);
 }
 
+/// A fit whose modulus is not held has not found E when the curve does not determine it: no
+/// sample indented past the fitted contact point, a J^T J singular in E (its standard error 0
+/// with residuals that are not), or a standard error above E itself (or not finite). It keeps
+/// its numbers, as not-converged, with the reason.
+void mark_undetermined(AdhesiveFit& fit) {
+  const FitParameter& e = fit.youngs_modulus;
+  if (fit.status != FitStatus::fitted || e.fixed) return;
+  std::string why;
+  if (!(fit.max_indentation > 0.0)) {
+    why = "no sample is indented past the contact point";
+  } else if (e.standard_error == 0.0 && fit.residual_rms > 0.0) {
+    why = "J^T J is singular in youngs_modulus";
+  } else if (!(std::isfinite(e.standard_error) && e.standard_error <= std::abs(e.value))) {
+    why = fmt::format("the standard error of youngs_modulus ({:.3g} Pa) exceeds its value",
+                      e.standard_error);
+  } else {
+    return;
+  }
+  fit.status = FitStatus::not_converged;
+  fit.message = "undetermined: " + why;
+}
+
+/// The grid cell holding `position`, or none where it lies outside the grid or the grid has
+/// no extent.
+std::optional<GridCell> grid_cell(const measured::MapGrid& grid,
+                                  const measured::MapPosition& position) {
+  if (grid.columns <= 0 || grid.rows <= 0 || !(grid.width > 0.0) || !(grid.height > 0.0)) {
+    return std::nullopt;
+  }
+  // Positions are the cells' centres: the floor is half a cell from either edge.
+  const double u = (position.x - (grid.center_x - grid.width / 2)) / (grid.width / grid.columns);
+  const double v = (position.y - (grid.center_y - grid.height / 2)) / (grid.height / grid.rows);
+  if (!(u >= 0.0 && u < grid.columns && v >= 0.0 && v < grid.rows)) return std::nullopt;
+  return GridCell{static_cast<long>(std::floor(u)), static_cast<long>(std::floor(v))};
+}
+
 }  // namespace
 
 const char* fit_model_name(FitModel model) {
@@ -78,36 +117,62 @@ const char* fit_model_name(FitModel model) {
   return "hertz";
 }
 
-std::vector<CurveFit> fit_file(const measured::MeasuredFile& file, measured::SegmentKind segment,
-                               const CurveFitOptions& options) {
-  std::vector<CurveFit> fits;
+CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
+                   measured::SegmentKind segment, const CurveFitOptions& options) {
+  const measured::ForceCurve& curve = file.curves.at(index);
+  CurveFit out;
+  out.file = file.path.string();
+  out.curve = curve.label;
+  out.position = curve.position;
+  if (curve.position && file.grid) out.cell = grid_cell(*file.grid, *curve.position);
+  out.calibration = curve.calibration;
+  out.fit.status = FitStatus::unreadable;
+  if (!curve.unreadable.empty()) {
+    out.fit.message = curve.unreadable;
+    return out;
+  }
+  try {
+    const PreparedSegment prepared = prepare_segment(curve, segment);
+    out.height_channel = prepared.height_channel;
+    out.fit = fit_one(prepared, segment, options);
+    mark_undetermined(out.fit);
+  } catch (const SceneError& e) {
+    out.fit.message = curve.label.empty() ? e.what() : curve.label + ": " + e.what();
+  } catch (const std::exception& e) {
+    // The model itself refused a trial (a sphere indented past its radius): this curve's
+    // fit failed, the map goes on.
+    out.fit = AdhesiveFit();
+    out.fit.status = FitStatus::not_converged;
+    out.fit.message = std::string("the model failed: ") + e.what();
+  }
+  return out;
+}
+
+void check_fittable(const measured::MeasuredFile& file, measured::SegmentKind segment) {
   std::string first_refusal;
-  bool any_prepared = false;
   for (const measured::ForceCurve& curve : file.curves) {
-    CurveFit out;
-    out.file = file.path.string();
-    out.curve = curve.label;
-    out.position = curve.position;
-    out.calibration = curve.calibration;
-    out.fit.status = FitStatus::unreadable;
-    if (!curve.unreadable.empty()) {
-      out.fit.message = curve.unreadable;
-    } else {
+    std::string refusal = curve.unreadable;
+    if (refusal.empty()) {
       try {
-        const PreparedSegment prepared = prepare_segment(curve, segment);
-        out.height_channel = prepared.height_channel;
-        out.fit = fit_one(prepared, segment, options);
-        any_prepared = true;
+        prepare_segment(curve, segment);
+        return;
       } catch (const SceneError& e) {
-        out.fit.message = curve.label.empty() ? e.what() : curve.label + ": " + e.what();
+        refusal = curve.label.empty() ? e.what() : curve.label + ": " + e.what();
       }
     }
-    if (out.fit.status == FitStatus::unreadable && first_refusal.empty()) {
-      first_refusal = out.fit.message;
-    }
-    fits.push_back(std::move(out));
+    if (first_refusal.empty()) first_refusal = refusal;
   }
-  if (!any_prepared) measured::refuse(file.path, "{}", first_refusal);
+  measured::refuse(file.path, "{}", first_refusal);
+}
+
+std::vector<CurveFit> fit_file(const measured::MeasuredFile& file, measured::SegmentKind segment,
+                               const CurveFitOptions& options) {
+  check_fittable(file, segment);
+  std::vector<CurveFit> fits;
+  fits.reserve(file.curves.size());
+  for (std::size_t c = 0; c < file.curves.size(); ++c) {
+    fits.push_back(fit_curve(file, c, segment, options));
+  }
   return fits;
 }
 
@@ -120,6 +185,10 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
   if (fit.position) {
     out["position"] = {
         {"x", fit.position->x}, {"y", fit.position->y}, {"index", fit.position->index}};
+    if (fit.cell) {
+      out["position"]["column"] = fit.cell->column;
+      out["position"]["row"] = fit.cell->row;
+    }
   }
   out["status"] = fit_status_name(fit.fit.status);
   if (!fit.fit.message.empty()) out["message"] = fit.fit.message;
@@ -151,7 +220,7 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
 }
 
 std::string curve_fit_csv_header() {
-  return "file,curve,x,y,index,status,youngs_modulus,youngs_modulus_error,contact_point,"
+  return "file,curve,x,y,index,column,row,status,youngs_modulus,youngs_modulus_error,contact_point,"
          "contact_point_error,baseline_offset,baseline_offset_error,baseline_slope,"
          "baseline_slope_error,residual_rms,max_indentation,points,spring_constant,sensitivity,"
          "model,"
@@ -165,6 +234,7 @@ std::string curve_fit_csv_row(const CurveFit& fit, FitModel model) {
   row += fit.position
              ? fmt::format("{},{},{},", fit.position->x, fit.position->y, fit.position->index)
              : ",,,";
+  row += fit.cell ? fmt::format("{},{},", fit.cell->column, fit.cell->row) : ",,";
   row += fit_status_name(f.status);
   for (const FitParameter* p :
        {&f.youngs_modulus, &f.contact_point, &f.baseline_offset, &f.baseline_slope}) {

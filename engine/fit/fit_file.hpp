@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,15 +28,34 @@ struct CurveFitOptions {
   AdhesiveFixed fixed;  ///< work_of_adhesion is ignored by hertz
 };
 
+/// A curve's cell in its map's grid, from its position: column along x, row along y, each
+/// from 0 at the grid's lower edge (a back-and-forth map's rows are not reversed here).
+struct GridCell {
+  long column = 0;
+  long row = 0;
+};
+
 /// One curve's fit with where it came from and the calibration it used.
 struct CurveFit {
   std::string file;
   std::string curve;  ///< the curve's label in its file ("" for a file of one curve)
   std::optional<measured::MapPosition> position;
+  std::optional<GridCell> cell;  ///< where the file declares a grid and the position lies on it
   measured::Calibration calibration;
   std::string height_channel;  ///< the channel the tip position was made from
   AdhesiveFit fit;             ///< for hertz, work_of_adhesion and the adhesion forces stay 0
 };
+
+/// Fits the first segment of `segment` kind of curve `index` of `file`. A curve that cannot be
+/// prepared (unreadable, no such segment, no spring constant) gets the status unreadable and
+/// its reason; a fit whose standard error of E exceeds E (the curve does not determine it) is
+/// not-converged with the reason "undetermined: ...". Safe to call from several threads.
+CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
+                   measured::SegmentKind segment, const CurveFitOptions& options);
+
+/// Refuses the file (SceneError, one line naming it and its first curve's reason) when none of
+/// its curves can be prepared for a fit: what fit_file and the map runner do before any fit.
+void check_fittable(const measured::MeasuredFile& file, measured::SegmentKind segment);
 
 /// Fits the first segment of `segment` kind of every curve. A curve that cannot be prepared
 /// (unreadable, no such segment, no spring constant) gets the status unreadable and its reason;
@@ -47,8 +67,8 @@ std::vector<CurveFit> fit_file(const measured::MeasuredFile& file, measured::Seg
 nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions& options,
                                       measured::SegmentKind segment);
 
-/// The CSV header and one row per curve (the map position in x, y, index); the adhesive
-/// models' columns come last, empty for hertz.
+/// The CSV header and one row per curve (the map position in x, y, index and the grid's
+/// column, row); the adhesive models' columns come last, empty for hertz.
 std::string curve_fit_csv_header();
 std::string curve_fit_csv_row(const CurveFit& fit, FitModel model);
 

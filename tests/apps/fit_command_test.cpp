@@ -44,7 +44,7 @@ TEST(FitCommand, CsvHasOneRowPerCurveOfAMap) {
   int lines = 0;
   for (const char c : result.out) lines += c == '\n';
   EXPECT_EQ(lines, 4) << result.out;  // header + 3 curves
-  EXPECT_EQ(result.out.rfind("file,curve,x,y,index,status,youngs_modulus,", 0), 0U);
+  EXPECT_EQ(result.out.rfind("file,curve,x,y,index,column,row,status,youngs_modulus,", 0), 0U);
   EXPECT_EQ(result.out.find("nan"), std::string::npos);
 }
 
