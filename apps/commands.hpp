@@ -51,6 +51,10 @@ struct FitOptions {
   std::vector<std::string> fixes;  ///< NAME=VALUE
   std::string json;                ///< path, "-" or empty
   std::string csv;                 ///< path, "-" or empty
+  std::string plot;                ///< PNG path or empty
+  int threads = 1;                 ///< curves fitted in parallel
+  std::string shard;               ///< "I/N": files I, I+N, ... of `curves`; empty: all
+  bool resume = false;             ///< skip the curves already in the CSV at `csv`
 };
 
 /// Each returns the process exit code; bad input throws SceneError or UsageError.

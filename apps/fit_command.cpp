@@ -1,21 +1,37 @@
 // mdrsim fit: measured force curves read, preprocessed and fitted; one JSON object, CSV row or
 // summary line per curve.
-#include <fmt/format.h>
+#include <sys/stat.h>
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/csv_sink.hpp"
+#include "apps/fit_plot.hpp"
 #include "apps/output_file.hpp"
 #include "engine/base/text.hpp"
 #include "engine/fit/fit_file.hpp"
+#include "engine/fit/fit_map.hpp"
 #include "engine/measured/read_force_curves.hpp"
+#include "engine/output/sweep_csv.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "engine/sweep/sweep_grid.hpp"
+#include "engine/sweep/sweep_progress.hpp"
 #include "engine/sweep/usage_error.hpp"
 
 namespace mdrsim::cli {
@@ -79,6 +95,168 @@ Fixed parse_fixes(const std::vector<std::string>& fixes, fit::FitModel model) {
   return fixed;
 }
 
+/// Splits one CSV record (RFC 4180 quoting) into its fields.
+std::vector<std::string> csv_fields(std::string_view record) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < record.size(); ++i) {
+    const char c = record[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < record.size() && record[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+/// The whole records of `text` (a line break inside quotes stays in its record).
+std::vector<std::string_view> csv_records(std::string_view text) {
+  std::vector<std::string_view> records;
+  bool quoted = false;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '"') quoted = !quoted;
+    if (text[i] == '\n' && !quoted) {
+      records.push_back(text.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  return records;
+}
+
+/// Where a --resume fit starts: the curves (file, label) a CSV of `mdrsim fit` holds already
+/// and the bytes of its whole rows (a torn last row is cut and fitted again).
+struct ResumePoint {
+  bool fresh = true;  ///< no CSV yet (or only part of its header): write it from the start
+  std::uint64_t keep = 0;
+  std::set<std::pair<std::string, std::string>> done;
+};
+
+ResumePoint resume_point(const std::string& path, fit::FitModel model) {
+  ResumePoint point;
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0 && errno == ENOENT) return point;  // a first try
+  const SweepFile file = read_sweep_file(path, "--resume");
+  const std::string header = fit::curve_fit_csv_header() + "\n";
+  const std::string name = printable(path);
+  if (file.first_line.empty() && header.compare(0, file.head.size(), file.head) == 0) {
+    return point;  // killed before its header was whole
+  }
+  if (file.first_line + "\n" != header) {
+    throw UsageError(fmt::format(
+        "--resume: '{}' is not a CSV of this mdrsim fit (its first line is not the header of "
+        "--csv)",
+        name));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string text(file.complete_bytes, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  const std::vector<std::string_view> records = csv_records(text);
+  const std::vector<std::string> columns = csv_fields(records.front());
+  const std::size_t model_column = static_cast<std::size_t>(
+      std::find(columns.begin(), columns.end(), "model") - columns.begin());
+  point.fresh = false;
+  point.keep = 0;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const std::vector<std::string> fields = csv_fields(records[r]);
+    if (r > 0 && fields.size() != columns.size()) break;  // a row cut short: fitted again
+    point.keep =
+        static_cast<std::uint64_t>(records[r].data() + records[r].size() + 1 - text.data());
+    if (r == 0) continue;
+    if (fields[model_column] != fit::fit_model_name(model)) {
+      throw UsageError(
+          fmt::format("--resume: '{}' holds fits of --model {}; this run is --model {}", name,
+                      printable(fields[model_column], 20), fit::fit_model_name(model)));
+    }
+    point.done.emplace(fields[0], fields[1]);
+  }
+  return point;
+}
+
+/// What the map flags ask: this shard's files, the curves a --resume CSV holds already, and
+/// the Python that draws --plot (found before any fit, so that a missing one costs nothing).
+struct MapPlan {
+  Shard shard;
+  ResumePoint resume;
+  std::string python;
+};
+
+MapPlan plan_map(const FitOptions& options, fit::FitModel model) {
+  MapPlan plan;
+  if (!options.shard.empty()) plan.shard = parse_shard(options.shard);
+  if (options.resume) {
+    if (options.csv.empty() || options.csv == "-") {
+      throw UsageError("--resume: needs --csv PATH (the CSV it finishes)");
+    }
+    plan.resume = resume_point(options.csv, model);
+  }
+  if (!options.plot.empty()) plan.python = plot_python();
+  return plan;
+}
+
+/// Every curve of `files` not in the resume CSV fitted on --threads threads, in input order;
+/// with --resume each row is appended to the CSV as soon as it and every row before it are
+/// done (a killed run keeps them), with progress lines on standard error for long runs.
+std::vector<fit::CurveFit> fit_map(const std::vector<measured::MeasuredFile>& files,
+                                   const MapPlan& plan, measured::SegmentKind segment,
+                                   const fit::CurveFitOptions& fit_options,
+                                   const FitOptions& options) {
+  std::vector<fit::CurveRef> curves;
+  std::size_t skipped = 0;
+  for (const fit::CurveRef& ref : fit::every_curve(files)) {
+    const bool done = plan.resume.done.count(
+        {files[ref.file].path.string(), files[ref.file].curves[ref.curve].label});
+    skipped += done;
+    if (!done) curves.push_back(ref);
+  }
+  std::optional<CsvSink> csv;
+  if (options.resume) {
+    csv.emplace(options.csv);
+    if (plan.resume.fresh) {
+      csv->open_fresh(fit::curve_fit_csv_header() + "\n");
+    } else {
+      csv->open_resumed(plan.resume.keep);
+    }
+  }
+  const auto started = std::chrono::steady_clock::now();
+  SweepProgress progress(0, curves.size(), started, std::chrono::seconds(5), "fit", "curves");
+  fit::MapRun run;
+  run.threads = options.threads;
+  if (csv) {
+    run.on_fit = [&](std::size_t, const fit::CurveFit& one) {
+      csv->write_all(fit::curve_fit_csv_row(one, fit_options.model) + "\n");
+    };
+  }
+  run.on_progress = [&](std::size_t reported) {
+    if (const auto line = progress.line(reported, std::chrono::steady_clock::now())) {
+      spdlog::info("{}", *line);
+    }
+  };
+  std::vector<fit::CurveFit> fits = fit::fit_curves(files, curves, segment, fit_options, run);
+  if (curves.size() + skipped > 1) {
+    const auto threads = std::max<std::size_t>(
+        1, std::min<std::size_t>(static_cast<std::size_t>(options.threads), curves.size()));
+    spdlog::info(
+        "fit: {} curves of {} on {} in {:.3g} s{}", curves.size(), counted(files.size(), "file"),
+        counted(threads, "thread"),
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+        skipped > 0 ? fmt::format(" ({} were in the CSV already)", skipped) : std::string());
+  }
+  return fits;
+}
+
 }  // namespace
 
 int fit_command(const FitOptions& options) {
@@ -108,7 +286,9 @@ int fit_command(const FitOptions& options) {
   if (options.json == "-" && options.csv == "-") {
     throw UsageError("--csv: cannot share standard output with --json -");
   }
-  require_distinct_outputs({{"--json", options.json}, {"--csv", options.csv}}, std::string());
+  if (options.plot == "-") throw UsageError("--plot: needs a file path (a PNG), not -");
+  require_distinct_outputs(
+      {{"--json", options.json}, {"--csv", options.csv}, {"--plot", options.plot}}, std::string());
   const Fixed fixed = parse_fixes(options.fixes, model);
   fit::CurveFitOptions fit_options;
   fit_options.model = model;
@@ -123,23 +303,21 @@ int fit_command(const FitOptions& options) {
         "--model jkr)");
   }
 
-  // Every file is read before any is fitted: a bad file is refused before output is written.
+  const MapPlan plan = plan_map(options, model);
+  // Every file is read, and refused where none of its curves can be fitted, before any is
+  // fitted: a bad file is refused before output is written.
   std::vector<measured::MeasuredFile> files;
-  files.reserve(options.curves.size());
-  for (const std::string& path : options.curves) {
-    files.push_back(measured::read_force_curves(path, fixed.calibration));
+  for (std::size_t f = 0; f < options.curves.size(); ++f) {
+    if (f % plan.shard.count != plan.shard.index) continue;
+    files.push_back(measured::read_force_curves(options.curves[f], fixed.calibration));
+    fit::check_fittable(files.back(), segment);
   }
-  std::vector<fit::CurveFit> fits;
-  for (const measured::MeasuredFile& file : files) {
-    for (fit::CurveFit& one : fit::fit_file(file, segment, fit_options)) {
-      fits.push_back(std::move(one));
-    }
-  }
+  const std::vector<fit::CurveFit> fits = fit_map(files, plan, segment, fit_options, options);
 
   std::optional<OutputFile> json_file;
   if (!options.json.empty()) json_file.emplace("--json", options.json);
   std::optional<OutputFile> csv_file;
-  if (!options.csv.empty()) csv_file.emplace("--csv", options.csv);
+  if (!options.csv.empty() && !options.resume) csv_file.emplace("--csv", options.csv);
   if (json_file) {
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     for (const fit::CurveFit& one : fits) {
@@ -154,10 +332,15 @@ int fit_command(const FitOptions& options) {
       csv_file->stream() << fit::curve_fit_csv_row(one, model) << '\n';
     csv_file->commit();
   }
-  if (!json_file && !csv_file) {
+  if (!json_file && options.csv.empty()) {
     for (const fit::CurveFit& one : fits) {
       std::fputs((fit::curve_fit_summary(one, model) + "\n").c_str(), stdout);
     }
+  }
+  if (!options.plot.empty()) {
+    write_fit_plot(plan.python, options.plot, files, fits,
+                   options.resume ? std::optional<std::string>(options.csv) : std::nullopt, segment,
+                   fit_options);
   }
   return 0;
 }

@@ -219,6 +219,17 @@ int main(int argc, char** argv) {
   fit_app->add_option("--json", fit.json,
                       "write one JSON object per curve (an array) to PATH or -");
   fit_app->add_option("--csv", fit.csv, "write one CSV row per curve to PATH or -");
+  fit_app->add_option("--plot", fit.plot,
+                      "draw PATH.png: one curve with its fit and residuals, or a map's E, "
+                      "work of adhesion and residual (needs python3 with matplotlib)");
+  fit.threads = mdrsim::available_cpus();
+  fit_app
+      ->add_option("--threads", fit.threads,
+                   "curves fitted in parallel (default: the CPUs this process may use)")
+      ->check(CLI::Range(1, 1024));
+  fit_app->add_option("--shard", fit.shard, "I/N: fit files I, I+N, I+2N, ... of those given");
+  fit_app->add_flag("--resume", fit.resume,
+                    "finish the CSV at --csv PATH: keep its rows, fit the curves it lacks");
   fit_app->add_option("--log-level", level, "log level on standard error")
       ->check(CLI::IsMember(levels));
 
@@ -260,11 +271,9 @@ int main(int argc, char** argv) {
   }
   try {
     // An empty PATH (say an unset shell variable) must not silently mean "not given".
-    const std::pair<CLI::App*, const char*> path_flags[] = {{run_app, "--json"},
-                                                            {run_app, "--trajectory"},
-                                                            {sweep_app, "--csv"},
-                                                            {fit_app, "--json"},
-                                                            {fit_app, "--csv"}};
+    const std::pair<CLI::App*, const char*> path_flags[] = {
+        {run_app, "--json"}, {run_app, "--trajectory"}, {sweep_app, "--csv"},
+        {fit_app, "--json"}, {fit_app, "--csv"},        {fit_app, "--plot"}};
     for (const auto& [sub, flag] : path_flags) {
       if (sub->parsed() && sub->count(flag) > 0 &&
           sub->get_option(flag)->as<std::string>().empty()) {
