@@ -1,14 +1,20 @@
 // Google Benchmark: Hertz fitted to the real 2000-point JPK approach (nanite takes 3.2 ms for
 // the fit alone on this machine), alone and with the file's reading and preprocessing; JKR and
-// DMT fitted to a synthetic 2000-point retract and to the real JPK retract.
+// DMT fitted to a synthetic 2000-point retract and to the real JPK retract; whole maps through
+// the map runner on 2 threads: a synthetic 64 x 64 JKR map, and the real force map with reading.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <ctime>
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "engine/fit/adhesive_fit.hpp"
+#include "engine/fit/fit_map.hpp"
 #include "engine/fit/hertz_fit.hpp"
 #include "engine/fit/prepared_curve.hpp"
 #include "engine/measured/read_force_curves.hpp"
@@ -123,6 +129,88 @@ BENCHMARK_CAPTURE(BM_AdhesiveFit, jkr_jpk_retract, mdrsim::fit::AdhesionModel::j
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_AdhesiveFit, dmt_jpk_retract, mdrsim::fit::AdhesionModel::dmt, true)
     ->Unit(benchmark::kMicrosecond);
+
+/// A 64 x 64 map of JKR retracts (4096 curves of 2000 points, the synthetic retract above with
+/// each curve's own extra noise), in memory as a reader would give it, fitted through the map
+/// runner on 2 threads. Target: <= 30 s for the map.
+void BM_JkrMap64On2Threads(benchmark::State& state) {
+  const mdrsim::fit::PreparedSegment base = synthetic_retract(mdrsim::fit::AdhesionModel::jkr);
+  const double spread = 0.1 * (*std::max_element(base.force.begin(), base.force.end())) / 6;
+  std::vector<mdrsim::measured::MeasuredFile> files(1);
+  files[0].path = "synthetic-64x64";
+  files[0].grid = mdrsim::measured::MapGrid{64, 64, 64e-6, 64e-6, 0.0, 0.0};
+  for (long c = 0; c < 64 * 64; ++c) {
+    std::mt19937_64 random(static_cast<std::uint64_t>(c) + 2);
+    std::normal_distribution<double> noise(0.0, 0.01 * spread);
+    mdrsim::measured::Segment retract;
+    retract.name = "retract";
+    retract.kind = mdrsim::measured::SegmentKind::retract;
+    retract.tip_position = base.tip_position;
+    for (const double f : base.force) retract.force.push_back(f + noise(random));
+    mdrsim::measured::ForceCurve curve;
+    curve.label = "index/" + std::to_string(c);
+    curve.position =
+        mdrsim::measured::MapPosition{(c % 64 - 31.5) * 1e-6, (c / 64 - 31.5) * 1e-6, c};
+    curve.segments.push_back(std::move(retract));
+    files[0].curves.push_back(std::move(curve));
+  }
+  mdrsim::fit::CurveFitOptions options;
+  options.model = mdrsim::fit::FitModel::jkr;
+  options.tip = mdrsim::fit::parse_tip("parabolic:radius=5e-6");
+  mdrsim::fit::MapRun run;
+  run.threads = 2;
+  const auto curves = mdrsim::fit::every_curve(files);
+  std::size_t fitted = 0;
+  // The process's CPU time over every thread: on a shared machine the wall time says how busy
+  // it is, this what the map costs.
+  const std::clock_t cpu_start = std::clock();
+  for (auto _ : state) {
+    const auto fits = mdrsim::fit::fit_curves(files, curves, mdrsim::measured::SegmentKind::retract,
+                                              options, run);
+    fitted = static_cast<std::size_t>(std::count_if(fits.begin(), fits.end(), [](const auto& f) {
+      return f.fit.status == mdrsim::fit::FitStatus::fitted;
+    }));
+  }
+  state.counters["curves"] = static_cast<double>(curves.size());
+  state.counters["fitted"] = static_cast<double>(fitted);
+  state.counters["cpu_ms_per_curve"] =
+      1e3 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC /
+      static_cast<double>(curves.size() * static_cast<std::size_t>(state.iterations()));
+  state.counters["per_curve_ms"] = benchmark::Counter(
+      static_cast<double>(curves.size()) * 1e-3,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_JkrMap64On2Threads)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+/// The real force map (3 curves of 10000 + 4000 points): read, prepared and Hertz fitted to
+/// the approaches on 2 threads, per curve. Target: <= 5 ms per curve, reading included.
+void BM_ForceMapReadAndFitOn2Threads(benchmark::State& state) {
+  const std::string map = std::string(MDRSIM_SOURCE_DIR) +
+                          "/tests/data/afm/fmt-jpk-fd_map-data-reference-points.jpk-force-map";
+  mdrsim::fit::CurveFitOptions options;
+  options.tip = mdrsim::fit::parse_tip("parabolic:radius=1e-5");
+  mdrsim::fit::MapRun run;
+  run.threads = 2;
+  std::size_t curves = 0;
+  const std::clock_t cpu_start = std::clock();
+  for (auto _ : state) {
+    const std::vector<mdrsim::measured::MeasuredFile> files = {
+        mdrsim::measured::read_force_curves(map)};
+    const auto fits =
+        mdrsim::fit::fit_curves(files, mdrsim::fit::every_curve(files),
+                                mdrsim::measured::SegmentKind::approach, options, run);
+    curves = fits.size();
+    benchmark::DoNotOptimize(fits.front().fit.youngs_modulus.value);
+  }
+  state.counters["curves"] = static_cast<double>(curves);
+  state.counters["cpu_ms_per_curve"] =
+      1e3 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC /
+      static_cast<double>(curves * static_cast<std::size_t>(state.iterations()));
+  state.counters["per_curve_ms"] = benchmark::Counter(
+      static_cast<double>(curves) * 1e-3,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ForceMapReadAndFitOn2Threads)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
