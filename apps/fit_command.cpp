@@ -206,55 +206,120 @@ MapPlan plan_map(const FitOptions& options, fit::FitModel model) {
   return plan;
 }
 
-/// Every curve of `files` not in the resume CSV fitted on --threads threads, in input order;
-/// with --resume each row is appended to the CSV as soon as it and every row before it are
-/// done (a killed run keeps them), with progress lines on standard error for long runs.
-std::vector<fit::CurveFit> fit_map(const std::vector<measured::MeasuredFile>& files,
-                                   const MapPlan& plan, measured::SegmentKind segment,
-                                   const fit::CurveFitOptions& fit_options,
-                                   const FitOptions& options) {
-  std::vector<fit::CurveRef> curves;
-  std::size_t skipped = 0;
-  for (const fit::CurveRef& ref : fit::every_curve(files)) {
-    const bool done = plan.resume.done.count(
-        {files[ref.file].path.string(), files[ref.file].curves[ref.curve].label});
-    skipped += done;
-    if (!done) curves.push_back(ref);
-  }
-  std::optional<CsvSink> csv;
-  if (options.resume) {
-    csv.emplace(options.csv);
-    if (plan.resume.fresh) {
-      csv->open_fresh(fit::curve_fit_csv_header() + "\n");
-    } else {
-      csv->open_resumed(plan.resume.keep);
+/// The curves a batch holds at least before it is fitted (a file is never split): a study's
+/// files are read a batch at a time, so that hundreds of maps need not be held at once.
+constexpr std::size_t kBatchCurves = 512;
+
+/// The fits of a run, and what --plot needs of the files once they are gone.
+struct MapResult {
+  std::vector<fit::CurveFit> fits;
+  PlotSource plot;
+};
+
+/// The progress of a run: in curves for one file, in files for several.
+class MapProgress {
+ public:
+  MapProgress(std::size_t files, std::chrono::steady_clock::time_point started)
+      : by_file_(files > 1), files_(files), started_(started) {}
+  /// Called once the first file is read: a single file's curves to fit are known then.
+  void start(std::size_t curves) {
+    if (!progress_) {
+      progress_.emplace(0, by_file_ ? files_ : curves, started_, std::chrono::seconds(5), "fit",
+                        by_file_ ? "files" : "curves");
     }
+  }
+  void report(std::size_t files_done, std::size_t curves_done) {
+    const auto line =
+        progress_->line(by_file_ ? files_done : curves_done, std::chrono::steady_clock::now());
+    if (line) spdlog::info("{}", *line);
+  }
+
+ private:
+  bool by_file_;
+  std::size_t files_;
+  std::chrono::steady_clock::time_point started_;
+  std::optional<SweepProgress> progress_;
+};
+
+/// This shard's files read a batch at a time, each refused (SceneError) where none of its
+/// curves can be prepared, and every curve not in the resume CSV fitted on --threads threads,
+/// in input order; with --resume each row is appended to the CSV as soon as it and every row
+/// before it are done (a killed run keeps them); progress on standard error for long runs.
+MapResult fit_map(const measured::CalibrationOverride& calibration, const MapPlan& plan,
+                  measured::SegmentKind segment, const fit::CurveFitOptions& fit_options,
+                  const FitOptions& options) {
+  std::vector<std::string> paths;
+  for (std::size_t f = 0; f < options.curves.size(); ++f) {
+    if (f % plan.shard.count == plan.shard.index) paths.push_back(options.curves[f]);
   }
   const auto started = std::chrono::steady_clock::now();
-  SweepProgress progress(0, curves.size(), started, std::chrono::seconds(5), "fit", "curves");
-  fit::MapRun run;
-  run.threads = options.threads;
-  if (csv) {
-    run.on_fit = [&](std::size_t, const fit::CurveFit& one) {
-      csv->write_all(fit::curve_fit_csv_row(one, fit_options.model) + "\n");
-    };
-  }
-  run.on_progress = [&](std::size_t reported) {
-    if (const auto line = progress.line(reported, std::chrono::steady_clock::now())) {
-      spdlog::info("{}", *line);
+  MapProgress progress(paths.size(), started);
+  MapResult result;
+  std::optional<CsvSink> csv;
+  std::size_t next = 0, files_done = 0, skipped = 0, total_curves = 0;
+  while (next < paths.size()) {
+    std::vector<measured::MeasuredFile> batch;
+    std::size_t batch_curves = 0;
+    while (next < paths.size() && batch_curves < kBatchCurves) {
+      batch.push_back(measured::read_force_curves(paths[next++], calibration));
+      fit::check_fittable(batch.back(), segment);
+      batch_curves += batch.back().curves.size();
+      total_curves += batch.back().curves.size();
+      result.plot.note(batch.back());
     }
-  };
-  std::vector<fit::CurveFit> fits = fit::fit_curves(files, curves, segment, fit_options, run);
-  if (curves.size() + skipped > 1) {
-    const auto threads = std::max<std::size_t>(
-        1, std::min<std::size_t>(static_cast<std::size_t>(options.threads), curves.size()));
+    // Each file's last curve to fit, where its fit completes the file.
+    std::vector<fit::CurveRef> curves;
+    std::vector<bool> ends_file;
+    for (std::size_t f = 0; f < batch.size(); ++f) {
+      const std::size_t before = curves.size();
+      for (std::size_t c = 0; c < batch[f].curves.size(); ++c) {
+        if (plan.resume.done.count({batch[f].path.string(), batch[f].curves[c].label})) {
+          ++skipped;
+        } else {
+          curves.push_back({f, c});
+          ends_file.push_back(false);
+        }
+      }
+      if (curves.size() > before) {
+        ends_file.back() = true;
+      } else {
+        ++files_done;
+      }
+    }
+    progress.start(curves.size());
+    if (options.resume && !csv) {
+      csv.emplace(options.csv);
+      if (plan.resume.fresh) {
+        csv->open_fresh(fit::curve_fit_csv_header() + "\n");
+      } else {
+        csv->open_resumed(plan.resume.keep);
+      }
+    }
+    const std::size_t curves_before = result.fits.size();
+    fit::MapRun run;
+    run.threads = options.threads;
+    run.on_fit = [&](std::size_t position, const fit::CurveFit& one) {
+      if (csv) csv->write_all(fit::curve_fit_csv_row(one, fit_options.model) + "\n");
+      files_done += ends_file[position];
+    };
+    run.on_progress = [&](std::size_t reported) {
+      progress.report(files_done, curves_before + reported);
+    };
+    for (fit::CurveFit& one : fit::fit_curves(batch, curves, segment, fit_options, run)) {
+      result.fits.push_back(std::move(one));
+    }
+  }
+  if (total_curves > 1) {
+    const std::size_t fitted = result.fits.size();
     spdlog::info(
-        "fit: {} curves of {} on {} in {:.3g} s{}", curves.size(), counted(files.size(), "file"),
-        counted(threads, "thread"),
+        "fit: {} curves of {} on {} in {:.3g} s{}", fitted, counted(paths.size(), "file"),
+        counted(std::max<std::size_t>(
+                    1, std::min<std::size_t>(static_cast<std::size_t>(options.threads), fitted)),
+                "thread"),
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
         skipped > 0 ? fmt::format(" ({} were in the CSV already)", skipped) : std::string());
   }
-  return fits;
+  return result;
 }
 
 }  // namespace
@@ -304,15 +369,10 @@ int fit_command(const FitOptions& options) {
   }
 
   const MapPlan plan = plan_map(options, model);
-  // Every file is read, and refused where none of its curves can be fitted, before any is
-  // fitted: a bad file is refused before output is written.
-  std::vector<measured::MeasuredFile> files;
-  for (std::size_t f = 0; f < options.curves.size(); ++f) {
-    if (f % plan.shard.count != plan.shard.index) continue;
-    files.push_back(measured::read_force_curves(options.curves[f], fixed.calibration));
-    fit::check_fittable(files.back(), segment);
-  }
-  const std::vector<fit::CurveFit> fits = fit_map(files, plan, segment, fit_options, options);
+  // Outputs are written once every file is read and fitted (--resume's CSV row by row): a file
+  // refused on the way leaves no output behind.
+  const MapResult map = fit_map(fixed.calibration, plan, segment, fit_options, options);
+  const std::vector<fit::CurveFit>& fits = map.fits;
 
   std::optional<OutputFile> json_file;
   if (!options.json.empty()) json_file.emplace("--json", options.json);
@@ -338,7 +398,7 @@ int fit_command(const FitOptions& options) {
     }
   }
   if (!options.plot.empty()) {
-    write_fit_plot(plan.python, options.plot, files, fits,
+    write_fit_plot(plan.python, options.plot, map.plot, fits,
                    options.resume ? std::optional<std::string>(options.csv) : std::nullopt, segment,
                    fit_options);
   }

@@ -127,16 +127,10 @@ std::vector<double> model_forces(const fit::CurveFit& fit, const fit::PreparedSe
 std::string cell(double value) { return std::isfinite(value) ? fmt::format("{}", value) : ""; }
 
 /// The samples of the one curve fitted, with the model where the fit has values.
-void write_curve_samples(const std::string& path, const std::vector<measured::MeasuredFile>& files,
+void write_curve_samples(const std::string& path, const std::optional<measured::ForceCurve>& curve,
                          const fit::CurveFit& fit, measured::SegmentKind segment,
                          const fit::CurveFitOptions& options) {
-  const measured::ForceCurve* curve = nullptr;
-  for (const measured::MeasuredFile& file : files) {
-    for (const measured::ForceCurve& c : file.curves) {
-      if (file.path.string() == fit.file && c.label == fit.curve) curve = &c;
-    }
-  }
-  if (curve == nullptr || fit.fit.status == fit::FitStatus::unreadable) {
+  if (!curve || fit.fit.status == fit::FitStatus::unreadable) {
     throw WriteError(fmt::format("--plot: {} has no samples to draw ({})", fit.file,
                                  fit::fit_status_name(fit.fit.status)));
   }
@@ -156,6 +150,19 @@ void write_curve_samples(const std::string& path, const std::vector<measured::Me
 
 }  // namespace
 
+void PlotSource::note(const measured::MeasuredFile& file) {
+  curves += file.curves.size();
+  if (curves == 1 && file.curves.size() == 1) {
+    only_curve = file.curves.front();
+  } else {
+    only_curve.reset();
+  }
+  if (!grid && file.grid) {
+    grid = file.grid;
+    grid_file = file.path.string();
+  }
+}
+
 std::string plot_python() {
   std::vector<std::string> candidates;
   if (const char* chosen = std::getenv("MDRSIM_PYTHON"); chosen != nullptr && *chosen != '\0') {
@@ -172,15 +179,14 @@ std::string plot_python() {
                   fmt::join(candidates, ", ")));
 }
 
-void write_fit_plot(const std::string& python, const std::string& png,
-                    const std::vector<measured::MeasuredFile>& files,
+void write_fit_plot(const std::string& python, const std::string& png, const PlotSource& source,
                     const std::vector<fit::CurveFit>& fits, const std::optional<std::string>& csv,
                     measured::SegmentKind segment, const fit::CurveFitOptions& options) {
   const TemporaryFolder folder;
   std::vector<std::string> arguments = {"-c", kPlotFitScript};
   if (fits.size() == 1 && !csv) {
     const std::string samples = folder.file("samples.csv");
-    write_curve_samples(samples, files, fits.front(), segment, options);
+    write_curve_samples(samples, source.only_curve, fits.front(), segment, options);
     arguments.insert(arguments.end(),
                      {"curve", samples, png, fit::curve_fit_summary(fits.front(), options.model)});
   } else {
@@ -193,15 +199,13 @@ void write_fit_plot(const std::string& python, const std::string& png,
       if (!out) throw WriteError("--plot: cannot write the fits for the script");
     }
     arguments.insert(arguments.end(), {"map", table, png});
-    for (const measured::MeasuredFile& file : files) {
-      if (!file.grid) continue;
-      const measured::MapGrid& g = *file.grid;
-      arguments.push_back(file.path.string());
+    if (source.grid) {
+      const measured::MapGrid& g = *source.grid;
+      arguments.push_back(source.grid_file);
       for (const double v : {static_cast<double>(g.columns), static_cast<double>(g.rows), g.width,
                              g.height, g.center_x, g.center_y}) {
         arguments.push_back(fmt::format("{}", v));
       }
-      break;
     }
   }
   const int status = run_python(python, arguments, false);

@@ -2,6 +2,7 @@
 // from a CSV written for it.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,13 +17,24 @@ namespace mdrsim::cli {
 /// called before any fit.
 std::string plot_python();
 
+/// What a figure needs of the files read, kept as they go by: the curve of a run of one, and
+/// the first grid declared.
+struct PlotSource {
+  std::optional<measured::ForceCurve> only_curve;  ///< while the run has read one curve in all
+  std::string grid_file;                           ///< the file of `grid`, as given
+  std::optional<measured::MapGrid> grid;
+  std::size_t curves = 0;
+
+  /// Notes a file read.
+  void note(const measured::MeasuredFile& file);
+};
+
 /// One curve: the measured force over tip position, the model and the residuals. A map or
 /// several curves: images of E, work_of_adhesion (adhesive models) and the residual RMS on the
 /// grid of the first file that declares one, else at the curves' positions, else by curve.
 /// `csv` is a fit CSV of every curve to show (a --resume run's, with the rows of earlier runs);
 /// without it, `fits` are written to one for the script.
-void write_fit_plot(const std::string& python, const std::string& png,
-                    const std::vector<measured::MeasuredFile>& files,
+void write_fit_plot(const std::string& python, const std::string& png, const PlotSource& source,
                     const std::vector<fit::CurveFit>& fits, const std::optional<std::string>& csv,
                     measured::SegmentKind segment, const fit::CurveFitOptions& options);
 
