@@ -1,15 +1,15 @@
-// DMT and JKR fitted by Eigen's Levenberg-Marquardt in scaled parameters; JKR's force from the
-// MDR branch sampled in the contact radius.
+// DMT and JKR fitted by the one Levenberg-Marquardt driver (least_squares) in scaled parameters;
+// JKR's force from the MDR branch sampled in the contact radius.
 #include "engine/fit/adhesive_fit.hpp"
-
-#include <Eigen/Dense>
-#include <unsupported/Eigen/LevenbergMarquardt>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
+
+#include "engine/fit/least_squares.hpp"
 
 namespace mdrsim::fit {
 namespace {
@@ -60,52 +60,19 @@ FreeLine fit_free_line(const std::vector<double>& z, const std::vector<double>& 
   return {mf, szz > 0.0 ? szf / szz : 0.0, mz};
 }
 
-struct ScaledAdhesive : Eigen::DenseFunctor<double> {
+/// The contact branch of every sample: which samples touch, and the model's force there.
+struct AdhesiveSamples {
   const AdhesiveFitOptions& options;
   double compliance;
   const std::vector<double>& z;
-  const std::vector<double>& force;
   std::size_t jump;  // retract: samples [0, jump] in contact; approach: [jump, n)
   double deepest;
-  std::array<double, kAdhesiveParameters> start{};
-  std::array<double, kAdhesiveParameters> scale{};
-  std::vector<int> free;
-  double force_scale = 1.0;
-
-  ScaledAdhesive(const AdhesiveFitOptions& options_, const std::vector<double>& z_,
-                 const std::vector<double>& force_, std::size_t jump_, double deepest_,
-                 std::vector<int> free_)
-      : Eigen::DenseFunctor<double>(static_cast<int>(free_.size()), static_cast<int>(z_.size())),
-        options(options_),
-        compliance(1.0 - options_.poisson_ratio * options_.poisson_ratio),
-        z(z_),
-        force(force_),
-        jump(jump_),
-        deepest(deepest_),
-        free(std::move(free_)) {}
-
-  /// E and w as start x exp(x): both stay positive, and the minimiser walks a curve whose
-  /// adhesion fades towards w -> 0 instead of through it. The rest as start + scale x.
-  std::array<double, kAdhesiveParameters> parameters(const InputType& x) const {
-    std::array<double, kAdhesiveParameters> p = start;
-    for (std::size_t j = 0; j < free.size(); ++j) {
-      const double xj = x[static_cast<Eigen::Index>(j)];
-      const int k = free[j];
-      p[k] = k < 2 ? start[k] * std::exp(std::clamp(xj, -50.0, 50.0)) : start[k] + scale[k] * xj;
-    }
-    return p;
-  }
-
-  /// dp/dx of the free parameter k at p.
-  double slope(int k, const std::array<double, kAdhesiveParameters>& p) const {
-    return k < 2 ? p[k] : scale[k];
-  }
 
   bool in_contact(std::size_t i) const { return options.retract ? i <= jump : i >= jump; }
 
   /// Calls visit(i, contact force or nullptr) for every sample at parameters p.
   template <class Visit>
-  void each(const std::array<double, kAdhesiveParameters>& p, Visit visit) const {
+  void each(std::span<const double> p, Visit visit) const {
     const double reduced = p[0] / compliance;
     const double work = p[1];
     const double deep = std::max(deepest, p[2] - *std::min_element(z.begin(), z.end()));
@@ -132,29 +99,6 @@ struct ScaledAdhesive : Eigen::DenseFunctor<double> {
         visit(i, &c);
       }
     }
-  }
-
-  int operator()(const InputType& x, ValueType& residuals) const {
-    const auto p = parameters(x);
-    each(p, [&](std::size_t i, const ContactForce* c) {
-      const double model = p[3] + p[4] * (z[i] - p[2]) + (c ? c->force : 0.0);
-      residuals[static_cast<Eigen::Index>(i)] = (model - force[i]) / force_scale;
-    });
-    return 0;
-  }
-
-  int df(const InputType& x, JacobianType& jacobian) const {
-    const auto p = parameters(x);
-    each(p, [&](std::size_t i, const ContactForce* c) {
-      const std::array<double, kAdhesiveParameters> d = {
-          c ? c->d_modulus / compliance : 0.0, c ? c->d_work : 0.0, -p[4] + (c ? c->d_depth : 0.0),
-          1.0, z[i] - p[2]};
-      for (std::size_t j = 0; j < free.size(); ++j) {
-        jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-            d[free[j]] * slope(free[j], p) / force_scale;
-      }
-    });
-    return 0;
   }
 };
 
@@ -353,46 +297,45 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
       options.fixed.baseline_offset, options.fixed.baseline_slope};
   std::array<double, kAdhesiveParameters> start = {reduced * compliance, work, contact_guess,
                                                    base_at_contact, base.slope};
-  std::vector<int> free;
   for (int j = 0; j < kAdhesiveParameters; ++j) {
-    if (held[j]) {
-      start[j] = *held[j];
-    } else {
-      free.push_back(j);
-    }
+    if (held[j]) start[j] = *held[j];
   }
-  ScaledAdhesive model(options, z, f, jump, deepest, free);
-  model.start = start;
-  model.scale = {1.0, 1.0, deepest, force_scale, force_scale / z_range};
-  model.force_scale = force_scale;
-
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free.size()));
-  Eigen::LevenbergMarquardtSpace::Status status =
-      Eigen::LevenbergMarquardtSpace::RelativeErrorTooSmall;
-  Eigen::LevenbergMarquardt<ScaledAdhesive> minimizer(model);
-  if (!free.empty()) {
-    minimizer.setFtol(1e-12);
-    minimizer.setXtol(1e-12);
-    minimizer.setMaxfev(400 * static_cast<Eigen::Index>(free.size() + 1));
-    status = minimizer.minimize(x);
-    fit.iterations = static_cast<long>(minimizer.iterations());
-    fit.evaluations = static_cast<long>(minimizer.nfev());
-  }
-  const auto p = model.parameters(x);
-  FitParameter* out[kAdhesiveParameters] = {&fit.youngs_modulus, &fit.work_of_adhesion,
-                                            &fit.contact_point, &fit.baseline_offset,
-                                            &fit.baseline_slope};
-  for (int j = 0; j < kAdhesiveParameters; ++j) {
-    out[j]->value = p[j];
-    out[j]->fixed = held[j].has_value();
-  }
-  Eigen::VectorXd residuals(static_cast<Eigen::Index>(n));
-  model(x, residuals);
-  const double sum_squares = residuals.squaredNorm();
-  fit.residual_rms = std::sqrt(sum_squares / static_cast<double>(n)) * force_scale;
+  const AdhesiveSamples samples{options, compliance, z, jump, deepest};
+  ScaledProblem problem;
+  problem.start.assign(start.begin(), start.end());
+  // E and w as start x exp(x): both stay positive, and the minimiser walks a curve whose
+  // adhesion fades towards w -> 0 instead of through it. The rest as start + scale x.
+  problem.scale = {1.0, 1.0, deepest, force_scale, force_scale / z_range};
+  problem.walk = {Walk::logarithmic, Walk::logarithmic, Walk::linear, Walk::linear, Walk::linear};
+  for (int j = 0; j < kAdhesiveParameters; ++j) problem.held.push_back(held[j].has_value());
+  problem.data = &f;
+  problem.force_scale = force_scale;
+  problem.model = [&](std::span<const double> p, std::span<double> model) {
+    samples.each(p, [&](std::size_t i, const ContactForce* c) {
+      model[i] = p[3] + p[4] * (z[i] - p[2]) + (c ? c->force : 0.0);
+    });
+  };
+  problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
+    samples.each(p, [&](std::size_t i, const ContactForce* c) {
+      double* row = &d[i * kAdhesiveParameters];
+      row[0] = c ? c->d_modulus / compliance : 0.0;
+      row[1] = c ? c->d_work : 0.0;
+      row[2] = -p[4] + (c ? c->d_depth : 0.0);
+      row[3] = 1.0;
+      row[4] = z[i] - p[2];
+    });
+  };
+  FitParameter* const out[kAdhesiveParameters] = {&fit.youngs_modulus, &fit.work_of_adhesion,
+                                                  &fit.contact_point, &fit.baseline_offset,
+                                                  &fit.baseline_slope};
+  const ScaledSolution solution = minimize_scaled(problem, out);
+  fit.iterations = solution.iterations;
+  fit.evaluations = solution.evaluations;
+  const std::vector<double>& p = solution.values;
+  fit.residual_rms = std::sqrt(solution.sum_squares / static_cast<double>(n)) * force_scale;
   fit.max_indentation = std::max(0.0, p[2] - *z_low);
   fit.contact_samples = 0;
-  for (std::size_t i = 0; i < n; ++i) fit.contact_samples += model.in_contact(i);
+  for (std::size_t i = 0; i < n; ++i) fit.contact_samples += samples.in_contact(i);
   const double fitted_reduced = p[0] / compliance;
   if (options.model == AdhesionModel::dmt) {
     fit.adhesion_force_fitted = 2.0 * std::numbers::pi * options.tip.radius * p[1];
@@ -400,30 +343,13 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
     fit.adhesion_force_fitted =
         -JkrBranch(*options.tip.profile, fitted_reduced, p[1], fit.max_indentation).lowest_force();
   }
-  const auto dof = static_cast<double>(n) - static_cast<double>(free.size());
-  if (!free.empty() && dof > 0.0) {
-    Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(free.size()));
-    model.df(x, jacobian);
-    const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
-    const Eigen::MatrixXd covariance =
-        normal.ldlt().solve(Eigen::MatrixXd::Identity(normal.rows(), normal.cols())) *
-        (sum_squares / dof);
-    for (std::size_t j = 0; j < free.size(); ++j) {
-      const auto jj = static_cast<Eigen::Index>(j);
-      out[free[j]]->standard_error =
-          model.slope(free[j], p) * std::sqrt(std::max(0.0, covariance(jj, jj)));
-    }
-  }
   bool finite = std::isfinite(fit.residual_rms) && std::isfinite(fit.adhesion_force_fitted);
   for (const FitParameter* q : out) {
     finite = finite && std::isfinite(q->value) && std::isfinite(q->standard_error);
   }
-  if (status == Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation ||
-      status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters) {
+  if (const char* failure = minimizer_failure(solution.outcome)) {
     fit.status = FitStatus::not_converged;
-    fit.message = status == Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation
-                      ? "the minimiser reached its limit of evaluations"
-                      : "the minimiser refused its start";
+    fit.message = failure;
   } else if (!finite) {
     fit.status = FitStatus::not_converged;
     fit.message = "the fit gave numbers that are not finite";

@@ -1,75 +1,18 @@
-// Hertz's model fitted by Eigen's Levenberg-Marquardt (MINPACK's lmder) in scaled parameters.
+// Hertz's model fitted by the one Levenberg-Marquardt driver (least_squares) in scaled parameters.
 #include "engine/fit/hertz_fit.hpp"
-
-#include <Eigen/Dense>
-#include <unsupported/Eigen/LevenbergMarquardt>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <vector>
+
+#include "engine/fit/least_squares.hpp"
 
 namespace mdrsim::fit {
 namespace {
 
 constexpr int kParameters = 4;  // youngs_modulus, contact_point, baseline_offset, baseline_slope
-
-/// The residuals (model - data) / force_scale over the free parameters, each as
-/// start + scale * x so that every x is of order one whatever the units.
-struct ScaledHertz : Eigen::DenseFunctor<double> {
-  const TipShape& tip;
-  double compliance;  // (1 - nu^2)
-  const std::vector<double>& z;
-  const std::vector<double>& force;
-  std::array<double, kParameters> start{};
-  std::array<double, kParameters> scale{};
-  std::vector<int> free;  // the indices of the fitted parameters
-  double force_scale = 1.0;
-
-  ScaledHertz(const TipShape& tip_, double nu, const std::vector<double>& z_,
-              const std::vector<double>& force_, std::vector<int> free_)
-      : Eigen::DenseFunctor<double>(static_cast<int>(free_.size()), static_cast<int>(z_.size())),
-        tip(tip_),
-        compliance(1.0 - nu * nu),
-        z(z_),
-        force(force_),
-        free(std::move(free_)) {}
-
-  std::array<double, kParameters> parameters(const InputType& x) const {
-    std::array<double, kParameters> p = start;
-    for (std::size_t j = 0; j < free.size(); ++j) {
-      p[free[j]] = start[free[j]] + scale[free[j]] * x[static_cast<Eigen::Index>(j)];
-    }
-    return p;
-  }
-
-  int operator()(const InputType& x, ValueType& residuals) const {
-    const auto p = parameters(x);
-    const double reduced = p[0] / compliance;
-    for (std::size_t i = 0; i < z.size(); ++i) {
-      const double model =
-          p[2] + p[3] * (z[i] - p[1]) + reduced * tip.force_per_modulus(p[1] - z[i]);
-      residuals[static_cast<Eigen::Index>(i)] = (model - force[i]) / force_scale;
-    }
-    return 0;
-  }
-
-  int df(const InputType& x, JacobianType& jacobian) const {
-    const auto p = parameters(x);
-    const double reduced = p[0] / compliance;
-    for (std::size_t i = 0; i < z.size(); ++i) {
-      const double delta = p[1] - z[i];
-      const std::array<double, kParameters> d = {tip.force_per_modulus(delta) / compliance,
-                                                 -p[3] + reduced * tip.stiffness_per_modulus(delta),
-                                                 1.0, z[i] - p[1]};
-      for (std::size_t j = 0; j < free.size(); ++j) {
-        jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-            d[free[j]] * scale[free[j]] / force_scale;
-      }
-    }
-    return 0;
-  }
-};
 
 bool finite_fit(const HertzFit& fit) {
   for (const FitParameter* p :
@@ -132,65 +75,48 @@ HertzFit fit_hertz(const PreparedSegment& segment, const HertzFitOptions& option
     start[0] =
         g > 0.0 ? force_scale / g * (1.0 - options.poisson_ratio * options.poisson_ratio) : 1.0;
   }
-  std::vector<int> free;
   for (int j = 0; j < kParameters; ++j) {
-    if (held[j]) {
-      start[j] = *held[j];
-    } else {
-      free.push_back(j);
-    }
+    if (held[j]) start[j] = *held[j];
   }
   const double depth = std::max(start[1] - *z_low, 1e-3 * z_range);
-  ScaledHertz model(options.tip, options.poisson_ratio, segment.tip_position, segment.force, free);
-  model.start = start;
-  model.scale = {std::abs(start[0]), depth, force_scale, force_scale / z_range};
-  model.force_scale = force_scale;
-
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free.size()));
-  Eigen::LevenbergMarquardtSpace::Status status =
-      Eigen::LevenbergMarquardtSpace::RelativeErrorTooSmall;
-  Eigen::LevenbergMarquardt<ScaledHertz> minimizer(model);
-  if (!free.empty()) {
-    minimizer.setFtol(1e-12);
-    minimizer.setXtol(1e-12);
-    minimizer.setMaxfev(400 * static_cast<Eigen::Index>(free.size() + 1));
-    status = minimizer.minimize(x);
-    fit.iterations = static_cast<long>(minimizer.iterations());
-    fit.evaluations = static_cast<long>(minimizer.nfev());
-  }
-  const auto p = model.parameters(x);
-  FitParameter* out[kParameters] = {&fit.youngs_modulus, &fit.contact_point, &fit.baseline_offset,
-                                    &fit.baseline_slope};
-  for (int j = 0; j < kParameters; ++j) {
-    out[j]->value = p[j];
-    out[j]->fixed = held[j].has_value();
-  }
-  Eigen::VectorXd residuals(static_cast<Eigen::Index>(fit.points));
-  model(x, residuals);
-  const double sum_squares = residuals.squaredNorm();
-  fit.residual_rms = std::sqrt(sum_squares / static_cast<double>(fit.points)) * force_scale;
-  fit.max_indentation = std::max(0.0, p[1] - *z_low);
-  const auto dof = static_cast<double>(fit.points) - static_cast<double>(free.size());
-  if (!free.empty() && dof > 0.0) {
-    Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(fit.points),
-                             static_cast<Eigen::Index>(free.size()));
-    model.df(x, jacobian);
-    const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
-    const Eigen::MatrixXd covariance =
-        normal.ldlt().solve(Eigen::MatrixXd::Identity(normal.rows(), normal.cols())) *
-        (sum_squares / dof);
-    for (std::size_t j = 0; j < free.size(); ++j) {
-      const auto jj = static_cast<Eigen::Index>(j);
-      out[free[j]]->standard_error =
-          model.scale[free[j]] * std::sqrt(std::max(0.0, covariance(jj, jj)));
+  const std::vector<double>& z = segment.tip_position;
+  const TipShape& tip = options.tip;
+  const double compliance = 1.0 - options.poisson_ratio * options.poisson_ratio;
+  ScaledProblem problem;
+  problem.start.assign(start.begin(), start.end());
+  problem.scale = {std::abs(start[0]), depth, force_scale, force_scale / z_range};
+  problem.walk.assign(kParameters, Walk::linear);
+  for (int j = 0; j < kParameters; ++j) problem.held.push_back(held[j].has_value());
+  problem.data = &segment.force;
+  problem.force_scale = force_scale;
+  problem.model = [&](std::span<const double> p, std::span<double> model) {
+    const double reduced = p[0] / compliance;
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      model[i] = p[2] + p[3] * (z[i] - p[1]) + reduced * tip.force_per_modulus(p[1] - z[i]);
     }
-  }
-  if (status == Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation ||
-      status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters) {
+  };
+  problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
+    const double reduced = p[0] / compliance;
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      const double delta = p[1] - z[i];
+      double* row = &d[i * kParameters];
+      row[0] = tip.force_per_modulus(delta) / compliance;
+      row[1] = -p[3] + reduced * tip.stiffness_per_modulus(delta);
+      row[2] = 1.0;
+      row[3] = z[i] - p[1];
+    }
+  };
+  FitParameter* const out[kParameters] = {&fit.youngs_modulus, &fit.contact_point,
+                                          &fit.baseline_offset, &fit.baseline_slope};
+  const ScaledSolution solution = minimize_scaled(problem, out);
+  fit.iterations = solution.iterations;
+  fit.evaluations = solution.evaluations;
+  fit.residual_rms =
+      std::sqrt(solution.sum_squares / static_cast<double>(fit.points)) * force_scale;
+  fit.max_indentation = std::max(0.0, solution.values[1] - *z_low);
+  if (const char* failure = minimizer_failure(solution.outcome)) {
     fit.status = FitStatus::not_converged;
-    fit.message = status == Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation
-                      ? "the minimiser reached its limit of evaluations"
-                      : "the minimiser refused its start";
+    fit.message = failure;
   } else if (!finite_fit(fit)) {
     fit.status = FitStatus::not_converged;
     fit.message = "the fit gave numbers that are not finite";
