@@ -360,12 +360,21 @@ int fit_command(const FitOptions& options) {
   fit_options.tip = fit::parse_tip(options.tip);
   fit_options.poisson_ratio = options.poisson_ratio;
   fit_options.fixed = fixed.parameters;
-  if (model == fit::FitModel::dmt && fit_options.tip.kind == fit::TipKind::cone) {
+  const fit::TipKind tip_kind = fit_options.tip.kind;
+  if (model == fit::FitModel::dmt && tip_kind != fit::TipKind::parabolic &&
+      tip_kind != fit::TipKind::sphere) {
     // A cone's adhesion outside the contact depends on the range of the attraction, not on
-    // work_of_adhesion alone: DMT's limit has no closed form in w for it.
-    throw UsageError(
-        "--model dmt: not for a cone (its DMT adhesion depends on the attraction's range; use "
-        "--model jkr)");
+    // work_of_adhesion alone: DMT's limit has no closed form in w for it, nor for a tip without
+    // an apex radius.
+    throw UsageError(fmt::format(
+        "--model dmt: not for a {} (its DMT adhesion depends on the attraction's range; use "
+        "--model jkr)",
+        tip_kind == fit::TipKind::cone      ? "cone"
+        : tip_kind == fit::TipKind::pyramid ? "pyramid"
+                                            : "tip without an apex radius"));
+  }
+  if (!fit_options.tip.approximation.empty()) {
+    spdlog::warn("--tip {}: {}", fit_options.tip.text, fit_options.tip.approximation);
   }
 
   const MapPlan plan = plan_map(options, model);

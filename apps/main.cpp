@@ -205,7 +205,8 @@ int main(int argc, char** argv) {
       ->required();
   fit_app
       ->add_option("--tip", fit.tip,
-                   "parabolic:radius=R, sphere:radius=R or cone:half_angle_deg=A (SI units)")
+                   "parabolic:radius=R, sphere:radius=R, cone:half_angle_deg=A, "
+                   "pyramid:half_angle_deg=A (SI units) or a scene file FILE.toml")
       ->required();
   fit_app->add_option("--model", fit.model, "hertz, dmt, jkr (maugis, auto: not yet)");
   fit_app->add_option("--poisson-ratio", fit.poisson_ratio, "the sample's (default 0.5)");

@@ -194,6 +194,7 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
   if (!fit.fit.message.empty()) out["message"] = fit.fit.message;
   out["model"] = fit_model_name(options.model);
   out["tip"] = options.tip.text;
+  if (!options.tip.approximation.empty()) out["tip_approximation"] = options.tip.approximation;
   out["segment"] = measured::segment_kind_name(segment);
   out["poisson_ratio"] = options.poisson_ratio;
   out["youngs_modulus"] = parameter_json(fit.fit.youngs_modulus, valued);

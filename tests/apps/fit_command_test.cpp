@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -70,7 +71,10 @@ TEST(FitCommand, RefusesWithOneLine) {
        "--segment both: not yet (approach or retract)\n"},
       {std::string("fit ") + kSpot3 + " --tip blunt:radius=1",
        "--tip: 'blunt:radius=1' is not a tip (known: parabolic:radius=R, sphere:radius=R, "
-       "cone:half_angle_deg=A)\n"},
+       "cone:half_angle_deg=A, pyramid:half_angle_deg=A, a scene file FILE.toml)\n"},
+      {std::string("fit ") + kSpot3 + " --tip pyramid:half_angle_deg=35 --model dmt",
+       "--model dmt: not for a pyramid (its DMT adhesion depends on the attraction's range; use "
+       "--model jkr)\n"},
       {"fit tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force --tip "
        "parabolic:radius=1e-5",
        "tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force: segment extend-cellhesion200: no "
@@ -119,6 +123,50 @@ TEST(FitCommand, SpringConstantGivenFitsTheDeflectionOnlyFile) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto all = nlohmann::json::parse(result.out);
   EXPECT_EQ(all[0]["calibration"]["spring_constant"]["source"], "override");
+}
+
+/// Writes `text` to NAME in a fresh temporary folder; returns its path.
+std::string temp_file(const std::string& name, const std::string& text) {
+  const std::string path = mdrsim::test::make_temp_dir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// A bad tip file: exit 2 and one line naming the file, line, column and key.
+TEST(FitCommand, BadTipFileNamesTheFileAndKey) {
+  const std::string tip = temp_file("tip.toml", "[profile]\ntype = \"sphere\"\nradus = 1e-5\n");
+  const auto result = run_mdrsim(std::string("fit ") + kSpot3 + " --tip " + tip);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err, tip +
+                            ":3:1: profile.radus: unknown key; did you mean 'radius'? (known: "
+                            "radius, type)\n");
+}
+
+// A scene file's paraboloid fits as `parabolic:radius=` does, to the last digit; the pyramid's
+// output says it is approximate.
+TEST(FitCommand, SceneTipAndPyramid) {
+  const std::string tip =
+      temp_file("tip.toml",
+                "[material]\nyoungs_modulus = 1\n[profile]\ntype = \"parabolic\"\nradius = 1e-5\n");
+  const auto scene = run_mdrsim(std::string("fit ") + kSpot3 + " --tip " + tip + " --json -");
+  const auto plain =
+      run_mdrsim(std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --json -");
+  ASSERT_EQ(scene.exit_code, 0) << scene.err;
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const auto a = nlohmann::json::parse(scene.out)[0], b = nlohmann::json::parse(plain.out)[0];
+  EXPECT_EQ(a["youngs_modulus"], b["youngs_modulus"]);
+  EXPECT_EQ(a["contact_point"], b["contact_point"]);
+  EXPECT_EQ(a["tip"], tip + " (parabolic)");
+
+  const auto pyramid =
+      run_mdrsim(std::string("fit ") + kSpot3 + " --tip pyramid:half_angle_deg=35 --json -");
+  ASSERT_EQ(pyramid.exit_code, 0) << pyramid.err;
+  const auto p = nlohmann::json::parse(pyramid.out)[0];
+  EXPECT_EQ(p["status"], "fitted");
+  EXPECT_EQ(p["tip_approximation"],
+            "approximate: the four-sided pyramid as the cone of equal cross-section area, half "
+            "angle 38.3122 deg");
+  EXPECT_NE(pyramid.err.find("approximate"), std::string::npos) << pyramid.err;
 }
 
 }  // namespace

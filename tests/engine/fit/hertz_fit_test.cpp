@@ -313,12 +313,13 @@ TEST(TipShape, SphereFallsShortOfTheParaboloidByATenthOfDeltaOverR) {
 
 TEST(TipShape, RefusesWhatIsNotATip) {
   try {
-    parse_tip("pyramid:half_angle_deg=35");
+    parse_tip("wedge:half_angle_deg=35");
     FAIL();
   } catch (const std::exception& e) {
     EXPECT_STREQ(e.what(),
-                 "--tip: 'pyramid:half_angle_deg=35' is not a tip (known: parabolic:radius=R, "
-                 "sphere:radius=R, cone:half_angle_deg=A)");
+                 "--tip: 'wedge:half_angle_deg=35' is not a tip (known: parabolic:radius=R, "
+                 "sphere:radius=R, cone:half_angle_deg=A, pyramid:half_angle_deg=A, a scene file "
+                 "FILE.toml)");
   }
   EXPECT_THROW(parse_tip("parabolic:radius=-1"), std::exception);
   EXPECT_THROW(parse_tip("cone:half_angle_deg=95"), std::exception);
