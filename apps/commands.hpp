@@ -48,6 +48,7 @@ struct FitOptions {
   std::string model = "hertz";
   double poisson_ratio = 0.5;
   std::string segment = "approach";
+  std::string range;               ///< FROM:TO [m] of indentation, or empty
   std::vector<std::string> fixes;  ///< NAME=VALUE
   std::string json;                ///< path, "-" or empty
   std::string csv;                 ///< path, "-" or empty

@@ -38,15 +38,44 @@ namespace mdrsim::cli {
 namespace {
 
 constexpr const char* kParameters =
-    "youngs_modulus, work_of_adhesion, contact_point, baseline_offset, "
-    "baseline_slope, spring_constant, sensitivity";
+    "youngs_modulus, work_of_adhesion, approach_work_of_adhesion, contact_point, "
+    "baseline_offset, baseline_slope, spring_constant, sensitivity";
 
 struct Fixed {
   fit::AdhesiveFixed parameters;
+  std::optional<double> approach_work_of_adhesion;
   measured::CalibrationOverride calibration;
 };
 
-Fixed parse_fixes(const std::vector<std::string>& fixes, fit::FitModel model) {
+/// A number that is all of `text`; nullopt otherwise.
+std::optional<double> whole_number(std::string_view text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc{} || end != text.data() + text.size() ||
+      !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+/// --range FROM:TO, indentations [m] with FROM < TO.
+fit::FitRange parse_range(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  const auto from = whole_number(std::string_view(text).substr(0, colon));
+  const auto to = colon == std::string::npos
+                      ? std::nullopt
+                      : whole_number(std::string_view(text).substr(colon + 1));
+  if (!from || !to) {
+    throw UsageError(
+        fmt::format("--range: '{}' is not FROM:TO (indentations in m)", printable(text, 80)));
+  }
+  if (!(*from < *to)) {
+    throw UsageError(fmt::format("--range {}: FROM must be below TO", printable(text, 80)));
+  }
+  return {*from, *to};
+}
+
+Fixed parse_fixes(const std::vector<std::string>& fixes, fit::FitModel model, bool both) {
   Fixed fixed;
   for (const std::string& text : fixes) {
     const std::size_t eq = text.find('=');
@@ -83,6 +112,11 @@ Fixed parse_fixes(const std::vector<std::string>& fixes, fit::FitModel model) {
     } else if (name == "work_of_adhesion" && model != fit::FitModel::hertz) {
       positive();
       fixed.parameters.work_of_adhesion = value;
+    } else if (name == "approach_work_of_adhesion" && model != fit::FitModel::hertz && both) {
+      positive();
+      fixed.approach_work_of_adhesion = value;
+    } else if (name == "approach_work_of_adhesion" && model != fit::FitModel::hertz) {
+      throw UsageError("--fix approach_work_of_adhesion: only with --segment both");
     } else if (name == "work_of_adhesion" || name == "approach_work_of_adhesion" ||
                name == "maugis_parameter") {
       throw UsageError(
@@ -299,7 +333,9 @@ MapResult fit_map(const measured::CalibrationOverride& calibration, const MapPla
     fit::MapRun run;
     run.threads = options.threads;
     run.on_fit = [&](std::size_t position, const fit::CurveFit& one) {
-      if (csv) csv->write_all(fit::curve_fit_csv_row(one, fit_options.model) + "\n");
+      if (csv)
+        csv->write_all(fit::curve_fit_csv_row(one, fit_options.model, fit_options.both_segments) +
+                       "\n");
       files_done += ends_file[position];
     };
     run.on_progress = [&](std::size_t reported) {
@@ -337,10 +373,11 @@ int fit_command(const FitOptions& options) {
                                  printable(options.model, 40)));
   }
   measured::SegmentKind segment = measured::SegmentKind::approach;
+  const bool both = options.segment == "both";
   if (options.segment == "retract") {
     segment = measured::SegmentKind::retract;
-  } else if (options.segment == "both") {
-    throw UsageError("--segment both: not yet (approach or retract)");
+  } else if (both) {
+    segment = measured::SegmentKind::approach;
   } else if (options.segment != "approach") {
     throw UsageError(fmt::format("--segment {}: unknown (known: approach, retract, both)",
                                  printable(options.segment, 40)));
@@ -354,12 +391,15 @@ int fit_command(const FitOptions& options) {
   if (options.plot == "-") throw UsageError("--plot: needs a file path (a PNG), not -");
   require_distinct_outputs(
       {{"--json", options.json}, {"--csv", options.csv}, {"--plot", options.plot}}, std::string());
-  const Fixed fixed = parse_fixes(options.fixes, model);
+  const Fixed fixed = parse_fixes(options.fixes, model, both);
   fit::CurveFitOptions fit_options;
   fit_options.model = model;
   fit_options.tip = fit::parse_tip(options.tip);
   fit_options.poisson_ratio = options.poisson_ratio;
   fit_options.fixed = fixed.parameters;
+  fit_options.approach_work_of_adhesion = fixed.approach_work_of_adhesion;
+  fit_options.both_segments = both;
+  if (!options.range.empty()) fit_options.range = parse_range(options.range);
   const fit::TipKind tip_kind = fit_options.tip.kind;
   if (model == fit::FitModel::dmt && tip_kind != fit::TipKind::parabolic &&
       tip_kind != fit::TipKind::sphere) {
@@ -398,7 +438,7 @@ int fit_command(const FitOptions& options) {
   if (csv_file) {
     csv_file->stream() << fit::curve_fit_csv_header() << '\n';
     for (const fit::CurveFit& one : fits)
-      csv_file->stream() << fit::curve_fit_csv_row(one, model) << '\n';
+      csv_file->stream() << fit::curve_fit_csv_row(one, model, both) << '\n';
     csv_file->commit();
   }
   if (!json_file && options.csv.empty()) {

@@ -210,7 +210,10 @@ int main(int argc, char** argv) {
       ->required();
   fit_app->add_option("--model", fit.model, "hertz, dmt, jkr (maugis, auto: not yet)");
   fit_app->add_option("--poisson-ratio", fit.poisson_ratio, "the sample's (default 0.5)");
-  fit_app->add_option("--segment", fit.segment, "approach (default) or retract");
+  fit_app->add_option("--segment", fit.segment, "approach (default), retract or both");
+  fit_app->add_option("--range", fit.range,
+                      "fit only the samples of indentation FROM:TO [m] from the contact point "
+                      "(--range=-1e-7:5e-7 where FROM is negative)");
   fit_app
       ->add_option("--fix", fit.fixes,
                    "hold NAME=VALUE (youngs_modulus, contact_point, baseline_offset, "

@@ -103,6 +103,81 @@ std::optional<GridCell> grid_cell(const measured::MapGrid& grid,
   return GridCell{static_cast<long>(std::floor(u)), static_cast<long>(std::floor(v))};
 }
 
+/// fit_one inside the indentation range: the samples chosen from the contact point's first
+/// guess (or its held value), then once more from the fitted one where that chose others.
+AdhesiveFit fit_in_range(const PreparedSegment& prepared, measured::SegmentKind segment,
+                         const CurveFitOptions& options) {
+  if (!options.range) return fit_one(prepared, segment, options);
+  double contact = 0.0;
+  if (options.fixed.contact_point) {
+    contact = *options.fixed.contact_point;
+  } else {
+    const FirstGuess guess = first_guess(prepared, options.tip, options.poisson_ratio,
+                                         segment == measured::SegmentKind::approach);
+    if (!guess.contact) return fit_one(prepared, segment, options);
+    contact = guess.contact_point;
+  }
+  PreparedSegment part = within_range(prepared, contact, *options.range);
+  AdhesiveFit fit = fit_one(part, segment, options);
+  if (!options.fixed.contact_point && has_values(fit)) {
+    PreparedSegment again = within_range(prepared, fit.contact_point.value, *options.range);
+    if (again.tip_position != part.tip_position) fit = fit_one(again, segment, options);
+  }
+  return fit;
+}
+
+CombinedFit fit_both(const PreparedSegment& approach, const PreparedSegment& retract,
+                     const CurveFitOptions& options) {
+  CombinedFitOptions both;
+  both.adhesive = options.model != FitModel::hertz;
+  both.model = options.model == FitModel::dmt ? AdhesionModel::dmt : AdhesionModel::jkr;
+  both.tip = options.tip;
+  both.poisson_ratio = options.poisson_ratio;
+  both.fixed = options.fixed;
+  both.approach_work_of_adhesion = options.approach_work_of_adhesion;
+  if (!options.range) return fit_combined(approach, retract, both);
+  double contact = 0.0;
+  if (options.fixed.contact_point) {
+    contact = *options.fixed.contact_point;
+  } else {
+    const FirstGuess guess = first_guess(approach, options.tip, options.poisson_ratio, true);
+    if (!guess.contact) return fit_combined(approach, retract, both);
+    contact = guess.contact_point;
+  }
+  const auto fit_at = [&](double c) {
+    return fit_combined(within_range(approach, c, *options.range),
+                        within_range(retract, c, *options.range), both);
+  };
+  CombinedFit fit = fit_at(contact);
+  if (!options.fixed.contact_point && has_values(fit)) {
+    const double moved = fit.contact_point.value;
+    if (within_range(approach, moved, *options.range).tip_position !=
+            within_range(approach, contact, *options.range).tip_position ||
+        within_range(retract, moved, *options.range).tip_position !=
+            within_range(retract, contact, *options.range).tip_position) {
+      fit = fit_at(moved);
+    }
+  }
+  return fit;
+}
+
+/// The hysteresis of a curve that has both segments, less the approach's baseline; nullopt
+/// where it has not both.
+std::optional<double> curve_hysteresis(const measured::ForceCurve& curve,
+                                       const CurveFitOptions& options) {
+  try {
+    const PreparedSegment approach = prepare_segment(curve, measured::SegmentKind::approach);
+    const PreparedSegment retract = prepare_segment(curve, measured::SegmentKind::retract);
+    const FirstGuess guess = first_guess(approach, options.tip, options.poisson_ratio, true);
+    const double energy = hysteresis_energy(approach, retract, guess.contact_point,
+                                            guess.baseline_offset, guess.baseline_slope);
+    if (!std::isfinite(energy)) return std::nullopt;
+    return energy;
+  } catch (const SceneError&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 const char* fit_model_name(FitModel model) {
@@ -132,16 +207,24 @@ CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
     return out;
   }
   try {
-    const PreparedSegment prepared = prepare_segment(curve, segment);
-    out.height_channel = prepared.height_channel;
-    out.fit = fit_one(prepared, segment, options);
+    if (options.both_segments) {
+      const PreparedSegment approach = prepare_segment(curve, measured::SegmentKind::approach);
+      const PreparedSegment retract = prepare_segment(curve, measured::SegmentKind::retract);
+      out.height_channel = approach.height_channel;
+      out.fit = fit_both(approach, retract, options);
+    } else {
+      const PreparedSegment prepared = prepare_segment(curve, segment);
+      out.height_channel = prepared.height_channel;
+      static_cast<AdhesiveFit&>(out.fit) = fit_in_range(prepared, segment, options);
+    }
     mark_undetermined(out.fit);
+    out.hysteresis_energy = curve_hysteresis(curve, options);
   } catch (const SceneError& e) {
     out.fit.message = curve.label.empty() ? e.what() : curve.label + ": " + e.what();
   } catch (const std::exception& e) {
     // The model itself refused a trial (a sphere indented past its radius): this curve's
     // fit failed, the map goes on.
-    out.fit = AdhesiveFit();
+    out.fit = CombinedFit();
     out.fit.status = FitStatus::not_converged;
     out.fit.message = std::string("the model failed: ") + e.what();
   }
@@ -195,11 +278,15 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
   out["model"] = fit_model_name(options.model);
   out["tip"] = options.tip.text;
   if (!options.tip.approximation.empty()) out["tip_approximation"] = options.tip.approximation;
-  out["segment"] = measured::segment_kind_name(segment);
+  out["segment"] = options.both_segments ? "both" : measured::segment_kind_name(segment);
+  if (options.range) out["range"] = {options.range->from, options.range->to};
   out["poisson_ratio"] = options.poisson_ratio;
   out["youngs_modulus"] = parameter_json(fit.fit.youngs_modulus, valued);
   if (options.model != FitModel::hertz) {
     out["work_of_adhesion"] = parameter_json(fit.fit.work_of_adhesion, valued);
+    if (options.both_segments) {
+      out["approach_work_of_adhesion"] = parameter_json(fit.fit.approach_work_of_adhesion, valued);
+    }
   }
   out["contact_point"] = parameter_json(fit.fit.contact_point, valued);
   out["baseline_offset"] = parameter_json(fit.fit.baseline_offset, valued);
@@ -212,6 +299,8 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
         {"measured", valued ? nlohmann::ordered_json(fit.fit.adhesion_force_measured) : nullptr}};
     out["contact_samples"] = fit.fit.contact_samples;
   }
+  out["hysteresis_energy"] =
+      fit.hysteresis_energy ? nlohmann::ordered_json(*fit.hysteresis_energy) : nullptr;
   out["points"] = fit.fit.points;
   out["iterations"] = fit.fit.iterations;
   out["tip_position_from"] = fit.height_channel;
@@ -225,12 +314,13 @@ std::string curve_fit_csv_header() {
          "contact_point_error,baseline_offset,baseline_offset_error,baseline_slope,"
          "baseline_slope_error,residual_rms,max_indentation,points,spring_constant,sensitivity,"
          "model,"
-         "work_of_adhesion,work_of_adhesion_error,adhesion_force_fitted,adhesion_force_measured";
+         "work_of_adhesion,work_of_adhesion_error,adhesion_force_fitted,adhesion_force_measured,"
+         "approach_work_of_adhesion,approach_work_of_adhesion_error,hysteresis_energy";
 }
 
-std::string curve_fit_csv_row(const CurveFit& fit, FitModel model) {
+std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_segments) {
   const bool valued = has_values(fit.fit);
-  const AdhesiveFit& f = fit.fit;
+  const CombinedFit& f = fit.fit;
   std::string row = fmt::format("{},{},", csv_text(fit.file), csv_text(fit.curve));
   row += fit.position
              ? fmt::format("{},{},{},", fit.position->x, fit.position->y, fit.position->index)
@@ -256,13 +346,19 @@ std::string curve_fit_csv_row(const CurveFit& fit, FitModel model) {
       csv_cell(f.work_of_adhesion.standard_error, adhesive && valued),
       csv_cell(f.adhesion_force_fitted, adhesive && valued),
       csv_cell(f.adhesion_force_measured, adhesive && valued));
+  const bool approach_work = adhesive && both_segments;
+  row += fmt::format(",{},{},{}",
+                     csv_cell(f.approach_work_of_adhesion.value,
+                              approach_work && (valued || f.approach_work_of_adhesion.fixed)),
+                     csv_cell(f.approach_work_of_adhesion.standard_error, approach_work && valued),
+                     fit.hysteresis_energy ? fmt::format("{}", *fit.hysteresis_energy) : "");
   return row;
 }
 
 std::string curve_fit_summary(const CurveFit& fit, FitModel model) {
   const std::string where =
       fit.curve.empty() ? fit.file : fmt::format("{}[{}]", fit.file, fit.curve);
-  const AdhesiveFit& f = fit.fit;
+  const CombinedFit& f = fit.fit;
   if (!has_values(f))
     return fmt::format("{}: {} ({})", where, fit_status_name(f.status), f.message);
   std::string line = fmt::format(
@@ -277,6 +373,11 @@ std::string curve_fit_summary(const CurveFit& fit, FitModel model) {
         fit_model_name(model), f.work_of_adhesion.value, f.work_of_adhesion.standard_error,
         f.adhesion_force_fitted, f.adhesion_force_measured);
   }
+  if (f.approach_work_of_adhesion.value > 0.0) {
+    line += fmt::format(", approach w = {:.4g} +- {:.2g} J/m^2", f.approach_work_of_adhesion.value,
+                        f.approach_work_of_adhesion.standard_error);
+  }
+  if (fit.hysteresis_energy) line += fmt::format(", hysteresis = {:.4g} J", *fit.hysteresis_energy);
   if (!f.message.empty()) line += fmt::format(" ({})", f.message);
   return line;
 }

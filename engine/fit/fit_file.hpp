@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "engine/fit/adhesive_fit.hpp"
+#include "engine/fit/combined_fit.hpp"
+#include "engine/fit/fit_range.hpp"
 #include "engine/fit/hertz_fit.hpp"
 #include "engine/measured/force_curve.hpp"
 
@@ -25,7 +27,11 @@ struct CurveFitOptions {
   FitModel model = FitModel::hertz;
   TipShape tip;
   double poisson_ratio = 0.5;
-  AdhesiveFixed fixed;  ///< work_of_adhesion is ignored by hertz
+  AdhesiveFixed fixed;                              ///< work_of_adhesion is ignored by hertz
+  std::optional<double> approach_work_of_adhesion;  ///< [J/m^2] held (both segments)
+  bool both_segments = false;  ///< approach and retract together (`segment` is then ignored)
+  /// The samples fitted: indentation from the contact point (its first guess, then the fit's).
+  std::optional<FitRange> range;
 };
 
 /// A curve's cell in its map's grid, from its position: column along x, row along y, each
@@ -43,12 +49,16 @@ struct CurveFit {
   std::optional<GridCell> cell;  ///< where the file declares a grid and the position lies on it
   measured::Calibration calibration;
   std::string height_channel;  ///< the channel the tip position was made from
-  AdhesiveFit fit;             ///< for hertz, work_of_adhesion and the adhesion forces stay 0
+  CombinedFit fit;  ///< for hertz, the works of adhesion and adhesion forces stay 0; for one
+                    ///< segment, approach_work_of_adhesion too
+  /// [J] between approach and retract (combined_fit.hpp), where the curve has both.
+  std::optional<double> hysteresis_energy;
 };
 
-/// Fits the first segment of `segment` kind of curve `index` of `file`. A curve that cannot be
-/// prepared (unreadable, no such segment, no spring constant) gets the status unreadable and
-/// its reason; a fit whose standard error of E exceeds E (the curve does not determine it) is
+/// Fits the first segment of `segment` kind of curve `index` of `file` (or its approach and
+/// retract together, options.both_segments), inside options.range where given. A curve that cannot
+/// be prepared (unreadable, no such segment, no spring constant) gets the status unreadable and its
+/// reason; a fit whose standard error of E exceeds E (the curve does not determine it) is
 /// not-converged with the reason "undetermined: ...". Safe to call from several threads.
 CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
                    measured::SegmentKind segment, const CurveFitOptions& options);
@@ -57,9 +67,10 @@ CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
 /// its curves can be prepared for a fit: what fit_file and the map runner do before any fit.
 void check_fittable(const measured::MeasuredFile& file, measured::SegmentKind segment);
 
-/// Fits the first segment of `segment` kind of every curve. A curve that cannot be prepared
-/// (unreadable, no such segment, no spring constant) gets the status unreadable and its reason;
-/// the file is refused (SceneError, one line naming it) when it holds no curve that could.
+/// Fits the first segment of `segment` kind of every curve (or its approach and retract
+/// together, options.both_segments), inside options.range where given. A curve that cannot be
+/// prepared (unreadable, no such segment, no spring constant) gets the status unreadable and its
+/// reason; the file is refused (SceneError, one line naming it) when it holds no curve that could.
 std::vector<CurveFit> fit_file(const measured::MeasuredFile& file, measured::SegmentKind segment,
                                const CurveFitOptions& options);
 
@@ -70,7 +81,7 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
 /// The CSV header and one row per curve (the map position in x, y, index and the grid's
 /// column, row); the adhesive models' columns come last, empty for hertz.
 std::string curve_fit_csv_header();
-std::string curve_fit_csv_row(const CurveFit& fit, FitModel model);
+std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_segments = false);
 
 /// "FILE[curve]: fitted E = ... Pa +- ..., contact point ..., rms ... N" (and w, the adhesion
 /// forces for dmt and jkr).

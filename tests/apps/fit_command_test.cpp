@@ -2,6 +2,8 @@
 // one line) and a map whose bad curve gets its status.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -64,17 +66,22 @@ TEST(FitCommand, RefusesWithOneLine) {
       {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --fix work_of_adhesion=1",
        "--fix work_of_adhesion: not a parameter of --model hertz\n"},
       {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --fix youngs=1",
-       "--fix youngs: unknown (known: youngs_modulus, work_of_adhesion, contact_point, "
-       "baseline_offset, "
-       "baseline_slope, spring_constant, sensitivity)\n"},
-      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --segment both",
-       "--segment both: not yet (approach or retract)\n"},
+       "--fix youngs: unknown (known: youngs_modulus, work_of_adhesion, "
+       "approach_work_of_adhesion, contact_point, baseline_offset, baseline_slope, "
+       "spring_constant, sensitivity)\n"},
+      {std::string("fit ") + kSpot3 +
+           " --tip parabolic:radius=1e-5 --model jkr --fix approach_work_of_adhesion=0.1",
+       "--fix approach_work_of_adhesion: only with --segment both\n"},
       {std::string("fit ") + kSpot3 + " --tip blunt:radius=1",
        "--tip: 'blunt:radius=1' is not a tip (known: parabolic:radius=R, sphere:radius=R, "
        "cone:half_angle_deg=A, pyramid:half_angle_deg=A, a scene file FILE.toml)\n"},
       {std::string("fit ") + kSpot3 + " --tip pyramid:half_angle_deg=35 --model dmt",
        "--model dmt: not for a pyramid (its DMT adhesion depends on the attraction's range; use "
        "--model jkr)\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --range 1e-7",
+       "--range: '1e-7' is not FROM:TO (indentations in m)\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --range 2e-7:1e-7",
+       "--range 2e-7:1e-7: FROM must be below TO\n"},
       {"fit tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force --tip "
        "parabolic:radius=1e-5",
        "tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force: segment extend-cellhesion200: no "
@@ -167,6 +174,56 @@ TEST(FitCommand, SceneTipAndPyramid) {
             "approximate: the four-sided pyramid as the cone of equal cross-section area, half "
             "angle 38.3122 deg");
   EXPECT_NE(pyramid.err.find("approximate"), std::string::npos) << pyramid.err;
+}
+
+// --range keeps the samples whose indentation from the contact point lies in FROM:TO: a Hertz
+// curve (paraboloid R = 10 um, E = 10 kPa) whose sample stiffens past 200 nm (a substrate: E
+// doubles there) gives 10 kPa when fitted to 200 nm only, and not when fitted whole.
+TEST(FitCommand, RangeRestrictsTheFittedIndentation) {
+  const double r = 1e-5, e = 1e4 / 0.75, contact = 5e-6, knee = 2e-7;
+  std::string table = "tip_position [m],force [N],segment\n";
+  for (int i = 0; i < 1500; ++i) {
+    const double d = 6e-7 * (i / 1499.0) - 6e-7 * 0.5;
+    double f = d > 0 ? 4.0 / 3.0 * e * std::sqrt(r) * std::pow(d, 1.5) : 0.0;
+    if (d > knee) f += 4.0 / 3.0 * e * std::sqrt(r) * std::pow(d - knee, 1.5);
+    table += fmt::format("{},{},approach\n", contact - d, f);
+  }
+  const std::string curve = temp_file("stiffening.csv", table);
+  const auto whole = run_mdrsim("fit " + curve + " --tip parabolic:radius=1e-5 --json -");
+  const auto part =
+      run_mdrsim("fit " + curve + " --tip parabolic:radius=1e-5 --range=-3e-7:2e-7 --json -");
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  ASSERT_EQ(part.exit_code, 0) << part.err;
+  const auto w = nlohmann::json::parse(whole.out)[0], p = nlohmann::json::parse(part.out)[0];
+  EXPECT_GT(w["youngs_modulus"]["value"].get<double>(), 1.1e4);
+  // Noise-free and exact inside the range: the minimiser's tolerance.
+  EXPECT_NEAR(p["youngs_modulus"]["value"].get<double>(), 1e4, 1e-6 * 1e4);
+  EXPECT_NEAR(p["contact_point"]["value"].get<double>(), contact, 1e-13);
+  // Samples from 300 nm above contact to 200 nm in: 5/6 of the 1500.
+  EXPECT_NEAR(p["points"].get<double>(), 1250, 2);
+  EXPECT_EQ(p["range"], nlohmann::json::parse("[-3e-7, 2e-7]"));
+}
+
+// --segment both on the Igor curve of a stiff sample: one E and contact point, both works of
+// adhesion, the hysteresis energy; the hysteresis is the same whatever segment is fitted.
+TEST(FitCommand, BothSegmentsOnTheIgorCurve) {
+  const std::string base =
+      "fit tests/data/afm/fmt-igor-fd_SiN_FD_plot.ibw --tip parabolic:radius=1e-5 --json - ";
+  const auto both = run_mdrsim(base + "--model jkr --segment both");
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  const auto f = nlohmann::json::parse(both.out)[0];
+  EXPECT_EQ(f["segment"], "both");
+  EXPECT_EQ(f["status"], "fitted") << f;
+  EXPECT_GT(f["work_of_adhesion"]["value"].get<double>(), 0.0);
+  EXPECT_GT(f["approach_work_of_adhesion"]["value"].get<double>(), 0.0);
+  EXPECT_EQ(f["points"], 1009 + 1007);
+  ASSERT_TRUE(f["hysteresis_energy"].is_number());
+  const auto approach = run_mdrsim(base);
+  ASSERT_EQ(approach.exit_code, 0) << approach.err;
+  EXPECT_EQ(nlohmann::json::parse(approach.out)[0]["hysteresis_energy"], f["hysteresis_energy"]);
+  const auto hertz = run_mdrsim(base + "--segment both");
+  ASSERT_EQ(hertz.exit_code, 0) << hertz.err;
+  EXPECT_EQ(nlohmann::json::parse(hertz.out)[0].count("approach_work_of_adhesion"), 0U);
 }
 
 }  // namespace
