@@ -7,6 +7,7 @@
     result.trajectory["normal_force"]          # NumPy, no copy
     rows = mdrsim.sweep(scene, {"loading.tangential.displacement": "0:9e-6:41"}).rows
 
+Measured force curves (AFM files) read and fitted: mdrsim.afm (docs/afm.md).
 Bad input raises mdrsim.SceneError (a ValueError) with the message `mdrsim run` prints.
 mdrsim.run releases the GIL while the engine runs: threads run scenes in parallel.
 """
@@ -14,7 +15,7 @@ mdrsim.run releases the GIL while the engine runs: threads run scenes in paralle
 import numbers
 import warnings
 
-from . import _core
+from . import _core, afm
 from ._core import Material, SceneError, set_log_level
 from ._parts import Parameter, parts, register_criterion, register_profile
 from ._result import Jump, Result, StageEnd, State, Work

@@ -22,6 +22,7 @@
 #include "engine/scene/scene_document.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/sweep/run_label.hpp"
+#include "python/src/afm.hpp"
 #include "python/src/interrupt_check.hpp"
 #include "python/src/python_parts.hpp"
 #include "python/src/python_sweep.hpp"
@@ -358,4 +359,5 @@ PYBIND11_MODULE(_core, m) {
   mdrsim::python::bind_scenes(m);
   mdrsim::python::bind_results(m);
   mdrsim::python::bind_sweep(m);
+  mdrsim::python::bind_afm(m);
 }
