@@ -9,6 +9,8 @@ from typing_extensions import NotRequired
 import numpy as np
 import numpy.typing as npt
 
+import mdrsim.afm as afm  # the submodule, loaded with the package (afm.pyi)
+
 __version__: str
 TRAJECTORY_ROWS: int
 SAMPLES: int
@@ -162,6 +164,7 @@ class Result:
     def wall_time_s(self) -> float: ...
     @property
     def trajectory(self) -> Trajectory | None: ...
+    def curve(self, stage: str | None = ...) -> Trajectory: ...
     @property
     def trajectory_rows_seen(self) -> int: ...
     @property

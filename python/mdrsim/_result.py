@@ -4,6 +4,8 @@ import json
 from dataclasses import dataclass
 from functools import cached_property
 
+import numpy as np
+
 from . import _core
 
 # The dimensionless fields (docs, paper eq. 16) and the JKR scale each is divided by: the
@@ -245,6 +247,34 @@ class Result:
         budget of mdrsim.run (trajectory_stride > 1 when rows were thinned). As the CSV's
         columns: "sliding" with friction, "cohesive_radius" [m] with finite-range adhesion."""
         return self._raw.trajectory()
+
+    def curve(self, stage=None):
+        """The trajectory's rows of one stage (all rows for stage=None), as a dict of NumPy
+        arrays and the lists "stage" and "event", like Result.trajectory.
+
+        A stage's own rows begin at its first event; the state it starts from is the previous
+        stage's last row (its `stage-end`). curve(stage=...) puts that row first, unchanged
+        (its "stage" still names the stage it ended), so that the curve holds the whole path
+        of the stage: a retract that starts pinned (no spring lets go until the front's
+        criterion is met) has no event along the pinned part, and without its starting state
+        its curve would begin at the first let-go, the pinned unloading missing. The first
+        stage starts from the untouched state, which has no row. Raises KeyError for a stage
+        the run has no row of, ValueError without a trajectory."""
+        trajectory = self.trajectory
+        if trajectory is None:
+            raise ValueError("the run kept no trajectory: use mdrsim.run(scene, trajectory=True)")
+        stages = trajectory["stage"]
+        if stage is None:
+            rows = np.arange(len(stages))
+        else:
+            rows = np.flatnonzero(np.fromiter((s == stage for s in stages), bool, len(stages)))
+            if rows.size == 0:
+                known = ", ".join(dict.fromkeys(stages)) or "none"
+                raise KeyError(f"stage {stage!r}: no rows (the trajectory's stages: {known})")
+            if rows[0] > 0:
+                rows = np.r_[rows[0] - 1, rows]
+        return {key: ([value[i] for i in rows] if isinstance(value, list) else value[rows])
+                for key, value in trajectory.items()}
 
     @property
     def trajectory_rows_seen(self):
