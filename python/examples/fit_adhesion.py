@@ -64,11 +64,9 @@ def retract_curve(params, springs=2000):
     """The retract path as (d, F), d increasing, from the pull-off (F = 0 there, after the
     jump) up to the deepest point. Between two rows the springs in contact do not change,
     so F is affine in d: straight lines between the rows are exact."""
-    t = mdrsim.run(retract_scene(*params, springs)).trajectory
-    retract = np.flatnonzero(np.array(t["stage"]) == "retract")
-    rows = np.r_[retract[0] - 1, retract]                 # from the approach's last row
-    rows = rows[~t["in_cascade"][rows]][::-1]             # equilibria only, d increasing
-    return t["indentation"][rows], t["normal_force"][rows]
+    c = mdrsim.run(retract_scene(*params, springs)).curve(stage="retract")  # from its start
+    keep = ~c["in_cascade"]                               # equilibria only
+    return c["indentation"][keep][::-1], c["normal_force"][keep][::-1]      # d increasing
 
 
 def retract_forces(params, d, springs=2000):
