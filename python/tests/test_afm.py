@@ -179,3 +179,25 @@ def test_calibration_given_to_load_is_the_commands_fix(cli):
 def test_fit_wants_a_curve():
     with pytest.raises(TypeError, match="mdrsim.afm.Curve"):
         afm.fit(SPOT3)
+
+
+def test_the_stubs_name_what_the_module_has():
+    import ast
+    from pathlib import Path
+    tree = ast.parse((Path(afm.__file__).parent / "afm.pyi").read_text())
+    functions = {n.name for n in tree.body if isinstance(n, ast.FunctionDef)}
+    assert functions == {"load", "fit"}
+    curve = afm.load(SPOT3)[0]
+    fit = afm.fit(curve, model="jkr", tip=TIP, segment="retract")  # every field, position too
+    instances = {"Curve": curve, "Segment": curve.segments[0], "Fit": fit,
+                 "FitParameter": fit.youngs_modulus, "Calibrated": curve.calibration["spring_constant"],
+                 "MapPosition": curve.position}
+    classes = {n.name: n for n in tree.body if isinstance(n, ast.ClassDef)}
+    assert set(classes) == set(instances)
+    assert set(afm.__all__) == set(classes) | functions
+    for name, node in classes.items():
+        for member in node.body:
+            attribute = getattr(member, "name", None) or getattr(getattr(member, "target", None),
+                                                                 "id", None)
+            if attribute and attribute not in ("__init__", "__len__"):
+                assert hasattr(instances[name], attribute), f"{name}.{attribute}"
