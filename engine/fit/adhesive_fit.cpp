@@ -316,13 +316,13 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
     });
   };
   problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
+    const std::size_t m = z.size();
     samples.each(p, [&](std::size_t i, const ContactForce* c) {
-      double* row = &d[i * kAdhesiveParameters];
-      row[0] = c ? c->d_modulus / compliance : 0.0;
-      row[1] = c ? c->d_work : 0.0;
-      row[2] = -p[4] + (c ? c->d_depth : 0.0);
-      row[3] = 1.0;
-      row[4] = z[i] - p[2];
+      d[i] = c ? c->d_modulus / compliance : 0.0;
+      d[m + i] = c ? c->d_work : 0.0;
+      d[2 * m + i] = -p[4] + (c ? c->d_depth : 0.0);
+      d[3 * m + i] = 1.0;
+      d[4 * m + i] = z[i] - p[2];
     });
   };
   FitParameter* const out[kAdhesiveParameters] = {&fit.youngs_modulus, &fit.work_of_adhesion,

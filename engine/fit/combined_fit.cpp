@@ -214,14 +214,15 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
     });
   };
   problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
+    // A column per parameter (least_squares.hpp): d[k * m + i] is d model_i / d p_k.
+    const std::size_t m = samples.z.size();
     each_sample(samples, options, p, [&](std::size_t i, const ContactForce* c) {
-      double* row = d.data() + i * kParameters;
-      row[kModulus] = c ? c->d_modulus / compliance : 0.0;
-      row[kWork] = c && !samples.approach[i] ? c->d_work : 0.0;
-      row[kApproachWork] = c && samples.approach[i] ? c->d_work : 0.0;
-      row[kContact] = -p[kSlope] + (c ? c->d_depth : 0.0);
-      row[kOffset] = 1.0;
-      row[kSlope] = samples.z[i] - p[kContact];
+      d[kModulus * m + i] = c ? c->d_modulus / compliance : 0.0;
+      d[kWork * m + i] = c && !samples.approach[i] ? c->d_work : 0.0;
+      d[kApproachWork * m + i] = c && samples.approach[i] ? c->d_work : 0.0;
+      d[kContact * m + i] = -p[kSlope] + (c ? c->d_depth : 0.0);
+      d[kOffset * m + i] = 1.0;
+      d[kSlope * m + i] = samples.z[i] - p[kContact];
     });
   };
   FitParameter* out[kParameters] = {

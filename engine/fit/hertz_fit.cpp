@@ -97,13 +97,13 @@ HertzFit fit_hertz(const PreparedSegment& segment, const HertzFitOptions& option
   };
   problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
     const double reduced = p[0] / compliance;
-    for (std::size_t i = 0; i < z.size(); ++i) {
+    const std::size_t n = z.size();
+    for (std::size_t i = 0; i < n; ++i) {
       const double delta = p[1] - z[i];
-      double* row = &d[i * kParameters];
-      row[0] = tip.force_per_modulus(delta) / compliance;
-      row[1] = -p[3] + reduced * tip.stiffness_per_modulus(delta);
-      row[2] = 1.0;
-      row[3] = z[i] - p[1];
+      d[i] = tip.force_per_modulus(delta) / compliance;
+      d[n + i] = -p[3] + reduced * tip.stiffness_per_modulus(delta);
+      d[2 * n + i] = 1.0;
+      d[3 * n + i] = z[i] - p[1];
     }
   };
   FitParameter* const out[kParameters] = {&fit.youngs_modulus, &fit.contact_point,

@@ -14,6 +14,7 @@ namespace {
 struct ScaledFunctor : Eigen::DenseFunctor<double> {
   const ScaledProblem& problem;
   std::vector<int> free;
+  mutable std::vector<double> parameter_buffer;
   mutable std::vector<double> model_buffer;
   mutable std::vector<double> derivative_buffer;
 
@@ -22,10 +23,13 @@ struct ScaledFunctor : Eigen::DenseFunctor<double> {
                                     static_cast<int>(problem_.data->size())),
         problem(problem_),
         free(std::move(free_)),
-        model_buffer(problem_.data->size()) {}
+        model_buffer(problem_.data->size()),
+        derivative_buffer(problem_.data->size() * problem_.start.size()) {}
 
-  std::vector<double> parameters(const InputType& x) const {
-    std::vector<double> p = problem.start;
+  /// Every parameter at x, in a buffer the next call overwrites (no allocation per call).
+  const std::vector<double>& parameters(const InputType& x) const {
+    std::vector<double>& p = parameter_buffer;
+    p = problem.start;
     for (std::size_t j = 0; j < free.size(); ++j) {
       const double xj = x[static_cast<Eigen::Index>(j)];
       const auto k = static_cast<std::size_t>(free[j]);
@@ -43,7 +47,7 @@ struct ScaledFunctor : Eigen::DenseFunctor<double> {
   }
 
   int operator()(const InputType& x, ValueType& residuals) const {
-    const auto p = parameters(x);
+    const std::vector<double>& p = parameters(x);
     problem.model(p, model_buffer);
     const std::vector<double>& data = *problem.data;
     for (std::size_t i = 0; i < data.size(); ++i) {
@@ -53,15 +57,15 @@ struct ScaledFunctor : Eigen::DenseFunctor<double> {
   }
 
   int df(const InputType& x, JacobianType& jacobian) const {
-    const auto p = parameters(x);
-    const std::size_t count = p.size();
-    derivative_buffer.assign(problem.data->size() * count, 0.0);
+    const std::vector<double>& p = parameters(x);
+    const std::size_t points = problem.data->size();
     problem.derivatives(p, derivative_buffer);
-    for (std::size_t i = 0; i < problem.data->size(); ++i) {
-      for (std::size_t j = 0; j < free.size(); ++j) {
+    for (std::size_t j = 0; j < free.size(); ++j) {
+      const double* column = &derivative_buffer[static_cast<std::size_t>(free[j]) * points];
+      const double factor = slope(free[j], p);
+      for (std::size_t i = 0; i < points; ++i) {
         jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-            derivative_buffer[i * count + static_cast<std::size_t>(free[j])] * slope(free[j], p) /
-            problem.force_scale;
+            column[i] * factor / problem.force_scale;
       }
     }
     return 0;

@@ -30,7 +30,8 @@ struct ScaledProblem {
   double force_scale = 1.0;                   ///< the residuals are (model - data) / force_scale
   /// Writes the model's force at every sample for parameters p.
   std::function<void(std::span<const double> p, std::span<double> model)> model;
-  /// Writes d model_i / d p_k at row-major [i * parameters + k] for every parameter k.
+  /// Writes d model_i / d p_k at [k * points + i] (a column per parameter) for every sample i
+  /// and every free parameter k (a held one's column is not read).
   std::function<void(std::span<const double> p, std::span<double> derivatives)> derivatives;
 };
 
