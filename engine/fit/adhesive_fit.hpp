@@ -21,6 +21,7 @@ const char* adhesion_model_name(AdhesionModel model);
 
 struct AdhesiveFixed : HertzFixed {
   std::optional<double> work_of_adhesion;  ///< [J/m^2]
+  std::optional<double> maugis_parameter;  ///< lambda [1] (the Maugis fit alone)
 };
 
 struct AdhesiveFitOptions {
@@ -33,6 +34,7 @@ struct AdhesiveFitOptions {
 
 struct AdhesiveFit : HertzFit {
   FitParameter work_of_adhesion;         ///< [J/m^2]
+  FitParameter maugis_parameter;         ///< lambda [1] (the Maugis fit alone)
   double adhesion_force_fitted = 0.0;    ///< [N] the model's pull-off force under fixed load
   double adhesion_force_measured = 0.0;  ///< [N] the baseline less the lowest contact force
   std::size_t contact_samples = 0;       ///< the samples fitted on the contact branch

@@ -15,6 +15,10 @@
 namespace mdrsim::fit {
 namespace {
 
+bool with_lambda(FitModel model) {
+  return model == FitModel::maugis || model == FitModel::automatic;
+}
+
 bool has_values(const HertzFit& fit) {
   return fit.status == FitStatus::fitted || fit.status == FitStatus::not_converged;
 }
@@ -57,6 +61,14 @@ AdhesiveFit fit_one(const PreparedSegment& prepared, measured::SegmentKind segme
     AdhesiveFit out;
     static_cast<HertzFit&>(out) = fit_hertz(prepared, hertz);
     return out;
+  }
+  if (with_lambda(options.model)) {
+    MaugisFitOptions maugis;
+    maugis.tip = options.tip;
+    maugis.poisson_ratio = options.poisson_ratio;
+    maugis.fixed = options.fixed;
+    maugis.retract = segment == measured::SegmentKind::retract;
+    return fit_maugis(prepared, maugis);
   }
   AdhesiveFitOptions adhesive;
   adhesive.model = options.model == FitModel::dmt ? AdhesionModel::dmt : AdhesionModel::jkr;
@@ -188,6 +200,10 @@ const char* fit_model_name(FitModel model) {
       return "dmt";
     case FitModel::jkr:
       return "jkr";
+    case FitModel::maugis:
+      return "maugis";
+    case FitModel::automatic:
+      return "auto";
   }
   return "hertz";
 }
@@ -288,6 +304,13 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
       out["approach_work_of_adhesion"] = parameter_json(fit.fit.approach_work_of_adhesion, valued);
     }
   }
+  if (with_lambda(options.model)) {
+    out["maugis_parameter"] = parameter_json(fit.fit.maugis_parameter, valued);
+  }
+  if (options.model == FitModel::automatic && valued) {
+    const RegimeChoice choice = choose_regime(fit.fit.maugis_parameter.value);
+    out["auto"] = {{"picked", choice.model}, {"reason", choice.reason}};
+  }
   out["contact_point"] = parameter_json(fit.fit.contact_point, valued);
   out["baseline_offset"] = parameter_json(fit.fit.baseline_offset, valued);
   out["baseline_slope"] = parameter_json(fit.fit.baseline_slope, valued);
@@ -315,7 +338,8 @@ std::string curve_fit_csv_header() {
          "baseline_slope_error,residual_rms,max_indentation,points,spring_constant,sensitivity,"
          "model,"
          "work_of_adhesion,work_of_adhesion_error,adhesion_force_fitted,adhesion_force_measured,"
-         "approach_work_of_adhesion,approach_work_of_adhesion_error,hysteresis_energy";
+         "approach_work_of_adhesion,approach_work_of_adhesion_error,hysteresis_energy,"
+         "maugis_parameter,maugis_parameter_error,auto_model";
 }
 
 std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_segments) {
@@ -352,6 +376,12 @@ std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_seg
                               approach_work && (valued || f.approach_work_of_adhesion.fixed)),
                      csv_cell(f.approach_work_of_adhesion.standard_error, approach_work && valued),
                      fit.hysteresis_energy ? fmt::format("{}", *fit.hysteresis_energy) : "");
+  const bool lambda = with_lambda(model);
+  row += fmt::format(
+      ",{},{},{}",
+      csv_cell(f.maugis_parameter.value, lambda && (valued || f.maugis_parameter.fixed)),
+      csv_cell(f.maugis_parameter.standard_error, lambda && valued),
+      model == FitModel::automatic && valued ? choose_regime(f.maugis_parameter.value).model : "");
   return row;
 }
 
@@ -378,6 +408,13 @@ std::string curve_fit_summary(const CurveFit& fit, FitModel model) {
                         f.approach_work_of_adhesion.standard_error);
   }
   if (fit.hysteresis_energy) line += fmt::format(", hysteresis = {:.4g} J", *fit.hysteresis_energy);
+  if (with_lambda(model)) {
+    line += fmt::format(", lambda = {:.4g} +- {:.2g}", f.maugis_parameter.value,
+                        f.maugis_parameter.standard_error);
+  }
+  if (model == FitModel::automatic) {
+    line += fmt::format(" ({})", choose_regime(f.maugis_parameter.value).reason);
+  }
   if (!f.message.empty()) line += fmt::format(" ({})", f.message);
   return line;
 }

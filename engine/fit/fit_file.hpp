@@ -13,13 +13,15 @@
 #include "engine/fit/combined_fit.hpp"
 #include "engine/fit/fit_range.hpp"
 #include "engine/fit/hertz_fit.hpp"
+#include "engine/fit/maugis_fit.hpp"
 #include "engine/measured/force_curve.hpp"
 
 namespace mdrsim::fit {
 
-enum class FitModel { hertz, dmt, jkr };
+/// automatic: `--model auto` (the Maugis fit, and the regime its lambda picks).
+enum class FitModel { hertz, dmt, jkr, maugis, automatic };
 
-/// "hertz", "dmt", "jkr".
+/// "hertz", "dmt", "jkr", "maugis", "auto".
 const char* fit_model_name(FitModel model);
 
 /// What `mdrsim fit` asks of every curve: the model, the tip and the held parameters.
@@ -27,7 +29,8 @@ struct CurveFitOptions {
   FitModel model = FitModel::hertz;
   TipShape tip;
   double poisson_ratio = 0.5;
-  AdhesiveFixed fixed;                              ///< work_of_adhesion is ignored by hertz
+  /// work_of_adhesion is ignored by hertz, maugis_parameter by all but maugis
+  AdhesiveFixed fixed;
   std::optional<double> approach_work_of_adhesion;  ///< [J/m^2] held (both segments)
   bool both_segments = false;  ///< approach and retract together (`segment` is then ignored)
   /// The samples fitted: indentation from the contact point (its first guess, then the fit's).
@@ -79,12 +82,13 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
                                       measured::SegmentKind segment);
 
 /// The CSV header and one row per curve (the map position in x, y, index and the grid's
-/// column, row); the adhesive models' columns come last, empty for hertz.
+/// column, row); the adhesive models' columns come last, empty for hertz, then the Maugis
+/// parameter and auto's pick.
 std::string curve_fit_csv_header();
 std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_segments = false);
 
 /// "FILE[curve]: fitted E = ... Pa +- ..., contact point ..., rms ... N" (and w, the adhesion
-/// forces for dmt and jkr).
+/// forces for dmt, jkr and maugis; lambda for maugis; auto's pick and why for auto).
 std::string curve_fit_summary(const CurveFit& fit, FitModel model);
 
 }  // namespace mdrsim::fit

@@ -56,8 +56,17 @@ TEST(FitCommand, RefusesWithOneLine) {
     std::string args;
     std::string message;
   } cases[] = {
-      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model maugis",
-       "--model maugis: not yet (hertz, dmt or jkr)\n"},
+      {std::string("fit ") + kSpot3 + " --tip cone:half_angle_deg=20 --model maugis",
+       "--model maugis: not for a cone (the Maugis parameter needs a tip radius: parabolic or "
+       "sphere; use --model jkr)\n"},
+      {std::string("fit ") + kSpot3 +
+           " --tip parabolic:radius=1e-5 --model jkr --fix "
+           "maugis_parameter=1",
+       "--fix maugis_parameter: not a parameter of --model jkr\n"},
+      {std::string("fit ") + kSpot3 +
+           " --tip parabolic:radius=1e-5 --model auto --fix "
+           "maugis_parameter=0",
+       "--fix maugis_parameter: must be > 0\n"},
       {std::string("fit ") + kSpot3 + " --tip cone:half_angle_deg=20 --model dmt",
        "--model dmt: not for a cone (its DMT adhesion depends on the attraction's range; use "
        "--model jkr)\n"},
@@ -67,11 +76,14 @@ TEST(FitCommand, RefusesWithOneLine) {
        "--fix work_of_adhesion: not a parameter of --model hertz\n"},
       {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --fix youngs=1",
        "--fix youngs: unknown (known: youngs_modulus, work_of_adhesion, "
-       "approach_work_of_adhesion, contact_point, baseline_offset, baseline_slope, "
-       "spring_constant, sensitivity)\n"},
+       "approach_work_of_adhesion, maugis_parameter, contact_point, baseline_offset, "
+       "baseline_slope, spring_constant, sensitivity)\n"},
       {std::string("fit ") + kSpot3 +
            " --tip parabolic:radius=1e-5 --model jkr --fix approach_work_of_adhesion=0.1",
        "--fix approach_work_of_adhesion: only with --segment both\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model maugis --segment both",
+       "--segment both: not with --model maugis (approach and retract are fitted together by "
+       "hertz, dmt and jkr)\n"},
       {std::string("fit ") + kSpot3 + " --tip blunt:radius=1",
        "--tip: 'blunt:radius=1' is not a tip (known: parabolic:radius=R, sphere:radius=R, "
        "cone:half_angle_deg=A, pyramid:half_angle_deg=A, a scene file FILE.toml)\n"},
@@ -121,6 +133,35 @@ TEST(FitCommand, JkrOnTheIgorRetractAsJson) {
       "--segment retract --fix work_of_adhesion=0.001 --csv -");
   ASSERT_EQ(held.exit_code, 0) << held.err;
   EXPECT_NE(held.out.find(",dmt,0.001,0,"), std::string::npos) << held.out;
+}
+
+// auto: the Maugis fit and the model its lambda picks, with the reason, in JSON, CSV and the
+// summary; a held lambda is held.
+TEST(FitCommand, AutoNamesThePickedModelAndWhy) {
+  const std::string base =
+      "fit tests/data/afm/fmt-igor-fd_SiN_FD_plot.ibw --tip parabolic:radius=1e-5 --segment "
+      "retract ";
+  const auto result = run_mdrsim(base + "--model auto --json -");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto fit = nlohmann::json::parse(result.out)[0];
+  EXPECT_EQ(fit["status"], "fitted");
+  EXPECT_EQ(fit["model"], "auto");
+  const double lambda = fit["maugis_parameter"]["value"].get<double>();
+  const std::string picked = lambda < 0.1 ? "dmt" : lambda > 5 ? "jkr" : "maugis";
+  EXPECT_EQ(fit["auto"]["picked"], picked);
+  EXPECT_EQ(fit["auto"]["reason"].get<std::string>().rfind("auto: lambda = ", 0), 0U);
+  EXPECT_NE(fit["auto"]["reason"].get<std::string>().find("-> " + picked), std::string::npos);
+
+  const auto summary = run_mdrsim(base + "--model auto");
+  ASSERT_EQ(summary.exit_code, 0) << summary.err;
+  EXPECT_NE(summary.out.find("(auto: lambda = "), std::string::npos) << summary.out;
+
+  const auto held = run_mdrsim(base + "--model maugis --fix maugis_parameter=0.5 --csv -");
+  ASSERT_EQ(held.exit_code, 0) << held.err;
+  EXPECT_NE(held.out.find("maugis_parameter,maugis_parameter_error,auto_model\n"),
+            std::string::npos)
+      << held.out;
+  EXPECT_NE(held.out.find(",0.5,0,\n"), std::string::npos) << held.out;
 }
 
 TEST(FitCommand, SpringConstantGivenFitsTheDeflectionOnlyFile) {

@@ -1,0 +1,455 @@
+// The Maugis-Dugdale fit: the MDR's contact branch sampled in a, interpolated in the depth, and
+// driven by the one Levenberg-Marquardt driver; its start from the DMT and JKR fits.
+#include "engine/fit/maugis_fit.hpp"
+
+#include <fmt/format.h>
+#include <boost/math/tools/minima.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <stdexcept>
+
+#include "engine/fit/least_squares.hpp"
+
+namespace mdrsim::fit {
+namespace {
+
+constexpr double kMaugisPi = std::numbers::pi;
+constexpr int kNodes = 97;
+constexpr double kLowestRadius = 1e-3;  // of the top radius: the branch's closing end
+constexpr int kFreeNodes = 48;          // on the no-contact branch
+// youngs_modulus, work_of_adhesion, maugis_parameter, contact_point, offset, slope
+constexpr std::size_t kMaugisParameters = 6;
+/// The relative step of the central differences in lambda (and in E and w but on the
+/// paraboloid): truncation error about 1e-8 of the derivative. Forward steps of 1e-6 left
+/// errors that stopped the minimiser short of the minimum along the valley where w, lambda and
+/// the contact point trade against each other.
+constexpr double kDifferenceStep = 1e-4;
+/// The thresholds of `--model auto` (Johnson & Greenwood 1997).
+constexpr double kDmtBelow = 0.1;
+constexpr double kJkrAbove = 5.0;
+
+/// The cubic Hermite interpolant on [0, 1] of values y0, y1 with slopes m0, m1 (per unit t):
+/// its value and its slope in t.
+std::array<double, 2> cubic_hermite(double t, double y0, double y1, double m0, double m1) {
+  const double t2 = t * t, t3 = t2 * t;
+  const double value = (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * m0 +
+                       (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * m1;
+  const double slope = (6 * t2 - 6 * t) * y0 + (3 * t2 - 4 * t + 1) * m0 + (-6 * t2 + 6 * t) * y1 +
+                       (3 * t2 - 2 * t) * m1;
+  return {value, slope};
+}
+
+DugdaleLaw maugis_law(const TipShape& tip, double reduced, double work, double lambda) {
+  return {.adhesive_stress = maugis_adhesive_stress(lambda, reduced, work, tip.radius),
+          .work_of_adhesion = work,
+          .effective_modulus = reduced};
+}
+
+/// The samples a fit uses (the contact branch's and the baseline's) in their order.
+struct MaugisSamples {
+  std::vector<double> z;
+  std::vector<double> force;
+  std::vector<char> contact;
+};
+
+/// The model's forces at parameters p (E, w, lambda, contact point, offset, slope), the branch's
+/// slopes dF/dd where `slopes` is given; throws std::domain_error as MaugisBranch does.
+void maugis_forces(const MaugisSamples& s, const TipShape& tip, double compliance, double deepest,
+                   std::span<const double> p, std::span<double> forces, double* pull_off = nullptr,
+                   std::span<double> slopes = {}) {
+  const double z_low = *std::min_element(s.z.begin(), s.z.end());
+  const MaugisBranch branch(*tip.profile, maugis_law(tip, p[0] / compliance, p[1], p[2]),
+                            std::max(deepest, p[3] - z_low));
+  if (pull_off) *pull_off = -branch.lowest_force();
+  for (std::size_t i = 0; i < s.z.size(); ++i) {
+    double contact = 0.0, slope = 0.0;
+    if (s.contact[i]) {
+      const MaugisBranch::State state = branch.at(p[3] - s.z[i]);
+      contact = state.force;
+      slope = state.d_force_d_depth;
+    }
+    forces[i] = p[4] + p[5] * (s.z[i] - p[3]) + contact;
+    if (!slopes.empty()) slopes[i] = slope;
+  }
+}
+
+bool finite_start(const AdhesiveFit& f) {
+  return std::isfinite(f.youngs_modulus.value) && f.youngs_modulus.value > 0.0 &&
+         std::isfinite(f.work_of_adhesion.value) && f.work_of_adhesion.value > 0.0 &&
+         std::isfinite(f.contact_point.value) && std::isfinite(f.baseline_offset.value) &&
+         std::isfinite(f.baseline_slope.value);
+}
+
+}  // namespace
+
+double maugis_adhesive_stress(double lambda, double reduced_modulus, double work, double radius) {
+  const double k = 4.0 * reduced_modulus / 3.0;
+  return 0.5 * lambda * std::cbrt(kMaugisPi * work * k * k / radius);
+}
+
+MaugisBranch::MaugisBranch(const Profile& profile, const DugdaleLaw& law, double deepest) {
+  const double outer = profile.outer_radius();
+  // The top radius: Hertz's at the deepest indentation, widened until the branch, whose depth
+  // lies below the image's by the zone's pull, reaches it.
+  double top = profile.contact_radius_at_depth(std::max(deepest, 0.0));
+  if (!(top > 0.0)) top = 1e-9;
+  if (std::isfinite(outer)) top = std::min(top, 0.5 * outer);
+  for (int k = 0; k < 60 && dugdale_contact_state(profile, law, top).indentation < deepest; ++k) {
+    top = std::isfinite(outer) ? std::min(1.25 * top, 0.5 * (top + outer)) : 1.25 * top;
+  }
+  // Nodes in a = top u^2, u even from sqrt(1e-3) to 1: denser at small a, where the zone
+  // closes and the depth turns.
+  std::vector<double> radii(kNodes);
+  const double u_low = std::sqrt(kLowestRadius);
+  for (int k = 0; k < kNodes; ++k) {
+    const double u = u_low + (1.0 - u_low) * k / (kNodes - 1);
+    radii[static_cast<std::size_t>(k)] = top * u * u;
+  }
+  radii.back() = top;
+  const std::vector<DugdaleState> states = dugdale_contact_states(profile, law, radii);
+  // From the top down while the depth falls with a: the stable part of the branch.
+  std::size_t first = states.size() - 1;
+  bool folds = false;
+  std::vector<DugdaleSlopes> slopes(states.size());
+  for (std::size_t k = states.size(); k-- > 0;) {
+    slopes[k] = dugdale_contact_slopes(profile, law, states[k]);
+    if (!(slopes[k].indentation > 0.0) ||
+        (k + 1 < states.size() && !(states[k].indentation < states[k + 1].indentation))) {
+      folds = true;
+      break;
+    }
+    first = k;
+  }
+  if (!folds) {
+    // The contact closes before the depth turns (small lambda): the no-contact branch from
+    // the closing radius c0 down to its own fold, d(c) = f(c) - (4 sigma_0/(pi E*)) c - h0
+    // least, in c even; its slopes dd/dc by a central difference of f, dF/dc = -2 pi sigma_0 c.
+    const double c0 = dugdale_closing_radius(profile, law);
+    const auto depth_at = [&](double c) { return dugdale_free_state(profile, law, c).indentation; };
+    const double c_fold = boost::math::tools::brent_find_minima(depth_at, 0.0, c0, 40).first;
+    // Where the no-contact branch rises from c0 already, the path ends at the closing point:
+    // that one node.
+    const bool descends = c_fold < (1.0 - 1e-6) * c0;
+    const int count = descends ? kFreeNodes : 1;
+    for (int j = 0; j < count; ++j) {
+      const double c = descends ? c_fold + (c0 - c_fold) * j / (kFreeNodes - 1) : c0;
+      const DugdaleState state = dugdale_free_state(profile, law, c);
+      const double h = 1e-6 * c;
+      radius_.push_back(c);
+      depth_.push_back(state.indentation);
+      force_.push_back(state.normal_force);
+      depth_slope_.push_back(j == 0 ? 0.0 : (depth_at(c + h) - depth_at(c - h)) / (2.0 * h));
+      force_slope_.push_back(-2.0 * kMaugisPi * law.adhesive_stress * c);
+      contact_.push_back(0);
+    }
+  }
+  for (std::size_t k = first; k < states.size(); ++k) {
+    if (!depth_.empty() && !(states[k].indentation > depth_.back())) continue;
+    radius_.push_back(states[k].contact_radius);
+    depth_.push_back(states[k].indentation);
+    force_.push_back(states[k].normal_force);
+    depth_slope_.push_back(slopes[k].indentation);
+    force_slope_.push_back(slopes[k].normal_force);
+    contact_.push_back(1);
+  }
+  // The lowest force: the lowest node's, refined where F'(a) = 0 on the cubics either side.
+  const auto lowest =
+      static_cast<std::size_t>(std::min_element(force_.begin(), force_.end()) - force_.begin());
+  lowest_force_ = force_[lowest];
+  for (std::size_t k = lowest > 0 ? lowest - 1 : 0; k <= lowest && k + 1 < force_.size(); ++k) {
+    if (contact_[k] != contact_[k + 1]) continue;
+    const double h = radius_[k + 1] - radius_[k];
+    const double y0 = force_[k], y1 = force_[k + 1];
+    const double m0 = force_slope_[k] * h, m1 = force_slope_[k + 1] * h;
+    // F'(t) = qa t^2 + qb t + qc.
+    const double qa = 6 * y0 + 3 * m0 - 6 * y1 + 3 * m1;
+    const double qb = -6 * y0 - 4 * m0 + 6 * y1 - 2 * m1;
+    const double qc = m0;
+    const double disc = qb * qb - 4 * qa * qc;
+    if (!(disc >= 0.0) || qa == 0.0) continue;
+    for (const double sign : {-1.0, 1.0}) {
+      const double t = (-qb + sign * std::sqrt(disc)) / (2 * qa);
+      if (t > 0.0 && t < 1.0) {
+        lowest_force_ = std::min(lowest_force_, cubic_hermite(t, y0, y1, m0, m1)[0]);
+      }
+    }
+  }
+}
+
+MaugisBranch::State MaugisBranch::at(double depth) const {
+  if (!(depth > depth_.front()) || depth_.size() < 2) return {force_.front(), 0.0};
+  if (depth >= depth_.back()) {
+    const double slope = force_slope_.back() / depth_slope_.back();
+    return {force_.back() + slope * (depth - depth_.back()), slope};
+  }
+  const auto k = static_cast<std::size_t>(std::upper_bound(depth_.begin(), depth_.end(), depth) -
+                                          depth_.begin() - 1);
+  const double d0 = depth_[k], d1 = depth_[k + 1];
+  if (contact_[k] != contact_[k + 1]) {
+    // Where the no-contact branch meets the contact branch's last node (a = 1e-3 of the top
+    // radius, its depth within (1e-3)^2 of the closing point's): a chord.
+    const double slope = (force_[k + 1] - force_[k]) / (d1 - d0);
+    return {force_[k] + slope * (depth - d0), slope};
+  }
+  const double h = radius_[k + 1] - radius_[k];
+  const double m0 = depth_slope_[k] * h, m1 = depth_slope_[k + 1] * h;
+  // d(t) = depth by Newton's steps from the chord, kept inside [0, 1] (d rises on it).
+  double t = (depth - d0) / (d1 - d0), lo = 0.0, hi = 1.0;
+  std::array<double, 2> d = cubic_hermite(t, d0, d1, m0, m1);
+  for (int step = 0; step < 20; ++step) {
+    const double excess = d[0] - depth;
+    (excess < 0.0 ? lo : hi) = t;
+    double next = d[1] > 0.0 ? t - excess / d[1] : 0.5 * (lo + hi);
+    // A Newton step below 1e-7 leaves about its square: take it and stop (checked against the
+    // bracket it could bounce off the end it has just set).
+    const bool done = std::abs(next - t) <= 1e-7;
+    if (!done && !(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    t = std::clamp(next, 0.0, 1.0);
+    d = cubic_hermite(t, d0, d1, m0, m1);
+    if (done) break;
+  }
+  const std::array<double, 2> f =
+      cubic_hermite(t, force_[k], force_[k + 1], force_slope_[k] * h, force_slope_[k + 1] * h);
+  return {f[0], d[1] > 0.0 ? f[1] / d[1] : 0.0};
+}
+
+RegimeChoice choose_regime(double lambda) {
+  const char* model = lambda < kDmtBelow ? "dmt" : lambda > kJkrAbove ? "jkr" : "maugis";
+  return {model, fmt::format("auto: lambda = {:.3g} -> {}", lambda, model)};
+}
+
+AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& options) {
+  AdhesiveFit fit;
+  const std::vector<double>& z = segment.tip_position;
+  const std::vector<double>& f = segment.force;
+  const std::size_t n = f.size();
+  fit.points = n;
+  if (options.tip.kind == TipKind::cone || !(options.tip.radius > 0.0)) {
+    fit.status = FitStatus::not_converged;
+    fit.message = "the Maugis parameter needs a tip radius (parabolic or sphere)";
+    return fit;
+  }
+  // The DMT and JKR fits find the contact branch's samples and give the starts.
+  AdhesiveFitOptions adhesive;
+  adhesive.tip = options.tip;
+  adhesive.poisson_ratio = options.poisson_ratio;
+  adhesive.fixed = options.fixed;
+  adhesive.retract = options.retract;
+  adhesive.model = AdhesionModel::jkr;
+  const AdhesiveFit jkr = fit_adhesive(segment, adhesive);
+  adhesive.model = AdhesionModel::dmt;
+  const AdhesiveFit dmt = fit_adhesive(segment, adhesive);
+  if (jkr.status == FitStatus::no_contact || jkr.contact_samples == 0) {
+    fit.status = jkr.status;
+    fit.message = jkr.message;
+    return fit;
+  }
+  fit.adhesion_force_measured = jkr.adhesion_force_measured;
+  // The path's samples as adhesive_fit found them: a retract's down to the jump off, past the
+  // lowest force as far as the lever's stiffness held it there.
+  const std::size_t jump = options.retract ? jkr.contact_samples - 1 : n - jkr.contact_samples;
+  MaugisSamples samples;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool contact = options.retract ? i <= jump : i >= jump;
+    const bool free = options.retract ? i > jump : i < jump;
+    if (!contact && !free) continue;
+    samples.z.push_back(z[i]);
+    samples.force.push_back(f[i]);
+    samples.contact.push_back(contact ? 1 : 0);
+  }
+  const std::size_t used = samples.z.size();
+  fit.points = used;
+  fit.contact_samples = static_cast<std::size_t>(
+      std::count(samples.contact.begin(), samples.contact.end(), static_cast<char>(1)));
+
+  const auto [z_low, z_high] = std::minmax_element(z.begin(), z.end());
+  const double z_range = std::max(*z_high - *z_low, 1e-30);
+  double force_scale = 0.0;
+  for (const double v : f) force_scale = std::max(force_scale, std::abs(v));
+  force_scale = std::max(force_scale, 1e-300);
+  const double compliance = 1.0 - options.poisson_ratio * options.poisson_ratio;
+  const double deepest = std::max(jkr.contact_point.value - *z_low, 1e-3 * z_range);
+
+  const std::array<std::optional<double>, kMaugisParameters> held = {
+      options.fixed.youngs_modulus, options.fixed.work_of_adhesion, options.fixed.maugis_parameter,
+      options.fixed.contact_point,  options.fixed.baseline_offset,  options.fixed.baseline_slope};
+  // The starts: of the JKR and DMT fits, at each of five lambdas with w scaled to the pull-off
+  // they measured, the one of least squares on the DMT side (lambda 0.1, 0.3) and the one on
+  // the JKR side (1, 3, 10). The minimiser runs from both: towards JKR the curve hardly
+  // changes with lambda (a plateau in log lambda that stops it where it starts).
+  std::vector<double> forces(used);
+  const auto sum_squares = [&](std::span<const double> p, double* pull_off) {
+    maugis_forces(samples, options.tip, compliance, deepest, p, forces, pull_off);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < used; ++i) {
+      const double r = (forces[i] - samples.force[i]) / force_scale;
+      sum += r * r;
+    }
+    return sum;
+  };
+  using Parameters = std::array<double, kMaugisParameters>;
+  std::array<Parameters, 2> starts{};
+  std::array<double, 2> best = {std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::infinity()};
+  const std::vector<double> lambdas =
+      held[2] ? std::vector<double>{*held[2]} : std::vector<double>{0.1, 0.3, 1.0, 3.0, 10.0};
+  for (const AdhesiveFit* from : {&jkr, &dmt}) {
+    if (!finite_start(*from)) continue;
+    for (const double lambda : lambdas) {
+      Parameters p = {
+          from->youngs_modulus.value, from->work_of_adhesion.value, lambda,
+          from->contact_point.value,  from->baseline_offset.value,  from->baseline_slope.value};
+      try {
+        double pull_off = 0.0;
+        sum_squares(p, &pull_off);
+        if (!held[1] && pull_off > 0.0) p[1] *= fit.adhesion_force_measured / pull_off;
+        const double s = sum_squares(p, nullptr);
+        const std::size_t side = held[2] || lambda < 1.0 ? 0 : 1;
+        if (s < best[side]) best[side] = s, starts[side] = p;
+      } catch (const std::domain_error&) {
+      }
+    }
+  }
+  if (!std::isfinite(best[0]) && !std::isfinite(best[1])) {
+    fit.status = FitStatus::not_converged;
+    fit.message = "no start of the Maugis model reaches the deepest indentation inside the tip";
+    return fit;
+  }
+
+  ScaledProblem problem;
+  // E, w and lambda as start x exp(x), positive; the rest as start + scale x.
+  problem.scale = {1.0, 1.0, 1.0, deepest, force_scale, force_scale / z_range};
+  problem.walk = {Walk::logarithmic, Walk::logarithmic, Walk::logarithmic,
+                  Walk::linear,      Walk::linear,      Walk::linear};
+  for (std::size_t j = 0; j < kMaugisParameters; ++j) problem.held.push_back(held[j].has_value());
+  problem.data = &samples.force;
+  problem.force_scale = force_scale;
+  // A zone past the tip's edge (a sphere pressed deep): a residual of 1e10 the force scale at
+  // every sample, so that the minimiser refuses the step.
+  const auto refuse = [&](std::span<double> model) {
+    for (std::size_t i = 0; i < used; ++i) model[i] = samples.force[i] + 1e10 * force_scale;
+  };
+  problem.model = [&](std::span<const double> p, std::span<double> model) {
+    try {
+      maugis_forces(samples, options.tip, compliance, deepest, p, model);
+    } catch (const std::domain_error&) {
+      refuse(model);
+    }
+  };
+  std::vector<double> slopes(used), shifted(used), lowered(used);
+  problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
+    try {
+      maugis_forces(samples, options.tip, compliance, deepest, p, forces, nullptr, slopes);
+      for (std::size_t i = 0; i < used; ++i) {
+        d[3 * used + i] = -p[5] + slopes[i];
+        d[4 * used + i] = 1.0;
+        d[5 * used + i] = samples.z[i] - p[3];
+      }
+      std::array<double, kMaugisParameters> q{};
+      std::copy(p.begin(), p.end(), q.begin());
+      // On the paraboloid Maugis' scaling is exact: F = pi w R P(d / delta; lambda) with
+      // delta^3 = pi^2 w^2 R / K^2, so at fixed lambda dF/dln E = (2/3) d dF/dd and
+      // dF/dln w = F - (2/3) d dF/dd; lambda (and E and w on other tips) by central
+      // differences of the whole branch.
+      const bool scales = options.tip.kind == TipKind::parabolic;
+      if (scales) {
+        for (std::size_t i = 0; i < used; ++i) {
+          if (!samples.contact[i]) {
+            d[i] = d[used + i] = 0.0;
+            continue;
+          }
+          const double contact = forces[i] - p[4] - p[5] * (samples.z[i] - p[3]);
+          const double lever = 2.0 / 3.0 * (p[3] - samples.z[i]) * slopes[i];
+          d[i] = lever / p[0];
+          d[used + i] = (contact - lever) / p[1];
+        }
+      }
+      for (std::size_t k = scales ? 2 : 0; k < 3; ++k) {
+        if (held[k]) continue;
+        const double step = kDifferenceStep * p[k];
+        q[k] = p[k] + step;
+        maugis_forces(samples, options.tip, compliance, deepest, q, shifted);
+        q[k] = p[k] - step;
+        maugis_forces(samples, options.tip, compliance, deepest, q, lowered);
+        q[k] = p[k];
+        for (std::size_t i = 0; i < used; ++i) {
+          d[k * used + i] = (shifted[i] - lowered[i]) / (2.0 * step);
+        }
+      }
+    } catch (const std::domain_error&) {
+      std::fill(d.begin(), d.end(), 0.0);
+    }
+  };
+  FitParameter* const out[kMaugisParameters] = {&fit.youngs_modulus,   &fit.work_of_adhesion,
+                                                &fit.maugis_parameter, &fit.contact_point,
+                                                &fit.baseline_offset,  &fit.baseline_slope};
+  ScaledSolution solution;
+  solution.sum_squares = std::numeric_limits<double>::infinity();
+  for (std::size_t side = 0; side < 2; ++side) {
+    if (!std::isfinite(best[side])) continue;
+    Parameters start = starts[side];
+    for (std::size_t j = 0; j < kMaugisParameters; ++j) {
+      if (held[j]) start[j] = *held[j];
+    }
+    problem.start.assign(start.begin(), start.end());
+    std::array<FitParameter, kMaugisParameters> trial{};
+    std::array<FitParameter*, kMaugisParameters> into{};
+    for (std::size_t j = 0; j < kMaugisParameters; ++j) into[j] = &trial[j];
+    ScaledSolution one = minimize_scaled(problem, into);
+    // The lower sum of squares; a run that converged before one that did not.
+    const bool better = (one.outcome == MinimizerOutcome::converged) !=
+                                (solution.outcome == MinimizerOutcome::converged)
+                            ? one.outcome == MinimizerOutcome::converged
+                            : one.sum_squares < solution.sum_squares;
+    if (!std::isfinite(solution.sum_squares) || better) {
+      one.iterations += solution.iterations;
+      one.evaluations += solution.evaluations;
+      solution = std::move(one);
+      for (std::size_t j = 0; j < kMaugisParameters; ++j) *out[j] = trial[j];
+    } else {
+      solution.iterations += one.iterations;
+      solution.evaluations += one.evaluations;
+    }
+  }
+  fit.iterations = solution.iterations;
+  fit.evaluations = solution.evaluations;
+  const std::vector<double>& p = solution.values;
+  fit.residual_rms = std::sqrt(solution.sum_squares / static_cast<double>(used)) * force_scale;
+  fit.max_indentation = std::max(0.0, p[3] - *z_low);
+  bool reaches = true;
+  try {
+    maugis_forces(samples, options.tip, compliance, deepest, p, forces, &fit.adhesion_force_fitted);
+  } catch (const std::domain_error&) {
+    reaches = false;
+  }
+  bool finite = std::isfinite(fit.residual_rms) && std::isfinite(fit.adhesion_force_fitted);
+  for (const FitParameter* q : out) {
+    finite = finite && std::isfinite(q->value) && std::isfinite(q->standard_error);
+  }
+  if (const char* failure = minimizer_failure(solution.outcome)) {
+    fit.status = FitStatus::not_converged;
+    fit.message = failure;
+  } else if (!reaches) {
+    fit.status = FitStatus::not_converged;
+    fit.message = "the fitted cohesive zone reaches past the tip's edge";
+  } else if (!finite) {
+    fit.status = FitStatus::not_converged;
+    fit.message = "the fit gave numbers that are not finite";
+  } else {
+    fit.status = FitStatus::fitted;
+  }
+  if (fit.status != FitStatus::fitted && !finite) {
+    for (FitParameter* q : out) *q = FitParameter{0.0, 0.0, q->fixed};
+    fit.residual_rms = 0.0;
+    fit.adhesion_force_fitted = 0.0;
+  }
+  return fit;
+}
+
+}  // namespace mdrsim::fit
