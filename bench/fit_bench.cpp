@@ -1,7 +1,8 @@
 // Google Benchmark: Hertz fitted to the real 2000-point JPK approach (nanite takes 3.2 ms for
 // the fit alone on this machine), alone and with the file's reading and preprocessing; JKR and
-// DMT fitted to a synthetic 2000-point retract and to the real JPK retract; whole maps through
-// the map runner on 2 threads: a synthetic 64 x 64 JKR map, and the real force map with reading.
+// DMT fitted to a synthetic 2000-point retract and to the real JPK retract; Maugis to a synthetic
+// 2000-point retract (lambda = 1) and to the real JPK retract; whole maps through the map runner
+// on 2 threads: a synthetic 64 x 64 JKR map, and the real force map with reading.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "engine/fit/adhesive_fit.hpp"
 #include "engine/fit/fit_map.hpp"
 #include "engine/fit/hertz_fit.hpp"
+#include "engine/fit/maugis_fit.hpp"
 #include "engine/fit/prepared_curve.hpp"
 #include "engine/measured/read_force_curves.hpp"
 
@@ -129,6 +131,94 @@ BENCHMARK_CAPTURE(BM_AdhesiveFit, jkr_jpk_retract, mdrsim::fit::AdhesionModel::j
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_AdhesiveFit, dmt_jpk_retract, mdrsim::fit::AdhesionModel::dmt, true)
     ->Unit(benchmark::kMicrosecond);
+
+/// A Maugis retract of a 5 um paraboloid (E = 1 MPa, nu = 0.5, w = 0.02 J/m^2, lambda = 1)
+/// from the fit's own branch: 2000 samples from six pull-off forces to half the depth above
+/// contact, the jump half way in depth from the fixed-load pull-off to the branch's end, 1 %
+/// noise.
+mdrsim::fit::PreparedSegment maugis_retract() {
+  const double r = 5e-6, e = 1e6 / 0.75, w = 0.02, lambda = 1.0;
+  const auto tip = mdrsim::fit::parse_tip("parabolic:radius=5e-6");
+  const mdrsim::DugdaleLaw law{
+      .adhesive_stress = mdrsim::fit::maugis_adhesive_stress(lambda, e, w, r),
+      .work_of_adhesion = w,
+      .effective_modulus = e};
+  const mdrsim::fit::MaugisBranch probe(*tip.profile, law, 1e-9);
+  const double pull = -probe.lowest_force();
+  double deepest = 1e-9;
+  while (mdrsim::fit::MaugisBranch(*tip.profile, law, deepest).at(deepest).force < 6 * pull) {
+    deepest *= 1.05;
+  }
+  const mdrsim::fit::MaugisBranch branch(*tip.profile, law, deepest);
+  double pull_depth = deepest;
+  for (int i = 0; i <= 4000; ++i) {
+    const double d = branch.shallowest_depth() + (deepest - branch.shallowest_depth()) * i / 4000;
+    if (branch.at(d).force < branch.at(pull_depth).force) pull_depth = d;
+  }
+  const double jump = 0.5 * (pull_depth + branch.shallowest_depth());
+  std::mt19937_64 random(1);
+  std::normal_distribution<double> noise(0.0, 0.06 * pull);
+  mdrsim::fit::PreparedSegment out;
+  bool on = true;
+  for (int i = 0; i < 2000; ++i) {
+    const double depth = deepest * (1 - 1.5 * i / 1999.0);
+    on = on && depth > jump;
+    out.tip_position.push_back(3e-6 - depth);
+    out.force.push_back((on ? branch.at(depth).force : 0.0) + noise(random));
+  }
+  return out;
+}
+
+void BM_MaugisFit(benchmark::State& state, bool real) {
+  mdrsim::fit::PreparedSegment segment;
+  if (real) {
+    const auto file = mdrsim::measured::read_force_curves(kSpot3);
+    segment = mdrsim::fit::prepare_segment(file.curves[0], mdrsim::measured::SegmentKind::retract);
+  } else {
+    segment = maugis_retract();
+  }
+  mdrsim::fit::MaugisFitOptions fit_options;
+  fit_options.tip =
+      mdrsim::fit::parse_tip(real ? "parabolic:radius=1e-5" : "parabolic:radius=5e-6");
+  fit_options.retract = true;
+  long evaluations = 0;
+  double lambda = 0.0;
+  for (auto _ : state) {
+    const auto fit = mdrsim::fit::fit_maugis(segment, fit_options);
+    evaluations = fit.evaluations;
+    lambda = fit.maugis_parameter.value;
+    benchmark::DoNotOptimize(fit.work_of_adhesion.value);
+  }
+  state.counters["evaluations"] = static_cast<double>(evaluations);
+  state.counters["points"] = static_cast<double>(segment.force.size());
+  state.counters["lambda"] = lambda;
+}
+/// One evaluation of the Maugis model's parts at lambda = 1: the path sampled (the branch's
+/// states), and 2000 depths placed on it.
+void BM_MaugisBranch(benchmark::State& state, bool place) {
+  const double e = 1e6 / 0.75, w = 0.02;
+  const auto tip = mdrsim::fit::parse_tip("parabolic:radius=5e-6");
+  const mdrsim::DugdaleLaw law{
+      .adhesive_stress = mdrsim::fit::maugis_adhesive_stress(1.0, e, w, 5e-6),
+      .work_of_adhesion = w,
+      .effective_modulus = e};
+  const double deepest = 1e-6;
+  const mdrsim::fit::MaugisBranch branch(*tip.profile, law, deepest);
+  for (auto _ : state) {
+    if (place) {
+      double sum = 0.0;
+      for (int i = 0; i < 2000; ++i) sum += branch.at(deepest * (1 - 1.5 * i / 1999.0)).force;
+      benchmark::DoNotOptimize(sum);
+    } else {
+      const mdrsim::fit::MaugisBranch built(*tip.profile, law, deepest);
+      benchmark::DoNotOptimize(built.lowest_force());
+    }
+  }
+}
+BENCHMARK_CAPTURE(BM_MaugisBranch, build, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_MaugisBranch, place_2000, true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_MaugisFit, synthetic_retract, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MaugisFit, jpk_retract, true)->Unit(benchmark::kMillisecond);
 
 /// A 64 x 64 map of JKR retracts (4096 curves of 2000 points, the synthetic retract above with
 /// each curve's own extra noise), in memory as a reader would give it, fitted through the map
