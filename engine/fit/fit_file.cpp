@@ -307,7 +307,8 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
   if (with_lambda(options.model)) {
     out["maugis_parameter"] = parameter_json(fit.fit.maugis_parameter, valued);
   }
-  if (options.model == FitModel::automatic && valued) {
+  // auto picks from a fitted lambda only (not-converged values are no basis for a choice).
+  if (options.model == FitModel::automatic && fit.fit.status == FitStatus::fitted) {
     const RegimeChoice choice = choose_regime(fit.fit.maugis_parameter.value);
     out["auto"] = {{"picked", choice.model}, {"reason", choice.reason}};
   }
@@ -381,7 +382,9 @@ std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_seg
       ",{},{},{}",
       csv_cell(f.maugis_parameter.value, lambda && (valued || f.maugis_parameter.fixed)),
       csv_cell(f.maugis_parameter.standard_error, lambda && valued),
-      model == FitModel::automatic && valued ? choose_regime(f.maugis_parameter.value).model : "");
+      model == FitModel::automatic && f.status == FitStatus::fitted
+          ? choose_regime(f.maugis_parameter.value).model
+          : "");
   return row;
 }
 
@@ -412,7 +415,7 @@ std::string curve_fit_summary(const CurveFit& fit, FitModel model) {
     line += fmt::format(", lambda = {:.4g} +- {:.2g}", f.maugis_parameter.value,
                         f.maugis_parameter.standard_error);
   }
-  if (model == FitModel::automatic) {
+  if (model == FitModel::automatic && f.status == FitStatus::fitted) {
     line += fmt::format(" ({})", choose_regime(f.maugis_parameter.value).reason);
   }
   if (!f.message.empty()) line += fmt::format(" ({})", f.message);

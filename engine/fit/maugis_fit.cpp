@@ -244,7 +244,12 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   adhesive.model = AdhesionModel::jkr;
   const AdhesiveFit jkr = fit_adhesive(segment, adhesive);
   adhesive.model = AdhesionModel::dmt;
-  const AdhesiveFit dmt = fit_adhesive(segment, adhesive);
+  AdhesiveFit dmt;  // a start only: none where DMT's sphere is pressed past its reach
+  try {
+    dmt = fit_adhesive(segment, adhesive);
+  } catch (const std::domain_error&) {
+    dmt.status = FitStatus::not_converged;
+  }
   if (jkr.status == FitStatus::no_contact || jkr.contact_samples == 0) {
     fit.status = jkr.status;
     fit.message = jkr.message;
@@ -299,7 +304,7 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
                                 std::numeric_limits<double>::infinity()};
   const std::vector<double> lambdas =
       held[2] ? std::vector<double>{*held[2]} : std::vector<double>{0.1, 0.3, 1.0, 3.0, 10.0};
-  for (const AdhesiveFit* from : {&jkr, &dmt}) {
+  for (const AdhesiveFit* from : {&jkr, static_cast<const AdhesiveFit*>(&dmt)}) {
     if (!finite_start(*from)) continue;
     for (const double lambda : lambdas) {
       Parameters p = {

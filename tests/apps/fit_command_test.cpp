@@ -164,6 +164,26 @@ TEST(FitCommand, AutoNamesThePickedModelAndWhy) {
   EXPECT_NE(held.out.find(",0.5,0,\n"), std::string::npos) << held.out;
 }
 
+// A sphere of 5 um pressed past its reach by the map's curves (DMT's Hertz force there has no
+// contact radius): each curve gets not-converged with the reason and the map goes on, for every
+// adhesive model, not an internal error.
+TEST(FitCommand, ASpherePressedPastItsReachIsNotConverged) {
+  for (const char* model : {"dmt", "jkr", "maugis", "auto"}) {
+    const auto result = run_mdrsim(
+        std::string("fit tests/data/afm/fmt-jpk-fd_map-data-reference-points.jpk-force-map "
+                    "--tip sphere:radius=5e-6 --segment retract --json - --model ") +
+        model);
+    ASSERT_EQ(result.exit_code, 0) << model << ": " << result.err;
+    const auto all = nlohmann::json::parse(result.out);
+    ASSERT_EQ(all.size(), 3U);
+    for (const auto& fit : all) {
+      EXPECT_TRUE(fit["status"] == "not-converged" || fit["status"] == "fitted") << fit.dump();
+      // auto names a model only for a fitted lambda.
+      EXPECT_EQ(fit.contains("auto"), fit["status"] == "fitted" && std::string(model) == "auto");
+    }
+  }
+}
+
 TEST(FitCommand, SpringConstantGivenFitsTheDeflectionOnlyFile) {
   const auto result = run_mdrsim(
       "fit tests/data/afm/fmt-jpk-fd_single-modified_2023.jpk-force --tip parabolic:radius=1e-5 "
