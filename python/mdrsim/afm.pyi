@@ -57,12 +57,13 @@ class FitParameter:
 
 class Fit:
     # The fields of `mdrsim fit --json` (to_dict()); work_of_adhesion, adhesion_force and
-    # contact_samples for dmt and jkr only, position for a curve of a map.
+    # contact_samples for the adhesive models only, maugis_parameter for maugis and auto, auto
+    # ({"picked", "reason"}) for auto, position for a curve of a map.
     file: str
     curve: str
     position: dict[str, float]
     status: FitStatus
-    model: Literal["hertz", "dmt", "jkr"]
+    model: Literal["hertz", "dmt", "jkr", "maugis", "auto"]
     tip: str
     segment: Literal["approach", "retract"]
     poisson_ratio: float
@@ -92,6 +93,6 @@ class Fit:
 
 def load(path: Union[str, os.PathLike[str]], sensitivity: float | None = ...,
          spring_constant: float | None = ...) -> list[Curve]: ...
-def fit(curve: Curve, model: Literal["hertz", "dmt", "jkr"] = ..., tip: str = ...,
+def fit(curve: Curve, model: Literal["hertz", "dmt", "jkr", "maugis", "auto"] = ..., tip: str = ...,
         poisson_ratio: float = ..., segment: Literal["approach", "retract"] = ...,
         fix: dict[str, float] | None = ...) -> Fit: ...

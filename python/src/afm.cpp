@@ -13,6 +13,7 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "engine/base/text.hpp"
 #include "engine/fit/adhesive_fit.hpp"
 #include "engine/fit/fit_file.hpp"
+#include "engine/fit/maugis_fit.hpp"
 #include "engine/fit/prepared_curve.hpp"
 #include "engine/fit/tip_shape.hpp"
 #include "engine/measured/read_force_curves.hpp"
@@ -31,7 +33,8 @@ namespace mdrsim::python {
 namespace {
 
 constexpr const char* kFitParameters =
-    "youngs_modulus, work_of_adhesion, contact_point, baseline_offset, baseline_slope";
+    "youngs_modulus, work_of_adhesion, maugis_parameter, contact_point, baseline_offset, "
+    "baseline_slope";
 
 /// One curve of a file read once; the file stays alive while any of its curves does.
 struct CurveHandle {
@@ -145,8 +148,10 @@ fit::FitModel parse_model(const std::string& model) {
   if (model == "hertz") return fit::FitModel::hertz;
   if (model == "dmt") return fit::FitModel::dmt;
   if (model == "jkr") return fit::FitModel::jkr;
-  throw SceneError(
-      fmt::format("model '{}': unknown (known: hertz, dmt, jkr)", printable(model, 40)));
+  if (model == "maugis") return fit::FitModel::maugis;
+  if (model == "auto") return fit::FitModel::automatic;
+  throw SceneError(fmt::format("model '{}': unknown (known: hertz, dmt, jkr, maugis, auto)",
+                               printable(model, 40)));
 }
 
 measured::SegmentKind parse_segment(const std::string& segment) {
@@ -179,7 +184,11 @@ fit::AdhesiveFixed parse_fixed(const std::map<std::string, double>& fix, fit::Fi
     } else if (name == "work_of_adhesion" && model != fit::FitModel::hertz) {
       positive();
       fixed.work_of_adhesion = value;
-    } else if (name == "work_of_adhesion") {
+    } else if (name == "maugis_parameter" &&
+               (model == fit::FitModel::maugis || model == fit::FitModel::automatic)) {
+      positive();
+      fixed.maugis_parameter = value;
+    } else if (name == "work_of_adhesion" || name == "maugis_parameter") {
       throw SceneError(
           fmt::format("fix {}: not a parameter of model '{}'", name, fit::fit_model_name(model)));
     } else if (name == "spring_constant" || name == "sensitivity") {
@@ -218,6 +227,20 @@ std::vector<double> fitted_force(const fit::CurveFitOptions& options, const fit:
     branch.emplace(*options.tip.profile, reduced, work,
                    std::max(cp - *low, 1e-3 * std::max(*high - *low, 1e-30)));
   }
+  std::optional<fit::MaugisBranch> maugis;
+  const double lambda = f.maugis_parameter.value;
+  if ((options.model == fit::FitModel::maugis || options.model == fit::FitModel::automatic) &&
+      reduced > 0.0 && work > 0.0 && lambda > 0.0) {
+    const DugdaleLaw law{fit::maugis_adhesive_stress(lambda, reduced, work, options.tip.radius),
+                         work, reduced};
+    const auto [low, high] = std::minmax_element(z.begin(), z.end());
+    try {
+      maugis.emplace(*options.tip.profile, law,
+                     std::max(cp - *low, 1e-3 * std::max(*high - *low, 1e-30)));
+    } catch (const std::domain_error&) {
+      return {};  // the zone reaches past the tip: nothing to draw
+    }
+  }
   for (std::size_t i = 0; i < n; ++i) {
     double value = f.baseline_offset.value + f.baseline_slope.value * (z[i] - cp);
     const bool in_contact = retract ? i < contact : i >= n - contact;
@@ -227,6 +250,8 @@ std::vector<double> fitted_force(const fit::CurveFitOptions& options, const fit:
                2.0 * std::numbers::pi * options.tip.radius * work;
     } else if (in_contact && branch) {
       value += branch->at(cp - z[i]).force;
+    } else if (in_contact && maugis) {
+      value += maugis->at(cp - z[i]).force;
     }
     out[i] = value;
   }

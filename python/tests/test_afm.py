@@ -99,6 +99,9 @@ def test_a_file_without_sensitivity_raises_the_readers_one_line(cli):
     ({"model": "jkr", "segment": "retract"}, ["--model", "jkr", "--segment", "retract"]),
     ({"model": "dmt", "segment": "retract", "poisson_ratio": 0.3},
      ["--model", "dmt", "--segment", "retract", "--poisson-ratio", "0.3"]),
+    ({"model": "maugis", "segment": "retract", "fix": {"maugis_parameter": 1.0}},
+     ["--model", "maugis", "--segment", "retract", "--fix", "maugis_parameter=1"]),
+    ({"model": "auto", "segment": "retract"}, ["--model", "auto", "--segment", "retract"]),
 ])
 def test_the_python_fit_is_the_commands_json_to_the_last_digit(cli, options, args):
     fit = afm.fit(afm.load(SPOT3)[0], tip=TIP, **options)
@@ -135,12 +138,13 @@ def test_the_adhesive_fits_curve_follows_the_data(model):
 
 
 @pytest.mark.parametrize("kwargs, line", [
-    ({"model": "hertzz"}, "model 'hertzz': unknown (known: hertz, dmt, jkr)"),
+    ({"model": "hertzz"}, "model 'hertzz': unknown (known: hertz, dmt, jkr, maugis, auto)"),
     ({"tip": "parabolic:radius=-1"}, None),
     ({"tip": "pyramid"}, None),
     ({"fix": {"youngs_modulu": 1.0}},
-     "fix youngs_modulu: unknown (known: youngs_modulus, work_of_adhesion, contact_point, "
-     "baseline_offset, baseline_slope)"),
+     "fix youngs_modulu: unknown (known: youngs_modulus, work_of_adhesion, maugis_parameter, "
+     "contact_point, baseline_offset, baseline_slope)"),
+    ({"fix": {"maugis_parameter": 1.0}}, "fix maugis_parameter: not a parameter of model 'hertz'"),
     ({"fix": {"work_of_adhesion": 0.1}}, "fix work_of_adhesion: not a parameter of model 'hertz'"),
     ({"fix": {"spring_constant": 0.1}},
      "fix spring_constant: a calibration, given when the file is read "
