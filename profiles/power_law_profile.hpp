@@ -30,8 +30,9 @@ class PowerLawProfile final : public Profile {
   std::optional<ExactIntegral> squared_gap_integral(double contact_radius,
                                                     double indentation) const override;
   /// In closed form: J = k c^n G(t) and dJ/dt = k n c^n tan(t) H(t) with H = int_0^t cos^n and
-  /// G = H - t cos^n t, H an incomplete beta function; where t^2 max(n, 1) < 0.2, where G
-  /// would cancel, both by their series in t (relative accuracy about 1e-14 at every t).
+  /// G = H - t cos^n t: by their series in t where the zone is thin (where G would cancel), by
+  /// H's series about t = pi/2 where it is wide, and by the incomplete beta function between
+  /// them where n > 6 leaves a gap (relative accuracy about 1e-14 at every t).
   DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
                          double angle) const override;
   std::optional<PullOffScales> pull_off_scales(double effective_modulus,
@@ -51,11 +52,20 @@ class PowerLawProfile final : public Profile {
   double exponent_;           ///< n [1]
   double image_coefficient_;  ///< kappa(n) c [m^(1-n)]
 
-  /// Terms of the series of H(t)/t and G(t)/t in t^2 (dugdale_gap).
-  static constexpr int kZoneSeriesTerms = 24;
+  /// Terms of the series of H(t)/t and G(t)/t in t^2, and of cos^n t / w^n and (H(pi/2) -
+  /// H(t)) / w^(n+1) in w^2 = (pi/2 - t)^2 (dugdale_gap).
+  static constexpr int kZoneSeriesTerms = 40;
   std::array<double, kZoneSeriesTerms> cosine_power_integral_{};  ///< H(t)/t's [1]
   std::array<double, kZoneSeriesTerms> cosine_power_excess_{};    ///< G(t)/t's [1]
-  double half_beta_ = 0.0;  ///< H(pi/2) = B(1/2, (n + 1)/2)/2 [1]
+  std::array<double, kZoneSeriesTerms> sine_power_{};             ///< sin^n w / w^n's [1]
+  std::array<double, kZoneSeriesTerms> sine_power_integral_{};    ///< its integral's [1]
+  /// The terms each of kZoneBins equal bins of t (of pi/2 - t) up to the series' range needs.
+  static constexpr int kZoneBins = 32;
+  std::array<int, kZoneBins> thin_zone_terms_{};
+  std::array<int, kZoneBins> wide_zone_terms_{};
+  double thin_zone_angle_ = 0.0;  ///< t below which H and G are summed in t [rad]
+  double wide_zone_width_ = 0.0;  ///< pi/2 - t below which H is summed in pi/2 - t [rad]
+  double half_beta_ = 0.0;        ///< H(pi/2) = B(1/2, (n + 1)/2)/2 [1]
 };
 
 }  // namespace mdrsim
