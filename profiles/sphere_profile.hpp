@@ -19,6 +19,10 @@ class SphereProfile final : public Profile {
   bool always_one_disk() const override { return true; }
   double mdr_image_slope(double x) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;
+  /// Where c <= R/2, by the image's series x^2 sum_k (x/R)^(2k)/((2k+1) R), each term a power
+  /// law's J in closed form (relative accuracy a few ulps); beyond, dugdale_gap_quadrature.
+  DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
+                         double angle) const override;
   double outer_radius() const override { return radius_; }
   std::optional<double> jkr_scale_radius() const override { return radius_; }
 

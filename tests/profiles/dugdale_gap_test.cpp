@@ -50,10 +50,11 @@ WideGap wide_gap_and_slope(const WideImage& g, double a, double t) {
   return {static_cast<double>(wide_gap(g, a, t)), static_cast<double>(slope)};
 }
 
-/// Zone angles from a thin zone (the series' range, JKR side) through the switch of the power
-/// law's forms (t^2 max(n, 1) = 0.2) to a zone thousands of times the contact (DMT side).
-const std::vector<double> kAngles = {1e-8, 1e-6, 1e-4, 1e-2, 0.1, 0.2, 0.3,
-                                     0.44, 0.46, 0.7,  1.0,  1.3, 1.5, 1.5702};
+/// Zone angles from a thin zone (the series in t, JKR side) through the switches of the power
+/// law's forms (t = min(0.75, sqrt(2/n)), pi/2 - t = min(1.5, sqrt(6/n))) and of the sphere's
+/// (c = R/2 at a = 3e-3 R/0.01, t = 0.9273) to a zone thousands of times the contact (DMT side).
+const std::vector<double> kAngles = {1e-8, 1e-6, 1e-4, 1e-2, 0.07,  0.1, 0.2, 0.3, 0.44, 0.46,
+                                     0.7,  0.74, 0.76, 0.92, 0.935, 1.0, 1.1, 1.3, 1.5,  1.5702};
 
 void expect_gap(const std::string& what, const DugdaleGap& gap, const WideGap& wide,
                 double tolerance) {
@@ -62,9 +63,10 @@ void expect_gap(const std::string& what, const DugdaleGap& gap, const WideGap& w
 }
 
 // The closed forms within 2e-14 (the worst seen: 5e-15, the cone's tan t - t at t = 0.1): each
-// sums a few terms of one sign (the series, the parabola's a^2 (tan t - t) + t s^2) or
-// subtracts where at most 15/min(n, 1) ulps are lost (the power law's H - t cos^n t above
-// t^2 max(n, 1) = 0.2); c = a / cos t and the powers c^n round to a few ulps more.
+// sums a few terms of one sign (the parabola's a^2 (tan t - t) + t s^2), or series whose
+// alternating terms sum to at most e^2 times their sum (the power law's), or subtracts where
+// at most 3/(n t^2) ulps are lost (the power law's H - t cos^n t above t = min(0.75,
+// sqrt(2/n)): 11 at n = 1/2); c = a / cos t and the powers c^n round to a few ulps more.
 TEST(DugdaleGap, ClosedFormsMatchA50DigitQuadrature) {
   const double a = 2e-4;
   const double radius = 0.01;
@@ -81,7 +83,7 @@ TEST(DugdaleGap, ClosedFormsMatchA50DigitQuadrature) {
     expect_gap("cone " + at, cone.dugdale_gap(a, c, t),
                wide_gap_and_slope([&](const Wide& x) { return Wide(cone_slope * x); }, a, t),
                2e-14);
-    for (const double n : {0.5, 1.5, 2.5, 7.0}) {
+    for (const double n : {0.5, 1.0, 1.5, 2.5, 4.0, 6.0, 7.0, 12.0}) {
       const PowerLawProfile power(3e3, n);
       const Wide k = power.mdr_image(1.0);
       expect_gap("power law n = " + std::to_string(n) + " " + at, power.dugdale_gap(a, c, t),
@@ -93,8 +95,9 @@ TEST(DugdaleGap, ClosedFormsMatchA50DigitQuadrature) {
 
 // The quadrature (dugdale_gap_quadrature) within 2e-14 where the image's slope is exact: the
 // parabola and the power law x^1.5 (the closed forms' images, through the generic path) and the
-// sphere, whose image x artanh(x/R) has no closed-form gap integral, out to c = 0.999 R, where
-// g' grows like R/(R - x). The integrands have no difference to cancel: the rule's own error
+// sphere, whose image x artanh(x/R) has no closed-form gap integral (its series, SphereProfile::
+// dugdale_gap, to c = R/2; the quadrature beyond), out to c = 0.999 R, where g' grows like
+// R/(R - x). The integrands have no difference to cancel: the rule's own error
 // (1e-13 of the mass on the Gauss half of each panel, the Kronrod sum far closer) and a few
 // ulps of rounding remain (the worst seen: 1e-15).
 TEST(DugdaleGap, QuadratureMatchesA50DigitQuadrature) {
