@@ -2,6 +2,7 @@
 #include "engine/model/dugdale_zone.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -106,6 +107,13 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
     if (hi_known && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
   }
   const auto [t, c] = zone_at(a, s);
+  return dugdale_contact_state_of_zone(profile, law, a, s, c, t);
+}
+
+}  // namespace
+
+DugdaleState dugdale_contact_state_of_zone(const Profile& profile, const DugdaleLaw& law, double a,
+                                           double s, double c, double t) {
   return {.contact_radius = a,
           .cohesive_radius = c,
           .angle = t,
@@ -113,8 +121,6 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
           .normal_force = law.effective_modulus * profile.nonadhesive_force_per_modulus(a) -
                           2.0 * law.adhesive_stress * (a * s + c * c * t)};
 }
-
-}  // namespace
 
 DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law, double a) {
   return contact_state_from(profile, law, a, first_half_chord(profile, law, a));
@@ -132,22 +138,38 @@ std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const D
                                                  std::span<const double> contact_radii) {
   std::vector<DugdaleState> states;
   states.reserve(contact_radii.size());
-  const auto half_chord = [](const DugdaleState& z) {
-    return z.cohesive_radius * std::sin(z.angle);
-  };
+  // The half-chords of the last four zones, and the cubic through them (Neville's scheme): a
+  // guess within the curve's fourth derivative times the step^4, which on a curve of close
+  // radii is inside Newton's 1e-9, so that one step ends most solves.
+  constexpr int kFit = 4;
+  std::array<double, kFit> radii{}, chords{};
+  int known = 0;
   for (const double a : contact_radii) {
     double first = 0.0;
-    if (states.size() >= 2) {
-      // The line through the last two zones: a guess within the curve's bend times the step^2.
-      const DugdaleState& p = states[states.size() - 2];
-      const DugdaleState& q = states.back();
-      first = half_chord(q) + (half_chord(q) - half_chord(p)) * (a - q.contact_radius) /
-                                  (q.contact_radius - p.contact_radius);
+    if (known >= 2) {
+      const int m = std::min(known, kFit);
+      std::array<double, kFit> p{};
+      for (int i = 0; i < m; ++i) p[i] = chords[i];
+      for (int level = 1; level < m; ++level) {
+        for (int i = 0; i + level < m; ++i) {
+          p[i] = ((a - radii[i + level]) * p[i] - (a - radii[i]) * p[i + 1]) /
+                 (radii[i] - radii[i + level]);
+        }
+      }
+      first = p[0];
     }
     if (!(first > 0.0) || !std::isfinite(first)) {
-      first = states.empty() ? first_half_chord(profile, law, a) : half_chord(states.back());
+      first = known == 0 ? first_half_chord(profile, law, a) : chords[0];
     }
-    states.push_back(contact_state_from(profile, law, a, first));
+    const DugdaleState state = contact_state_from(profile, law, a, first);
+    states.push_back(state);
+    // The newest zone first; radii that repeat would make the scheme divide by zero.
+    if (known > 0 && radii[0] == a) continue;
+    std::copy_backward(radii.begin(), radii.end() - 1, radii.end());
+    std::copy_backward(chords.begin(), chords.end() - 1, chords.end());
+    radii[0] = a;
+    chords[0] = state.cohesive_radius * std::sin(state.angle);
+    known = std::min(known + 1, kFit);
   }
   return states;
 }

@@ -30,6 +30,13 @@ struct DugdaleState {
   double normal_force = 0.0;     ///< F [N]
 };
 
+/// The contact branch's state of a zone already solved: a contact of radius a [m] whose zone
+/// reaches c [m] at the angle t = arccos(a/c) [rad] with half-chord s = sqrt(c^2 - a^2) [m]
+/// (each as its solver knows it to full precision): d = g(a) - (2 sigma_0/E*) s and F = E*
+/// nf(a) - 2 sigma_0 (a s + c^2 t).
+DugdaleState dugdale_contact_state_of_zone(const Profile& profile, const DugdaleLaw& law, double a,
+                                           double s, double c, double t);
+
 /// The contact branch at a > 0: the zone's opening (2/pi)[int_a^c (g - g(a))/sqrt(c^2 - x^2) dx
 /// + (2 sigma_0/E*)(s t - (c - a))] = h0 solved for t (it rises with t from -h0 at t = 0), then
 /// d = g(a) - (2 sigma_0/E*) s and F = E* nf(a) - 2 sigma_0 (a s + c^2 t), s = sqrt(c^2 - a^2).
@@ -56,8 +63,8 @@ DugdaleSlopes dugdale_contact_slopes(const Profile& profile, const DugdaleLaw& l
                                      const DugdaleState& state);
 
 /// The contact branch at each of `contact_radii` (a > 0 [m]), in their order: each solve
-/// starts from the zones of the two before (their line), so that a force curve of close radii
-/// costs two or three Newton steps a point instead of five. The same states as
+/// starts from the zones of the four before (their cubic), so that a force curve of close radii
+/// costs one Newton step a point where it is smooth instead of five. The same states as
 /// dugdale_contact_state, to its convergence (the last steps agree to 1e-9 of the half-chord, the
 /// root to its rounding).
 std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const DugdaleLaw& law,
