@@ -98,36 +98,37 @@ double held_opening_excess(const Profile& profile, const DugdaleLaw& law, double
 /// quotients of d with it.
 DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& law, double t,
                                     double guess) {
-  const double cos_t = std::cos(t);
+  const double cos_t = std::cos(t), tan_t = std::tan(t);
   const double half = std::sin(0.5 * t);
-  const double stretch_per_radius = t * std::tan(t) - 2.0 * half * half / cos_t;
-  const auto excess = [&](double a) {
-    return (2.0 / kPi) * (profile.dugdale_gap_integral(a, a / cos_t, t) +
-                          law.zone_strain() * a * stretch_per_radius) -
-           law.range();
-  };
-  double lo = guess;
-  double hi = guess;
-  if (excess(guess) < 0.0) {
-    while (excess(hi) < 0.0) {
-      lo = hi;
-      hi *= 2.0;
+  const double stretch_per_radius = t * tan_t - 2.0 * half * half / cos_t;
+  // Newton's steps in a from the guess, kept inside a bracket [lo, hi] of the root. With x = a y
+  // in J, dJ/da at fixed t = (1/a) int_a^c x g'(x)/sqrt(c^2 - x^2) dx - g'(a) t, whose integral
+  // is dJ/dt / tan(t) (Profile::dugdale_gap); t >= pi/3 here, where the two do not cancel.
+  double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+  double a = guess;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const DugdaleGap gap = profile.dugdale_gap(a, a / cos_t, t);
+    const double excess =
+        (2.0 / kPi) * (gap.integral + law.zone_strain() * a * stretch_per_radius) - law.range();
+    if (excess < 0.0) {
+      lo = a;
+    } else {
+      hi = a;  // also where the zone passes the body's edge (an excess that is not finite)
     }
-  } else {
-    while (excess(lo) >= 0.0) {
-      hi = lo;
-      lo *= 0.5;
+    const double slope = gap.angle_slope / (a * tan_t) - profile.mdr_image_slope(a) * t +
+                         law.zone_strain() * stretch_per_radius;
+    double next = a - excess * (kPi / 2.0) / slope;
+    if (!(next > lo && next < hi)) {
+      next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * a;
+    } else if (std::abs(next - a) <= 1e-9 * a) {
+      // Quadratic convergence: the step left is about (a E''/2E') 1e-18 a.
+      a = next;
+      break;
     }
+    a = next;
+    if (std::isfinite(hi) && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
   }
-  const double a = bracket_root(excess, lo, hi, std::numeric_limits<double>::digits - 2).hi;
-  const double c = a / cos_t;
-  const double s = a * std::tan(t);
-  return {.contact_radius = a,
-          .cohesive_radius = c,
-          .angle = t,
-          .indentation = profile.mdr_image(a) - law.zone_strain() * s,
-          .normal_force = law.effective_modulus * profile.nonadhesive_force_per_modulus(a) -
-                          2.0 * law.adhesive_stress * (a * s + c * c * t)};
+  return dugdale_contact_state_of_zone(profile, law, a, a * tan_t, a / cos_t, t);
 }
 
 /// a_p >= a_g where the contact branch's depth is d_p (a_g where d_p is not above d(a_g)).
