@@ -1,7 +1,8 @@
-// Google Benchmark: the Maugis-Dugdale zone per profile: one contact state, the fixed-load
-// pull-off search from a glued radius, and a 1000-point force curve down to the closing point
-// (independent states, and each from its neighbour's zone); the shorthand's path: its first fold
-// under each control, its most tensile state and its work up to the fold (a scene run's parts).
+// Google Benchmark: the Maugis-Dugdale zone per profile: its gap integral, one contact state, the
+// fixed-load pull-off search from a glued radius, and a 1000-point force curve down to the closing
+// point (independent states, and each from its neighbour's zone); the shorthand's path: its first
+// fold under each control, its most tensile state and its work up to the fold (a scene run's
+// parts).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -68,6 +69,22 @@ void contact_state(benchmark::State& state, const std::string& name) {
     benchmark::DoNotOptimize(s);
   }
   state.counters["angle"] = s.angle;
+}
+
+/// One gap integral J and its slope (Profile::dugdale_gap) at the zones of a thin state (at the
+/// glued radius) and of a wide one (near the closing point): what each Newton step pays.
+void gap_integral(benchmark::State& state, const std::string& name) {
+  const auto profile = profile_of(name);
+  const mdrsim::DugdaleState thin = mdrsim::dugdale_contact_state(*profile, kLaw, kGluedRadius);
+  const mdrsim::DugdaleState wide =
+      mdrsim::dugdale_contact_state(*profile, kLaw, 0.02 * kGluedRadius);
+  for (auto _ : state) {
+    for (const mdrsim::DugdaleState& z : {thin, wide}) {
+      benchmark::DoNotOptimize(profile->dugdale_gap(z.contact_radius, z.cohesive_radius, z.angle));
+    }
+  }
+  state.counters["thin_angle"] = thin.angle;
+  state.counters["wide_angle"] = wide.angle;
 }
 
 /// The fixed-load pull-off search from the glued radius (dugdale_fixed_load_pull_off).
@@ -158,6 +175,8 @@ void path_peak_and_work(benchmark::State& state, const std::string& name) {
 
 int main(int argc, char** argv) {
   for (const std::string name : {"parabolic", "cone", "power_law", "sphere", "tabulated"}) {
+    benchmark::RegisterBenchmark(("dugdale_gap_pair/" + name).c_str(), gap_integral, name)
+        ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("dugdale_state/" + name).c_str(), contact_state, name)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("dugdale_fixed_load_pull_off/" + name).c_str(),
