@@ -65,6 +65,10 @@ class TabulatedProfile final : public Profile {
   /// Exact on the image's Hermite pieces: no quadrature over its ~1000 kinks.
   std::optional<ExactIntegral> squared_gap_integral(double contact_radius,
                                                     double indentation) const override;
+  /// Gauss-Legendre on each of the image's Hermite pieces the zone covers (in its angle), exact
+  /// to rounding where the adaptive default halves its panels at every kink of g''.
+  DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
+                         double angle) const override;
   double outer_radius() const override { return shape_.back(); }
   /// Where the interpolated shape's r f'(r) never falls (checked exactly at construction: on
   /// each cubic piece (r f')' is a quadratic in r) and the image's nodes never fall (its
