@@ -109,7 +109,8 @@ std::vector<Case> closed_form_cases() {
   return out;
 }
 
-/// Profiles whose J is Gauss-Kronrod's: a let-go costs a quadrature (slow label).
+/// Profiles whose J is a series (the sphere's in (x/R)^2, the power law's in the zone's angle)
+/// rather than a few elementary terms: a let-go costs more (slow label).
 std::vector<Case> quadrature_cases() {
   return {sphere(true), sphere(false), power_law(true), power_law(false)};
 }
