@@ -110,7 +110,7 @@ std::vector<Case> closed_form_cases() {
 }
 
 /// Profiles whose J is a series (the sphere's in (x/R)^2, the power law's in the zone's angle)
-/// rather than a few elementary terms: a let-go costs more (slow label).
+/// rather than a few elementary terms.
 std::vector<Case> quadrature_cases() {
   return {sphere(true), sphere(false), power_law(true), power_law(false)};
 }
