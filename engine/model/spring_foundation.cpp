@@ -8,6 +8,13 @@
 #include "engine/model/compensated_sum.hpp"
 
 namespace mdrsim {
+namespace {
+
+/// Rows of up to this many springs keep their images (8 MB at most): a row's loop asks for each
+/// spring's image again as it lets go, and a sphere's or a table's costs more than the loop.
+constexpr std::int64_t kKeptImages = std::int64_t{1} << 20;
+
+}  // namespace
 
 SpringFoundation::SpringFoundation(const Profile& profile, double glued_radius,
                                    std::int64_t springs)
@@ -22,13 +29,19 @@ SpringFoundation::SpringFoundation(const Profile& profile, double glued_radius,
   }
   CompensatedSum sum;
   CompensatedSum squares;
+  std::shared_ptr<double[]> kept;
+  if (springs <= kKeptImages) {
+    kept.reset(new double[static_cast<std::size_t>(springs)]);  // written below, spring by spring
+  }
   for (std::int64_t i = 1; i <= springs; ++i) {
     // 1e8 springs take about 0.3 s here: a Ctrl-C from Python stops it too.
     if ((i & 0xFFFFF) == 0) poll_interrupt();
-    const double g = image(i);
+    const double g = profile_->mdr_image(position(i));
     sum.add(g);
     squares.add(g * g);
+    if (kept) kept[static_cast<std::size_t>(i - 1)] = g;
   }
+  images_ = std::move(kept);
   total_image_ = sum.value();
   total_image_squares_ = squares.value();
 }

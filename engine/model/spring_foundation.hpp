@@ -2,14 +2,17 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
 
 /// Springs i = 1..N at x_i = i a_g / N: the boundary spring of i attached springs sits at the
-/// contact radius x_i. Only the springs the glued contact can hold exist, and none is stored:
-/// positions and images are computed on demand.
+/// contact radius x_i. Only the springs the glued contact can hold exist. Positions are computed
+/// on demand; images are kept from the one pass that sums them on rows of up to 2^20 springs
+/// (the pull-off asks for each again as its spring becomes the boundary), computed on demand
+/// on longer ones.
 class SpringFoundation {
  public:
   SpringFoundation(const Profile& profile, double glued_radius, std::int64_t springs);
@@ -21,7 +24,9 @@ class SpringFoundation {
     // The outermost spring sits exactly at the glued radius, whatever the rounding of dx.
     return i == springs_ ? glued_radius_ : spacing_ * static_cast<double>(i);
   }
-  double image(std::int64_t i) const { return profile_->mdr_image(position(i)); }  ///< g(x_i) [m]
+  double image(std::int64_t i) const {  ///< g(x_i) [m]
+    return images_ ? images_[static_cast<std::size_t>(i - 1)] : profile_->mdr_image(position(i));
+  }
   double total_image() const { return total_image_; }  ///< sum of g(x_i), i = 1..N [m]
   /// sum of g(x_i)^2, i = 1..N [m^2]: the work of pressing the row in (pull_off.cpp).
   double total_image_squares() const { return total_image_squares_; }
@@ -34,6 +39,8 @@ class SpringFoundation {
   double spacing_;
   double total_image_;
   double total_image_squares_ = 0.0;
+  /// g(x_i) as the sum took them, on rows of up to kKeptImages springs; shared by copies.
+  std::shared_ptr<const double[]> images_;
 };
 
 }  // namespace mdrsim

@@ -7,6 +7,7 @@
 
 #include "engine/base/interrupt_check.hpp"
 #include "profiles/parabolic_profile.hpp"
+#include "profiles/sphere_profile.hpp"
 
 namespace {
 
@@ -51,6 +52,18 @@ TEST(SpringFoundation, PollsTheInterruptCheckDuringItsSetUpPass) {
   const mdrsim::ParabolicProfile profile(0.01);
   EXPECT_THROW(mdrsim::SpringFoundation(profile, 3e-4, std::int64_t{1} << 22), std::runtime_error);
   EXPECT_EQ(polls, 2);
+}
+
+TEST(SpringFoundation, GivesEachImageAsTheProfileDoesOnRowsThatKeepThemAndRowsThatDoNot) {
+  // Rows of up to 2^20 springs keep the images of their set-up pass; longer ones compute them
+  // again. Either way a spring's image is the profile's at its position, to the bit.
+  const mdrsim::SphereProfile profile(0.01);
+  for (const std::int64_t n : {std::int64_t{1}, std::int64_t{1000}, (std::int64_t{1} << 20) + 1}) {
+    const mdrsim::SpringFoundation row(profile, 5e-4, n);
+    for (const std::int64_t i : {std::int64_t{1}, n / 2 + 1, n}) {
+      EXPECT_EQ(row.image(i), profile.mdr_image(row.position(i))) << n << " springs, spring " << i;
+    }
+  }
 }
 
 }  // namespace
