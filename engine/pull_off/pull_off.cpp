@@ -51,7 +51,9 @@ std::unique_ptr<PullOffMethod> make_method(const SolverOptions& solver, const Co
 }
 
 /// The equilibria of the path as they come, O(1) memory: the last three of the unbroken run
-/// of single let-gos, and the most tensile one with its neighbours.
+/// of single let-gos, and the most tensile one with its neighbours. A state is copied once, into
+/// a ring of three; the peak is copied out only when the path has passed it (while the force
+/// still falls every equilibrium is the peak, and a copy each would stall the loop).
 class EquilibriumTrack {
  public:
   explicit EquilibriumTrack(const Contact& contact) : contact_(&contact) {}
@@ -62,55 +64,65 @@ class EquilibriumTrack {
       run_length_ = 0;
       run_top_ = state.springs_in_contact;
     }
-    recent_[2] = recent_[1];
-    recent_[1] = recent_[0];
-    recent_[0] = state;
+    head_ = head_ == 2 ? 0 : head_ + 1;
+    ring_[head_] = state;
     ++run_length_;
     ++count_;
-    if (peak_waits_for_inner_ && !after_jump) {
-      peak_inner_ = state;
-      peak_waits_for_inner_ = false;
-    }
     const double force = contact_->normal_force_of(state);
     last_force_ = force;
     if (count_ == 1 || force < peak_force_) {
       peak_force_ = force;
-      peak_ = state;
+      peak_has_outer_ = run_length_ >= 2;
+      peak_is_last_ = true;
+    } else if (peak_is_last_) {
+      // The first equilibrium past the peak: the peak and its outer neighbour are still in
+      // the ring, and this one is its inner neighbour unless a jump came between.
+      peak_ = recent(1);
       peak_outer_.reset();
-      if (run_length_ >= 2) peak_outer_ = recent_[1];
+      if (peak_has_outer_) peak_outer_ = recent(2);
       peak_inner_.reset();
-      peak_waits_for_inner_ = true;
-    } else {
-      peak_waits_for_inner_ = false;
+      if (!after_jump) peak_inner_ = state;
+      peak_is_last_ = false;
     }
   }
 
   bool empty() const { return count_ == 0; }
   std::int64_t size() const { return count_; }  ///< equilibria so far
-  const Contact::State& last() const { return recent_[0]; }
+  const Contact::State& last() const { return recent(0); }
   /// The k-th equilibrium before the last in the unbroken run (k = 1, 2), if there is one.
   std::optional<Contact::State> before_last(int k) const {
     if (run_length_ <= k) return std::nullopt;
-    return recent_[static_cast<std::size_t>(k)];
+    return recent(k);
   }
   std::int64_t run_top() const { return run_top_; }
   double last_force() const { return last_force_; }  ///< [N]
-  const Contact::State& peak() const { return peak_; }
-  std::optional<Contact::State> peak_outer() const { return peak_outer_; }
-  std::optional<Contact::State> peak_inner() const { return peak_inner_; }
+  const Contact::State& peak() const { return peak_is_last_ ? recent(0) : peak_; }
+  std::optional<Contact::State> peak_outer() const {
+    if (!peak_is_last_) return peak_outer_;
+    if (!peak_has_outer_) return std::nullopt;
+    return recent(1);
+  }
+  std::optional<Contact::State> peak_inner() const {
+    return peak_is_last_ ? std::nullopt : peak_inner_;
+  }
 
  private:
+  /// The k-th equilibrium before the last (k = 0: the last), k < 3.
+  const Contact::State& recent(int k) const { return ring_[(head_ + 3 - k) % 3]; }
+
   const Contact* contact_;
-  std::array<Contact::State, 3> recent_{};
+  std::array<Contact::State, 3> ring_{};
+  int head_ = 0;  ///< the ring's slot of the last equilibrium
   int run_length_ = 0;
   std::int64_t count_ = 0;
   std::int64_t run_top_ = 0;
-  Contact::State peak_{};
   double peak_force_ = 0.0;
   double last_force_ = 0.0;
+  bool peak_is_last_ = false;    ///< the peak is the last equilibrium, not yet copied out
+  bool peak_has_outer_ = false;  ///< the peak came in an unbroken run after another one
+  Contact::State peak_{};
   std::optional<Contact::State> peak_outer_;
   std::optional<Contact::State> peak_inner_;
-  bool peak_waits_for_inner_ = false;
 };
 
 /// How the last cascade began: the spring let go at the critical point and the first one

@@ -18,7 +18,10 @@ void locate_whole_row(const Contact& contact, StageRecord& stage) {
 }  // namespace
 
 ShorthandPath::ShorthandPath(const AffineConstraint& normal, const AffineConstraint& tangential)
-    : normal_(normal), tangential_(tangential), tangential_fixed_load_(holds_force(tangential)) {}
+    : normal_(normal),
+      tangential_(tangential),
+      tangential_fixed_load_(holds_force(tangential)),
+      holds_normal_force_(holds_force(normal)) {}
 
 ContactSnapshot ShorthandPath::snapshot(const Contact& contact, const Contact::State& state) const {
   if (state.springs_in_contact > 0) return contact.snapshot_of(state);
@@ -48,6 +51,21 @@ void ShorthandPath::add_work(const Contact& contact, const Contact::State& to) {
     pull_off_work_.tangential += to.tangential_held * (u - tangential_displacement_);
     tangential_displacement_ = u;
   }
+}
+
+void ShorthandPath::add_held_work(const Contact& contact) {
+  if (held_count_ == 0) return;
+  add_work(contact, held_first_);
+  if (held_count_ > 1) {
+    // The row's own let-gos from the first state give the others, to the bit.
+    Contact again = contact;
+    again.restore(held_first_);
+    for (std::int64_t k = 1; k < held_count_; ++k) {
+      again.detach_boundary_spring();
+      add_work(again, again.save());
+    }
+  }
+  held_count_ = 0;
 }
 
 void ShorthandPath::preload(const Contact& contact) {
@@ -96,31 +114,54 @@ void ShorthandPath::close_cascade(const Contact& contact) {
 void ShorthandPath::advanced(const Contact& contact, const AdvanceOutcome& out, bool equilibrium) {
   if (out.detached == 0) return;
   if (equilibrium) {
+    add_held_work(contact);  // the cascade before ended in a state: its work counts
     close_cascade(contact);
     add_work(contact, *out.equilibrium_before);
-    work_at_equilibrium_ = pull_off_work_;
-    cascade_ = Cascade{*out.equilibrium_before, 0, out.detached > 1 && out.second_by_shear};
-  } else if (cascade_ && cascade_->springs == 1) {
-    cascade_->by_shear = out.first_by_shear;
+    // Field by field: a copy of the struct just written stalls the store buffer, at every let-go.
+    work_at_equilibrium_.normal = pull_off_work_.normal;
+    work_at_equilibrium_.tangential = pull_off_work_.tangential;
+    cascade_.emplace(*out.equilibrium_before, out.detached,
+                     out.detached > 1 && out.second_by_shear);
+  } else if (cascade_) {
+    if (cascade_->springs == 1) cascade_->by_shear = out.first_by_shear;
+    cascade_->springs += out.detached;
   }
-  if (cascade_) cascade_->springs += out.detached;
+  // One let-go at the held values of the state before: a cascade going on (the stepping method
+  // moves the control at every advance, so its states never go on here).
+  const bool goes_on = !equilibrium && out.detached == 1 &&
+                       contact.normal_control() == last_.normal_control &&
+                       contact.tangential_held() == last_.tangential_held &&
+                       contact.springs_in_contact() == last_.springs_in_contact - 1;
   last_ = contact.save();
-  add_work(contact, last_);
+  if (!holds_normal_force_) {
+    add_work(contact, last_);
+    return;
+  }
+  if (goes_on && held_count_ > 0) {
+    ++held_count_;
+    return;
+  }
+  add_held_work(contact);
+  held_first_ = last_;
+  held_count_ = 1;
 }
 
 JumpEnd ShorthandPath::finish(const Contact& contact, std::vector<StageRecord>& stages,
                               std::vector<JumpRecord>& jumps, std::optional<AxisWork>& work) {
   if (contact.springs_in_contact() > 0) {
     // Stopped at a limit with the contact in place: the stage ends where the control is.
+    add_held_work(contact);
     last_ = contact.save();
     add_work(contact, last_);
   }
   const JumpEnd flight =
       shorthand_flight(last_, normal_, tangential_, contact.foundation().image(1));
   if (flight == JumpEnd::state) {
+    add_held_work(contact);
     close_cascade(contact);
     stages_.push_back({"pull-off", snapshot(contact, last_), pull_off_work_});
   } else if (cascade_) {
+    held_count_ = 0;
     // The flight starts at the last equilibrium: what the springs did after it (the held
     // force on ever fewer springs, moving at constant force) grows with the spring count.
     const ContactSnapshot critical = contact.snapshot_of(cascade_->critical);

@@ -39,11 +39,21 @@ class ShorthandPath {
   /// The snapshot of a state; with no spring left, the last indentation at zero force.
   ContactSnapshot snapshot(const Contact& contact, const Contact::State& state) const;
   void add_work(const Contact& contact, const Contact::State& to);
+  /// Adds the work of the states held back, in the order they came.
+  void add_held_work(const Contact& contact);
   void close_cascade(const Contact& contact);
 
   AffineConstraint normal_;
   AffineConstraint tangential_;
   bool tangential_fixed_load_;  ///< u_x moves at constant F_x as springs let go
+  /// Under a fixed load the states after let-gos at one held force wait for their work: a
+  /// flight's never counts, as the stage ends at the last equilibrium, and most cascades there
+  /// are flights. They are the first one and those the row reaches from it by letting go of one
+  /// boundary spring after another (last_ is the last), so they are kept as the first and their
+  /// count, and made again by those let-gos where their work counts after all.
+  bool holds_normal_force_;
+  Contact::State held_first_{};
+  std::int64_t held_count_ = 0;  ///< the states held back: held_first_ to last_
   std::vector<StageRecord> stages_;
   std::vector<JumpRecord> jumps_;
   AxisWork pull_off_work_;

@@ -224,5 +224,43 @@ TEST(ShorthandPath, APullOffUnderFixedLoadEndsAtTheEquilibriumBeforeItsFlight) {
   EXPECT_NEAR(r.jumps[0].critical.indentation, h.d[3], 1e-12 * std::abs(h.d[3]));
 }
 
+// Fixed load held at F_a = F_3(d_3): spring 3 lets go, and spring 2 with it at the same force
+// (driven by hand: the path takes the let-gos as the row gives them), and the cascade stops on
+// spring 1: a jump of two springs to a state. Each let-go moved the indenter at constant force,
+// F_a (d' - d) with d = (F_a / k + sum g_i) / n on n springs, and that work is the stage's as
+// the cascade ended in a state; then the held force goes to F_b = 1.1 F_a on the one spring,
+// which lets go there and separates: the stage ends at F_b, with the work up to it.
+TEST(ShorthandPath, AFixedLoadCascadeThatEndsInAStateCountsItsMovesAtConstantForce) {
+  const ThreeSprings h;
+  const ParabolicProfile profile(kRadius);
+  const SpringFoundation row(profile, 3 * h.spacing, 3);
+  Contact contact(row, kMaterial, kFixedLoad, kFixedGrips);
+  contact.set_normal_control(contact.normal_control_at(h.g[3]));
+  ShorthandPath path(kFixedLoad, kFixedGrips);
+  path.preload(contact);
+  path.tangential(contact, std::nullopt);
+  const double held_a = h.force(3, h.d[3]);
+  const double held_b = 1.1 * held_a;
+  path.advanced(contact, let_go(contact, held_a), true);
+  path.advanced(contact, let_go(contact, std::nullopt), false);
+  path.advanced(contact, let_go(contact, held_b), true);
+  const Records r = finish(path, contact);
+
+  const auto depth = [&](int n, double held) { return (held / h.k + h.images(n)) / n; };
+  const double want = line_work(3 * h.k, h.k * h.images(3), h.g[3], h.d[3]) +
+                      held_a * (depth(2, held_a) - h.d[3]) +
+                      held_a * (depth(1, held_a) - depth(2, held_a)) +
+                      line_work(h.k, h.k * h.images(1), depth(1, held_a), depth(1, held_b));
+  ASSERT_EQ(r.stages.size(), 3u);
+  EXPECT_NEAR(r.stages[2].work.normal, want, 1e-12 * std::abs(want));
+  EXPECT_EQ(r.stages[2].end.springs_in_contact, 1);
+  EXPECT_NEAR(r.stages[2].end.normal_force, held_b, 1e-12 * std::abs(held_b));
+  ASSERT_EQ(r.jumps.size(), 1u);
+  EXPECT_EQ(r.jumps[0].springs, -2);
+  EXPECT_EQ(r.jumps[0].end, JumpEnd::state);
+  EXPECT_EQ(r.jumps[0].after.springs_in_contact, 1);
+  EXPECT_NEAR(r.jumps[0].after.indentation, depth(1, held_a), 1e-12 * std::abs(depth(1, held_a)));
+}
+
 }  // namespace
 }  // namespace mdrsim
