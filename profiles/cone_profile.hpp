@@ -14,6 +14,7 @@ class ConeProfile final : public Profile {
   /// Eq. 4 with f' = tan(theta): g = x tan(theta) integral_0^x dr/sqrt(x^2 - r^2).
   double mdr_image(double x) const override;
   bool always_one_disk() const override { return true; }
+  bool cheap_image() const override { return true; }
   double mdr_image_slope(double) const override { return image_slope_; }
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;

@@ -15,6 +15,7 @@ class FlatPunchProfile final : public Profile {
   double shape(double radius) const override;
   double mdr_image(double x) const override;
   bool always_one_disk() const override { return true; }
+  bool cheap_image() const override { return true; }
   double mdr_image_slope(double x) const override;
   double contact_radius_at_depth(double depth) const override;
   /// Zero for a <= A: the punch face carries no force without an indentation, whose

@@ -12,6 +12,7 @@ class ParabolicProfile final : public Profile {
   double shape(double radius) const override;
   double mdr_image(double x) const override;
   bool always_one_disk() const override { return true; }
+  bool cheap_image() const override { return true; }
   double mdr_image_slope(double x) const override { return 2.0 * x / radius_; }
   double contact_radius_at_depth(double depth) const override;
   double nonadhesive_force_per_modulus(double contact_radius) const override;

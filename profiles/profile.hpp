@@ -81,6 +81,11 @@ class Profile {
   /// Optional: the largest radius the shape is defined on [m] (a sphere ends at its radius).
   virtual double outer_radius() const { return std::numeric_limits<double>::infinity(); }
 
+  /// Optional: whether g(x) is a few arithmetic operations (a parabola, a cone, a flat punch),
+  /// cheaper to compute again than to keep: a row keeps the images of other shapes
+  /// (spring_foundation.hpp), whose g costs a transcendental function or a table search.
+  virtual bool cheap_image() const { return false; }
+
   /// Optional: whether every MDR state of this shape is one contact disk (no annular
   /// re-contact outside, no separation inside), so that the disk check may be skipped: true
   /// for the convex classics (parabola, sphere, cone, power laws n >= 1, flat punch), whose

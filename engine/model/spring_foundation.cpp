@@ -2,6 +2,7 @@
 #include "engine/model/spring_foundation.hpp"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "engine/base/interrupt_check.hpp"
@@ -10,8 +11,10 @@
 namespace mdrsim {
 namespace {
 
-/// Rows of up to this many springs keep their images (8 MB at most): a row's loop asks for each
-/// spring's image again as it lets go, and a sphere's or a table's costs more than the loop.
+/// Rows of up to this many springs keep their images (8 MB at most) unless the profile's are
+/// cheap: a row's loop asks for each spring's image again as it lets go, and a sphere's or a
+/// table's costs more than the rest of the let-go; a parabola's costs less than the first touch
+/// of the memory that would keep it.
 constexpr std::int64_t kKeptImages = std::int64_t{1} << 20;
 
 }  // namespace
@@ -30,7 +33,7 @@ SpringFoundation::SpringFoundation(const Profile& profile, double glued_radius,
   CompensatedSum sum;
   CompensatedSum squares;
   std::shared_ptr<double[]> kept;
-  if (springs <= kKeptImages) {
+  if (springs <= kKeptImages && !profile.cheap_image()) {
     kept.reset(new double[static_cast<std::size_t>(springs)]);  // written below, spring by spring
   }
   for (std::int64_t i = 1; i <= springs; ++i) {

@@ -12,7 +12,7 @@ namespace mdrsim {
 /// contact radius x_i. Only the springs the glued contact can hold exist. Positions are computed
 /// on demand; images are kept from the one pass that sums them on rows of up to 2^20 springs
 /// (the pull-off asks for each again as its spring becomes the boundary), computed on demand
-/// on longer ones.
+/// on longer ones and where the profile's are cheap (Profile::cheap_image).
 class SpringFoundation {
  public:
   SpringFoundation(const Profile& profile, double glued_radius, std::int64_t springs);
