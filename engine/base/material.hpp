@@ -10,6 +10,17 @@
 
 namespace mdrsim {
 
+/// A modulus that grows with depth, E(z) = E0 (z / z0)^k, nu constant (docs/graded.md); its
+/// constants are engine/model/graded_constants'.
+struct Grading {
+  double exponent = 0.0;        ///< k [1], 0 <= k < 1; 0: the homogeneous half-space
+  double depth = 1.0;           ///< z0 [m] > 0: E(z0) = E0
+  double punch_constant = 0.0;  ///< C_k [Pa / m^k]: a flat punch carries C_k d a^(1+k)
+
+  /// Whether the modulus varies with depth (k > 0); k = 0 takes the homogeneous path.
+  bool graded() const { return exponent > 0.0; }
+};
+
 struct Material {
   double effective_modulus;        ///< E* = E/(1 - nu^2) [Pa]
   double effective_shear_modulus;  ///< G* = 4G/(2 - nu) [Pa]
@@ -25,6 +36,9 @@ struct Material {
   /// sigma_0 [Pa] of the Dugdale law (docs/maugis.md): the adhesion acts at this stress over the
   /// gap dgamma / sigma_0; 0: no range (JKR, Hess's rule lets each spring go).
   double adhesive_stress = 0.0;
+  /// material.grading; E* and G* above are then E0's (the springs' stiffness is
+  /// grading.punch_constant's, docs/graded.md).
+  Grading grading;
 
   /// dgamma at the radius r [m] of a spring [J/m^2]: every criterion lets go with this.
   double work_of_adhesion_at(double r) const {
