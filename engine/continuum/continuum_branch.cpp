@@ -8,6 +8,7 @@
 #include "detachment/let_go.hpp"
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
+#include "engine/model/graded_constants.hpp"
 
 namespace mdrsim {
 
@@ -28,14 +29,41 @@ double with_rounding(double error, double magnitude) {
 
 ContinuumBranch::ContinuumBranch(const Profile& profile, const DetachmentCriterion& criterion,
                                  const Material& material, const AffineConstraint& normal,
-                                 const AffineConstraint& tangential, double tangential_held)
+                                 const AffineConstraint& tangential, double tangential_held,
+                                 const std::optional<GradedImage>& graded)
     : profile_(&profile),
       criterion_(&criterion),
       material_(material),
       normal_(normal),
       tangential_(tangential),
       tangential_held_(tangential_held),
-      hess_per_radius_(hess_scale(material.work_of_adhesion, material.effective_modulus)) {}
+      hess_per_radius_(hess_scale(material.work_of_adhesion, material.effective_modulus)),
+      graded_(graded) {}
+
+double ContinuumBranch::image(double x) const {
+  return graded_ ? graded_->image(x) : profile_->mdr_image(x);
+}
+
+double ContinuumBranch::image_slope(double x) const {
+  return graded_ ? graded_->image_slope(x) : profile_->mdr_image_slope(x);
+}
+
+double ContinuumBranch::force(double a, double e) const {
+  if (graded_) {
+    const double ck = material_.grading.punch_constant;
+    return ck * (graded_->nonadhesive_force_per_constant(a) -
+                 std::pow(a, 1.0 + graded_->grading_exponent()) * e);
+  }
+  return material_.effective_modulus * (profile_->nonadhesive_force_per_modulus(a) - 2.0 * a * e);
+}
+
+double ContinuumBranch::pulled_force(const BranchState& s) const {
+  if (graded_) {
+    return material_.grading.punch_constant *
+           std::pow(s.contact_radius, 1.0 + graded_->grading_exponent()) * s.stretch;
+  }
+  return 2.0 * material_.effective_modulus * s.contact_radius * s.stretch;
+}
 
 double ContinuumBranch::tangential_displacement(double a) const {
   if (tangential_held_ == 0.0) return 0.0;
@@ -46,11 +74,10 @@ double ContinuumBranch::tangential_displacement(double a) const {
 
 BranchState ContinuumBranch::state(double a, double e) const {
   BranchState s;
-  const double es = material_.effective_modulus;
   s.contact_radius = a;
   s.stretch = e;
-  s.indentation = profile_->mdr_image(a) - e;
-  s.normal_force = es * (profile_->nonadhesive_force_per_modulus(a) - 2.0 * a * e);
+  s.indentation = image(a) - e;
+  s.normal_force = force(a, e);
   s.tangential_displacement = tangential_displacement(a);
   s.tangential_force = 2.0 * material_.effective_shear_modulus * a * s.tangential_displacement;
   s.control = normal_.displacement_coefficient * s.indentation;
@@ -63,8 +90,17 @@ double force_magnitude(const BranchState& s, double effective_modulus) {
   return std::abs(s.normal_force) + std::abs(s.normal_force + pulled) + std::abs(pulled);
 }
 
+double ContinuumBranch::force_magnitude(const BranchState& s) const {
+  const double pulled = pulled_force(s);
+  return std::abs(s.normal_force) + std::abs(s.normal_force + pulled) + std::abs(pulled);
+}
+
 double ContinuumBranch::stretch(double a) const {
   if (!(a > shear_off_radius_)) return 0.0;
+  if (graded_) {
+    return graded_let_go_stretch(graded_->grading_exponent(), material_.grading.punch_constant,
+                                 material_.work_of_adhesion, a);
+  }
   const LetGo go =
       locate_let_go(*criterion_, a, tangential_displacement(a), std::sqrt(hess_per_radius_ * a));
   iterations_ += go.root_iterations;
@@ -73,7 +109,7 @@ double ContinuumBranch::stretch(double a) const {
 
 BranchState ContinuumBranch::at(double a) const { return state(a, stretch(a)); }
 
-double ContinuumBranch::slope_of(double a, bool force, double* error) const {
+double ContinuumBranch::slope_of(double a, bool of_force, double* error) const {
   const double reach = shear_off_radius_ > 0.0 ? a - shear_off_radius_ : a;
   double h = 1e-3 * std::min(reach, a);
   // Within the profile's domain (a sphere ends at its radius): the quotient reaches a + 4h.
@@ -81,16 +117,14 @@ double ContinuumBranch::slope_of(double a, bool force, double* error) const {
   if (room > 0.0) h = std::min(h, 0.2 * room);
   // Only what the slope needs: F without g, d without nf under fixed grips (each a pow for
   // power laws, the most of a sample's cost).
-  const double es = material_.effective_modulus;
   const auto value = [&](double x) {
     const double e = stretch(x);
-    const bool needs_force = force || normal_.force_coefficient != 0.0;
-    const double f =
-        needs_force ? es * (profile_->nonadhesive_force_per_modulus(x) - 2.0 * x * e) : 0.0;
-    if (force) return f;
+    const bool needs_force = of_force || normal_.force_coefficient != 0.0;
+    const double f = needs_force ? this->force(x, e) : 0.0;
+    if (of_force) return f;
     double c = normal_.force_coefficient * f;
     if (normal_.displacement_coefficient != 0.0) {
-      c += normal_.displacement_coefficient * (profile_->mdr_image(x) - e);
+      c += normal_.displacement_coefficient * (image(x) - e);
     }
     return c;
   };
@@ -208,6 +242,7 @@ double ContinuumBranch::stretch_slope(double a, double* error) const {
 }
 
 double ContinuumBranch::stretch_error(double a) const {
+  if (graded_) return 0.0;  // Hess's rule in closed form: rounding only
   const double e = stretch(a);
   if (!(e > 0.0)) return 0.0;
   const double ux = tangential_displacement(a);
@@ -219,8 +254,16 @@ double ContinuumBranch::stretch_error(double a) const {
 }
 
 double ContinuumBranch::precise_force_slope(double a, double* error) const {
-  const double es = material_.effective_modulus;
   const double de = stretch_slope(a, error);
+  if (graded_) {
+    // dF/da = C_k (a^(1+k) g_k' - (1 + k) a^k e - a^(1+k) e') (nf_k' = a^(1+k) g_k').
+    const double k = graded_->grading_exponent();
+    const double ck = material_.grading.punch_constant;
+    const double ak = std::pow(a, k);
+    if (error) *error *= ck * ak * a;
+    return ck * ak * (a * graded_->image_slope(a) - (1.0 + k) * stretch(a) - a * de);
+  }
+  const double es = material_.effective_modulus;
   if (error) *error *= 2.0 * es * a;
   return 2.0 * es * (a * profile_->mdr_image_slope(a) - stretch(a) - a * de);
 }
@@ -230,10 +273,14 @@ double ContinuumBranch::precise_control_slope(double a, double* error) const {
   const double slope_error = error ? *error : 0.0;
   double c = 0.0, c_error = 0.0;
   if (normal_.displacement_coefficient != 0.0) {
-    c += normal_.displacement_coefficient * (profile_->mdr_image_slope(a) - de);
+    c += normal_.displacement_coefficient * (image_slope(a) - de);
     c_error += std::abs(normal_.displacement_coefficient) * slope_error;
   }
-  if (normal_.force_coefficient != 0.0) {
+  if (normal_.force_coefficient != 0.0 && graded_) {
+    double force_error = 0.0;
+    c += normal_.force_coefficient * precise_force_slope(a, error ? &force_error : nullptr);
+    c_error += std::abs(normal_.force_coefficient) * force_error;
+  } else if (normal_.force_coefficient != 0.0) {
     const double es = material_.effective_modulus;
     c += normal_.force_coefficient * 2.0 * es *
          (a * profile_->mdr_image_slope(a) - stretch(a) - a * de);

@@ -5,7 +5,10 @@
 #include "detachment/criterion.hpp"
 #include "engine/base/material.hpp"
 #include "engine/model/contact_snapshot.hpp"
+#include "engine/model/graded_image.hpp"
 #include "profiles/profile.hpp"
+
+#include <optional>
 
 namespace mdrsim {
 
@@ -38,11 +41,17 @@ double force_magnitude(const BranchState& s, double effective_modulus);
 /// tangential stiffness 2 G* a (a_u u_x + a_F 2 G* a u_x = held value). On the receding
 /// branch the boundary spring sits at its let-go elongation e(a) (the criterion's
 /// critical_elongation, else a root of its margin), so that d(a) = g(a) - e(a).
+///
+/// On a graded half-space (`graded`, material.grading; normal loads only) g is the graded
+/// image g_k, the springs' stiffness per unit length c_k(x) = (1 + k) C_k |x|^k / 2, so that
+/// F(a) = C_k (nf_k(a) - a^(1+k) e), and e(a) is Hess's rule on those springs
+/// (docs/graded.md); the criterion is not asked.
 class ContinuumBranch {
  public:
   ContinuumBranch(const Profile& profile, const DetachmentCriterion& criterion,
                   const Material& material, const AffineConstraint& normal,
-                  const AffineConstraint& tangential, double tangential_held);
+                  const AffineConstraint& tangential, double tangential_held,
+                  const std::optional<GradedImage>& graded = std::nullopt);
 
   double tangential_displacement(double a) const;  ///< u_x(a) [m]
   /// The state at radius a [m] with boundary stretch e [m] (any e: pinned states too).
@@ -55,6 +64,11 @@ class ContinuumBranch {
   /// step of 1e-3 of the distance to a_s (e goes like sqrt(a - a_s) there); `error` [1] gets
   /// the difference from the step twice as large, over 15 (its Richardson estimate).
   double control_slope(double a, double* error = nullptr) const;
+  /// The part of F the boundary's stretch pulls off at state s, 2 E* a e (graded: C_k
+  /// a^(1+k) e) [N]: what F's rounding is a few ulps of, with F.
+  double pulled_force(const BranchState& s) const;
+  /// The image the branch follows at x [m]: g, or g_k on a graded half-space.
+  double image(double x) const;
   /// The same for F: dF/da [N/m].
   double force_slope(double a) const;
   /// de/da [1] at a > shear_off_radius() to about the rounding of e: Ridders' extrapolation of
@@ -84,6 +98,11 @@ class ContinuumBranch {
   /// Root iterations spent so far (let-go searches and the branch's own root searches).
   long long& iterations() const { return iterations_; }
 
+  /// |F| plus the magnitudes of its two terms at state s [N] (force_magnitude, on the branch's
+  /// springs).
+  double force_magnitude(const BranchState& s) const;
+  /// The graded image on a graded half-space, else none.
+  const std::optional<GradedImage>& graded() const { return graded_; }
   const Material& material() const { return material_; }
   const Profile& profile() const { return *profile_; }
   const AffineConstraint& normal() const { return normal_; }
@@ -92,6 +111,9 @@ class ContinuumBranch {
 
  private:
   double slope_of(double a, bool force, double* error) const;
+  double image_slope(double x) const;
+  /// F [N] at radius a [m] with boundary stretch e [m].
+  double force(double a, double e) const;
 
   const Profile* profile_;
   const DetachmentCriterion* criterion_;
@@ -100,6 +122,7 @@ class ContinuumBranch {
   AffineConstraint tangential_;
   double tangential_held_;
   double hess_per_radius_;  ///< 2 pi dgamma / E* [m]: dl(a)^2 = that times a
+  std::optional<GradedImage> graded_;
   double shear_off_radius_ = 0.0;
   double shear_off_bracket_ = 0.0;  ///< [m]
   mutable long long iterations_ = 0;

@@ -3,6 +3,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <numbers>
 
 namespace mdrsim {
 namespace {
@@ -35,6 +36,14 @@ Estimated glued_normal_energy(const ContinuumBranch& branch, const BranchState& 
   // x = a t^2: images like sqrt(x) (power laws with n < 1, the cone's tip) become smooth in t.
   const double a = s.contact_radius;
   Estimated e;
+  if (const auto& graded = branch.graded()) {
+    // int_0^a c_k (d - g_k)^2 dx = (C_k / 2) (1 + k) int_0^a x^k (d - g_k)^2 dx.
+    const double ck = branch.material().grading.punch_constant;
+    const double ga = std::abs(graded->image(a));
+    const double size =
+        std::pow(a, 1.0 + graded->grading_exponent()) * (std::abs(d) + ga) * (std::abs(d) + ga);
+    return {0.5 * ck * graded->squared_gap_integral(a, d), kRounding * 0.5 * ck * size};
+  }
   if (const auto exact = profile.squared_gap_integral(a, d)) {
     e = {exact->value, kRounding * exact->magnitude};
   } else {
@@ -79,6 +88,11 @@ Estimated released_energy(const ContinuumBranch& branch, double from, double to)
   if (!(from > to)) return {};
   const Material& m = branch.material();
   const double width = from - to;
+  if (branch.graded()) {
+    // Hess's rule on the graded springs, c_k(x) e(x)^2 = 2 pi x dgamma: pi dgamma (from^2 - to^2).
+    const double released = std::numbers::pi * m.work_of_adhesion * width * (from + to);
+    return {released, kRounding * released};
+  }
   // x = to + (from - to) t^2: where the path ends at the shear-off radius the let-go
   // elongation falls to 0 there like a root of the distance, smooth in t.
   Estimated e = integrate(

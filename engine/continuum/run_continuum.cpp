@@ -62,10 +62,10 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   const AffineConstraint tangential = scene.tangential ? scene.tangential->controller->constraint()
                                                        : FixedGripsController().constraint();
   const double held = scene.tangential ? scene.tangential->held_value : 0.0;
-  ContinuumBranch branch(*scene.profile, *scene.criterion, scene.material, normal, tangential,
-                         held);
+  ContinuumBranch branch(*scene.profile, *scene.criterion, scene.material, normal, tangential, held,
+                         scene.graded_image);
   const double ag = scene.glued_radius;
-  const double preload_stretch = scene.profile->mdr_image(ag) - scene.preload_depth;
+  const double preload_stretch = branch.image(ag) - scene.preload_depth;
 
   RunResult result;
   result.accuracy.route = Accuracy::Route::continuum;
@@ -77,7 +77,7 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
   preload.tangential_force = 0.0;
   observers.emit({.kind = EventKind::preload_reached, .state = preload.snapshot()});
   ContinuumBranch pressed(*scene.profile, *scene.criterion, scene.material,
-                          FixedGripsController().constraint(), tangential, 0.0);
+                          FixedGripsController().constraint(), tangential, 0.0, scene.graded_image);
   // The tangential load moves neither a nor d: both states store the same normal energy.
   const BranchState applied = branch.state(ag, preload_stretch);
   const Estimated glued_normal = glued_normal_energy(branch, applied);
@@ -139,8 +139,8 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
     } else {
       result.status = p.end == End::shear_off ? RunStatus::shear_off : RunStatus::instability;
       result.critical = p.critical.snapshot();
-      result.accuracy.critical_error_estimate = with_rounding(
-          p.critical_error, force_magnitude(p.critical, scene.material.effective_modulus));
+      result.accuracy.critical_error_estimate =
+          with_rounding(p.critical_error, branch.force_magnitude(p.critical));
       JumpRecord last{.stage = "pull-off",
                       .inward = false,
                       .critical = p.critical.snapshot(),
@@ -167,8 +167,7 @@ RunResult run_continuum(const Scene& scene, double rtol, std::int64_t samples,
       const double search = p.peak->contact_radius == p.critical.contact_radius
                                 ? std::max(p.peak_error, p.critical_error)
                                 : p.peak_error;
-      result.accuracy.peak_error_estimate =
-          with_rounding(search, force_magnitude(*p.peak, scene.material.effective_modulus));
+      result.accuracy.peak_error_estimate = with_rounding(search, branch.force_magnitude(*p.peak));
     }
   }
   AxisWork total;

@@ -8,6 +8,8 @@ namespace mdrsim {
 std::optional<PullOffScales> dimensionless_scales(const Profile& profile,
                                                   const Material& material) {
   if (!(material.work_of_adhesion > 0.0)) return std::nullopt;
+  // The scales are the homogeneous half-space's pull-off; a graded one has its own.
+  if (material.grading.graded()) return std::nullopt;
   if (const auto tip = profile.jkr_scale_radius()) {
     const auto jkr = JkrScales::of(*tip, material.effective_modulus, material.work_of_adhesion);
     if (!jkr) return std::nullopt;

@@ -12,6 +12,7 @@
 #include "detachment/criterion.hpp"
 #include "engine/base/material.hpp"
 #include "engine/model/friction_settings.hpp"
+#include "engine/model/graded_image.hpp"
 #include "engine/scene/program.hpp"
 #include "engine/scene/route_plan.hpp"
 #include "profiles/profile.hpp"
@@ -104,6 +105,8 @@ struct Scene {
   /// "file:line:col: loading.preload: ", for a preload whose Dugdale zone only the run finds
   /// reaching past a body's edge.
   std::string preload_at;
+  /// The graded image g_k of the profile where material.grading has k > 0 (docs/graded.md).
+  std::optional<GradedImage> graded_image;
   double glued_radius = 0.0;   ///< radius of the contact glued at the preload [m]
   double preload_depth = 0.0;  ///< indentation at the preload [m]
   double preload_force = 0.0;  ///< normal force at the preload, without adhesion [N]

@@ -16,6 +16,7 @@
 #include "engine/scene/dugdale_reader.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/friction_reader.hpp"
+#include "engine/scene/grading_reader.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
@@ -47,7 +48,7 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings,
                        FiniteRangeKeys& finite_range) {
   t.check_keys({"youngs_modulus", "poisson_ratio", "work_of_adhesion", "effective_modulus",
                 "effective_shear_modulus", "approach_work_of_adhesion", "adhesive_stress",
-                "maugis_parameter"});
+                "maugis_parameter", "grading"});
   const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
   const bool effective = t.has("effective_modulus") || t.has("effective_shear_modulus");
   if (youngs && effective) {
@@ -69,6 +70,7 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings,
     Material m{e_star, g_star.value_or(e_star), 0.0};
     apply_adhesion(t, dgamma, approach, m);
     warn_moduli(t, m, warnings);
+    refuse_grading_without_poisson_ratio(t);
     return m;
   }
   const double e = t.number({.key = "youngs_modulus",
@@ -89,6 +91,7 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings,
                       e, nu, m.effective_modulus, m.effective_shear_modulus));
     }
   }
+  if (const auto grading = read_grading(t, e, nu)) m.grading = *grading;
   return m;
 }
 
@@ -132,6 +135,36 @@ AxisLoading read_axis(TomlReader& t, const ControllerRegistry& controllers, bool
   return axis;
 }
 
+/// The preload on a graded half-space (docs/graded.md): g_k(a_g) = d, C_k nf_k(a_g) = F, or
+/// a_g itself; a flat punch glues its face at d = F / (C_k A^(1+k)).
+PreloadState graded_preload(const char* key, TomlReader& t, const Scene& scene) {
+  const GradedImage& image = *scene.graded_image;
+  const double ck = scene.material.grading.punch_constant;
+  const double value = t.number({.key = key, .help = "[m] or [N]"});
+  if (const auto radius = scene.profile->fixed_contact_radius()) {
+    const std::string k(key);
+    const double depth = k == "force"
+                             ? value / (ck * std::pow(*radius, 1.0 + image.grading_exponent()))
+                         : k == "depth" ? value
+                                        : 0.0;
+    return {*radius, depth};
+  }
+  const std::string k(key);
+  const double a = k == "depth"   ? image.radius_at_depth(value)
+                   : k == "force" ? image.radius_at_force(value, ck)
+                                  : value;
+  return {a, image.image(a)};
+}
+
+/// The preload's force without adhesion on a graded half-space [N]: C_k (d a^(1+k) - (1 + k)
+/// int_0^a x^k g_k), i.e. C_k (nf_k(a) + (d - g_k(a)) a^(1+k)).
+double graded_preload_force(const GradedImage& image, const PreloadState& p, const Material& m) {
+  const double a = p.glued_radius;
+  return m.grading.punch_constant *
+         (image.nonadhesive_force_per_constant(a) +
+          (p.depth - image.image(a)) * std::pow(a, 1.0 + image.grading_exponent()));
+}
+
 /// The glued radius and the preload depth, from the one preload quantity given.
 void resolve_preload(TomlReader& t, Scene& scene) {
   const std::vector<std::string> keys{"depth", "force", "contact_radius"};
@@ -144,10 +177,12 @@ void resolve_preload(TomlReader& t, Scene& scene) {
   // The solve is the model's (engine/model/preload); here its keys and their locations.
   const auto solved = [&](const char* key, const auto& solve) {
     try {
-      const PreloadState p = solve();
+      const PreloadState p = scene.graded_image ? graded_preload(key, t, scene) : solve();
       scene.glued_radius = p.glued_radius;
       scene.preload_depth = p.depth;
-      scene.preload_force = preload_force(profile, p, e_star);
+      scene.preload_force = scene.graded_image
+                                ? graded_preload_force(*scene.graded_image, p, scene.material)
+                                : preload_force(profile, p, e_star);
     } catch (const PreloadOutOfReach& e) {
       t.fail_range(key, e.what());
     } catch (const std::domain_error& e) {
@@ -165,7 +200,7 @@ void resolve_preload(TomlReader& t, Scene& scene) {
                    fmt::format("= {} overflows F/F0 (the JKR scale is {} N)", *f, scales->force));
     }
     solved("force", [&] { return preload_at_force(profile, *f, e_star); });
-    scene.preload_force = *f;
+    if (!scene.graded_image) scene.preload_force = *f;
   } else {
     const double a = t.number({.key = "contact_radius", .help = "[m]", .lower = kPositive});
     solved("contact_radius", [&] { return preload_at_radius(profile, a); });
@@ -467,6 +502,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
 
   read_profile(root, registries, *resolved, scene);
   apply_finite_range(material, finite_range, scene);
+  apply_grading(material, *resolved, scene);
 
   TomlReader loading = root.table("loading");
   if (is_program(loading)) {
@@ -491,6 +527,8 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
   refuse_outside_dugdale_scope(root, loading, route_keys, scene);
   if (scene.material.finite_range()) use_dugdale_route(*resolved, scene, route_keys);
+  refuse_outside_grading_scope(root, loading, material, route_keys, scene);
+  use_graded_route(*resolved, scene);
   read_discretization(root, route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);
   root.finish();
