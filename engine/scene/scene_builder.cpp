@@ -387,6 +387,12 @@ void read_discretization(TomlReader& root, RouteKeys& route_keys, Scene& scene) 
     }
     if (continuum) {
       for (const char* key : {"springs", "extrapolation"}) {
+        if (discretization->has(key) && scene.material.grading.graded()) {
+          discretization->fail_at(key,
+                                  "the continuum route has no springs, and the spring row does "
+                                  "not carry material.grading yet; give rtol (default 1e-10) "
+                                  "(docs/graded.md)");
+        }
         if (discretization->has(key)) {
           discretization->fail_at(key,
                                   "the continuum route has no springs; give rtol (default "

@@ -158,6 +158,13 @@ TEST(GradingReader, RefusesOneLineAtTheKey) {
        "0.01\n[loading]\n[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 1e-5 }\n",
        "g.toml:11:1: loading.stage: loading programs are not yet carried with material.grading; "
        "use the shorthand (docs/graded.md \"What it refuses\")"},
+      {"Springs",
+       "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = "
+       "0.05\ngrading = { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = "
+       "\"parabolic\"\nradius = 0.01\n[loading]\npreload = { contact_radius = 5.0e-4 "
+       "}\nnormal = { control = \"fixed-load\" }\n[discretization]\nsprings = 1000",
+       "g.toml:14:11: discretization.springs: the continuum route has no springs, and the spring "
+       "row does not carry material.grading yet; give rtol (default 1e-10) (docs/graded.md)"},
   };
   for (const Refusal& r : refusals) {
     SCOPED_TRACE(r.name);
