@@ -113,6 +113,9 @@ void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& load
 
 void use_graded_route(nlohmann::json& resolved, Scene& scene) {
   if (!scene.material.grading.graded()) return;
+  // No criterion is asked (Hess's rule on the graded springs): the resolved scene leaves out
+  // the default it would refuse given, so that it builds the scene again.
+  resolved.erase("detachment");
   scene.solver.method = SolverMethod::continuum;
   nlohmann::json& solver = resolved["solver"];
   if (solver.is_object()) {

@@ -31,7 +31,8 @@ void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& load
                                   const TomlReader& material, const RouteKeys& route_keys,
                                   const Scene& scene);
 
-/// A graded scene runs on the continuum route: the scene and its resolved form name it.
+/// A graded scene runs on the continuum route: the scene and its resolved form name it, and the
+/// resolved form leaves out [detachment].
 void use_graded_route(nlohmann::json& resolved, Scene& scene);
 
 }  // namespace mdrsim

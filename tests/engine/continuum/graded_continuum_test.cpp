@@ -5,6 +5,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 
@@ -113,6 +114,19 @@ TEST(GradedContinuum, WorkIsTheIntegralOfFdd) {
   ASSERT_EQ(run_result.stages.size(), 3u);
   EXPECT_NEAR(run_result.stages[0].work.normal / preload, 1.0, 1e-9);
   EXPECT_NEAR(run_result.stages[2].work.normal / (pinned + branch), 1.0, 1e-9);
+}
+
+TEST(GradedContinuum, TheResolvedSceneBuildsTheSceneAgain) {
+  // The JSON result's scene is valid input: rerun, the same numbers.
+  const Scene scene =
+      build(graded_scene(0.5, 0.3, 1.0e6, kParabola, "contact_radius = 5.0e-4", "fixed-grips"));
+  const RunResult first = run_scene(scene, ObserverList{});
+  static const Registries registries = Registries::builtin();
+  const RunResult again =
+      run_scene(SceneDocument::from_scene_text(scene.resolved->dump(), "r.json").build(registries),
+                ObserverList{});
+  ASSERT_TRUE(first.critical && again.critical);
+  EXPECT_EQ(again.critical->normal_force, first.critical->normal_force);
 }
 
 TEST(GradedContinuum, ExponentZeroIsTodaysScene) {
