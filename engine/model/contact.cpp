@@ -14,6 +14,9 @@ Contact::Contact(const SpringFoundation& foundation, const Material& material,
 }
 
 LinearResponse Contact::normal_response() const {
+  if (foundation_->graded()) {
+    return {foundation_->graded_stiffness_to(state_.springs_in_contact), state_.image_sum.value()};
+  }
   const double per_spring = 2.0 * material_.effective_modulus * foundation_->spacing();
   return {per_spring * static_cast<double>(state_.springs_in_contact),
           per_spring * state_.image_sum.value()};
@@ -42,8 +45,12 @@ double Contact::normal_force_of(const State& state) const { return normal_state_
 
 std::pair<double, double> Contact::normal_state_of(const State& state) const {
   const double per_spring = 2.0 * material_.effective_modulus * foundation_->spacing();
-  const LinearResponse r{per_spring * static_cast<double>(state.springs_in_contact),
-                         per_spring * state.image_sum.value()};
+  const LinearResponse r =
+      foundation_->graded()
+          ? LinearResponse{foundation_->graded_stiffness_to(state.springs_in_contact),
+                           state.image_sum.value()}
+          : LinearResponse{per_spring * static_cast<double>(state.springs_in_contact),
+                           per_spring * state.image_sum.value()};
   const double d = displacement_under(normal_, r, state.normal_control);
   return {d, r.stiffness * d - r.offset};
 }
@@ -54,7 +61,11 @@ double Contact::tangential_displacement_at_radius(double a) const {
 }
 
 void Contact::detach_boundary_spring() {
-  state_.image_sum.add(-state_.boundary_image);
+  // Graded: the sum weighs each image by its spring's stiffness (spring_foundation.hpp).
+  state_.image_sum.add(foundation_->graded()
+                           ? -foundation_->graded_stiffness(state_.springs_in_contact) *
+                                 state_.boundary_image
+                           : -state_.boundary_image);
   --state_.springs_in_contact;
   state_.boundary_image =
       state_.springs_in_contact > 0 ? foundation_->image(state_.springs_in_contact) : 0.0;

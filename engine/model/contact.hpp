@@ -13,18 +13,20 @@
 
 namespace mdrsim {
 
-/// Springs 1..n are attached. The normal force is 2 E* dx sum_{i<=n} (d - g(x_i)) and the
-/// tangential force 2 G* dx n u_x (both halves): each is linear in its displacement, so the
-/// controllers' constraints give the equilibrium by one division, O(1) per query.
+/// Springs 1..n are attached. The normal force is 2 E* dx sum_{i<=n} (d - g(x_i)) (graded:
+/// sum_{i<=n} w_i (d - g_k(x_i)), spring_foundation.hpp) and the tangential force 2 G* dx n u_x
+/// (both halves): each is linear in its displacement, so the controllers' constraints give the
+/// equilibrium by one division, O(1) per query.
 class Contact {
  public:
   /// Mutable part of the contact, cheap to copy: stepping backs up by restoring it.
   struct State {
     std::int64_t springs_in_contact;
-    CompensatedSum image_sum;  ///< sum of g(x_i) over attached springs [m]
-    double normal_control;     ///< held value of the normal controller
-    double tangential_held;    ///< held value of the tangential controller
-    double boundary_image;     ///< g at the boundary spring, 0 without springs [m]
+    /// sum of g(x_i) over attached springs [m]; graded: of w_i g(x_i) [N] (spring_foundation.hpp)
+    CompensatedSum image_sum;
+    double normal_control;   ///< held value of the normal controller
+    double tangential_held;  ///< held value of the tangential controller
+    double boundary_image;   ///< g at the boundary spring, 0 without springs [m]
   };
 
   Contact(const SpringFoundation& foundation, const Material& material, AffineConstraint normal,

@@ -162,6 +162,14 @@ void fill_critical(RunResult& result, const Contact& contact, const DetachmentCr
 }  // namespace
 
 ZeroScale shorthand_zero_scale(const Scene& scene) {
+  if (scene.graded_image) {
+    // The graded springs' stiffness at the glued radius, C_k a_g^k / 2, stands for E*.
+    const double a = scene.glued_radius;
+    const double modulus = 0.5 * scene.material.grading.punch_constant *
+                           std::pow(a, scene.graded_image->grading_exponent());
+    return zero_scale(modulus, a, scene.graded_image->image(a),
+                      scene.material.largest_work_of_adhesion(), scene.preload_force);
+  }
   return zero_scale(scene.material.effective_modulus, scene.glued_radius,
                     scene.profile->mdr_image(scene.glued_radius),
                     scene.material.largest_work_of_adhesion(), scene.preload_force);
@@ -205,7 +213,11 @@ void emit_closing_events(const RunResult& result, const ObserverList& observers)
 }
 
 RunResult run_row(const Scene& scene, const RowSpec& row, const ObserverList& observers) {
-  const SpringFoundation foundation(*scene.profile, row.outer_radius, row.springs);
+  const SpringFoundation foundation =
+      scene.graded_image
+          ? SpringFoundation(*scene.profile, row.outer_radius, row.springs, *scene.graded_image,
+                             scene.material.grading.punch_constant)
+          : SpringFoundation(*scene.profile, row.outer_radius, row.springs);
   const AffineConstraint normal_constraint =
       row.start ? row.start->normal : scene.normal.controller->constraint();
   const AffineConstraint tangential_constraint = row.start ? row.start->tangential

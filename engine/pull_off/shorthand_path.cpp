@@ -77,6 +77,11 @@ void ShorthandPath::preload(const Contact& contact) {
   const double squares = n * d * d - 2.0 * d * row.total_image() + row.total_image_squares();
   StageRecord stage{"preload", contact.snapshot(), {}};
   stage.work.normal = contact.material().effective_modulus * row.spacing() * squares;
+  if (row.graded()) {
+    // sum w_i (d - g_i)^2 / 2, the sums weighted by the springs' stiffness.
+    stage.work.normal = 0.5 * (row.graded_stiffness_to(row.springs()) * d * d -
+                               2.0 * d * row.total_image() + row.total_image_squares());
+  }
   locate_whole_row(contact, stage);
   stages_.push_back(stage);
 }

@@ -103,19 +103,20 @@ void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& load
                  "no detachment criterion applies with material.grading: the boundary spring "
                  "lets go by Hess's rule on the graded springs (docs/graded.md)");
   }
-  if (route_keys.method_given && scene.solver.method != SolverMethod::continuum) {
+  if (route_keys.method_given && scene.solver.method == SolverMethod::stepping) {
     throw SceneError(route_keys.method_at +
-                     fmt::format("material.grading is not yet carried by the spring row "
-                                 "(method = \"{}\"); use method = \"continuum\" (docs/graded.md)",
-                                 to_string(scene.solver.method)));
+                     "material.grading is not yet carried by the stepping method; use method = "
+                     "\"event\" (the graded spring row) or \"continuum\" (docs/graded.md)");
   }
 }
 
-void use_graded_route(nlohmann::json& resolved, Scene& scene) {
+void use_graded_route(nlohmann::json& resolved, const RouteKeys& route_keys, Scene& scene) {
   if (!scene.material.grading.graded()) return;
   // No criterion is asked (Hess's rule on the graded springs): the resolved scene leaves out
   // the default it would refuse given, so that it builds the scene again.
   resolved.erase("detachment");
+  // method = "event" named takes the graded spring row; else the continuum route.
+  if (route_keys.method_given && scene.solver.method == SolverMethod::event) return;
   scene.solver.method = SolverMethod::continuum;
   nlohmann::json& solver = resolved["solver"];
   if (solver.is_object()) {

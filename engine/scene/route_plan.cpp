@@ -44,8 +44,8 @@ std::string engine_reason(const Scene& scene, const RoutePlan& plan, bool method
                "spring row";
       }
       if (scene.material.grading.graded()) {
-        return "material.grading: a graded half-space runs on the continuum route (the spring "
-               "row does not carry it yet, docs/graded.md)";
+        return "material.grading: a graded half-space runs on the continuum route unless "
+               "solver.method = \"event\" takes the graded spring row (docs/graded.md)";
       }
       return method_given ? "solver.method = \"continuum\""
                           : "discretization.rtol with no solver.method, and the continuum route "
@@ -57,6 +57,10 @@ std::string engine_reason(const Scene& scene, const RoutePlan& plan, bool method
       if (scene.material.finite_range()) {
         return "material.adhesive_stress with solver.method = \"event\": the Maugis-Dugdale "
                "spring row (docs/maugis_row.md)";
+      }
+      if (scene.material.grading.graded()) {
+        return "material.grading with solver.method = \"event\": the graded spring row "
+               "(docs/graded.md)";
       }
       break;
   }

@@ -387,12 +387,6 @@ void read_discretization(TomlReader& root, RouteKeys& route_keys, Scene& scene) 
     }
     if (continuum) {
       for (const char* key : {"springs", "extrapolation"}) {
-        if (discretization->has(key) && scene.material.grading.graded()) {
-          discretization->fail_at(key,
-                                  "the continuum route has no springs, and the spring row does "
-                                  "not carry material.grading yet; give rtol (default 1e-10) "
-                                  "(docs/graded.md)");
-        }
         if (discretization->has(key)) {
           discretization->fail_at(key,
                                   "the continuum route has no springs; give rtol (default "
@@ -534,7 +528,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   refuse_outside_dugdale_scope(root, loading, route_keys, scene);
   if (scene.material.finite_range()) use_dugdale_route(*resolved, scene, route_keys);
   refuse_outside_grading_scope(root, loading, material, route_keys, scene);
-  use_graded_route(*resolved, scene);
+  use_graded_route(*resolved, route_keys, scene);
   read_discretization(root, route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);
   root.finish();

@@ -41,6 +41,15 @@ TEST(GradingReader, ReadsTheKeyAndTakesTheContinuumRoute) {
             RouteEngine::continuum);
 }
 
+TEST(GradingReader, EventMethodTakesTheGradedRow) {
+  const Scene s = build(std::string(kGraded) + "[solver]\nmethod = \"event\"\n");
+  EXPECT_EQ(s.solver.method, SolverMethod::event);
+  EXPECT_EQ(s.plan.engine, RouteEngine::pull_off_row);
+  // The resolved form names the row and leaves out [detachment]: it builds the scene again.
+  EXPECT_EQ(s.resolved->at("solver").at("method"), "event");
+  EXPECT_FALSE(s.resolved->contains("detachment"));
+}
+
 TEST(GradingReader, ExponentZeroKeepsTheRow) {
   std::string text(kGraded);
   text.replace(text.find("exponent = 0.5"), 14, "exponent = 0.0");
@@ -138,20 +147,13 @@ TEST(GradingReader, RefusesOneLineAtTheKey) {
        "\"fixed-load\" }\n",
        "g.toml:5:11: material.grading: profile.type = \"sphere\" has no graded image yet (known: "
        "parabolic, cone, power_law, flat_punch) (docs/graded.md \"What it refuses\")"},
-      {"EventMethod",
-       "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\ngrading "
-       "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"parabolic\"\nradius = "
-       "0.01\n[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = "
-       "\"fixed-load\" }\n[solver]\nmethod = \"event\"",
-       "g.toml:14:10: solver.method: material.grading is not yet carried by the spring row (method "
-       "= \"event\"); use method = \"continuum\" (docs/graded.md)"},
       {"SteppingMethod",
        "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\ngrading "
        "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"parabolic\"\nradius = "
        "0.01\n[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = "
        "\"fixed-load\" }\n[solver]\nmethod = \"stepping\"",
-       "g.toml:14:10: solver.method: material.grading is not yet carried by the spring row (method "
-       "= \"stepping\"); use method = \"continuum\" (docs/graded.md)"},
+       "g.toml:14:10: solver.method: material.grading is not yet carried by the stepping method; "
+       "use method = \"event\" (the graded spring row) or \"continuum\" (docs/graded.md)"},
       {"Program",
        "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\ngrading "
        "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"parabolic\"\nradius = "
@@ -163,8 +165,8 @@ TEST(GradingReader, RefusesOneLineAtTheKey) {
        "0.05\ngrading = { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = "
        "\"parabolic\"\nradius = 0.01\n[loading]\npreload = { contact_radius = 5.0e-4 "
        "}\nnormal = { control = \"fixed-load\" }\n[discretization]\nsprings = 1000",
-       "g.toml:14:11: discretization.springs: the continuum route has no springs, and the spring "
-       "row does not carry material.grading yet; give rtol (default 1e-10) (docs/graded.md)"},
+       "g.toml:14:11: discretization.springs: the continuum route has no springs; give rtol "
+       "(default 1e-10) or use solver.method = \"event\""},
   };
   for (const Refusal& r : refusals) {
     SCOPED_TRACE(r.name);
