@@ -1,6 +1,7 @@
 // The spring row on a graded half-space E(z) = E0 (z / z0)^k (method = "event") against the
 // closed forms of docs/graded.md: the parabola's pull-off at both controls within the row's
-// estimate, its order in 1/N, the flat punch's exact stiffness, and the continuum route.
+// estimate, its order in 1/N, the flat punch's exact stiffness, and the continuum route (the
+// parabola, the cone, a power law).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -129,6 +130,26 @@ TEST(GradedRow, ConvergesToTheContinuumRoute) {
     EXPECT_NEAR(row.critical->normal_force / f, 1.0, 1e-8);
     ASSERT_TRUE(row.work && continuum.work && !row.stages.empty() && !continuum.stages.empty());
     EXPECT_NEAR(row.stages[0].work.normal / continuum.stages[0].work.normal, 1.0, 1e-8);
+  }
+}
+
+TEST(GradedRow, ConeAndPowerLawMeetTheContinuumRoute) {
+  // The other graded images on the row (g_k = K |x|^n, n = 1 and 3), rtol 1e-7, against the
+  // continuum route (rtol 1e-10): within the row's estimate plus the route's 1e-10.
+  for (const std::string profile : {"type = \"cone\"\nslope_angle_deg = 10.0",
+                                    "type = \"power_law\"\ncoefficient = 1.0e4\nexponent = 3.0"}) {
+    for (const std::string control : {"fixed-load", "fixed-grips"}) {
+      SCOPED_TRACE(profile + " " + control);
+      const RunResult row =
+          run(graded_scene(0.5, profile, "contact_radius = 2.0e-3", control,
+                           "[solver]\nmethod = \"event\"\n[discretization]\nrtol = 1e-7\n"));
+      const RunResult continuum =
+          run(graded_scene(0.5, profile, "contact_radius = 2.0e-3", control, ""));
+      ASSERT_TRUE(row.critical && continuum.critical && row.accuracy.critical_error_estimate);
+      const double f = continuum.critical->normal_force;
+      EXPECT_LE(std::abs(row.critical->normal_force - f),
+                *row.accuracy.critical_error_estimate + 1e-10 * std::abs(f));
+    }
   }
 }
 
