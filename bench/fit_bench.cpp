@@ -302,6 +302,31 @@ void BM_ForceMapReadAndFitOn2Threads(benchmark::State& state) {
 }
 BENCHMARK(BM_ForceMapReadAndFitOn2Threads)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+/// The force map's reading alone (unzip, parse, convert), and its reading and preparing with
+/// the first guess: what a curve of the map costs before its fit.
+void BM_ForceMapRead(benchmark::State& state) {
+  const std::string map = std::string(MDRSIM_SOURCE_DIR) +
+                          "/tests/data/afm/fmt-jpk-fd_map-data-reference-points.jpk-force-map";
+  const mdrsim::fit::TipShape tip = mdrsim::fit::parse_tip("parabolic:radius=1e-5");
+  const bool prepare = state.range(0) != 0;
+  std::size_t curves = 0;
+  for (auto _ : state) {
+    const mdrsim::measured::MeasuredFile file = mdrsim::measured::read_force_curves(map);
+    curves = file.curves.size();
+    if (prepare) {
+      for (const auto& curve : file.curves) {
+        const auto segment =
+            mdrsim::fit::prepare_segment(curve, mdrsim::measured::SegmentKind::approach);
+        benchmark::DoNotOptimize(mdrsim::fit::first_guess(segment, tip, 0.5).contact_point);
+      }
+    }
+  }
+  state.counters["per_curve_us"] = benchmark::Counter(
+      static_cast<double>(curves) * 1e-6,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ForceMapRead)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -26,6 +26,13 @@ struct ScaledProblem {
   std::vector<double> scale;  ///< of a linear parameter; ignored for a logarithmic one
   std::vector<Walk> walk;
   std::vector<bool> held;
+  /// Parameters the model is linear in (their derivative columns do not depend on their own
+  /// values). Where given and some free parameter is not linear, the minimiser walks only the
+  /// others and solves the free linear ones exactly at each step (variable projection, Golub
+  /// and Pereyra; Kaufman's Jacobian): the same minimum, found in a 10000 x 1 problem instead
+  /// of a 10000 x 4 one. Only a parameter walked linearly is solved. Empty: every parameter
+  /// is walked.
+  std::vector<bool> enters_linearly;
   const std::vector<double>* data = nullptr;  ///< the measured forces [N]
   double force_scale = 1.0;                   ///< the residuals are (model - data) / force_scale
   /// Writes the model's force at every sample for parameters p.
@@ -46,7 +53,8 @@ struct ScaledSolution {
 };
 
 /// Minimises the scaled residuals by Eigen's Levenberg-Marquardt (MINPACK's lmder; ftol and
-/// xtol 1e-12, 400 (free + 1) evaluations) from x = 0, and writes each parameter's value,
+/// xtol 1e-12, 400 (free + 1) evaluations) from x = 0 (over the nonlinear free parameters
+/// only where problem.enters_linearly says so), and writes each parameter's value,
 /// held flag and standard error (sqrt of (J^T J)^-1 s^2's diagonal, s^2 = sum_squares /
 /// (points - free), times dp/dx) into out[k], in the problem's order.
 ScaledSolution minimize_scaled(const ScaledProblem& problem, std::span<FitParameter* const> out);
