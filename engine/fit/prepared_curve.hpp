@@ -25,7 +25,7 @@ struct FirstGuess {
   double contact_point = 0.0;    ///< [m]
   double baseline_offset = 0.0;  ///< [N] the baseline's force at the contact point
   double baseline_slope = 0.0;   ///< [N/m] along the tip position
-  double noise = 0.0;            ///< [N] the baseline's robust standard deviation
+  double noise = 0.0;            ///< [N] the baseline's robust standard deviation (first fifth)
   double youngs_modulus = 0.0;   ///< [Pa]
 };
 
