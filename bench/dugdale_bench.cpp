@@ -1,8 +1,8 @@
 // Google Benchmark: the Maugis-Dugdale zone per profile: its gap integral, one contact state, the
 // fixed-load pull-off search from a glued radius, and a 1000-point force curve down to the closing
 // point (independent states, and each from its neighbour's zone); the shorthand's path: its first
-// fold under each control, its most tensile state and its work up to the fold (a scene run's
-// parts).
+// fold under each control, its most tensile state and its work up to the fold, and its --samples
+// curve (a scene run's parts).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -171,6 +171,25 @@ void path_peak_and_work(benchmark::State& state, const std::string& name) {
   state.counters["work"] = work;
 }
 
+/// A scene run's --samples curve: 1000 states evenly in s from the preload to the fixed-load
+/// fold, one path.at() each, or through path.states() (each from the last ones), as the run does.
+void path_samples(benchmark::State& state, const std::string& name, bool continued) {
+  const auto profile = profile_of(name);
+  const mdrsim::DugdalePath path = path_of(*profile);
+  const double s_end = mdrsim::first_fold(path, control_of("fixed-load"))->s;
+  std::vector<double> places(kCurvePoints);
+  for (int k = 0; k < kCurvePoints; ++k) places[k] = s_end * k / (kCurvePoints - 1);
+  for (auto _ : state) {
+    if (continued) {
+      const std::vector<mdrsim::DugdaleState> curve = path.states(places);
+      benchmark::DoNotOptimize(curve.data());
+    } else {
+      for (const double s : places) benchmark::DoNotOptimize(path.at(s));
+    }
+  }
+  state.counters["points"] = kCurvePoints;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -194,6 +213,12 @@ int main(int argc, char** argv) {
     }
     benchmark::RegisterBenchmark(("dugdale_path_peak_and_work/" + name).c_str(), path_peak_and_work,
                                  name)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("dugdale_path_samples_1000/" + name).c_str(), path_samples, name,
+                                 false)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("dugdale_path_samples_1000_continued/" + name).c_str(),
+                                 path_samples, name, true)
         ->Unit(benchmark::kMicrosecond);
   }
   benchmark::Initialize(&argc, argv);

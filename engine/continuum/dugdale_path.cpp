@@ -216,12 +216,12 @@ DugdaleState dugdale_held_state(const Profile& profile, const DugdaleLaw& law, d
                           2.0 * law.adhesive_stress * (c * c * t - a * s)};
 }
 
-DugdaleState DugdalePath::in_phase(int phase, double s) const {
+DugdaleState DugdalePath::in_phase(int phase, double s, double guess) const {
   switch (phase) {
     case 0:
       if (s == 1.0) return glued_state_;
       return dugdale_contact_state(profile_, law_,
-                                   preload_radius_ - s * (preload_radius_ - glued_radius_));
+                                   preload_radius_ - s * (preload_radius_ - glued_radius_), guess);
     case 1: {
       if (s == 1.0) return glued_state_;
       if (s == 2.0) return angle_state_;
@@ -229,7 +229,8 @@ DugdaleState DugdalePath::in_phase(int phase, double s) const {
       const double u = 2.0 - s;
       return dugdale_contact_state(
           profile_, law_,
-          angle_state_.contact_radius + (glued_radius_ - angle_state_.contact_radius) * u * u);
+          angle_state_.contact_radius + (glued_radius_ - angle_state_.contact_radius) * u * u,
+          guess);
     }
     case 2: {
       if (s == 2.0) return angle_state_;
@@ -241,7 +242,8 @@ DugdaleState DugdalePath::in_phase(int phase, double s) const {
       // a ~ c0 cos(t) next to the closing point: a start for the bracket.
       return contact_state_at_angle(
           profile_, law_, 0.5 * kPi - gap,
-          std::min(angle_state_.contact_radius, closing_radius_ * std::sin(gap)));
+          guess > 0.0 ? guess
+                      : std::min(angle_state_.contact_radius, closing_radius_ * std::sin(gap)));
     }
     default:
       return dugdale_free_state(profile_, law_,
@@ -250,6 +252,47 @@ DugdaleState DugdalePath::in_phase(int phase, double s) const {
 }
 
 DugdaleState DugdalePath::at(double s) const { return in_phase(phase_of(s), s); }
+
+std::vector<DugdaleState> DugdalePath::states(std::span<const double> places) const {
+  std::vector<DugdaleState> out;
+  out.reserve(places.size());
+  // Each phase's own walk: in a (the half-chord) on [0, 2), in t (the radius) on [2, 3); the
+  // no-contact branch is closed-form.
+  ContinuedGuess guess;
+  int walking = -1;
+  for (const double s : places) {
+    const int phase = phase_of(s);
+    const bool in_angle = phase == 2;
+    if (phase != walking) guess.clear();
+    walking = phase;
+    if (phase == kFreePhase) {
+      out.push_back(in_phase(phase, s));
+      continue;
+    }
+    // The walk's variable: the zone's angle in phase 2, the contact radius before it.
+    const auto variable = [&](const DugdaleState& st) {
+      return in_angle ? st.angle : st.contact_radius;
+    };
+    const auto value = [&](const DugdaleState& st) {
+      return in_angle ? st.contact_radius : st.cohesive_radius * std::sin(st.angle);
+    };
+    // The variable at s before solving: the phase's own map (in_phase's formulas).
+    double x = 0.0;
+    if (phase == 0) {
+      x = preload_radius_ - s * (preload_radius_ - glued_radius_);
+    } else if (phase == 1) {
+      const double u = 2.0 - s;
+      x = angle_state_.contact_radius + (glued_radius_ - angle_state_.contact_radius) * u * u;
+    } else {
+      const double u = 3.0 - s;
+      x = 0.5 * kPi - (0.5 * kPi - angle_state_.angle) * u * u;
+    }
+    const DugdaleState st = in_phase(phase, s, guess.at(x));
+    out.push_back(st);
+    if (st.contact_radius > 0.0) guess.add(variable(st), value(st));
+  }
+  return out;
+}
 
 double DugdalePath::depth_slope(double s) const {
   const int phase = phase_of(s);

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "controllers/controller.hpp"
 #include "engine/model/contact_snapshot.hpp"
@@ -30,6 +32,11 @@ class DugdalePath {
 
   /// The equilibrium at s.
   DugdaleState at(double s) const;
+  /// The equilibria at each of `places` (a force curve's s, in order), each solve started from
+  /// the cubic through the last four of its phase (their half-chords in a on the branch's radii,
+  /// their radii in t on its angles): one Newton step a point where the curve is smooth. The
+  /// same states as at(), to its solvers' convergence (the root to its rounding).
+  std::vector<DugdaleState> states(std::span<const double> places) const;
   /// d'(s) [m]: a fourth-order central difference on s's own phase, its formula continued.
   double depth_slope(double s) const;
 
@@ -42,8 +49,9 @@ class DugdalePath {
   double closing_radius() const { return closing_radius_; }  ///< c0 [m]
 
  private:
-  /// The state at s by the formula of `phase`, continued beyond its ends.
-  DugdaleState in_phase(int phase, double s) const;
+  /// The state at s by the formula of `phase`, continued beyond its ends; `guess` starts its
+  /// solve (the half-chord in phases 0 and 1, the radius in phase 2; 0: the solver's own).
+  DugdaleState in_phase(int phase, double s, double guess = 0.0) const;
 
   const Profile& profile_;
   DugdaleLaw law_;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "controllers/builtin_controllers.hpp"
 #include "engine/continuum/continuum_branch.hpp"
@@ -77,9 +78,14 @@ RunResult run_dugdale_continuum(const Scene& scene, double rtol, std::int64_t sa
   }
 
   if (samples >= 2) {
+    // The curve solved as a walk (each state from the last ones), then emitted.
+    std::vector<double> places(static_cast<std::size_t>(samples));
     for (std::int64_t k = 0; k < samples; ++k) {
-      const double s = s_end * static_cast<double>(k) / static_cast<double>(samples - 1);
-      observers.emit({.kind = EventKind::sample, .state = dugdale_snapshot(path.at(s), normal)});
+      places[static_cast<std::size_t>(k)] =
+          s_end * static_cast<double>(k) / static_cast<double>(samples - 1);
+    }
+    for (const DugdaleState& state : path.states(places)) {
+      observers.emit({.kind = EventKind::sample, .state = dugdale_snapshot(state, normal)});
     }
   }
 

@@ -134,42 +134,40 @@ DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law
   return contact_state_from(profile, law, a, half_chord_guess);
 }
 
+double ContinuedGuess::at(double x) const {
+  if (known_ == 0) return 0.0;
+  std::array<double, kFit> p = y_;
+  for (int level = 1; level < known_; ++level) {
+    for (int i = 0; i + level < known_; ++i) {
+      p[i] = ((x - x_[i + level]) * p[i] - (x - x_[i]) * p[i + 1]) / (x_[i] - x_[i + level]);
+    }
+  }
+  if (!(p[0] > 0.0) || !std::isfinite(p[0])) return y_[0];
+  return p[0];
+}
+
+void ContinuedGuess::add(double x, double y) {
+  if (known_ > 0 && x_[0] == x) return;
+  std::copy_backward(x_.begin(), x_.end() - 1, x_.end());
+  std::copy_backward(y_.begin(), y_.end() - 1, y_.end());
+  x_[0] = x;
+  y_[0] = y;
+  known_ = std::min(known_ + 1, kFit);
+}
+
 std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const DugdaleLaw& law,
                                                  std::span<const double> contact_radii) {
   std::vector<DugdaleState> states;
   states.reserve(contact_radii.size());
-  // The half-chords of the last four zones, and the cubic through them (Neville's scheme): a
-  // guess within the curve's fourth derivative times the step^4, which on a curve of close
-  // radii is inside Newton's 1e-9, so that one step ends most solves.
-  constexpr int kFit = 4;
-  std::array<double, kFit> radii{}, chords{};
-  int known = 0;
+  // The half-chords of the last four zones: a guess that, on a curve of close radii, lies inside
+  // Newton's 1e-9, so that one step ends most solves.
+  ContinuedGuess chords;
   for (const double a : contact_radii) {
-    double first = 0.0;
-    if (known >= 2) {
-      const int m = std::min(known, kFit);
-      std::array<double, kFit> p{};
-      for (int i = 0; i < m; ++i) p[i] = chords[i];
-      for (int level = 1; level < m; ++level) {
-        for (int i = 0; i + level < m; ++i) {
-          p[i] = ((a - radii[i + level]) * p[i] - (a - radii[i]) * p[i + 1]) /
-                 (radii[i] - radii[i + level]);
-        }
-      }
-      first = p[0];
-    }
-    if (!(first > 0.0) || !std::isfinite(first)) {
-      first = known == 0 ? first_half_chord(profile, law, a) : chords[0];
-    }
+    double first = chords.at(a);
+    if (!(first > 0.0)) first = first_half_chord(profile, law, a);
     const DugdaleState state = contact_state_from(profile, law, a, first);
     states.push_back(state);
-    // The newest zone first; radii that repeat would make the scheme divide by zero.
-    if (known > 0 && radii[0] == a) continue;
-    std::copy_backward(radii.begin(), radii.end() - 1, radii.end());
-    std::copy_backward(chords.begin(), chords.end() - 1, chords.end());
-    radii[0] = a;
-    chords[0] = state.cohesive_radius * std::sin(state.angle);
-    known = std::min(known + 1, kFit);
+    chords.add(a, state.cohesive_radius * std::sin(state.angle));
   }
   return states;
 }

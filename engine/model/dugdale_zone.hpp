@@ -2,6 +2,7 @@
 // with a cohesive zone out to c, and of the zone alone once the contact has closed.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -61,6 +62,24 @@ struct DugdaleSlopes {
 /// the zone is thin: relative accuracy about eps g'(a)/((2 sigma_0/E*) t) there.
 DugdaleSlopes dugdale_contact_slopes(const Profile& profile, const DugdaleLaw& law,
                                      const DugdaleState& state);
+
+/// A walk's guess of its next solve: the cubic through the last four (x, y) it added (Neville's
+/// scheme), the line through two, the one value of one; none (0) before. Within the curve's
+/// fourth derivative times the step^4: on close points, inside a Newton solve's own tolerance.
+class ContinuedGuess {
+ public:
+  /// y at x, or 0 where nothing is known (or the scheme's value is not a finite positive).
+  double at(double x) const;
+  /// Adds a solved (x, y); an x equal to the newest one is not added (the scheme would divide by
+  /// zero).
+  void add(double x, double y);
+  void clear() { known_ = 0; }
+
+ private:
+  static constexpr int kFit = 4;
+  std::array<double, kFit> x_{}, y_{};  ///< the newest first
+  int known_ = 0;
+};
 
 /// The contact branch at each of `contact_radii` (a > 0 [m]), in their order: each solve
 /// starts from the zones of the four before (their cubic), so that a force curve of close radii

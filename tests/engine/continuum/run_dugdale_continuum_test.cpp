@@ -6,10 +6,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "engine/continuum/dugdale_path.hpp"
 #include "engine/model/dugdale_material.hpp"
@@ -252,6 +254,38 @@ TEST(RunDugdaleContinuum, ACompliantMachineFoldsBetweenGripsAndLoad) {
   EXPECT_LT(compliant.critical->normal_force, grips.critical->normal_force);
   EXPECT_GT(compliant.critical->normal_force, load.critical->normal_force);
   EXPECT_TRUE(compliant.accuracy.rtol_met);
+}
+
+// The --samples curve is solved as a walk (DugdalePath::states): the same states as path.at one
+// at a time, over all four phases (a preload pressed past a_g, so that phase [0, 1] has its own
+// radii), within 1e-13 of each quantity's scale on the curve (each solve ends at its root to
+// rounding, from whichever start; a few ulps of d, which cancels as the contact lets go).
+TEST(RunDugdaleContinuum, TheSampledCurveIsThePathsStatesOneByOne) {
+  const MaugisUnits u;
+  const ParabolicProfile parabola(u.radius);
+  for (const double lambda : {0.3, 1.0, 5.0}) {
+    SCOPED_TRACE(lambda);
+    const double a = 3.0 * u.length();
+    const DugdalePath path(parabola, u.law(lambda), a, 1.2 * parabola.mdr_image(a));
+    ASSERT_GT(path.preload_radius(), a);
+    std::vector<double> places;
+    for (int k = 0; k <= 2000; ++k) places.push_back(DugdalePath::kEnd * k / 2000.0);
+    const std::vector<DugdaleState> curve = path.states(places);
+    ASSERT_EQ(curve.size(), places.size());
+    double depth_scale = 0.0, force_scale = 0.0, radius_scale = 0.0;
+    for (const DugdaleState& st : curve) {
+      depth_scale = std::max(depth_scale, std::abs(st.indentation));
+      force_scale = std::max(force_scale, std::abs(st.normal_force));
+      radius_scale = std::max(radius_scale, st.cohesive_radius);
+    }
+    for (std::size_t k = 0; k < places.size(); ++k) {
+      const DugdaleState one = path.at(places[k]);
+      EXPECT_NEAR(curve[k].indentation, one.indentation, 1e-13 * depth_scale) << places[k];
+      EXPECT_NEAR(curve[k].normal_force, one.normal_force, 1e-13 * force_scale) << places[k];
+      EXPECT_NEAR(curve[k].contact_radius, one.contact_radius, 1e-13 * radius_scale) << places[k];
+      EXPECT_NEAR(curve[k].cohesive_radius, one.cohesive_radius, 1e-13 * radius_scale) << places[k];
+    }
+  }
 }
 
 }  // namespace
