@@ -118,13 +118,13 @@ DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& la
     const double slope = gap.angle_slope / (a * tan_t) - profile.mdr_image_slope(a) * t +
                          law.zone_strain() * stretch_per_radius;
     double next = a - excess * (kPi / 2.0) / slope;
-    if (!(next > lo && next < hi)) {
-      next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * a;
-    } else if (std::abs(next - a) <= 1e-9 * a) {
-      // Quadratic convergence: the step left is about (a E''/2E') 1e-18 a.
+    // Quadratic convergence: the step left is about (a E''/2E') 1e-18 a; a step onto the
+    // bracket's end from a start at the root is converged too.
+    if (std::abs(next - a) <= 1e-9 * a && next >= lo && next <= hi) {
       a = next;
       break;
     }
+    if (!(next > lo && next < hi)) next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * a;
     a = next;
     if (std::isfinite(hi) && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
   }

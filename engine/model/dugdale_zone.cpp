@@ -90,6 +90,13 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
       hi_known = true;
     }
     double next = s - o.excess / o.slope;
+    // Quadratic convergence: the step left is about (s O''/2O') 1e-18 s. A step onto the
+    // bracket's end from a start at the root (a walk's exact guess, whose excess rounds to zero)
+    // is converged too, not a step to bisect.
+    if (std::abs(next - s) <= 1e-9 * s && next >= lo && next <= hi) {
+      s = next;
+      break;
+    }
     if (!(next > lo && next < hi)) {
       if (!hi_known && std::isfinite(hi)) {
         if (opening(profile, law, a, hi).excess < 0.0) {
@@ -98,10 +105,6 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
         hi_known = true;
       }
       next = hi_known ? 0.5 * (lo + hi) : 2.0 * std::max(s, lo);
-    } else if (std::abs(next - s) <= 1e-9 * s) {
-      // Quadratic convergence: the step left is about (s O''/2O') 1e-18 s.
-      s = next;
-      break;
     }
     s = next;
     if (hi_known && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
