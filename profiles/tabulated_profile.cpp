@@ -60,14 +60,21 @@ CosSin small_cos_sin(double d) {
   return {c, s};
 }
 
+/// An angle with its cosine and sine.
+struct Angle {
+  double angle, cos, sin;
+};
+
 /// gauss_legendre over an angle [lo, hi] (hi - lo <= 0.32), with the cosine and sine of each
-/// node (and the node): one cos and sin at the middle, each node's by rotation from it through the
-/// small angle of its offset (small_cos_sin), instead of a cos and a sin a node.
+/// node (and the node): the middle's from the ends' (cos lo + cos hi = 2 cos(mid) cos(half),
+/// sin likewise), each node's by rotation from the middle through the small angle of its offset
+/// (small_cos_sin), instead of a cos and a sin a node.
 template <unsigned N, class Fn>
-void gauss_legendre_angles(double lo, double hi, Fn fn) {
+void gauss_legendre_angles(const Angle& lo, const Angle& hi, Fn fn) {
   using Rule = boost::math::quadrature::gauss<double, N>;
-  const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
-  const double cm = std::cos(mid), sm = std::sin(mid);
+  const double half = 0.5 * (hi.angle - lo.angle), mid = 0.5 * (hi.angle + lo.angle);
+  const double to_mid = 0.5 / small_cos_sin(half).cos;
+  const double cm = (lo.cos + hi.cos) * to_mid, sm = (lo.sin + hi.sin) * to_mid;
   const auto& x = Rule::abscissa();
   const auto& w = Rule::weights();
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -274,22 +281,33 @@ DugdaleGap TabulatedProfile::dugdale_gap(double a, double c, double t) const {
     slope += weight * x * image_slope;
   };
   constexpr double kWidest = 0.3;
-  double psi_lo = 0.0;
+  // Each knot's angle with its cosine x_k/c and sine sqrt((c - x_k)(c + x_k))/c, exact where
+  // the angle is small (1 - (x_k/c)^2 would cancel there).
+  const auto at_knot = [&](double x) {
+    const double cos_psi = x / c;
+    return Angle{std::acos(cos_psi), cos_psi, std::sqrt((c - x) * (c + x)) / c};
+  };
+  const Angle end{t, std::cos(t), std::sin(t)};
+  Angle lo{0.0, 1.0, 0.0};
   for (;; --k) {
     const bool last = k <= first;
-    const double psi_hi = last ? t : std::min(t, std::acos(knots[k] / c));
-    const double width = psi_hi - psi_lo;
+    Angle hi = last ? end : at_knot(knots[k]);
+    if (hi.angle > t) hi = end;
+    const double width = hi.angle - lo.angle;
     if (width <= 0.05) {
-      gauss_legendre_angles<4>(psi_lo, psi_hi, add);
+      gauss_legendre_angles<4>(lo, hi, add);
     } else {
       const int parts = static_cast<int>(std::ceil(width / kWidest));
-      for (int p = 0; p < parts; ++p) {
-        gauss_legendre_angles<8>(psi_lo + width * p / parts,
-                                 p + 1 == parts ? psi_hi : psi_lo + width * (p + 1) / parts, add);
+      Angle from = lo;
+      for (int p = 1; p <= parts; ++p) {
+        const double psi = lo.angle + width * p / parts;
+        const Angle to = p == parts ? hi : Angle{psi, std::cos(psi), std::sin(psi)};
+        gauss_legendre_angles<8>(from, to, add);
+        from = to;
       }
     }
     if (last) break;
-    psi_lo = psi_hi;
+    lo = hi;
   }
   return {.integral = gap, .angle_slope = std::tan(t) * slope};
 }

@@ -7,9 +7,10 @@
 
 namespace mdrsim {
 
-/// dugdale_contact_state at the radii asked for, in any order: each solve starts from the line
-/// through the zones of the last two (a scan's neighbours, a root search's latest bracket ends),
-/// one or two Newton steps where they lie close, instead of five from the small-t cubic.
+/// dugdale_contact_state at the radii asked for, in any order: each solve starts from the cubic
+/// through the zones of the last four (a scan's neighbours, a root search's latest points,
+/// ContinuedGuess), one or two Newton steps where they lie close, instead of five from the
+/// small-t cubic; the radius just solved again is that state.
 class DugdaleBranchWalk {
  public:
   DugdaleBranchWalk(const Profile& profile, const DugdaleLaw& law) : profile_(profile), law_(law) {}
@@ -24,7 +25,7 @@ class DugdaleBranchWalk {
  private:
   const Profile& profile_;
   DugdaleLaw law_;
-  DugdaleState before_;
+  ContinuedGuess chords_;  ///< the half-chords of the last four zones
   DugdaleState last_;
   int solved_ = 0;
 };

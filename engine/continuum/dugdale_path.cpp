@@ -253,43 +253,40 @@ DugdaleState DugdalePath::in_phase(int phase, double s, double guess) const {
 
 DugdaleState DugdalePath::at(double s) const { return in_phase(phase_of(s), s); }
 
+DugdaleState DugdalePath::walk_to(double s, ContinuedGuess& walk) const {
+  const int phase = phase_of(s);
+  if (phase == kFreePhase) return in_phase(phase, s);
+  // The walk's variable at s before solving (in_phase's maps), and its value once solved: the
+  // half-chord in the radius on [0, 2), the radius in the zone's angle on [2, 3).
+  const bool in_angle = phase == 2;
+  double x = 0.0;
+  if (phase == 0) {
+    x = preload_radius_ - s * (preload_radius_ - glued_radius_);
+  } else if (phase == 1) {
+    const double u = 2.0 - s;
+    x = angle_state_.contact_radius + (glued_radius_ - angle_state_.contact_radius) * u * u;
+  } else {
+    const double u = 3.0 - s;
+    x = 0.5 * kPi - (0.5 * kPi - angle_state_.angle) * u * u;
+  }
+  const DugdaleState st = in_phase(phase, s, walk.at(x));
+  if (st.contact_radius > 0.0) {
+    walk.add(in_angle ? st.angle : st.contact_radius,
+             in_angle ? st.contact_radius : st.cohesive_radius * std::sin(st.angle));
+  }
+  return st;
+}
+
 std::vector<DugdaleState> DugdalePath::states(std::span<const double> places) const {
   std::vector<DugdaleState> out;
   out.reserve(places.size());
-  // Each phase's own walk: in a (the half-chord) on [0, 2), in t (the radius) on [2, 3); the
-  // no-contact branch is closed-form.
-  ContinuedGuess guess;
+  ContinuedGuess walk;
   int walking = -1;
   for (const double s : places) {
     const int phase = phase_of(s);
-    const bool in_angle = phase == 2;
-    if (phase != walking) guess.clear();
+    if (phase != walking) walk.clear();
     walking = phase;
-    if (phase == kFreePhase) {
-      out.push_back(in_phase(phase, s));
-      continue;
-    }
-    // The walk's variable: the zone's angle in phase 2, the contact radius before it.
-    const auto variable = [&](const DugdaleState& st) {
-      return in_angle ? st.angle : st.contact_radius;
-    };
-    const auto value = [&](const DugdaleState& st) {
-      return in_angle ? st.contact_radius : st.cohesive_radius * std::sin(st.angle);
-    };
-    // The variable at s before solving: the phase's own map (in_phase's formulas).
-    double x = 0.0;
-    if (phase == 0) {
-      x = preload_radius_ - s * (preload_radius_ - glued_radius_);
-    } else if (phase == 1) {
-      const double u = 2.0 - s;
-      x = angle_state_.contact_radius + (glued_radius_ - angle_state_.contact_radius) * u * u;
-    } else {
-      const double u = 3.0 - s;
-      x = 0.5 * kPi - (0.5 * kPi - angle_state_.angle) * u * u;
-    }
-    const DugdaleState st = in_phase(phase, s, guess.at(x));
-    out.push_back(st);
-    if (st.contact_radius > 0.0) guess.add(variable(st), value(st));
+    out.push_back(walk_to(s, walk));
   }
   return out;
 }
@@ -443,8 +440,10 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
     return fold;
   }
   // On in the zone's angle, s from 2 (a_t) towards the closing point.
+  ContinuedGuess angle_walk;  // the scan's and the root search's zones, in the angle
   const auto slope_at_s = [&](double s) {
-    return control_slope(control, dugdale_contact_slopes(profile, law, path.at(s)));
+    return control_slope(control,
+                         dugdale_contact_slopes(profile, law, path.walk_to(s, angle_walk)));
   };
   double s_above = 2.0;
   double a_above = path.angle_state().contact_radius;
@@ -453,7 +452,7 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
   for (int k = 1; k <= kFoldAngleHalvings; ++k) gaps.push_back(std::ldexp(gaps.back(), -1));
   for (const double gap : gaps) {
     const double s = DugdalePath::kClosing - gap;
-    const DugdaleState state = path.at(s);
+    const DugdaleState state = path.walk_to(s, angle_walk);
     const double here = control_slope(control, dugdale_contact_slopes(profile, law, state));
     if (here > 0.0) {
       above = here;
@@ -463,9 +462,9 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
     }
     const RootBracket root = bracket_root(slope_at_s, s_above, s);
     const double at = 0.5 * (root.lo + root.hi);
-    DugdaleFold fold{.s = at, .state = path.at(at), .force_error = 0.0};
-    const double bracket =
-        std::abs(path.at(root.lo).contact_radius - path.at(root.hi).contact_radius);
+    DugdaleFold fold{.s = at, .state = path.walk_to(at, angle_walk), .force_error = 0.0};
+    const double bracket = std::abs(path.walk_to(root.lo, angle_walk).contact_radius -
+                                    path.walk_to(root.hi, angle_walk).contact_radius);
     fold.force_error =
         contact_fold_force_error(profile, law, control, fold.state, bracket,
                                  (above - here) / std::abs(a_above - state.contact_radius));

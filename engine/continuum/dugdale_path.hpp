@@ -37,6 +37,10 @@ class DugdalePath {
   /// their radii in t on its angles): one Newton step a point where the curve is smooth. The
   /// same states as at(), to its solvers' convergence (the root to its rounding).
   std::vector<DugdaleState> states(std::span<const double> places) const;
+  /// The equilibrium at s, its solve started from `walk`'s guess, which then gains it: a walk
+  /// through nearby places of one phase (a scan, a root search) costs one or two Newton steps
+  /// a place. Keep one walk per phase (its variable is the radius in [0, 2), the angle in [2, 3)).
+  DugdaleState walk_to(double s, ContinuedGuess& walk) const;
   /// d'(s) [m]: a fourth-order central difference on s's own phase, its formula continued.
   double depth_slope(double s) const;
 

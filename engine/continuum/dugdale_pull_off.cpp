@@ -31,24 +31,24 @@ std::vector<double> sample_radii(double glued_radius) {
   return radii;
 }
 
-/// The first fold going down from a_g of a control whose slope along the contact branch is
-/// `slope(DugdaleSlopes)`: the first sample where that slope stops being positive, then its
-/// root (dugdale_contact_slopes, exact to rounding) by TOMS 748 between that sample and the one
-/// above; a_g itself where it is not positive there; nullopt where it stays positive to the
-/// smallest sample. The samples are taken one at a time (most folds lie within the first few),
+/// The state at the first fold going down from a_g of a control whose slope along the contact
+/// branch is `slope(DugdaleSlopes)`: the first sample where that slope stops being positive,
+/// then its root (dugdale_contact_slopes, exact to rounding) by TOMS 748 between that sample
+/// and the one above; a_g itself where it is not positive there; nullopt where it stays positive to
+/// the smallest sample. The samples are taken one at a time (most folds lie within the first few),
 /// each state from its neighbours' zones.
 template <class Slope>
-std::optional<double> first_fold_going_down(const Profile& profile, const DugdaleLaw& law,
-                                            double glued_radius, Slope slope) {
+std::optional<DugdaleState> first_fold_going_down(const Profile& profile, const DugdaleLaw& law,
+                                                  double glued_radius, Slope slope) {
   DugdaleBranchWalk walk(profile, law);
   const auto slope_at = [&](double a) { return slope(walk.slopes_at(a)); };
   const std::vector<double> radii = sample_radii(glued_radius);
   for (std::size_t k = 0; k < radii.size(); ++k) {
     if (slope_at(radii[k]) > 0.0) continue;
-    if (k == 0) return glued_radius;
+    if (k == 0) return walk.at(glued_radius);
     // The radius to 2^-40 of itself: the value there is flat, F'' da^2 / 2 below its rounding.
     const RootBracket root = bracket_root(slope_at, radii[k], radii[k - 1], 40);
-    return 0.5 * (root.lo + root.hi);
+    return walk.at(0.5 * (root.lo + root.hi));  // from the search's last zones
   }
   return std::nullopt;
 }
@@ -58,8 +58,8 @@ std::optional<double> first_fold_going_down(const Profile& profile, const Dugdal
 DugdalePullOff dugdale_fixed_load_pull_off(const Profile& profile, const DugdaleLaw& law,
                                            double glued_radius) {
   const auto force = [](const DugdaleSlopes& s) { return s.normal_force; };
-  if (const auto a = first_fold_going_down(profile, law, glued_radius, force)) {
-    return {dugdale_contact_state(profile, law, *a), true};
+  if (const auto fold = first_fold_going_down(profile, law, glued_radius, force)) {
+    return {*fold, true};
   }
   return {dugdale_free_state(profile, law, dugdale_closing_radius(profile, law)), true};
 }
@@ -67,8 +67,8 @@ DugdalePullOff dugdale_fixed_load_pull_off(const Profile& profile, const Dugdale
 DugdalePullOff dugdale_fixed_grips_pull_off(const Profile& profile, const DugdaleLaw& law,
                                             double glued_radius) {
   const auto depth = [](const DugdaleSlopes& s) { return s.indentation; };
-  if (const auto a = first_fold_going_down(profile, law, glued_radius, depth)) {
-    return {dugdale_contact_state(profile, law, *a), true};
+  if (const auto fold = first_fold_going_down(profile, law, glued_radius, depth)) {
+    return {*fold, true};
   }
   // The contact closed: d(c) on the no-contact branch from c0 down, with d'(c) = f'(c) - p.
   const double c0 = dugdale_closing_radius(profile, law);
