@@ -149,18 +149,6 @@ std::size_t ShapePreservingCubic::piece(double x) const {
   return std::clamp<std::size_t>(after, 1, pieces_.size()) - 1;
 }
 
-double ShapePreservingCubic::value_on(std::size_t k, double x) const {
-  const Piece& p = pieces_[k];
-  const double s = (x - knots_[k]) / p.h;
-  return p.y + s * (p.c1 + s * (p.c2 + s * p.c3));
-}
-
-double ShapePreservingCubic::slope_on(std::size_t k, double x) const {
-  const Piece& p = pieces_[k];
-  const double s = (x - knots_[k]) / p.h;
-  return (p.c1 + s * (2.0 * p.c2 + s * 3.0 * p.c3)) / p.h;
-}
-
 double ShapePreservingCubic::curvature_on(std::size_t k, double x) const {
   const Piece& p = pieces_[k];
   const double s = (x - knots_[k]) / p.h;

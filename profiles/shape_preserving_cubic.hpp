@@ -67,4 +67,17 @@ class ShapePreservingCubic {
   std::vector<Piece> pieces_;
 };
 
+// Inline: the pieces' hot loops (a Dugdale zone's Gauss nodes) call them once a node.
+inline double ShapePreservingCubic::value_on(std::size_t k, double x) const {
+  const Piece& p = pieces_[k];
+  const double s = (x - knots_[k]) / p.h;
+  return p.y + s * (p.c1 + s * (p.c2 + s * p.c3));
+}
+
+inline double ShapePreservingCubic::slope_on(std::size_t k, double x) const {
+  const Piece& p = pieces_[k];
+  const double s = (x - knots_[k]) / p.h;
+  return (p.c1 + s * (2.0 * p.c2 + s * 3.0 * p.c3)) / p.h;
+}
+
 }  // namespace mdrsim
