@@ -5,13 +5,38 @@
 
 namespace mdrsim {
 
+double DugdaleBranchWalk::guess(double a) const {
+  if (sloped_known_ == 0) return chords_.at(a);  // 0 (none) before the first
+  const Sloped& p1 = sloped_[0];
+  double s = p1.half_chord + p1.slope * (a - p1.radius);
+  if (sloped_known_ == 2 && sloped_[1].radius != p1.radius) {
+    // The cubic Hermite through both, in u = (a - a0)/h (beyond [0, 1] where it extrapolates).
+    const Sloped& p0 = sloped_[1];
+    const double h = p1.radius - p0.radius, u = (a - p0.radius) / h;
+    const double u2 = u * u, u3 = u2 * u;
+    s = (2.0 * u3 - 3.0 * u2 + 1.0) * p0.half_chord + (u3 - 2.0 * u2 + u) * h * p0.slope +
+        (3.0 * u2 - 2.0 * u3) * p1.half_chord + (u3 - u2) * h * p1.slope;
+  }
+  return s > 0.0 && std::isfinite(s) ? s : chords_.at(a);
+}
+
 DugdaleState DugdaleBranchWalk::at(double contact_radius) {
   if (solved_ > 0 && contact_radius == last_.contact_radius) return last_;
-  // 0 (none) before the first: dugdale_contact_state's own start.
-  last_ = dugdale_contact_state(profile_, law_, contact_radius, chords_.at(contact_radius));
+  last_ = dugdale_contact_state(profile_, law_, contact_radius, guess(contact_radius));
   chords_.add(contact_radius, last_.cohesive_radius * std::sin(last_.angle));
   ++solved_;
   return last_;
+}
+
+DugdaleSlopes DugdaleBranchWalk::slopes_at(double contact_radius) {
+  const DugdaleState state = at(contact_radius);
+  const DugdaleSlopes slopes = dugdale_contact_slopes(profile_, law_, state);
+  if (!(sloped_known_ > 0 && sloped_[0].radius == contact_radius)) {
+    sloped_[1] = sloped_[0];
+    sloped_known_ = sloped_known_ > 0 ? 2 : 1;
+  }
+  sloped_[0] = {contact_radius, state.cohesive_radius * std::sin(state.angle), slopes.half_chord};
+  return slopes;
 }
 
 }  // namespace mdrsim

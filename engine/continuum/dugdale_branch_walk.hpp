@@ -8,24 +8,31 @@
 namespace mdrsim {
 
 /// dugdale_contact_state at the radii asked for, in any order: each solve starts from the cubic
-/// through the zones of the last four (a scan's neighbours, a root search's latest points,
-/// ContinuedGuess), one or two Newton steps where they lie close, instead of five from the
+/// Hermite through the last two zones whose slopes ds/da were asked for (a scan's samples, a
+/// root search's latest points), else from the cubic through the last four zones
+/// (ContinuedGuess): one or two Newton steps where they lie close, instead of five from the
 /// small-t cubic; the radius just solved again is that state.
 class DugdaleBranchWalk {
  public:
   DugdaleBranchWalk(const Profile& profile, const DugdaleLaw& law) : profile_(profile), law_(law) {}
 
   DugdaleState at(double contact_radius);
-  /// The state at `contact_radius` and its slopes dd/da, dF/da.
-  DugdaleSlopes slopes_at(double contact_radius) {
-    return dugdale_contact_slopes(profile_, law_, at(contact_radius));
-  }
+  /// The state at `contact_radius` and its slopes dd/da, dF/da (and ds/da, which the walk keeps).
+  DugdaleSlopes slopes_at(double contact_radius);
   const DugdaleState& last() const { return last_; }
 
  private:
+  /// A solved zone with its slope: the half-chord s [m] and ds/da [1] at the radius a [m].
+  struct Sloped {
+    double radius, half_chord, slope;
+  };
+  double guess(double contact_radius) const;
+
   const Profile& profile_;
   DugdaleLaw law_;
   ContinuedGuess chords_;  ///< the half-chords of the last four zones
+  Sloped sloped_[2]{};     ///< the last two zones with slopes, the newest first
+  int sloped_known_ = 0;
   DugdaleState last_;
   int solved_ = 0;
 };

@@ -191,7 +191,8 @@ DugdaleSlopes dugdale_contact_slopes(const Profile& profile, const DugdaleLaw& l
   // dF/ds = -4 sigma_0 (a + s t); d = g(a) - (2 sigma_0/E*) s.
   return {.indentation = image_slope - z * chord_slope,
           .normal_force = 2.0 * law.effective_modulus * a * image_slope -
-                          4.0 * law.adhesive_stress * (a * t + (a + s * t) * chord_slope)};
+                          4.0 * law.adhesive_stress * (a * t + (a + s * t) * chord_slope),
+          .half_chord = chord_slope};
 }
 
 DugdaleState dugdale_free_state(const Profile& profile, const DugdaleLaw& law, double c) {

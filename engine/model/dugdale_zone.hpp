@@ -54,6 +54,7 @@ DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law
 struct DugdaleSlopes {
   double indentation = 0.0;   ///< dd/da [1]
   double normal_force = 0.0;  ///< dF/da [N/m]
+  double half_chord = 0.0;    ///< ds/da of the zone's half-chord s = sqrt(c^2 - a^2) [1]
 };
 
 /// dd/da and dF/da along the contact branch at `state` (from dugdale_contact_state), by implicit
