@@ -219,7 +219,57 @@ TEST(DugdaleZone, BranchSlopesMatchTheStatesDifferences) {
         EXPECT_NEAR(slopes.indentation,
                     difference([](const DugdaleState& x) { return x.indentation; }),
                     1e-9 * depth_terms / a);
+        // ds/da of the half-chord s = c sin t, whose scale is c.
+        EXPECT_NEAR(slopes.half_chord, difference([](const DugdaleState& x) {
+                      return x.cohesive_radius * std::sin(x.angle);
+                    }),
+                    1e-9 * state.cohesive_radius / a);
       }
+    }
+  }
+}
+
+/// A profile that counts its gap integrals (what a solve costs).
+class CountingProfile final : public Profile {
+ public:
+  explicit CountingProfile(const Profile& p) : p_(p) {}
+  double shape(double r) const override { return p_.shape(r); }
+  double mdr_image(double x) const override { return p_.mdr_image(x); }
+  double mdr_image_slope(double x) const override { return p_.mdr_image_slope(x); }
+  double nonadhesive_force_per_modulus(double a) const override {
+    return p_.nonadhesive_force_per_modulus(a);
+  }
+  DugdaleGap dugdale_gap(double a, double c, double t) const override {
+    ++gaps;
+    return p_.dugdale_gap(a, c, t);
+  }
+  double outer_radius() const override { return p_.outer_radius(); }
+  mutable int gaps = 0;
+
+ private:
+  const Profile& p_;
+};
+
+// A solve started at its own root (a walk that stands still, as the path's phase [0, 1] does
+// where the preload is the glued radius's own depth) takes one gap integral and ends there: a
+// step onto its bracket's end, where the excess rounds to zero, is converged, not bisected.
+TEST(DugdaleZone, AStateFromItsOwnRootTakesOneGapIntegral) {
+  const SphereProfile sphere(0.01);
+  const PowerLawProfile power(3e3, 2.5);
+  const DugdaleLaw law{
+      .adhesive_stress = 1.5e4, .work_of_adhesion = 0.05, .effective_modulus = 1e6};
+  for (const Profile* inner :
+       {static_cast<const Profile*>(&sphere), static_cast<const Profile*>(&power)}) {
+    const CountingProfile profile(*inner);
+    for (const double a : {1e-5, 1e-4, 5e-4}) {
+      const DugdaleState alone = dugdale_contact_state(profile, law, a);
+      const double half_chord = alone.cohesive_radius * std::sin(alone.angle);
+      const DugdaleState again = dugdale_contact_state(profile, law, a, half_chord);
+      profile.gaps = 0;
+      const DugdaleState third =
+          dugdale_contact_state(profile, law, a, again.cohesive_radius * std::sin(again.angle));
+      EXPECT_EQ(profile.gaps, 1) << a;
+      EXPECT_NEAR(third.cohesive_radius, alone.cohesive_radius, 1e-15 * alone.cohesive_radius);
     }
   }
 }
