@@ -79,6 +79,79 @@ void maugis_forces(const MaugisSamples& s, const TipShape& tip, double complianc
   }
 }
 
+/// The sum of squares of the least-squares line through f[from, to) over the sample index.
+double line_squares(const std::vector<double>& f, std::size_t from, std::size_t to) {
+  const double m = static_cast<double>(to - from);
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = from; i < to; ++i) {
+    const double x = static_cast<double>(i - from), y = f[i];
+    sx += x, sy += y, sxx += x * x, sxy += x * y, syy += y * y;
+  }
+  const double vxx = sxx - sx * sx / m, vxy = sxy - sx * sy / m, vyy = syy - sy * sy / m;
+  return vxx > 0.0 ? vyy - vxy * vxy / vxx : vyy;
+}
+
+/// The force's noise from successive differences of f[from, to) (free of a baseline's tilt):
+/// their median absolute value is 0.6745 sqrt(2) sigma for a normal law.
+double difference_noise(const std::vector<double>& f, std::size_t from, std::size_t to) {
+  std::vector<double> v;
+  for (std::size_t i = from; i + 1 < to; ++i) v.push_back(std::abs(f[i + 1] - f[i]));
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2] / (0.6745 * std::sqrt(2.0));
+}
+
+/// The approach's jump in: its first sample on the path (0: none found) and the standard
+/// deviation of that index [samples].
+struct JumpIn {
+  std::size_t index = 0;
+  double spread = 0.0;
+};
+
+/// The largest fall between the means of 20 samples either side before the lowest force,
+/// then placed by the least squares of a line either side of a split of the 60 samples around it;
+/// the index's spread from those sums of squares as a likelihood, exp(-S/(2 sigma^2)).
+/// adhesive_fit's largest single fall is lost in 1 % noise where the jump is a few % of the peak
+/// force (lambda 0.2 on a lever as stiff as the contact), and there the change point is uncertain
+/// by several samples.
+JumpIn approach_jump(const std::vector<double>& f) {
+  constexpr std::size_t w = 20;
+  const std::size_t n = f.size();
+  const auto lowest = static_cast<std::size_t>(std::min_element(f.begin(), f.end()) - f.begin());
+  if (n < 4 * w || lowest < 3 * w) return {};
+  std::vector<double> sum(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) sum[i + 1] = sum[i] + f[i];
+  std::size_t coarse = 0;
+  double fall = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = w; k <= std::min(lowest, n - w); ++k) {
+    const double drop = (sum[k] - sum[k - w]) - (sum[k + w] - sum[k]);
+    if (drop > fall) fall = drop, coarse = k;
+  }
+  const double noise = difference_noise(f, 0, coarse > w ? coarse - w : coarse);
+  std::vector<std::size_t> ks;
+  std::vector<double> squares;
+  // One span, split at k: a line before, a line after (the split nearest the jump fits both).
+  const std::size_t lo = std::max(coarse, 2 * w) - 2 * w, hi = std::min(coarse + w, n);
+  for (std::size_t k = lo + w / 2; k + w / 2 <= hi; ++k) {
+    ks.push_back(k);
+    squares.push_back(line_squares(f, lo, k) + line_squares(f, k, hi));
+  }
+  const auto best =
+      static_cast<std::size_t>(std::min_element(squares.begin(), squares.end()) - squares.begin());
+  JumpIn out{ks[best], 0.0};
+  if (noise > 0.0) {
+    double weight = 0.0, mean = 0.0, second = 0.0;
+    for (std::size_t j = 0; j < ks.size(); ++j) {
+      const double p = std::exp(-(squares[j] - squares[best]) / (2.0 * noise * noise));
+      const double x = static_cast<double>(ks[j]) - static_cast<double>(ks[best]);
+      weight += p, mean += p * x, second += p * x * x;
+    }
+    mean /= weight;
+    out.spread = std::sqrt(std::max(second / weight - mean * mean, 0.0));
+  }
+  return out;
+}
+
 bool finite_start(const AdhesiveFit& f) {
   return std::isfinite(f.youngs_modulus.value) && f.youngs_modulus.value > 0.0 &&
          std::isfinite(f.work_of_adhesion.value) && f.work_of_adhesion.value > 0.0 &&
@@ -242,11 +315,25 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   adhesive.fixed = options.fixed;
   adhesive.retract = options.retract;
   adhesive.model = AdhesionModel::jkr;
-  const AdhesiveFit jkr = fit_adhesive(segment, adhesive);
+  AdhesiveFit jkr = fit_adhesive(segment, adhesive);
+  // An approach whose jump in is lost in the noise for adhesive_fit's single largest fall:
+  // the starts from the samples past the 50 before the jump approach_jump finds.
+  const JumpIn jump_in_found = options.retract ? JumpIn{} : approach_jump(f);
+  const std::size_t found = jump_in_found.index;
+  PreparedSegment near;
+  const PreparedSegment* start_segment = &segment;
+  if (jkr.status == FitStatus::no_contact && found > 50) {
+    near = segment;
+    const auto cut = static_cast<std::ptrdiff_t>(found - 50);
+    near.tip_position.erase(near.tip_position.begin(), near.tip_position.begin() + cut);
+    near.force.erase(near.force.begin(), near.force.begin() + cut);
+    start_segment = &near;
+    jkr = fit_adhesive(near, adhesive);
+  }
   adhesive.model = AdhesionModel::dmt;
   AdhesiveFit dmt;  // a start only: none where DMT's sphere is pressed past its reach
   try {
-    dmt = fit_adhesive(segment, adhesive);
+    dmt = fit_adhesive(*start_segment, adhesive);
   } catch (const std::domain_error&) {
     dmt.status = FitStatus::not_converged;
   }
@@ -256,9 +343,12 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
     return fit;
   }
   fit.adhesion_force_measured = jkr.adhesion_force_measured;
+  const double compliance = 1.0 - options.poisson_ratio * options.poisson_ratio;
   // The path's samples as adhesive_fit found them: a retract's down to the jump off, past the
   // lowest force as far as the lever's stiffness held it there.
-  const std::size_t jump = options.retract ? jkr.contact_samples - 1 : n - jkr.contact_samples;
+  const std::size_t jump = options.retract ? jkr.contact_samples - 1
+                           : found > 0     ? found
+                                           : n - jkr.contact_samples;
   MaugisSamples samples;
   for (std::size_t i = 0; i < n; ++i) {
     const bool contact = options.retract ? i <= jump : i >= jump;
@@ -270,6 +360,40 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   }
   const std::size_t used = samples.z.size();
   fit.points = used;
+  // An approach adds one observation: the jump in, where the zone first reaches the surface,
+  // the tip at d = -h0 (h0 = w / sigma_0, the zone's range). It lies between the last free
+  // sample and the next step of the lever's base, which on the baseline moves the tip by the
+  // sampling step: a uniform error of that step / sqrt(12). The data's shape alone hardly tells
+  // lambda above 0.5 (the branch changes by 1e-4 of the peak force); this position does, as
+  // h0 = 2 / (pi lambda) of Maugis' depth unit.
+  const bool jump_in = !options.retract && jump > 0;
+  double jump_weight = 0.0, jump_observed = 0.0;
+  if (jump_in) {
+    std::vector<double> steps;
+    for (std::size_t i = 0; i + 1 < jump; ++i) steps.push_back(std::abs(z[i + 1] - z[i]));
+    std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
+                     steps.end());
+    const double step = steps.empty() ? 0.0 : steps[steps.size() / 2];
+    // The jump's position weighs as the force's noise over its standard deviation: the step's
+    // uniform 1/sqrt(12) and the spread of the found index.
+    const double noise = difference_noise(f, 0, jump);
+    const double spread = found > 0 ? jump_in_found.spread : 0.0;
+    if (step > 0.0 && noise > 0.0) {
+      jump_weight = noise / (step * std::sqrt(1.0 / 12.0 + spread * spread));
+      jump_observed = z[jump - 1] - 0.5 * step;
+    }
+  }
+  const bool jump_row = jump_in && jump_weight > 0.0;
+  std::fprintf(stderr, "DBG jump %zu spread %g weight %g\n", jump, jump_in_found.spread,
+               jump_weight);
+  const std::size_t rows = used + (jump_row ? 1 : 0);
+  std::vector<double> data = samples.force;
+  // Measured from the observed jump (the residual is a small difference of small numbers).
+  if (jump_row) data.push_back(0.0);
+  // The zone's range h0 = w / sigma_0 at parameters p.
+  const auto zone_range = [&](std::span<const double> p) {
+    return p[1] / maugis_adhesive_stress(p[2], p[0] / compliance, p[1], options.tip.radius);
+  };
   fit.contact_samples = static_cast<std::size_t>(
       std::count(samples.contact.begin(), samples.contact.end(), static_cast<char>(1)));
 
@@ -278,7 +402,6 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   double force_scale = 0.0;
   for (const double v : f) force_scale = std::max(force_scale, std::abs(v));
   force_scale = std::max(force_scale, 1e-300);
-  const double compliance = 1.0 - options.poisson_ratio * options.poisson_ratio;
   const double deepest = std::max(jkr.contact_point.value - *z_low, 1e-3 * z_range);
 
   const std::array<std::optional<double>, kMaugisParameters> held = {
@@ -289,11 +412,18 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   // the JKR side (1, 3, 10). The minimiser runs from both: towards JKR the curve hardly
   // changes with lambda (a plateau in log lambda that stops it where it starts).
   std::vector<double> forces(used);
+  const auto jump_residual = [&](std::span<const double> p) {
+    return (p[3] + zone_range(p) - jump_observed) * jump_weight;
+  };
   const auto sum_squares = [&](std::span<const double> p, double* pull_off) {
     maugis_forces(samples, options.tip, compliance, deepest, p, forces, pull_off);
     double sum = 0.0;
     for (std::size_t i = 0; i < used; ++i) {
       const double r = (forces[i] - samples.force[i]) / force_scale;
+      sum += r * r;
+    }
+    if (jump_row) {
+      const double r = jump_residual(p) / force_scale;
       sum += r * r;
     }
     return sum;
@@ -304,7 +434,8 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
                                 std::numeric_limits<double>::infinity()};
   const std::vector<double> lambdas =
       held[2] ? std::vector<double>{*held[2]} : std::vector<double>{0.1, 0.3, 1.0, 3.0, 10.0};
-  for (const AdhesiveFit* from : {&jkr, static_cast<const AdhesiveFit*>(&dmt)}) {
+  for (const AdhesiveFit* from :
+       {static_cast<const AdhesiveFit*>(&jkr), static_cast<const AdhesiveFit*>(&dmt)}) {
     if (!finite_start(*from)) continue;
     for (const double lambda : lambdas) {
       Parameters p = {
@@ -333,16 +464,17 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   problem.walk = {Walk::logarithmic, Walk::logarithmic, Walk::logarithmic,
                   Walk::linear,      Walk::linear,      Walk::linear};
   for (std::size_t j = 0; j < kMaugisParameters; ++j) problem.held.push_back(held[j].has_value());
-  problem.data = &samples.force;
+  problem.data = &data;
   problem.force_scale = force_scale;
   // A zone past the tip's edge (a sphere pressed deep): a residual of 1e10 the force scale at
   // every sample, so that the minimiser refuses the step.
   const auto refuse = [&](std::span<double> model) {
-    for (std::size_t i = 0; i < used; ++i) model[i] = samples.force[i] + 1e10 * force_scale;
+    for (std::size_t i = 0; i < rows; ++i) model[i] = data[i] + 1e10 * force_scale;
   };
   problem.model = [&](std::span<const double> p, std::span<double> model) {
     try {
-      maugis_forces(samples, options.tip, compliance, deepest, p, model);
+      maugis_forces(samples, options.tip, compliance, deepest, p, model.first(used));
+      if (jump_row) model[used] = jump_residual(p);
     } catch (const std::domain_error&) {
       refuse(model);
     }
@@ -352,9 +484,9 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
     try {
       maugis_forces(samples, options.tip, compliance, deepest, p, forces, nullptr, slopes);
       for (std::size_t i = 0; i < used; ++i) {
-        d[3 * used + i] = -p[5] + slopes[i];
-        d[4 * used + i] = 1.0;
-        d[5 * used + i] = samples.z[i] - p[3];
+        d[3 * rows + i] = -p[5] + slopes[i];
+        d[4 * rows + i] = 1.0;
+        d[5 * rows + i] = samples.z[i] - p[3];
       }
       std::array<double, kMaugisParameters> q{};
       std::copy(p.begin(), p.end(), q.begin());
@@ -366,13 +498,13 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
       if (scales) {
         for (std::size_t i = 0; i < used; ++i) {
           if (!samples.contact[i]) {
-            d[i] = d[used + i] = 0.0;
+            d[i] = d[rows + i] = 0.0;
             continue;
           }
           const double contact = forces[i] - p[4] - p[5] * (samples.z[i] - p[3]);
           const double lever = 2.0 / 3.0 * (p[3] - samples.z[i]) * slopes[i];
           d[i] = lever / p[0];
-          d[used + i] = (contact - lever) / p[1];
+          d[rows + i] = (contact - lever) / p[1];
         }
       }
       for (std::size_t k = scales ? 2 : 0; k < 3; ++k) {
@@ -384,8 +516,17 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
         maugis_forces(samples, options.tip, compliance, deepest, q, lowered);
         q[k] = p[k];
         for (std::size_t i = 0; i < used; ++i) {
-          d[k * used + i] = (shifted[i] - lowered[i]) / (2.0 * step);
+          d[k * rows + i] = (shifted[i] - lowered[i]) / (2.0 * step);
         }
+      }
+      if (jump_row) {
+        // d(cp + h0)/dp: h0 = w / sigma_0 goes as w^(2/3) E^(-2/3) / lambda.
+        const double h0 = zone_range(p);
+        d[used] = -2.0 / 3.0 * h0 / p[0] * jump_weight;
+        d[rows + used] = 2.0 / 3.0 * h0 / p[1] * jump_weight;
+        d[2 * rows + used] = -h0 / p[2] * jump_weight;
+        d[3 * rows + used] = jump_weight;
+        d[4 * rows + used] = d[5 * rows + used] = 0.0;
       }
     } catch (const std::domain_error&) {
       std::fill(d.begin(), d.end(), 0.0);
@@ -425,7 +566,11 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   fit.iterations = solution.iterations;
   fit.evaluations = solution.evaluations;
   const std::vector<double>& p = solution.values;
-  fit.residual_rms = std::sqrt(solution.sum_squares / static_cast<double>(used)) * force_scale;
+  // Of the force samples alone (the jump's row is a position).
+  const double jump_squares = jump_row ? std::pow(jump_residual(p) / force_scale, 2) : 0.0;
+  fit.residual_rms =
+      std::sqrt(std::max(solution.sum_squares - jump_squares, 0.0) / static_cast<double>(used)) *
+      force_scale;
   fit.max_indentation = std::max(0.0, p[3] - *z_low);
   bool reaches = true;
   try {
