@@ -388,13 +388,11 @@ int fit_command(const FitOptions& options) {
     throw UsageError(fmt::format("--segment {}: unknown (known: approach, retract, both)",
                                  printable(options.segment, 40)));
   }
-  if (both && (model == fit::FitModel::maugis || model == fit::FitModel::automatic)) {
-    // The joint fit carries one work of adhesion per segment on DMT's and JKR's branches; the
-    // Maugis branch of an approach is not fitted yet.
-    throw UsageError(fmt::format(
-        "--segment both: not with --model {} (approach and retract are fitted together by hertz, "
-        "dmt and jkr)",
-        fit::fit_model_name(model)));
+  if (both && model == fit::FitModel::automatic) {
+    // auto's pick names one segment's model; the joint fit runs the model named.
+    throw UsageError(
+        "--segment both: not with --model auto (approach and retract are fitted together by "
+        "hertz, dmt, jkr and maugis)");
   }
   if (!(options.poisson_ratio > -1.0 && options.poisson_ratio <= 0.5)) {
     throw UsageError(fmt::format("--poisson-ratio {}: outside (-1, 0.5]", options.poisson_ratio));

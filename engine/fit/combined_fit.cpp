@@ -10,6 +10,7 @@
 
 #include "engine/fit/hertz_fit.hpp"
 #include "engine/fit/least_squares.hpp"
+#include "engine/fit/maugis_fit.hpp"
 
 namespace mdrsim::fit {
 namespace {
@@ -120,6 +121,18 @@ void each_sample(const Samples& s, const CombinedFitOptions& options, std::span<
 CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment& retract,
                          const CombinedFitOptions& options) {
   CombinedFit fit;
+  if (options.maugis) {
+    MaugisFitOptions maugis;
+    maugis.tip = options.tip;
+    maugis.poisson_ratio = options.poisson_ratio;
+    maugis.fixed = options.fixed;
+    static_cast<AdhesiveFit&>(fit) = fit_maugis_both(approach, retract, maugis);
+    // The one zone's dgamma: the approach's is the retract's.
+    fit.approach_work_of_adhesion = fit.work_of_adhesion;
+    fit.approach_points = approach.force.size();
+    fit.retract_points = retract.force.size();
+    return fit;
+  }
   fit.approach_points = approach.force.size();
   fit.retract_points = retract.force.size();
   fit.points = fit.approach_points + fit.retract_points;

@@ -18,6 +18,9 @@ struct CombinedFitOptions {
   double poisson_ratio = 0.5;
   AdhesiveFixed fixed;
   std::optional<double> approach_work_of_adhesion;  ///< [J/m^2] held
+  /// Maugis-Dugdale on one path (fit_maugis_both): one dgamma and lambda for both segments,
+  /// reported as approach_work_of_adhesion too; `model` is not read.
+  bool maugis = false;
 };
 
 /// work_of_adhesion is the retract's (the contact peeling off), approach_work_of_adhesion the

@@ -147,6 +147,7 @@ CombinedFit fit_both(const PreparedSegment& approach, const PreparedSegment& ret
   both.poisson_ratio = options.poisson_ratio;
   both.fixed = options.fixed;
   both.approach_work_of_adhesion = options.approach_work_of_adhesion;
+  both.maugis = options.model == FitModel::maugis;
   if (!options.range) return fit_combined(approach, retract, both);
   double contact = 0.0;
   if (options.fixed.contact_point) {

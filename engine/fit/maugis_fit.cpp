@@ -297,7 +297,13 @@ RegimeChoice choose_regime(double lambda) {
   return {model, fmt::format("auto: lambda = {:.3g} -> {}", lambda, model)};
 }
 
-AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& options) {
+namespace {
+
+/// fit_maugis, and with `approach` (the segment then being the retract) both segments on one
+/// path: the approach's samples from its jump in on it, the rest on the baseline, its jump in
+/// the one more residual.
+AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitOptions& options,
+                                const PreparedSegment* approach) {
   AdhesiveFit fit;
   const std::vector<double>& z = segment.tip_position;
   const std::vector<double>& f = segment.force;
@@ -318,11 +324,13 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   AdhesiveFit jkr = fit_adhesive(segment, adhesive);
   // An approach whose jump in is lost in the noise for adhesive_fit's single largest fall:
   // the starts from the samples past the 50 before the jump approach_jump finds.
-  const JumpIn jump_in_found = options.retract ? JumpIn{} : approach_jump(f);
+  const JumpIn jump_in_found = approach          ? approach_jump(approach->force)
+                               : options.retract ? JumpIn{}
+                                                 : approach_jump(f);
   const std::size_t found = jump_in_found.index;
   PreparedSegment near;
   const PreparedSegment* start_segment = &segment;
-  if (jkr.status == FitStatus::no_contact && found > 50) {
+  if (!approach && jkr.status == FitStatus::no_contact && found > 50) {
     near = segment;
     const auto cut = static_cast<std::ptrdiff_t>(found - 50);
     near.tip_position.erase(near.tip_position.begin(), near.tip_position.begin() + cut);
@@ -349,6 +357,11 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   const std::size_t jump = options.retract ? jkr.contact_samples - 1
                            : found > 0     ? found
                                            : n - jkr.contact_samples;
+  if (approach && found == 0) {
+    fit.status = FitStatus::no_contact;
+    fit.message = "no jump in on the approach";
+    return fit;
+  }
   MaugisSamples samples;
   for (std::size_t i = 0; i < n; ++i) {
     const bool contact = options.retract ? i <= jump : i >= jump;
@@ -358,6 +371,15 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
     samples.force.push_back(f[i]);
     samples.contact.push_back(contact ? 1 : 0);
   }
+  // The approach (with a retract): far first, on the baseline before its jump in.
+  const std::vector<double>& jz = approach ? approach->tip_position : z;
+  const std::vector<double>& jf = approach ? approach->force : f;
+  const std::size_t jump_index = approach ? found : jump;
+  for (std::size_t i = 0; approach && i < jz.size(); ++i) {
+    samples.z.push_back(jz[i]);
+    samples.force.push_back(jf[i]);
+    samples.contact.push_back(i >= jump_index ? 1 : 0);
+  }
   const std::size_t used = samples.z.size();
   fit.points = used;
   // An approach adds one observation: the jump in, where the zone first reaches the surface,
@@ -366,26 +388,24 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   // sampling step: a uniform error of that step / sqrt(12). The data's shape alone hardly tells
   // lambda above 0.5 (the branch changes by 1e-4 of the peak force); this position does, as
   // h0 = 2 / (pi lambda) of Maugis' depth unit.
-  const bool jump_in = !options.retract && jump > 0;
+  const bool jump_in = (approach || !options.retract) && jump_index > 0;
   double jump_weight = 0.0, jump_observed = 0.0;
   if (jump_in) {
     std::vector<double> steps;
-    for (std::size_t i = 0; i + 1 < jump; ++i) steps.push_back(std::abs(z[i + 1] - z[i]));
+    for (std::size_t i = 0; i + 1 < jump_index; ++i) steps.push_back(std::abs(jz[i + 1] - jz[i]));
     std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
                      steps.end());
     const double step = steps.empty() ? 0.0 : steps[steps.size() / 2];
     // The jump's position weighs as the force's noise over its standard deviation: the step's
     // uniform 1/sqrt(12) and the spread of the found index.
-    const double noise = difference_noise(f, 0, jump);
+    const double noise = difference_noise(jf, 0, jump_index);
     const double spread = found > 0 ? jump_in_found.spread : 0.0;
     if (step > 0.0 && noise > 0.0) {
       jump_weight = noise / (step * std::sqrt(1.0 / 12.0 + spread * spread));
-      jump_observed = z[jump - 1] - 0.5 * step;
+      jump_observed = jz[jump_index - 1] - 0.5 * step;
     }
   }
   const bool jump_row = jump_in && jump_weight > 0.0;
-  std::fprintf(stderr, "DBG jump %zu spread %g weight %g\n", jump, jump_in_found.spread,
-               jump_weight);
   const std::size_t rows = used + (jump_row ? 1 : 0);
   std::vector<double> data = samples.force;
   // Measured from the observed jump (the residual is a small difference of small numbers).
@@ -397,10 +417,10 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
   fit.contact_samples = static_cast<std::size_t>(
       std::count(samples.contact.begin(), samples.contact.end(), static_cast<char>(1)));
 
-  const auto [z_low, z_high] = std::minmax_element(z.begin(), z.end());
+  const auto [z_low, z_high] = std::minmax_element(samples.z.begin(), samples.z.end());
   const double z_range = std::max(*z_high - *z_low, 1e-30);
   double force_scale = 0.0;
-  for (const double v : f) force_scale = std::max(force_scale, std::abs(v));
+  for (const double v : samples.force) force_scale = std::max(force_scale, std::abs(v));
   force_scale = std::max(force_scale, 1e-300);
   const double deepest = std::max(jkr.contact_point.value - *z_low, 1e-3 * z_range);
 
@@ -600,6 +620,19 @@ AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& o
     fit.adhesion_force_fitted = 0.0;
   }
   return fit;
+}
+
+}  // namespace
+
+AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& options) {
+  return fit_maugis_segments(segment, options, nullptr);
+}
+
+AdhesiveFit fit_maugis_both(const PreparedSegment& approach, const PreparedSegment& retract,
+                            const MaugisFitOptions& options) {
+  MaugisFitOptions on_retract = options;
+  on_retract.retract = true;
+  return fit_maugis_segments(retract, on_retract, &approach);
 }
 
 }  // namespace mdrsim::fit

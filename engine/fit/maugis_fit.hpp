@@ -58,9 +58,17 @@ struct MaugisFitOptions {
 /// Fits the model. Retract: the samples from the deepest point to the jump off (the largest
 /// rise of the force after its minimum, as adhesive_fit finds it) lie on the path, past the
 /// fixed-load pull-off as far as the lever held them, the rest on the baseline. Approach: the
-/// samples indented past the jump in lie on it. Starts from the DMT and JKR fits (adhesive_fit)
-/// and the best of five lambdas.
+/// samples from the jump in (a change point of the force) lie on it, and the jump's position
+/// is one more residual: the tip there at d = -h0 = -w / sigma_0, the zone's range, which is
+/// what tells lambda (weighted by the sampling step and the change point's spread). Starts from
+/// the DMT and JKR fits (adhesive_fit) and the best of five lambdas.
 AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& options);
+
+/// Approach and retract on one path (`--segment both`): one E, dgamma, lambda, contact point and
+/// baseline; the retract's samples as fit_maugis takes them, the approach's from its jump in,
+/// and the jump in's position. Starts from the retract's DMT and JKR fits.
+AdhesiveFit fit_maugis_both(const PreparedSegment& approach, const PreparedSegment& retract,
+                            const MaugisFitOptions& options);
 
 /// `--model auto`'s choice from a fitted lambda: below 0.1 DMT, above 5 JKR, Maugis between
 /// (Johnson & Greenwood's adhesion map, 1997; docs/afm.md gives the pull-off forces there).

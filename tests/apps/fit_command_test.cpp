@@ -81,9 +81,9 @@ TEST(FitCommand, RefusesWithOneLine) {
       {std::string("fit ") + kSpot3 +
            " --tip parabolic:radius=1e-5 --model jkr --fix approach_work_of_adhesion=0.1",
        "--fix approach_work_of_adhesion: only with --segment both\n"},
-      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model maugis --segment both",
-       "--segment both: not with --model maugis (approach and retract are fitted together by "
-       "hertz, dmt and jkr)\n"},
+      {std::string("fit ") + kSpot3 + " --tip parabolic:radius=1e-5 --model auto --segment both",
+       "--segment both: not with --model auto (approach and retract are fitted together by "
+       "hertz, dmt, jkr and maugis)\n"},
       {std::string("fit ") + kSpot3 + " --tip blunt:radius=1",
        "--tip: 'blunt:radius=1' is not a tip (known: parabolic:radius=R, sphere:radius=R, "
        "cone:half_angle_deg=A, pyramid:half_angle_deg=A, a scene file FILE.toml)\n"},
