@@ -3,6 +3,7 @@
 #include "engine/fit/maugis_fit.hpp"
 
 #include <fmt/format.h>
+#include <Eigen/Dense>
 #include <boost/math/tools/minima.hpp>
 
 #include <algorithm>
@@ -101,6 +102,23 @@ double difference_noise(const std::vector<double>& f, std::size_t from, std::siz
   return v[v.size() / 2] / (0.6745 * std::sqrt(2.0));
 }
 
+/// The sum of squares of the least-squares parabola through f[from, to) over the sample index.
+double parabola_squares(const std::vector<double>& f, std::size_t from, std::size_t to) {
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right = Eigen::Vector3d::Zero();
+  double syy = 0.0;
+  const double mid = 0.5 * static_cast<double>(to - from - 1);
+  for (std::size_t i = from; i < to; ++i) {
+    const double x = static_cast<double>(i - from) - mid;
+    const Eigen::Vector3d row(1.0, x, x * x);
+    normal += row * row.transpose();
+    right += row * f[i];
+    syy += f[i] * f[i];
+  }
+  const Eigen::Vector3d c = normal.ldlt().solve(right);
+  return std::max(syy - c.dot(right), 0.0);
+}
+
 /// The approach's jump in: its first sample on the path (0: none found) and the standard
 /// deviation of that index [samples].
 struct JumpIn {
@@ -109,7 +127,8 @@ struct JumpIn {
 };
 
 /// The largest fall between the means of 20 samples either side before the lowest force,
-/// then placed by the least squares of a line either side of a split of the 60 samples around it;
+/// then placed by the least squares of a line before and a parabola after a split of the 100
+/// samples around it;
 /// the index's spread from those sums of squares as a likelihood, exp(-S/(2 sigma^2)).
 /// adhesive_fit's largest single fall is lost in 1 % noise where the jump is a few % of the peak
 /// force (lambda 0.2 on a lever as stiff as the contact), and there the change point is uncertain
@@ -130,11 +149,12 @@ JumpIn approach_jump(const std::vector<double>& f) {
   const double noise = difference_noise(f, 0, coarse > w ? coarse - w : coarse);
   std::vector<std::size_t> ks;
   std::vector<double> squares;
-  // One span, split at k: a line before, a line after (the split nearest the jump fits both).
-  const std::size_t lo = std::max(coarse, 2 * w) - 2 * w, hi = std::min(coarse + w, n);
+  // One span, split at k: a line before, a parabola after (the pull past the jump grows
+  // fast, which also puts the coarse fall late by up to a window).
+  const std::size_t lo = std::max(coarse, 4 * w) - 4 * w, hi = std::min(coarse + w, n);
   for (std::size_t k = lo + w / 2; k + w / 2 <= hi; ++k) {
     ks.push_back(k);
-    squares.push_back(line_squares(f, lo, k) + line_squares(f, k, hi));
+    squares.push_back(line_squares(f, lo, k) + parabola_squares(f, k, hi));
   }
   const auto best =
       static_cast<std::size_t>(std::min_element(squares.begin(), squares.end()) - squares.begin());

@@ -471,8 +471,9 @@ void PrintTo(const ApproachRecovery& r, std::ostream* out) {
 // contact point over h0 = 2 / (pi lambda) depth units, linear in the noise: with 1 % it is
 // 1.2 % at lambda = 0.2 (the pre-contact pull's shape tells it), 4.6 % at 1 and 11 % at 3, so
 // the worst of 100 seeds (about 2.6 of them) meets 10 % at lambda = 1 from 0.5 % noise and at
-// lambda = 3 from 0.3 %. Each bound is the worst seen with some room; at lambda = 0.2 one
-// seed of 100 lies at 15 % (13 of its standard errors: a jump in that the noise hides).
+// lambda = 3 from 0.3 %. Each bound is the worst seen with some room; at lambda = 0.2 about a
+// tenth of the seeds lie 8-12 % high, several of their standard errors (a jump in that the
+// noise hides, placed late by more than its estimated spread).
 class MaugisApproachSynthetic : public ::testing::TestWithParam<ApproachRecovery> {};
 
 TEST_P(MaugisApproachSynthetic, RecoversLambdaFromTheJumpIn) {
@@ -518,7 +519,7 @@ TEST_P(MaugisApproachSynthetic, RecoversLambdaFromTheJumpIn) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MaugisApproachSynthetic,
-                         ::testing::Values(ApproachRecovery{0.2, 0.01, 0.2, 0.05},
+                         ::testing::Values(ApproachRecovery{0.2, 0.01, 0.14, 0.04},
                                            ApproachRecovery{1.0, 0.01, 0.15, 0.08},
                                            ApproachRecovery{3.0, 0.01, 0.4, 0.08},
                                            ApproachRecovery{1.0, 0.005, 0.1, 0.04},
@@ -532,8 +533,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, MaugisApproachSynthetic,
 // with their own noise, over 100 seeds with 1 % noise: the retract's samples pin the contact
 // point better (its standard error about halves), so lambda's falls to 1.7 % at lambda = 1
 // (worst 4.5 %) and 3.7 % at 3 (worst 10.2 %: the bound 12 % is that with room); dgamma within
-// 3 % at lambda = 1 and 3. At lambda = 0.2 one seed of 100 again lands at 16 % (mean standard
-// error 0.95 %), dgamma at 3.4 %.
+// 3 % at lambda = 1 and 3. At lambda = 0.2 lambda's worst is 12.5 % (mean standard error 1.0
+// %: the late jumps above), dgamma's 3.3 %.
 class MaugisBothSynthetic : public ::testing::TestWithParam<ApproachRecovery> {};
 
 TEST_P(MaugisBothSynthetic, RecoversLambdaFromBothSegments) {
@@ -581,7 +582,7 @@ TEST_P(MaugisBothSynthetic, RecoversLambdaFromBothSegments) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MaugisBothSynthetic,
-                         ::testing::Values(ApproachRecovery{0.2, 0.01, 0.2, 0.04},
+                         ::testing::Values(ApproachRecovery{0.2, 0.01, 0.14, 0.04},
                                            ApproachRecovery{1.0, 0.01, 0.1, 0.03},
                                            ApproachRecovery{3.0, 0.01, 0.12, 0.03}),
                          [](const ::testing::TestParamInfo<ApproachRecovery>& info) {
