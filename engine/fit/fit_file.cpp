@@ -79,24 +79,46 @@ AdhesiveFit fit_one(const PreparedSegment& prepared, measured::SegmentKind segme
   return fit_adhesive(prepared, adhesive);
 }
 
-/// A fit whose modulus is not held has not found E when the curve does not determine it: no
-/// sample indented past the fitted contact point, a J^T J singular in E (its standard error 0
-/// with residuals that are not), or a standard error above E itself (or not finite). It keeps
-/// its numbers, as not-converged, with the reason.
-void mark_undetermined(AdhesiveFit& fit) {
-  const FitParameter& e = fit.youngs_modulus;
-  if (fit.status != FitStatus::fitted || e.fixed) return;
-  std::string why;
-  if (!(fit.max_indentation > 0.0)) {
-    why = "no sample is indented past the contact point";
-  } else if (e.standard_error == 0.0 && fit.residual_rms > 0.0) {
-    why = "J^T J is singular in youngs_modulus";
-  } else if (!(std::isfinite(e.standard_error) && e.standard_error <= std::abs(e.value))) {
-    why = fmt::format("the standard error of youngs_modulus ({:.3g} Pa) exceeds its value",
-                      e.standard_error);
-  } else {
-    return;
+/// Why a free parameter is not determined by the curve ("" where it is): a J^T J singular in
+/// it (its standard error 0 with residuals that are not: a claim of exactness), or, where
+/// `error_above_value` is set, a standard error above its value (or not finite).
+std::string undetermined(const FitParameter& p, const char* name, const char* unit,
+                         double residual_rms, bool error_above_value) {
+  if (p.fixed) return {};
+  if (p.standard_error == 0.0 && residual_rms > 0.0) {
+    return fmt::format("J^T J is singular in {}", name);
   }
+  if (error_above_value &&
+      !(std::isfinite(p.standard_error) && p.standard_error <= std::abs(p.value))) {
+    return fmt::format("the standard error of {} ({:.3g} {}) exceeds its value", name,
+                       p.standard_error, unit);
+  }
+  return {};
+}
+
+/// A fit has not found E when the curve does not determine it: no sample indented past the
+/// fitted contact point, or undetermined() above. An adhesive model's work of adhesion is
+/// undetermined only where J^T J is singular in it: a standard error above a small work says
+/// the curve shows no measurable adhesion, which is a result. (The Maugis parameter is left
+/// out: a lambda that runs off to the JKR limit is what `auto` reads as JKR.) It keeps its
+/// numbers, as not-converged, with the reason.
+void mark_undetermined(CombinedFit& fit, const CurveFitOptions& options) {
+  if (fit.status != FitStatus::fitted) return;
+  const double rms = fit.residual_rms;
+  std::string why;
+  if (!fit.youngs_modulus.fixed && !(fit.max_indentation > 0.0)) {
+    why = "no sample is indented past the contact point";
+  } else {
+    why = undetermined(fit.youngs_modulus, "youngs_modulus", "Pa", rms, true);
+  }
+  if (why.empty() && options.model != FitModel::hertz) {
+    why = undetermined(fit.work_of_adhesion, "work_of_adhesion", "J/m^2", rms, false);
+    if (why.empty() && options.both_segments) {
+      why = undetermined(fit.approach_work_of_adhesion, "approach_work_of_adhesion", "J/m^2", rms,
+                         false);
+    }
+  }
+  if (why.empty()) return;
   fit.status = FitStatus::not_converged;
   fit.message = "undetermined: " + why;
 }
@@ -234,7 +256,7 @@ CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
       out.height_channel = prepared.height_channel;
       static_cast<AdhesiveFit&>(out.fit) = fit_in_range(prepared, segment, options);
     }
-    mark_undetermined(out.fit);
+    mark_undetermined(out.fit, options);
     out.hysteresis_energy = curve_hysteresis(curve, options);
   } catch (const SceneError& e) {
     out.fit.message = curve.label.empty() ? e.what() : curve.label + ": " + e.what();
