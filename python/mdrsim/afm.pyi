@@ -1,6 +1,6 @@
 # Type stubs of mdrsim.afm: measured force curves read and fitted (afm.py).
 import os
-from typing import Any, Literal, Union
+from typing import Any, Iterable, Literal, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -96,3 +96,8 @@ def load(path: Union[str, os.PathLike[str]], sensitivity: float | None = ...,
 def fit(curve: Curve, model: Literal["hertz", "dmt", "jkr", "maugis", "auto"] = ..., tip: str = ...,
         poisson_ratio: float = ..., segment: Literal["approach", "retract"] = ...,
         fix: dict[str, float] | None = ...) -> Fit: ...
+def fit_files(paths: Iterable[Union[str, os.PathLike[str]]], executor: Any = ...,
+              sensitivity: float | None = ..., spring_constant: float | None = ...,
+              model: Literal["hertz", "dmt", "jkr", "maugis", "auto"] = ..., tip: str = ...,
+              poisson_ratio: float = ..., segment: Literal["approach", "retract"] = ...,
+              fix: dict[str, float] | None = ...) -> list[dict[str, Any]]: ...

@@ -258,27 +258,48 @@ std::vector<double> fitted_force(const fit::CurveFitOptions& options, const fit:
   return out;
 }
 
-py::tuple fit_curve(const CurveHandle& handle, const std::string& model, const std::string& tip,
-                    double poisson_ratio, const std::string& segment,
-                    const std::map<std::string, double>& fix) {
+/// fit()'s arguments checked and read as the command reads its flags.
+struct FitRequest {
   fit::CurveFitOptions options;
+  measured::SegmentKind kind = measured::SegmentKind::approach;
+};
+
+FitRequest parse_request(const std::string& model, const std::string& tip, double poisson_ratio,
+                         const std::string& segment, const std::map<std::string, double>& fix) {
+  FitRequest request;
+  fit::CurveFitOptions& options = request.options;
   options.model = parse_model(model);
-  const measured::SegmentKind kind = parse_segment(segment);
+  request.kind = parse_segment(segment);
   if (!(poisson_ratio > -1.0 && poisson_ratio <= 0.5)) {
     throw SceneError(fmt::format("poisson_ratio {}: outside (-1, 0.5]", poisson_ratio));
   }
   options.tip = fit::parse_tip(tip);
   options.poisson_ratio = poisson_ratio;
   options.fixed = parse_fixed(fix, options.model);
-  if (options.model == fit::FitModel::dmt && options.tip.kind == fit::TipKind::cone) {
-    throw SceneError(
-        "model 'dmt': not for a cone (its DMT adhesion depends on the attraction's range; use "
-        "model='jkr')");
+  const fit::TipKind tip_kind = options.tip.kind;
+  if (options.model == fit::FitModel::dmt && tip_kind != fit::TipKind::parabolic &&
+      tip_kind != fit::TipKind::sphere) {
+    throw SceneError(fmt::format(
+        "model 'dmt': not for a {} (its DMT adhesion depends on the attraction's range; use "
+        "model='jkr')",
+        tip_kind == fit::TipKind::cone      ? "cone"
+        : tip_kind == fit::TipKind::pyramid ? "pyramid"
+                                            : "tip without an apex radius"));
   }
+  return request;
+}
+
+py::tuple fit_curve(const CurveHandle& handle, const std::string& model, const std::string& tip,
+                    double poisson_ratio, const std::string& segment,
+                    const std::map<std::string, double>& fix) {
+  const FitRequest request = parse_request(model, tip, poisson_ratio, segment, fix);
+  const fit::CurveFitOptions& options = request.options;
+  const measured::SegmentKind kind = request.kind;
   // The curve as a file of its own: fit_file's refusal and JSON are the command's.
   measured::MeasuredFile one;
   one.path = handle.file->path;
   one.format = handle.file->format;
+  one.grid = handle.file->grid;  // the map's grid cell, as the command gives it
   one.curves.push_back(handle.curve());
   std::string json;
   fit::PreparedSegment prepared;
@@ -305,6 +326,14 @@ void bind_afm(py::module_& m) {
   m.def("afm_read", &read_file, py::arg("path"), py::arg("sensitivity") = py::none(),
         py::arg("spring_constant") = py::none(),
         "Reads every curve of a measured file (the GIL released while reading).");
+  m.def(
+      "afm_check_fit",
+      [](const std::string& model, const std::string& tip, double poisson_ratio,
+         const std::string& segment, const std::map<std::string, double>& fix) {
+        parse_request(model, tip, poisson_ratio, segment, fix);
+      },
+      py::arg("model"), py::arg("tip"), py::arg("poisson_ratio"), py::arg("segment"),
+      py::arg("fix"), "Checks fit()'s arguments as fit() does, without a curve.");
   m.def("afm_fit", &fit_curve, py::arg("curve"), py::arg("model"), py::arg("tip"),
         py::arg("poisson_ratio"), py::arg("segment"), py::arg("fix"),
         "Fits one curve: (the JSON of mdrsim fit --json, tip position, force, fitted force).");
