@@ -17,7 +17,7 @@ namespace {
 
 // youngs_modulus, work_of_adhesion (retract), approach_work_of_adhesion, contact_point,
 // baseline_offset, baseline_slope.
-constexpr std::size_t kParameters = 6;
+constexpr std::size_t kJointParameters = 6;
 enum : std::size_t { kModulus, kWork, kApproachWork, kContact, kOffset, kSlope };
 
 bool has_values(const HertzFit& fit) {
@@ -70,7 +70,7 @@ void mark_contact(Samples& s, std::size_t approach_points, std::size_t retract_j
 }
 
 /// The contact force (less the baseline) and its derivatives at one sample.
-struct ContactForce {
+struct JointContactForce {
   double force = 0.0;
   double d_depth = 0.0;
   double d_modulus = 0.0;  // per unit E*
@@ -91,16 +91,16 @@ void each_sample(const Samples& s, const CombinedFitOptions& options, std::span<
   const double pull = 2.0 * std::numbers::pi * options.tip.radius;
   for (std::size_t i = 0; i < s.z.size(); ++i) {
     const double depth = p[kContact] - s.z[i];
-    ContactForce c;
+    JointContactForce c;
     if (!options.adhesive) {
       if (depth <= 0.0) {
-        visit(i, static_cast<const ContactForce*>(nullptr));
+        visit(i, static_cast<const JointContactForce*>(nullptr));
         continue;
       }
       const double g = options.tip.force_per_modulus(depth);
       c = {reduced * g, reduced * options.tip.stiffness_per_modulus(depth), g, 0.0};
     } else if (!s.contact[i]) {
-      visit(i, static_cast<const ContactForce*>(nullptr));
+      visit(i, static_cast<const JointContactForce*>(nullptr));
       continue;
     } else if (options.model == AdhesionModel::jkr) {
       const JkrBranch::State st = (s.approach[i] ? *approach_branch : *retract_branch).at(depth);
@@ -139,7 +139,7 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
   const double compliance = 1.0 - options.poisson_ratio * options.poisson_ratio;
 
   // Each segment's own fit gives the start.
-  std::array<double, kParameters> start{};
+  std::array<double, kJointParameters> start{};
   std::size_t jump = 0;
   double approach_contact = 0.0;
   if (!options.adhesive) {
@@ -209,7 +209,7 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
   for (const double v : samples.force) force_scale = std::max(force_scale, std::abs(v));
   force_scale = std::max(force_scale, 1e-300);
 
-  const std::array<std::optional<double>, kParameters> held = {
+  const std::array<std::optional<double>, kJointParameters> held = {
       options.fixed.youngs_modulus,
       options.adhesive ? options.fixed.work_of_adhesion : std::optional<double>(0.0),
       options.adhesive ? options.approach_work_of_adhesion : std::optional<double>(0.0),
@@ -222,14 +222,14 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
   problem.walk = {Walk::logarithmic, Walk::logarithmic, Walk::logarithmic,
                   Walk::linear,      Walk::linear,      Walk::linear};
   problem.model = [&](std::span<const double> p, std::span<double> model) {
-    each_sample(samples, options, p, [&](std::size_t i, const ContactForce* c) {
+    each_sample(samples, options, p, [&](std::size_t i, const JointContactForce* c) {
       model[i] = p[kOffset] + p[kSlope] * (samples.z[i] - p[kContact]) + (c ? c->force : 0.0);
     });
   };
   problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
     // A column per parameter (least_squares.hpp): d[k * m + i] is d model_i / d p_k.
     const std::size_t m = samples.z.size();
-    each_sample(samples, options, p, [&](std::size_t i, const ContactForce* c) {
+    each_sample(samples, options, p, [&](std::size_t i, const JointContactForce* c) {
       d[kModulus * m + i] = c ? c->d_modulus / compliance : 0.0;
       d[kWork * m + i] = c && !samples.approach[i] ? c->d_work : 0.0;
       d[kApproachWork * m + i] = c && samples.approach[i] ? c->d_work : 0.0;
@@ -238,7 +238,7 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
       d[kSlope * m + i] = samples.z[i] - p[kContact];
     });
   };
-  FitParameter* out[kParameters] = {
+  FitParameter* out[kJointParameters] = {
       &fit.youngs_modulus, &fit.work_of_adhesion, &fit.approach_work_of_adhesion,
       &fit.contact_point,  &fit.baseline_offset,  &fit.baseline_slope};
   ScaledSolution solution;
@@ -246,8 +246,8 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
   // fit's where that moves a sample across it (the two segments' contact points differ by the
   // piezo's creep and hysteresis on a real curve).
   for (int pass = 0; pass < 2; ++pass) {
-    problem.held.assign(kParameters, false);
-    for (std::size_t k = 0; k < kParameters; ++k) {
+    problem.held.assign(kJointParameters, false);
+    for (std::size_t k = 0; k < kJointParameters; ++k) {
       problem.held[k] = held[k].has_value();
       if (held[k]) start[k] = *held[k];
     }

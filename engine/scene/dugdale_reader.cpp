@@ -10,7 +10,7 @@ namespace mdrsim {
 namespace {
 
 constexpr Bound kPositive{0.0, false};
-constexpr const char* kScope = " (docs/maugis.md \"Scope\")";
+constexpr const char* kMaugisScope = " (docs/maugis.md \"Scope\")";
 
 }  // namespace
 
@@ -38,13 +38,13 @@ void apply_finite_range(TomlReader& material, const FiniteRangeKeys& keys, Scene
     material.fail_at("work_of_adhesion",
                      fmt::format("a work of adhesion that varies with the radius is not taken "
                                  "with {}{}",
-                                 key, kScope));
+                                 key, kMaugisScope));
   }
   if (material.has("approach_work_of_adhesion")) {
     material.fail_at("approach_work_of_adhesion",
                      fmt::format("not taken with {}: the Dugdale law is one law both ways, the "
                                  "approach included{}",
-                                 key, kScope));
+                                 key, kMaugisScope));
   }
   if (!(m.work_of_adhesion > 0.0)) {
     material.fail_at(key, "needs work_of_adhesion > 0 (the range is work_of_adhesion / sigma_0)");
@@ -77,7 +77,7 @@ void refuse_outside_dugdale_scope(const TomlReader& root, const TomlReader& load
       loading.fail_at("rebinding",
                       std::string("not taken with material.adhesive_stress: the Dugdale zone pulls "
                                   "a spring that let go back as it nears (rebinding is implied)") +
-                          kScope);
+                          kMaugisScope);
     }
     if (route_keys.method_given && scene.solver.method != SolverMethod::continuum) {
       throw SceneError(route_keys.method_at +
@@ -90,18 +90,18 @@ void refuse_outside_dugdale_scope(const TomlReader& root, const TomlReader& load
       if (stage.tangential) {
         loading.fail_at("stage", fmt::format("stage '{}': a tangential axis is not taken with "
                                              "material.adhesive_stress{}",
-                                             stage.name, kScope));
+                                             stage.name, kMaugisScope));
       }
     }
   }
   if (loading.has("tangential")) {
     loading.fail_at("tangential", std::string("a tangential load is not taken with "
                                               "material.adhesive_stress") +
-                                      kScope);
+                                      kMaugisScope);
   }
   if (root.has("friction")) {
     root.fail_at("friction",
-                 std::string("friction is not taken with material.adhesive_stress") + kScope);
+                 std::string("friction is not taken with material.adhesive_stress") + kMaugisScope);
   }
   if (root.has("detachment")) {
     root.fail_at("detachment",

@@ -12,7 +12,7 @@
 namespace mdrsim {
 namespace {
 
-constexpr const char* kScope = " (docs/graded.md \"What it refuses\")";
+constexpr const char* kGradedScope = " (docs/graded.md \"What it refuses\")";
 
 double profile_number(const nlohmann::json& resolved, const char* key) {
   return resolved.at("profile").at(key).get<double>();
@@ -65,7 +65,7 @@ void apply_grading(TomlReader& material, const nlohmann::json& resolved, Scene& 
     material.fail_at("grading",
                      fmt::format("profile.type = \"{}\" has no graded image yet (known: parabolic, "
                                  "cone, power_law, flat_punch){}",
-                                 type, kScope));
+                                 type, kGradedScope));
   }
 }
 
@@ -76,27 +76,29 @@ void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& load
   if (scene.program) {
     loading.fail_at("stage", std::string("loading programs are not yet carried with "
                                          "material.grading; use the shorthand") +
-                                 kScope);
+                                 kGradedScope);
   }
   if (loading.has("tangential")) {
-    loading.fail_at("tangential",
-                    std::string("a tangential load is not taken with material.grading") + kScope);
+    loading.fail_at(
+        "tangential",
+        std::string("a tangential load is not taken with material.grading") + kGradedScope);
   }
   if (root.has("friction")) {
-    root.fail_at("friction", std::string("friction is not taken with material.grading") + kScope);
+    root.fail_at("friction",
+                 std::string("friction is not taken with material.grading") + kGradedScope);
   }
   for (const char* key : {"adhesive_stress", "maugis_parameter"}) {
     if (material.has(key)) {
       material.fail_at(key, std::string("finite-range adhesion is not yet taken with "
                                         "material.grading") +
-                                kScope);
+                                kGradedScope);
     }
   }
   if (scene.material.work_of_adhesion_by_radius) {
     material.fail_at("work_of_adhesion",
                      std::string("a work of adhesion that varies with the radius is not yet "
                                  "taken with material.grading") +
-                         kScope);
+                         kGradedScope);
   }
   if (root.has("detachment")) {
     root.fail_at("detachment",
