@@ -89,7 +89,7 @@ BAD = [
     pytest.param(FIG2, {"material.poisson": 0.3},
                  "--set: material.poisson: unknown key; did you mean 'poisson_ratio'? "
                  "(known: adhesive_stress, approach_work_of_adhesion, "
-                 "effective_modulus, effective_shear_modulus, maugis_parameter, poisson_ratio, "
+                 "effective_modulus, effective_shear_modulus, grading, maugis_parameter, poisson_ratio, "
                  "work_of_adhesion, youngs_modulus)", id="bad-key"),
     pytest.param(FIG2, {"loading.stage.2.normal.by": 1e-6},
                  "--set: loading.stage.2.normal.by: the scene has no [[loading.stage]]",
@@ -130,7 +130,7 @@ def test_bad_key_in_a_file_names_its_line():
     assert str(caught.value) == (
         "typo.toml:8:1: material.poisson_rate: unknown key; did you mean 'poisson_ratio'? "
         "(known: adhesive_stress, approach_work_of_adhesion, "
-        "effective_modulus, effective_shear_modulus, maugis_parameter, poisson_ratio, "
+        "effective_modulus, effective_shear_modulus, grading, maugis_parameter, poisson_ratio, "
         "work_of_adhesion, youngs_modulus)")
 
 
