@@ -125,8 +125,9 @@ void ShorthandPath::advanced(const Contact& contact, const AdvanceOutcome& out, 
     // Field by field: a copy of the struct just written stalls the store buffer, at every let-go.
     work_at_equilibrium_.normal = pull_off_work_.normal;
     work_at_equilibrium_.tangential = pull_off_work_.tangential;
-    cascade_.emplace(*out.equilibrium_before, out.detached,
-                     out.detached > 1 && out.second_by_shear);
+    // Braces: clang 14 does not build an aggregate from parentheses (C++20's P0960).
+    cascade_.emplace(
+        Cascade{*out.equilibrium_before, out.detached, out.detached > 1 && out.second_by_shear});
   } else if (cascade_) {
     if (cascade_->springs == 1) cascade_->by_shear = out.first_by_shear;
     cascade_->springs += out.detached;
