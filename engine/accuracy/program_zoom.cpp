@@ -83,7 +83,7 @@ ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroSc
   ProgramRowSpec spec{
       .reference_radius = radius,
       .reference_springs = springs,
-      .reference_image = scene.profile->mdr_image(radius),
+      .reference_image = program_image(scene, radius),
       .max_springs = springs + 64,
       .edge_forces = true,
       .refine = true,
@@ -134,7 +134,7 @@ std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunRe
   }
   ZoomedCritical out{};
   const ZeroScale zero = program_zero_scale(scene, coarse.accuracy.outer_radius,
-                                            scene.profile->mdr_image(coarse.accuracy.outer_radius));
+                                            program_image(scene, coarse.accuracy.outer_radius));
   // One zoom from the full row (a second gains little on a program's folds, which sit at a
   // fair share of the largest radius).
   const std::int64_t k = target_springs(coarse, target, false);

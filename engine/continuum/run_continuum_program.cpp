@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,7 @@
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
 #include "engine/model/gluing_depth.hpp"
+#include "engine/model/graded_constants.hpp"
 #include "engine/result/rtol_rule.hpp"
 #include "engine/scene/scene_error.hpp"
 
@@ -46,6 +48,21 @@ struct Piece {
   double e0 = 0.0, e1 = 0.0;  ///< pinned: the stretches; empty: the indentations [m]
 };
 
+/// The advancing limit on a graded half-space at radius a [m]: Hess's rule on the graded
+/// springs with dgamma_a, sqrt(4 pi a^(1-k) dgamma_a / ((1 + k) C_k)) (docs/graded.md
+/// "Programs").
+double graded_advancing_stretch(const ContinuumBranch& branch, double a) {
+  const Material& m = branch.material();
+  return graded_let_go_stretch(branch.graded()->grading_exponent(), m.grading.punch_constant,
+                               m.approach_work_of_adhesion, a);
+}
+
+/// C_k a^(1+k) [N/m]: what a graded disk of radius a [m] pulls per unit of boundary stretch.
+double graded_punch_stiffness(const ContinuumBranch& branch, double a) {
+  return branch.material().grading.punch_constant *
+         std::pow(a, 1.0 + branch.graded()->grading_exponent());
+}
+
 /// One stage on the continuum: the branch of its normal control with the tangential axis
 /// held (every glued spring carries the same u_x: the glue took no spring after u_x moved),
 /// the advancing and receding limits, and the work and pieces it went through.
@@ -54,16 +71,21 @@ class ContinuumStage {
   ContinuumStage(const Scene& scene, const AffineConstraint& normal,
                  const AffineConstraint& tangential, double tangential_held)
       : branch_(*scene.profile, *scene.criterion, scene.material, normal, tangential,
-                tangential_held),
+                tangential_held, scene.graded_image),
         advancing_per_radius_(
             hess_scale(scene.material.approach_work_of_adhesion, scene.material.effective_modulus)),
         modulus_(scene.material.effective_modulus) {}
 
   ContinuumBranch& branch() { return branch_; }
   /// The advancing limit at radius a [m] and the depth at which the front reaches a
-  /// (engine/model/gluing_depth.hpp) [m].
-  double advancing_stretch(double a) const { return advancing_limit(branch_.material(), true, a); }
+  /// (engine/model/gluing_depth.hpp; graded: Hess's rule with dgamma_a on the graded springs,
+  /// docs/graded.md "Programs") [m].
+  double advancing_stretch(double a) const {
+    if (branch_.graded()) return graded_advancing_stretch(branch_, a);
+    return advancing_limit(branch_.material(), true, a);
+  }
   double advancing_depth(double a) const {
+    if (branch_.graded()) return branch_.image(a) - advancing_stretch(a);
     return gluing_depth(branch_.profile(), branch_.material(), true, a);
   }
   double receding_stretch(double a) const { return branch_.stretch(a); }
@@ -79,16 +101,18 @@ class ContinuumStage {
         s.tangential_displacement = branch_.tangential_held();
       return s;
     }
-    return branch_.state(disk.radius, branch_.profile().mdr_image(disk.radius) - disk.indentation);
+    return branch_.state(disk.radius, branch_.image(disk.radius) - disk.indentation);
   }
   /// The disk at radius a whose control is c (pinned: the control is affine in the stretch,
-  /// C(a, e) = C(a, 0) - e (a_u + 2 E* a a_F)).
+  /// C(a, e) = C(a, 0) - e (a_u + 2 E* a a_F); graded: C_k a^(1+k) for 2 E* a).
   Disk pinned_at(double a, double c) const {
     const AffineConstraint& n = branch_.normal();
     const double rest = branch_.state(a, 0.0).control;
+    const double pinned_stiffness =
+        branch_.graded() ? graded_punch_stiffness(branch_, a) : 2.0 * modulus_ * a;
     const double e =
-        (rest - c) / (n.displacement_coefficient + 2.0 * modulus_ * a * n.force_coefficient);
-    return {a, branch_.profile().mdr_image(a) - e};
+        (rest - c) / (n.displacement_coefficient + pinned_stiffness * n.force_coefficient);
+    return {a, branch_.image(a) - e};
   }
   double advancing_control(double a) const {
     return branch_.state(a, advancing_stretch(a)).control;
@@ -134,7 +158,11 @@ class ContinuumStage {
     // take away); advancing, less what gluing at the advancing limit gives, in closed form:
     // int_a0^a1 E* (2 pi x dgamma_a / E*) dx.
     AxisWork w = stretch_work(branch_, state(from), state(to), error);
-    if (to.radius > from.radius) {
+    if (to.radius > from.radius && branch_.graded()) {
+      // c_k(x) e_a(x)^2 = 2 pi x dgamma_a on the graded springs as well.
+      w.normal -= std::numbers::pi * branch_.material().approach_work_of_adhesion *
+                  (to.radius * to.radius - from.radius * from.radius);
+    } else if (to.radius > from.radius) {
       w.normal -= modulus_ * advancing_per_radius_ * 0.5 *
                   (to.radius * to.radius - from.radius * from.radius);
     }
@@ -537,13 +565,17 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
       AxisWork{with_rounding(w.work_error, magnitude.normal),
                with_rounding(w.work_error, magnitude.tangential)};
   const double modulus = scene.material.effective_modulus;
+  // |F| and its terms' magnitudes, on the graded springs where the half-space is graded.
+  const auto magnitude_of = [&](const BranchState& s) {
+    if (!scene.graded_image || stages.empty()) return force_magnitude(s, modulus);
+    return stages.front().branch().force_magnitude(s);
+  };
   if (w.result.critical) {
     w.result.accuracy.critical_error_estimate =
-        with_rounding(w.critical_error, force_magnitude(w.critical, modulus));
+        with_rounding(w.critical_error, magnitude_of(w.critical));
   }
   if (w.result.peak) {
-    w.result.accuracy.peak_error_estimate =
-        with_rounding(w.peak_error, force_magnitude(w.peak, modulus));
+    w.result.accuracy.peak_error_estimate = with_rounding(w.peak_error, magnitude_of(w.peak));
   }
   w.result.accuracy.covers = {"critical.normal_force",
                               "peak_adhesion.normal_force",

@@ -10,15 +10,43 @@
 
 namespace mdrsim {
 
+namespace {
+
+/// The row's control at its deepest state as row_radius_reaching_held has it, on graded springs:
+/// half-way between spring N's gluing and spring N + 1's, minus held.
+double graded_held_excess(const GradedSprings& graded, const HeldDeepest& deepest,
+                          std::int64_t springs, double a) {
+  const double n = static_cast<double>(springs);
+  const double dx = a / n;
+  CompensatedSum images;  // sum w_i g_k(x_i)
+  for (std::int64_t i = 1; i <= springs; ++i) {
+    const double x = i == springs ? a : dx * static_cast<double>(i);
+    images.add(graded.weight(i, x) * graded.image->image(x));
+  }
+  const auto depth = [&](double x) {
+    return graded.image->image(x) - (deepest.glued_edge ? graded.front_limit(x) : 0.0);
+  };
+  const double stiffness = graded.stiffness_to(a);
+  const AffineConstraint& c = deepest.constraint;
+  const auto control = [&](double d) {
+    return c.displacement_coefficient * d + c.force_coefficient * (stiffness * d - images.value());
+  };
+  return 0.5 * (control(depth(a)) + control(depth(a + dx))) - deepest.held;
+}
+
+}  // namespace
+
 std::optional<double> row_radius_reaching_held(const Profile& profile, const Material& material,
                                                const HeldDeepest& deepest, std::int64_t springs,
-                                               double guess) {
+                                               double guess,
+                                               const std::optional<GradedSprings>& graded) {
   if (springs < 2 || !(guess > 0.0) || !std::isfinite(guess)) return std::nullopt;
   const double n = static_cast<double>(springs);
   const double e_star = material.effective_modulus;
   const AffineConstraint& c = deepest.constraint;
   // Half-way between the control at spring N's gluing and at spring N + 1's, minus held.
   const auto excess = [&](double a) {
+    if (graded) return graded_held_excess(*graded, deepest, springs, a);
     const double dx = a / n;
     CompensatedSum images;
     for (std::int64_t i = 1; i < springs; ++i) {

@@ -7,6 +7,7 @@
 
 #include "controllers/controller.hpp"
 #include "engine/base/material.hpp"
+#include "engine/program/graded_springs.hpp"
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -27,9 +28,10 @@ struct HeldDeepest {
 /// half-way: so the row reaches exactly N springs at its deepest (docs/programs.md,
 /// "Discretization"). The continuum front `guess` [m] starts the search, which costs a few
 /// sums over the row. nullopt where the control does not rise through `held` within a few
-/// springs of the guess (the caller keeps the guess).
-std::optional<double> row_radius_reaching_held(const Profile& profile, const Material& material,
-                                               const HeldDeepest& deepest, std::int64_t springs,
-                                               double guess);
+/// springs of the guess (the caller keeps the guess). On `graded` springs the row's images,
+/// weights and gluing limit are theirs (F = sum w_i (d - g_k(x_i)), graded_springs.hpp).
+std::optional<double> row_radius_reaching_held(
+    const Profile& profile, const Material& material, const HeldDeepest& deepest,
+    std::int64_t springs, double guess, const std::optional<GradedSprings>& graded = std::nullopt);
 
 }  // namespace mdrsim

@@ -40,7 +40,11 @@ void ProgramRow::springs_changed(bool normal, bool tangential) {
 
 void ProgramRow::fill(SpringValues& v, std::int64_t i) const {
   v.index = i;
-  v.image = i == reference_springs_ ? reference_image_ : profile_->mdr_image(position(i));
+  if (i == reference_springs_) {
+    v.image = reference_image_;
+  } else {
+    v.image = graded_ ? graded_->image->image(position(i)) : profile_->mdr_image(position(i));
+  }
   v.front_limit = -1.0;
 }
 
@@ -62,8 +66,7 @@ bool ProgramRow::tangential_has_stiffness() const {
 }
 
 double ProgramRow::normal_force_at(double d) const {
-  const double per_spring = 2.0 * material_.effective_modulus * spacing_;
-  return per_spring * (static_cast<double>(in_contact_) * d - contact_images_.value());
+  return sum_scale() * (contact_count(in_contact_) * d - contact_images_.value());
 }
 
 double ProgramRow::tangential_force_at(double u) const {
@@ -87,7 +90,7 @@ void ProgramRow::solve_tangential() const {
 double ProgramRow::solve_indentation() const {
   const double per_held = indentation_per_held();
   if (per_held == 0.0) return normal_.rest;
-  const double offset = 2.0 * material_.effective_modulus * spacing_ * contact_images_.value();
+  const double offset = sum_scale() * contact_images_.value();
   return (normal_.held + normal_.constraint.force_coefficient * offset) * per_held;
 }
 
@@ -113,8 +116,7 @@ double ProgramRow::solve_tangential_displacement() const {
 double ProgramRow::indentation_per_held() const {
   if (!normal_response_cached_) {
     const AffineConstraint& c = normal_.constraint;
-    const double k =
-        2.0 * material_.effective_modulus * spacing_ * static_cast<double>(in_contact_);
+    const double k = sum_scale() * contact_count(in_contact_);
     normal_per_held_ =
         normal_has_stiffness() ? 1.0 / (c.displacement_coefficient + c.force_coefficient * k) : 0.0;
     normal_response_cached_ = true;
@@ -176,18 +178,19 @@ double ProgramRow::glue_through(std::int64_t last) {
   CompensatedSum squares;
   for (std::int64_t i = glued_ + 1; i <= last; ++i) {
     const double g = image(i);
-    contact_images_.add(g);
+    const double w = sum_weight(i);
+    contact_images_.add(w * g);
     glued_offsets_.add(u);
-    sums_.image_squares.add(g * g);
+    sums_.image_squares.add(w * g * g);
     if (surface_varies_) sums_.surface.add(surface_energy(i));
     const double stretch = d - g;
-    squares.add(stretch * stretch);
+    squares.add(w * stretch * stretch);
   }
   glued_ = last;
   in_contact_ = last;
   ever_glued_ = std::max(ever_glued_, last);
-  // Half of 2 E* dx (both halves) per spring, times the stretch squared.
-  return material_.effective_modulus * spacing_ * squares.value();
+  // Half of 2 E* dx (both halves) per spring, times the stretch squared (graded: half of w_i).
+  return (graded_ ? 0.5 : material_.effective_modulus * spacing_) * squares.value();
 }
 
 void ProgramRow::push_run(std::int64_t first, double offset) {
@@ -222,10 +225,11 @@ void ProgramRow::glue_at(double u) {
   if (glued_ > in_contact_) {
     in_contact_ = glued_;
     const double g = image(glued_);
-    contact_images_.add(g);
-    sums_.image_squares.add(g * g);
+    const double w = sum_weight(glued_);
+    contact_images_.add(w * g);
+    sums_.image_squares.add(w * g * g);
     const double normal = normal_.rest - g;
-    brought += material_.effective_modulus * spacing_ * normal * normal;
+    brought += half_weight(glued_) * normal * normal;
     if (friction_) friction_->touch(g, u);
   }
   if (!friction_) sums_.released.add(-brought);
@@ -253,10 +257,11 @@ double ProgramRow::let_go_boundary(bool pressed) {
   double released = material_.effective_shear_modulus * spacing_ * stretch * stretch;
   if (!pressed && in_contact_ == glued_) {
     const double g = image(in_contact_);
-    contact_images_.add(-g);
-    sums_.image_squares.add(-g * g);
+    const double w = sum_weight(in_contact_);
+    contact_images_.add(-(w * g));
+    sums_.image_squares.add(-(w * g * g));
     const double normal = normal_.rest - g;
-    released += material_.effective_modulus * spacing_ * normal * normal;
+    released += half_weight(in_contact_) * normal * normal;
     --in_contact_;
   }
   if (!friction_) sums_.released.add(released);
@@ -271,8 +276,9 @@ void ProgramRow::touch_next() {
   springs_changed(true, false);
   ++in_contact_;
   const double g = image(in_contact_);
-  contact_images_.add(g);
-  sums_.image_squares.add(g * g);
+  const double w = sum_weight(in_contact_);
+  contact_images_.add(w * g);
+  sums_.image_squares.add(w * g * g);
 }
 
 void ProgramRow::lift_outer() {
@@ -280,8 +286,9 @@ void ProgramRow::lift_outer() {
   if (friction_) friction_->lift_outer();
   springs_changed(true, false);
   const double g = image(in_contact_);
-  contact_images_.add(-g);
-  sums_.image_squares.add(-g * g);
+  const double w = sum_weight(in_contact_);
+  contact_images_.add(-(w * g));
+  sums_.image_squares.add(-(w * g * g));
   --in_contact_;
   forget_rounding_of_empty_sums();
 }
@@ -311,8 +318,8 @@ double ProgramRow::stored_energy() const {
   const double d = indentation();
   const double u = tangential_displacement();
   // Both halves of kz (d - g_i)^2 / 2 and kx (u - s_i)^2 / 2, from the sums the forces keep.
-  double energy = material_.effective_modulus * spacing_ *
-                  (static_cast<double>(in_contact_) * d * d - 2.0 * d * contact_images_.value() +
+  double energy = (graded_ ? 0.5 : material_.effective_modulus * spacing_) *
+                  (contact_count(in_contact_) * d * d - 2.0 * d * contact_images_.value() +
                    sums_.image_squares.value());
   if (friction_) {
     energy += friction_->stored_energy(d, u);
@@ -393,7 +400,7 @@ ContactSnapshot ProgramRow::snapshot() const {
   if (!edge_forces_) return s;
   if (in_contact_ > 0) {
     s.edge_normal_force =
-        2.0 * material_.effective_modulus * spacing_ * std::abs(s.indentation - image(in_contact_));
+        2.0 * half_weight(in_contact_) * std::abs(s.indentation - image(in_contact_));
   }
   if (glued_ > 0) {
     s.edge_tangential_force = 2.0 * material_.effective_shear_modulus * spacing_ *

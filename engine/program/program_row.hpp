@@ -15,6 +15,7 @@
 #include "engine/model/contact_snapshot.hpp"
 #include "engine/model/gluing_depth.hpp"
 #include "engine/program/friction_row.hpp"
+#include "engine/program/graded_springs.hpp"
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -52,9 +53,19 @@ class ProgramRow {
   double front_limit(std::int64_t i) const {
     if (i == 1) return 0.0;
     SpringValues& v = values(i);
-    if (v.front_limit < 0.0) v.front_limit = advancing_limit(material_, true, position(i));
+    if (v.front_limit < 0.0) {
+      v.front_limit = graded_ ? graded_->front_limit(position(i))
+                              : advancing_limit(material_, true, position(i));
+    }
     return v.front_limit;
   }
+  /// The springs of a graded half-space from now on (a row with nothing in contact):
+  /// graded_springs.hpp's weights, images and gluing limit.
+  void use_graded_springs(const GradedSprings& springs) {
+    graded_ = springs;
+    recent_ = {};
+  }
+  const std::optional<GradedSprings>& graded() const { return graded_; }
   /// The indentation at which spring i glues, springs 1..i-1 glued: gluing_depth() on the
   /// row's values, g_i - l_i [m].
   double gluing_depth(std::int64_t i) const { return image(i) - front_limit(i); }
@@ -297,6 +308,21 @@ class ProgramRow {
   void glue_at(double offset);  ///< spring k+1 glues with this s
   /// Whether a spring of offset s gluing or letting go leaves the tangential equilibrium.
   bool tangential_unchanged_by(double offset) const;
+  /// The sums over springs in contact weigh spring i's image by this: 1 on a homogeneous row
+  /// (its sums are scaled by 2 E* dx, sum_scale()), w_i on a graded one (scaled by 1).
+  double sum_weight(std::int64_t i) const {
+    return graded_ ? graded_->weight(i, position(i)) : 1.0;
+  }
+  double sum_scale() const { return graded_ ? 1.0 : 2.0 * material_.effective_modulus * spacing_; }
+  /// What the springs 1..m stiffen by, times sum_scale(): m, or C_k x_m^(1+k) where graded.
+  double contact_count(std::int64_t m) const {
+    if (!graded_) return static_cast<double>(m);
+    return m > 0 ? graded_->stiffness_to(position(m)) : 0.0;
+  }
+  /// Half of spring i's normal stiffness, both halves [N/m]: its energy per stretch squared.
+  double half_weight(std::int64_t i) const {
+    return graded_ ? 0.5 * graded_->weight(i, position(i)) : material_.effective_modulus * spacing_;
+  }
   /// Drops what the change of the springs on each axis makes stale.
   void springs_changed(bool normal, bool tangential);
   mutable std::array<SpringValues, 4> recent_{};
@@ -330,11 +356,12 @@ class ProgramRow {
   std::int64_t glued_ = 0;
   std::int64_t in_contact_ = 0;
   std::int64_t ever_glued_ = 0;
-  CompensatedSum contact_images_;  ///< sum of g_i, i <= m [m]
+  std::optional<GradedSprings> graded_;
+  CompensatedSum contact_images_;  ///< sum of g_i, i <= m [m]; graded: of w_i g_i [N]
   CompensatedSum glued_offsets_;   ///< sum of s_i, i <= k [m]
   /// What the energy balance needs beyond the forces' sums (the runs keep sum of s_i^2).
   struct EnergySums {
-    CompensatedSum image_squares;  ///< sum of g_i^2, i <= m [m^2]
+    CompensatedSum image_squares;  ///< sum of g_i^2, i <= m [m^2]; graded: of w_i g_i^2 [N m]
     CompensatedSum surface;        ///< glued_surface, where dgamma varies [J]
     CompensatedSum released;       ///< released_by_changes [J]
   };

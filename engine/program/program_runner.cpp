@@ -16,6 +16,7 @@
 #include "engine/base/engine_logger.hpp"
 #include "engine/model/machine_work.hpp"
 #include "engine/program/bulk_paths.hpp"
+#include "engine/program/graded_springs.hpp"
 #include "engine/program/let_go_trail.hpp"
 #include "engine/program/path_watch.hpp"
 #include "engine/program/program_events.hpp"
@@ -35,11 +36,20 @@ constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
 /// Stepping: the default increment of the stage parameter.
 constexpr double kDefaultStageStep = 1e-3;
 
+std::optional<GradedHessCriterion> graded_criterion(const std::optional<GradedSprings>& springs,
+                                                    const Material& material) {
+  if (!springs) return std::nullopt;
+  return GradedHessCriterion(*springs, material.work_of_adhesion);
+}
+
 class ProgramRunner {
  public:
   ProgramRunner(const Scene& scene, const ProgramRowSpec& spec, const ObserverList& observers,
                 LargestContact* largest, LastStageStart* last_stage)
       : scene_(scene),
+        graded_springs_(GradedSprings::of(scene.graded_image, scene.material)),
+        graded_criterion_(graded_criterion(graded_springs_, scene.material)),
+        criterion_(graded_criterion_ ? *graded_criterion_ : *scene.criterion),
         step_(scene.solver.method == SolverMethod::stepping
                   ? std::optional(scene.solver.step.value_or(kDefaultStageStep))
                   : std::nullopt),
@@ -52,9 +62,10 @@ class ProgramRunner {
         watch_(scene, spec.zero.force, largest, last_stage),
         limits_(scene.solver, spec.max_springs) {
     at_.row.record_edge_forces(spec.edge_forces);
+    if (graded_springs_) at_.row.use_graded_springs(*graded_springs_);
     if (scene.friction) at_.row.enable_friction(*scene.friction);
     // The front located between springs knows no friction: friction rows report their own.
-    if (spec.refine && !step_ && !scene.friction) front_.emplace(*scene.criterion);
+    if (spec.refine && !step_ && !scene.friction) front_.emplace(criterion_);
   }
 
   RunResult run();
@@ -111,6 +122,11 @@ class ProgramRunner {
   [[gnu::cold, gnu::noinline]] void log_progress(const Stage& stage);
 
   const Scene& scene_;
+  /// A graded half-space's springs, and Hess's rule on them for the scene's criterion (a
+  /// graded scene names none: docs/graded.md).
+  std::optional<GradedSprings> graded_springs_;
+  std::optional<GradedHessCriterion> graded_criterion_;
+  const DetachmentCriterion& criterion_;
   std::optional<double> step_;  ///< stepping: the increment of the stage parameter
   StagePosition at_;            ///< the row in the stage under way
   std::int64_t max_springs_;
@@ -125,7 +141,7 @@ class ProgramRunner {
   std::optional<ProgramFront> front_;  ///< refining rows only
   EventLimits limits_;
   ProgramRecord record_{result_};  ///< stages, jumps and work
-  ChangeLocator locator_{*scene_.criterion, result_.counts.root_iterations};
+  ChangeLocator locator_{criterion_, result_.counts.root_iterations};
   ProgramOutcome outcome_;
   LetGoTrail let_go_trail_;
   Flight flight_;  ///< a flight that ended the program
@@ -164,7 +180,7 @@ void ProgramRunner::apply(Change change, Cascade& cascade, bool in_cascade) {
       const double stretch_x = at_.row.boundary_released_stretch(d, u);
       // Broken at rest is a let-go `now`: the boundary's let-go is cached for this stretch.
       by_shear = locator_.boundary_let_go(at_.row, stretch_x).kind == LetGo::Kind::now;
-      let_go_trail_.note(cascade, at_.row, at_.line, *scene_.criterion, k, stretch_x, by_shear);
+      let_go_trail_.note(cascade, at_.row, at_.line, criterion_, k, stretch_x, by_shear);
       events_.spring(EventKind::spring_detached, at_.row, k, in_cascade);
       at_.work.friction += at_.row.let_go_boundary(at_.row.image(k) <= d);
       at_.guards.released_to = std::max(at_.guards.released_to, k);

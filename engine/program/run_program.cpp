@@ -14,6 +14,7 @@
 #include "engine/model/criterion_contract.hpp"
 #include "engine/model/gluing_depth.hpp"
 #include "engine/model/jkr_scales.hpp"
+#include "engine/program/graded_springs.hpp"
 #include "engine/program/program_row.hpp"
 #include "engine/program/program_runner.hpp"
 #include "engine/program/stage_motion.hpp"
@@ -23,6 +24,27 @@ namespace mdrsim {
 namespace {
 
 constexpr std::int64_t kPilotSprings = 256;
+
+/// The advancing front's gap limit at x [m] (gluing_depth.hpp), Hess's rule with dgamma_a on
+/// the graded springs where the half-space is graded (graded_springs.hpp).
+double front_limit(const Scene& scene, bool glued_edge, double x) {
+  if (const auto graded = GradedSprings::of(scene.graded_image, scene.material)) {
+    return glued_edge ? graded->front_limit(x) : 0.0;
+  }
+  return advancing_limit(scene.material, glued_edge, x);
+}
+
+/// The depth [m] at which the front takes a free spring at x [m]: g - l (gluing_depth.hpp).
+double front_depth(const Scene& scene, bool glued_edge, double x) {
+  if (!scene.graded_image) return gluing_depth(*scene.profile, scene.material, glued_edge, x);
+  return scene.graded_image->image(x) - front_limit(scene, glued_edge, x);
+}
+
+/// The non-adhesive contact radius [m] at depth d [m].
+double radius_at_depth(const Scene& scene, double d) {
+  if (scene.graded_image) return scene.graded_image->radius_at_depth(d);
+  return scene.profile->contact_radius_at_depth(d);
+}
 /// A pilot row ends at this many times its springs: a guess that far off is rescaled.
 constexpr std::int64_t kPilotReach = 64;
 
@@ -51,8 +73,15 @@ double guess_radius(const Scene& scene) {
     held = held_after(axis, held, stage.until_separation);
     if (!known || !(held > 0.0)) continue;
     try {
-      const double a = holds_force ? contact_radius_at_force(profile, held, e_star)
-                                   : profile.contact_radius_at_depth(held);
+      double a = 0.0;
+      if (scene.graded_image) {
+        a = holds_force
+                ? scene.graded_image->radius_at_force(held, scene.material.grading.punch_constant)
+                : scene.graded_image->radius_at_depth(held);
+      } else {
+        a = holds_force ? contact_radius_at_force(profile, held, e_star)
+                        : profile.contact_radius_at_depth(held);
+      }
       if (std::isfinite(a)) radius = std::max(radius, a);
     } catch (const std::exception&) {
       // Out of the profile's reach: the pilot finds out.
@@ -74,11 +103,9 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
   const Profile& profile = *scene.profile;
   if (const auto fixed = profile.fixed_contact_radius()) return *fixed;
   if (!largest.glued_edge || scene.material.glues_on_touch()) {
-    return profile.contact_radius_at_depth(largest.indentation);
+    return radius_at_depth(scene, largest.indentation);
   }
-  const auto excess = [&](double x) {
-    return gluing_depth(profile, scene.material, true, x) - largest.indentation;
-  };
+  const auto excess = [&](double x) { return front_depth(scene, true, x) - largest.indentation; };
   const double lo = spacing * static_cast<double>(largest.springs);
   double hi = lo + spacing;
   if (!(excess(lo) <= 0.0) || !(excess(hi) > 0.0) || !std::isfinite(excess(hi))) return lo;
@@ -90,8 +117,8 @@ double front_radius(const Scene& scene, const LargestContact& largest, double sp
 /// limit, as ChangeLocator::due() has it; touch: g_N - d <= 0) holds, so that spring N is
 /// reached at the deepest point (docs).
 ProgramRowFrame frame_at(const Scene& scene, double a_max, double indentation, bool glued_edge) {
-  const double g = scene.profile->mdr_image(a_max);
-  const double limit = advancing_limit(scene.material, glued_edge, a_max);
+  const double g = program_image(scene, a_max);
+  const double limit = front_limit(scene, glued_edge, a_max);
   double front = indentation + limit;
   if (!(std::abs(g - front) <= 1e-12 * std::max(std::abs(g), std::abs(front)))) {
     return {a_max, g};
@@ -152,12 +179,10 @@ std::optional<ProgramRowFrame> frame_without_pilot(const Scene& scene) {
   if (!(deepest > 0.0) || profile.fixed_contact_radius()) return std::nullopt;
   // The front glues at the advancing limit (or presses on touch), as ProgramRow's front does.
   const bool glued_edge = scene.material.adhesive();
-  const auto excess = [&](double x) {
-    return gluing_depth(profile, scene.material, glued_edge, x) - deepest;
-  };
+  const auto excess = [&](double x) { return front_depth(scene, glued_edge, x) - deepest; };
   double hi = 0.0;
   try {
-    hi = profile.contact_radius_at_depth(deepest);
+    hi = radius_at_depth(scene, deepest);
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -186,7 +211,16 @@ std::optional<double> continuum_front_reaching_held(const Scene& scene, const He
   const double e_star = scene.material.effective_modulus;
   const auto excess = [&](double a) {
     // The gluing depth g - l (gluing_depth()), on the limit l that the force needs too.
-    const double limit = advancing_limit(scene.material, held.glued_edge, a);
+    const double limit = front_limit(scene, held.glued_edge, a);
+    if (const auto& graded = scene.graded_image) {
+      // F = C_k (nf_k(a) - a^(1+k) l(a)) on the graded springs.
+      const double ck = scene.material.grading.punch_constant;
+      const double d = graded->image(a) - limit;
+      const double force = ck * (graded->nonadhesive_force_per_constant(a) -
+                                 std::pow(a, 1.0 + graded->grading_exponent()) * limit);
+      return held.constraint.displacement_coefficient * d +
+             held.constraint.force_coefficient * force - held.held;
+    }
     const double d = profile.mdr_image(a) - limit;
     const double force = e_star * (profile.nonadhesive_force_per_modulus(a) - 2.0 * a * limit);
     return held.constraint.displacement_coefficient * d +
@@ -218,7 +252,7 @@ ProgramRowFrame located_frame(const Scene& scene) {
     pilot_radius = radius;
     const ProgramRowSpec pilot{.reference_radius = radius,
                                .reference_springs = kPilotSprings,
-                               .reference_image = scene.profile->mdr_image(radius),
+                               .reference_image = program_image(scene, radius),
                                .max_springs = kPilotSprings * kPilotReach};
     const RunResult r = run_program_row(scene, pilot, {}, &largest);
     const bool outgrew =
@@ -230,14 +264,14 @@ ProgramRowFrame located_frame(const Scene& scene) {
     if (largest.most_springs == 0 || largest.most_springs >= kPilotSprings / 4) break;
     radius *= static_cast<double>(largest.most_springs) / static_cast<double>(kPilotSprings);
   }
-  if (largest.springs == 0) return {radius, scene.profile->mdr_image(radius)};
+  if (largest.springs == 0) return {radius, program_image(scene, radius)};
   const double a_max = front_radius(scene, largest, pilot_radius / kPilotSprings);
   ProgramRowFrame frame = frame_at(scene, a_max, largest.indentation, largest.glued_edge);
   if (!is_fixed_grips(largest.normal_constraint) && !scene.profile->fixed_contact_radius()) {
     const HeldDeepest held{largest.normal_constraint, largest.normal_held, largest.glued_edge};
     if (const auto a =
             continuum_front_reaching_held(scene, held, a_max, pilot_radius / kPilotSprings)) {
-      frame = {*a, scene.profile->mdr_image(*a)};
+      frame = {*a, program_image(scene, *a)};
       frame.held = held;
     }
   }
@@ -245,6 +279,10 @@ ProgramRowFrame located_frame(const Scene& scene) {
 }
 
 }  // namespace
+
+double program_image(const Scene& scene, double x) {
+  return scene.graded_image ? scene.graded_image->image(x) : scene.profile->mdr_image(x);
+}
 
 ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
   double held_force = 0.0;
@@ -254,8 +292,13 @@ ZeroScale program_zero_scale(const Scene& scene, double radius, double image) {
       held_force = std::max(held_force, std::abs(held_after(*stage.normal, 0.0, false)));
     }
   }
-  return zero_scale(scene.material.effective_modulus, radius, image,
-                    scene.material.largest_work_of_adhesion(), held_force);
+  // The graded springs' stiffness at the radius, C_k a^k / 2, stands for E* (as the
+  // shorthand's graded row has it).
+  const double modulus = scene.graded_image
+                             ? 0.5 * scene.material.grading.punch_constant *
+                                   std::pow(radius, scene.graded_image->grading_exponent())
+                             : scene.material.effective_modulus;
+  return zero_scale(modulus, radius, image, scene.material.largest_work_of_adhesion(), held_force);
 }
 
 ProgramRowFrame program_row_frame(const Scene& scene) {
@@ -271,10 +314,11 @@ ProgramRowSpec program_row(const Scene& scene, const ProgramRowFrame& frame, std
   double radius = frame.radius;
   double image = frame.image;
   if (frame.held) {
-    if (const auto a = row_radius_reaching_held(*scene.profile, scene.material, *frame.held,
-                                                springs, frame.radius)) {
+    if (const auto a = row_radius_reaching_held(
+            *scene.profile, scene.material, *frame.held, springs, frame.radius,
+            GradedSprings::of(scene.graded_image, scene.material))) {
       radius = *a;
-      image = scene.profile->mdr_image(radius);
+      image = program_image(scene, radius);
     }
   }
   return {.reference_radius = radius,

@@ -22,6 +22,9 @@ struct ProgramRowFrame {
   std::optional<HeldDeepest> held;
 };
 
+/// g(x) [m] at x [m] on a program's rows: the graded image g_k where the half-space is graded.
+double program_image(const Scene& scene, double x);
+
 /// What is zero on a program's rows spanning `radius` [m] with g = `image` [m] there: the
 /// scene's E*, work of adhesion and largest force a fixed-load stage holds (zero_scale.hpp).
 ZeroScale program_zero_scale(const Scene& scene, double radius, double image);

@@ -70,13 +70,15 @@ void apply_grading(TomlReader& material, const nlohmann::json& resolved, Scene& 
 }
 
 void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& loading,
-                                  const TomlReader& material, const RouteKeys& route_keys,
-                                  const Scene& scene) {
+                                  const TomlReader& material, const Scene& scene) {
   if (!scene.material.grading.graded()) return;
   if (scene.program) {
-    loading.fail_at("stage", std::string("loading programs are not yet carried with "
-                                         "material.grading; use the shorthand") +
-                                 kGradedScope);
+    for (const Stage& stage : scene.program->stages) {
+      if (!stage.tangential) continue;
+      loading.fail_at("stage", fmt::format("stage '{}': a tangential axis is not taken with "
+                                           "material.grading{}",
+                                           printable(stage.name), kGradedScope));
+    }
   }
   if (loading.has("tangential")) {
     loading.fail_at(
@@ -94,6 +96,13 @@ void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& load
                                 kGradedScope);
     }
   }
+  if (scene.material.approach_work_of_adhesion_by_radius &&
+      material.has("approach_work_of_adhesion")) {
+    material.fail_at("approach_work_of_adhesion",
+                     std::string("an approach work of adhesion that varies with the radius is "
+                                 "not yet taken with material.grading") +
+                         kGradedScope);
+  }
   if (scene.material.work_of_adhesion_by_radius) {
     material.fail_at("work_of_adhesion",
                      std::string("a work of adhesion that varies with the radius is not yet "
@@ -105,11 +114,6 @@ void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& load
                  "no detachment criterion applies with material.grading: the boundary spring "
                  "lets go by Hess's rule on the graded springs (docs/graded.md)");
   }
-  if (route_keys.method_given && scene.solver.method == SolverMethod::stepping) {
-    throw SceneError(route_keys.method_at +
-                     "material.grading is not yet carried by the stepping method; use method = "
-                     "\"event\" (the graded spring row) or \"continuum\" (docs/graded.md)");
-  }
 }
 
 void use_graded_route(nlohmann::json& resolved, const RouteKeys& route_keys, Scene& scene) {
@@ -117,8 +121,8 @@ void use_graded_route(nlohmann::json& resolved, const RouteKeys& route_keys, Sce
   // No criterion is asked (Hess's rule on the graded springs): the resolved scene leaves out
   // the default it would refuse given, so that it builds the scene again.
   resolved.erase("detachment");
-  // method = "event" named takes the graded spring row; else the continuum route.
-  if (route_keys.method_given && scene.solver.method == SolverMethod::event) return;
+  // method = "event" or "stepping" named takes the graded spring row; else the continuum route.
+  if (route_keys.method_given && scene.solver.method != SolverMethod::continuum) return;
   scene.solver.method = SolverMethod::continuum;
   nlohmann::json& solver = resolved["solver"];
   if (solver.is_object()) {

@@ -24,16 +24,15 @@ void refuse_grading_without_poisson_ratio(TomlReader& t);
 void apply_grading(TomlReader& material, const nlohmann::json& resolved, Scene& scene);
 
 /// The scene's other tables against a graded half-space with k > 0 (SPEC "Graded media",
-/// "Scope", and what the continuum's graded branch carries so far): a loading program, a
-/// tangential load, [friction], [detachment], adhesive_stress or maugis_parameter, a work of
-/// adhesion that varies with the radius, and the stepping method are refused. A no-op at k = 0.
+/// "Scope", and what the graded branch and rows carry so far): a tangential load or stage,
+/// [friction], [detachment], adhesive_stress or maugis_parameter, and a work of adhesion that
+/// varies with the radius are refused. A no-op at k = 0.
 void refuse_outside_grading_scope(const TomlReader& root, const TomlReader& loading,
-                                  const TomlReader& material, const RouteKeys& route_keys,
-                                  const Scene& scene);
+                                  const TomlReader& material, const Scene& scene);
 
-/// A graded scene runs on the continuum route unless solver.method = "event" is named, which
-/// takes the graded spring row: the scene and its resolved form name the route, and the
-/// resolved form leaves out [detachment].
+/// A graded scene runs on the continuum route unless solver.method = "event" or "stepping" is
+/// named, which takes the graded spring row (the shorthand's or a program's): the scene and its
+/// resolved form name the route, and the resolved form leaves out [detachment].
 void use_graded_route(nlohmann::json& resolved, const RouteKeys& route_keys, Scene& scene);
 
 }  // namespace mdrsim

@@ -59,8 +59,10 @@ std::string engine_reason(const Scene& scene, const RoutePlan& plan, bool method
                "spring row (docs/maugis_row.md)";
       }
       if (scene.material.grading.graded()) {
-        return "material.grading with solver.method = \"event\": the graded spring row "
-               "(docs/graded.md)";
+        return fmt::format(
+            "material.grading with solver.method = \"{}\": the graded spring row "
+            "(docs/graded.md)",
+            to_string(scene.solver.method));
       }
       break;
   }

@@ -527,7 +527,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
   refuse_outside_dugdale_scope(root, loading, route_keys, scene);
   if (scene.material.finite_range()) use_dugdale_route(*resolved, scene, route_keys);
-  refuse_outside_grading_scope(root, loading, material, route_keys, scene);
+  refuse_outside_grading_scope(root, loading, material, scene);
   use_graded_route(*resolved, route_keys, scene);
   read_discretization(root, route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);

@@ -147,19 +147,14 @@ TEST(GradingReader, RefusesOneLineAtTheKey) {
        "\"fixed-load\" }\n",
        "g.toml:5:11: material.grading: profile.type = \"sphere\" has no graded image yet (known: "
        "parabolic, cone, power_law, flat_punch) (docs/graded.md \"What it refuses\")"},
-      {"SteppingMethod",
+      {"TangentialStage",
        "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\ngrading "
        "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"parabolic\"\nradius = "
-       "0.01\n[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = "
-       "\"fixed-load\" }\n[solver]\nmethod = \"stepping\"",
-       "g.toml:14:10: solver.method: material.grading is not yet carried by the stepping method; "
-       "use method = \"event\" (the graded spring row) or \"continuum\" (docs/graded.md)"},
-      {"Program",
-       "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\ngrading "
-       "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"parabolic\"\nradius = "
-       "0.01\n[loading]\n[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 1e-5 }\n",
-       "g.toml:11:1: loading.stage: loading programs are not yet carried with material.grading; "
-       "use the shorthand (docs/graded.md \"What it refuses\")"},
+       "0.01\n[loading]\n[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 1e-5 }\n"
+       "[[loading.stage]]\nname = \"shear\"\ntangential = { control = \"fixed-grips\", by = 1e-6 "
+       "}\n",
+       "g.toml:11:1: loading.stage: stage 'shear': a tangential axis is not taken with "
+       "material.grading (docs/graded.md \"What it refuses\")"},
       {"Springs",
        "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = "
        "0.05\ngrading = { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = "
