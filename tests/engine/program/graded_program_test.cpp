@@ -164,6 +164,32 @@ TEST(GradedProgram, ReversibleCycleOnTheProgramRow) {
   }
 }
 
+TEST(GradedProgram, FixedLoadCycleOnBothRoutes) {
+  // Press to 0.5 N and pull until separation under a fixed load, reversible adhesion: the
+  // contact is lost at -(3 + k) pi dgamma R / 2, on the continuum route to 1e-8 (rtol 1e-10)
+  // and on the row (framed where its own front reaches the held force) within its estimate;
+  // the row's work within its estimate of the route's.
+  const double k = 0.5;
+  const std::string program =
+      material(k, kDgamma) +
+      "[loading]\n[[loading.stage]]\nname = \"press\"\nnormal = { control = \"fixed-load\", to "
+      "= 0.5 }\n[[loading.stage]]\nname = \"pull\"\nnormal = { control = \"fixed-load\", by = "
+      "-1.0 }\nuntil = \"separation\"\n";
+  const double f = -(3.0 + k) * kPi * kDgamma * kRadius / 2.0;
+  const RunResult route = run(program);
+  ASSERT_TRUE(route.critical);
+  EXPECT_NEAR(route.critical->normal_force / f, 1.0, 1e-8);
+  const RunResult row =
+      run(program + "[solver]\nmethod = \"event\"\n[discretization]\nrtol = 1e-6\n");
+  ASSERT_TRUE(row.critical && row.accuracy.critical_error_estimate);
+  EXPECT_LE(std::abs(row.critical->normal_force - f), *row.accuracy.critical_error_estimate);
+  ASSERT_EQ(row.stages.size(), 2u);
+  EXPECT_NEAR(row.stages[0].end.contact_radius / route.stages[0].end.contact_radius, 1.0, 1e-8);
+  ASSERT_TRUE(row.work && route.work && row.accuracy.work_error_estimate);
+  EXPECT_LE(std::abs(row.work->normal - route.work->normal),
+            row.accuracy.work_error_estimate->normal);
+}
+
 TEST(GradedProgram, ShorthandWrittenAsAProgramOnTheContinuumRoute) {
   // Press (gluing on touch) to 2 mm's depth and pull off under fixed grips, as the shorthand's
   // stages; the same numbers to the routes' rtol 1e-10 (1e-9: two root searches apart).
