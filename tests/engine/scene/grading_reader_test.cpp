@@ -155,6 +155,14 @@ TEST(GradingReader, RefusesOneLineAtTheKey) {
        "}\n",
        "g.toml:11:1: loading.stage: stage 'shear': a tangential axis is not taken with "
        "material.grading (docs/graded.md \"What it refuses\")"},
+      {"ApproachByRadius",
+       "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\n"
+       "approach_work_of_adhesion = { mean = 0.03, amplitude = 0.01, wavelength = 1e-4 }\ngrading "
+       "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"parabolic\"\nradius = "
+       "0.01\n[loading]\n[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 1e-5 }\n",
+       "g.toml:5:29: material.approach_work_of_adhesion: an approach work of adhesion that varies "
+       "with the radius is not yet taken with material.grading (docs/graded.md \"What it "
+       "refuses\")"},
       {"Springs",
        "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = "
        "0.05\ngrading = { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = "
