@@ -25,6 +25,16 @@ RootBracket bracket_root(Fn fn, double lo, double hi,
   return {r.first, r.second, static_cast<int>(iterations)};
 }
 
+/// The same from fn's values at the ends, known already (a scan's samples): two calls fewer.
+template <class Fn>
+RootBracket bracket_root(Fn fn, double lo, double hi, double fn_lo, double fn_hi,
+                         int digits = std::numeric_limits<double>::digits - 1) {
+  std::uintmax_t iterations = 300;
+  const auto r = boost::math::tools::toms748_solve(
+      fn, lo, hi, fn_lo, fn_hi, boost::math::tools::eps_tolerance<double>(digits), iterations);
+  return {r.first, r.second, static_cast<int>(iterations)};
+}
+
 /// The midpoint of bracket_root's final bracket, at full precision.
 template <class Fn>
 double bracketed_root(Fn fn, double lo, double hi) {

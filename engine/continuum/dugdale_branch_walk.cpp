@@ -21,22 +21,39 @@ double DugdaleBranchWalk::guess(double a) const {
 }
 
 DugdaleState DugdaleBranchWalk::at(double contact_radius) {
-  if (solved_ > 0 && contact_radius == last_.contact_radius) return last_;
+  if (solved_ > 0 && last_converged_ && contact_radius == last_.contact_radius) return last_;
   last_ = dugdale_contact_state(profile_, law_, contact_radius, guess(contact_radius));
+  last_converged_ = true;
   chords_.add(contact_radius, last_.cohesive_radius * std::sin(last_.angle));
   ++solved_;
   return last_;
 }
 
-DugdaleSlopes DugdaleBranchWalk::slopes_at(double contact_radius) {
-  const DugdaleState state = at(contact_radius);
-  const DugdaleSlopes slopes = dugdale_contact_slopes(profile_, law_, state);
+void DugdaleBranchWalk::add_sloped(double contact_radius, const DugdaleState& state,
+                                   double chord_slope) {
   if (!(sloped_known_ > 0 && sloped_[0].radius == contact_radius)) {
     sloped_[1] = sloped_[0];
     sloped_known_ = sloped_known_ > 0 ? 2 : 1;
   }
-  sloped_[0] = {contact_radius, state.cohesive_radius * std::sin(state.angle), slopes.half_chord};
+  sloped_[0] = {contact_radius, state.cohesive_radius * std::sin(state.angle), chord_slope};
+}
+
+DugdaleSlopes DugdaleBranchWalk::slopes_at(double contact_radius) {
+  const DugdaleState state = at(contact_radius);
+  const DugdaleSlopes slopes = dugdale_contact_slopes(profile_, law_, state);
+  add_sloped(contact_radius, state, slopes.half_chord);
   return slopes;
+}
+
+DugdaleSlopedState DugdaleBranchWalk::sloped_at(double contact_radius, const SlopedEnough& enough) {
+  const DugdaleSlopedState sloped =
+      dugdale_sloped_contact_state(profile_, law_, contact_radius, guess(contact_radius), enough);
+  last_ = sloped.state;
+  last_converged_ = !enough;
+  chords_.add(contact_radius, last_.cohesive_radius * std::sin(last_.angle));
+  ++solved_;
+  if (std::isfinite(sloped.offset)) add_sloped(contact_radius, last_, sloped.slopes.half_chord);
+  return sloped;
 }
 
 }  // namespace mdrsim

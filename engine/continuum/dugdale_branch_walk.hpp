@@ -19,6 +19,11 @@ class DugdaleBranchWalk {
   DugdaleState at(double contact_radius);
   /// The state at `contact_radius` and its slopes dd/da, dF/da (and ds/da, which the walk keeps).
   DugdaleSlopes slopes_at(double contact_radius);
+  /// The state at `contact_radius` with the slopes at its solve's last iterate
+  /// (dugdale_sloped_contact_state): one gap integral fewer than slopes_at, for a scan that reads
+  /// their signs or a root search whose guesses have come to lie at its roots.
+  /// `enough`: as dugdale_sloped_contact_state's (a scan's sign read, a step short of the root).
+  DugdaleSlopedState sloped_at(double contact_radius, const SlopedEnough& enough = {});
   const DugdaleState& last() const { return last_; }
 
  private:
@@ -27,6 +32,8 @@ class DugdaleBranchWalk {
     double radius, half_chord, slope;
   };
   double guess(double contact_radius) const;
+  /// Keeps a solved zone and its slope ds/da as the newest node of the Hermite guess.
+  void add_sloped(double contact_radius, const DugdaleState& state, double chord_slope);
 
   const Profile& profile_;
   DugdaleLaw law_;
@@ -34,6 +41,7 @@ class DugdaleBranchWalk {
   Sloped sloped_[2]{};     ///< the last two zones with slopes, the newest first
   int sloped_known_ = 0;
   DugdaleState last_;
+  bool last_converged_ = false;  ///< last_ solved to the root (not a scan's step short of it)
   int solved_ = 0;
 };
 

@@ -97,7 +97,8 @@ double held_opening_excess(const Profile& profile, const DugdaleLaw& law, double
 /// given radius (dugdale_contact_state) rounds to eps / cos(t) of itself, and the difference
 /// quotients of d with it.
 DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& law, double t,
-                                    double guess) {
+                                    double guess, DugdaleSlopedState* sloped = nullptr,
+                                    const SlopedEnough& enough = {}) {
   const double cos_t = std::cos(t), tan_t = std::tan(t);
   const double half = std::sin(0.5 * t);
   const double stretch_per_radius = t * tan_t - 2.0 * half * half / cos_t;
@@ -118,9 +119,30 @@ DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& la
     const double slope = gap.angle_slope / (a * tan_t) - profile.mdr_image_slope(a) * t +
                          law.zone_strain() * stretch_per_radius;
     double next = a - excess * (kPi / 2.0) / slope;
+    if (enough && next > lo && next < hi) {  // a caller content with this iterate's slopes
+      // The zone alone (a, c, t) for `enough`; d and F once it is content.
+      DugdaleSlopedState here{
+          .state = {.contact_radius = next, .cohesive_radius = next / cos_t, .angle = t},
+          .slopes =
+              dugdale_slopes_at_zone(profile, law, a, a * tan_t, a / cos_t, t,
+                                     {.integral = gap.integral, .angle_slope = gap.angle_slope}),
+          .offset = std::abs(next - a) * tan_t};
+      if (enough(here)) {
+        here.state =
+            dugdale_contact_state_of_zone(profile, law, next, next * tan_t, next / cos_t, t);
+        *sloped = here;
+        return here.state;
+      }
+    }
     // Quadratic convergence: the step left is about (a E''/2E') 1e-18 a; a step onto the
     // bracket's end from a start at the root is converged too.
     if (std::abs(next - a) <= 1e-9 * a && next >= lo && next <= hi) {
+      if (sloped != nullptr) {  // the slopes at this iterate, its half-chord a tan(t)
+        sloped->slopes =
+            dugdale_slopes_at_zone(profile, law, a, a * tan_t, a / cos_t, t,
+                                   {.integral = gap.integral, .angle_slope = gap.angle_slope});
+        sloped->offset = std::abs(next - a) * tan_t;
+      }
       a = next;
       break;
     }
@@ -128,7 +150,10 @@ DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& la
     a = next;
     if (std::isfinite(hi) && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
   }
-  return dugdale_contact_state_of_zone(profile, law, a, a * tan_t, a / cos_t, t);
+  const DugdaleState state =
+      dugdale_contact_state_of_zone(profile, law, a, a * tan_t, a / cos_t, t);
+  if (sloped != nullptr) sloped->state = state;
+  return state;
 }
 
 /// a_p >= a_g where the contact branch's depth is d_p (a_g where d_p is not above d(a_g)).
@@ -277,6 +302,25 @@ DugdaleState DugdalePath::walk_to(double s, ContinuedGuess& walk) const {
   return st;
 }
 
+DugdaleSlopedState DugdalePath::sloped_walk_to(double s, ContinuedGuess& walk,
+                                               const SlopedEnough& enough) const {
+  DugdaleSlopedState sloped;
+  sloped.offset = std::numeric_limits<double>::infinity();
+  const double u = 3.0 - s;
+  const double gap = (0.5 * kPi - angle_state_.angle) * u * u;
+  if (phase_of(s) != 2 || s == 2.0 || !(gap > 1e-12)) {
+    sloped.state = walk_to(s, walk);
+    return sloped;
+  }
+  const double guess = walk.at(0.5 * kPi - gap);
+  contact_state_at_angle(
+      profile_, law_, 0.5 * kPi - gap,
+      guess > 0.0 ? guess : std::min(angle_state_.contact_radius, closing_radius_ * std::sin(gap)),
+      &sloped, enough);
+  walk.add(sloped.state.angle, sloped.state.contact_radius);
+  return sloped;
+}
+
 std::vector<DugdaleState> DugdalePath::states(std::span<const double> places) const {
   std::vector<DugdaleState> out;
   out.reserve(places.size());
@@ -386,14 +430,11 @@ double s_of_radius(const DugdalePath& path, double a) {
   return 2.0 - std::sqrt(std::clamp((a - a_t) / (a_g - a_t), 0.0, 1.0));
 }
 
-/// The error of F at a fold located as a root of dv/da between the radii lo and hi: the slope
-/// is good to about eps (1 + g'(a)/((2 sigma_0/E*) t)) of its terms (dugdale_contact_slopes),
-/// which moves its root by that over dv/da's rate (`slope_rate`, over the scan's bracket); F
-/// moves by dF/da times that and the root's bracket.
-double contact_fold_force_error(const Profile& profile, const DugdaleLaw& law,
-                                const AffineConstraint& control, const DugdaleState& state,
-                                double bracket, double slope_rate) {
-  const DugdaleSlopes slopes = dugdale_contact_slopes(profile, law, state);
+/// The size of dv/da's terms at a state, times the cancellation's gain: dugdale_contact_slopes is
+/// good to about eps times this, and slopes read at a Newton iterate (dugdale_sloped_contact_state)
+/// to about the iterate's offset over the half-chord times this.
+double slope_terms(const Profile& profile, const DugdaleLaw& law, const AffineConstraint& control,
+                   const DugdaleState& state, const DugdaleSlopes& slopes) {
   const double a = state.contact_radius, t = state.angle;
   const double s = state.cohesive_radius * std::sin(t);
   const double z = law.zone_strain();
@@ -404,10 +445,46 @@ double contact_fold_force_error(const Profile& profile, const DugdaleLaw& law,
       std::abs(control.force_coefficient) *
           (2.0 * law.effective_modulus * a * image_slope +
            4.0 * law.adhesive_stress * (a * t + (a + s * t) * chord_slope));
+  return (1.0 + image_slope / (z * t)) * terms;
+}
+
+/// The error of F at a fold located as a root of dv/da between the radii lo and hi: the slope
+/// is good to about eps (1 + g'(a)/((2 sigma_0/E*) t)) of its terms (dugdale_contact_slopes),
+/// which moves its root by that over dv/da's rate (`slope_rate`, over the scan's bracket); F
+/// moves by dF/da (`slopes`, the state's or the search's last) times that and the root's bracket.
+double contact_fold_force_error(const Profile& profile, const DugdaleLaw& law,
+                                const AffineConstraint& control, const DugdaleState& state,
+                                const DugdaleSlopes& slopes, double bracket, double slope_rate) {
   const double eps = std::numeric_limits<double>::epsilon();
-  const double noise = 16.0 * eps * (1.0 + image_slope / (z * t)) * terms;
+  const double noise = 16.0 * eps * slope_terms(profile, law, control, state, slopes);
   const double place = bracket + (slope_rate > 0.0 ? noise / slope_rate : 0.0);
   return std::abs(slopes.normal_force) * place + 4.0 * eps * std::abs(state.normal_force);
+}
+
+/// A slope read at a solve's last iterate: a scan trusts its sign where it stands this many times
+/// its error (the offset's share of its terms) from zero, else reads the state's own slopes.
+constexpr double kSlopeDoubt = 64.0;
+/// A root search takes the slopes at an iterate this close to the root (over the half-chord):
+/// there they are the state's to about the rounding the fold's error already counts (16 eps of
+/// the terms), as they are once its guesses lie at its roots (a Newton step from the root itself
+/// is a few ulps of the excess over its slope).
+constexpr double kRootOffset = 32.0 * std::numeric_limits<double>::epsilon();
+
+/// dv/da from a solve's last iterate where `sloped` is close enough for `trust`, else nullopt.
+std::optional<double> read_slope(const Profile& profile, const DugdaleLaw& law,
+                                 const AffineConstraint& control, const DugdaleSlopedState& sloped,
+                                 bool sign_only) {
+  if (!std::isfinite(sloped.offset)) return std::nullopt;
+  const DugdaleState& st = sloped.state;
+  const double chord = st.cohesive_radius * std::sin(st.angle);
+  const double value = control_slope(control, sloped.slopes);
+  if (sloped.offset <= kRootOffset * chord) return value;
+  if (!sign_only) return std::nullopt;
+  const double doubt = kSlopeDoubt *
+                       (sloped.offset / chord + std::numeric_limits<double>::epsilon()) *
+                       slope_terms(profile, law, control, st, sloped.slopes);
+  if (std::abs(value) > doubt) return value;
+  return std::nullopt;
 }
 
 /// The first fold on the contact branch from a_p down to the closing point (s in [0, 3)).
@@ -417,11 +494,26 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
   const DugdaleLaw& law = path.law();
   const double eps = std::numeric_limits<double>::epsilon();
   DugdaleBranchWalk walk(profile, law);
-  const auto slope_at_radius = [&](double a) { return control_slope(control, walk.slopes_at(a)); };
+  // dv/da at a radius: from the solve's last iterate where that is close enough (a scan's sign,
+  // a root search's value), else from the state's own slopes (one gap integral more).
+  DugdaleSlopes last_slopes;
+  const auto sign_read = [&](const DugdaleSlopedState& sloped) {
+    return read_slope(profile, law, control, sloped, true).has_value();
+  };
+  const auto slope_at_radius = [&](double a, bool sign_only) {
+    const DugdaleSlopedState sloped = sign_only ? walk.sloped_at(a, sign_read) : walk.sloped_at(a);
+    if (const auto value = read_slope(profile, law, control, sloped, sign_only)) {
+      last_slopes = sloped.slopes;
+      return *value;
+    }
+    last_slopes = dugdale_contact_slopes(profile, law, sloped.state);
+    return control_slope(control, last_slopes);
+  };
+  const auto root_slope_at_radius = [&](double a) { return slope_at_radius(a, false); };
   const std::vector<BranchSample> samples = branch_samples(path);
   double above = 0.0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
-    const double here = slope_at_radius(samples[k].radius);
+    const double here = slope_at_radius(samples[k].radius, true);
     if (here > 0.0) {
       above = here;
       continue;
@@ -432,19 +524,28 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
       return fold;
     }
     const double lo = samples[k].radius, hi = samples[k - 1].radius;
-    const RootBracket root = bracket_root(slope_at_radius, lo, hi);
+    const RootBracket root = bracket_root(root_slope_at_radius, lo, hi, here, above);
     const double a = 0.5 * (root.lo + root.hi);
+    const DugdaleSlopes search_slopes = last_slopes;
     DugdaleFold fold{.s = s_of_radius(path, a), .state = walk.at(a), .force_error = 0.0};
-    fold.force_error = contact_fold_force_error(profile, law, control, fold.state,
+    fold.force_error = contact_fold_force_error(profile, law, control, fold.state, search_slopes,
                                                 root.hi - root.lo, (above - here) / (hi - lo));
     return fold;
   }
   // On in the zone's angle, s from 2 (a_t) towards the closing point.
   ContinuedGuess angle_walk;  // the scan's and the root search's zones, in the angle
-  const auto slope_at_s = [&](double s) {
-    return control_slope(control,
-                         dugdale_contact_slopes(profile, law, path.walk_to(s, angle_walk)));
+  const auto slope_at_s = [&](double s, bool sign_only, DugdaleState* state) {
+    const DugdaleSlopedState sloped = sign_only ? path.sloped_walk_to(s, angle_walk, sign_read)
+                                                : path.sloped_walk_to(s, angle_walk);
+    if (state != nullptr) *state = sloped.state;
+    if (const auto value = read_slope(profile, law, control, sloped, sign_only)) {
+      last_slopes = sloped.slopes;
+      return *value;
+    }
+    last_slopes = dugdale_contact_slopes(profile, law, sloped.state);
+    return control_slope(control, last_slopes);
   };
+  const auto root_slope_at_s = [&](double s) { return slope_at_s(s, false, nullptr); };
   double s_above = 2.0;
   double a_above = path.angle_state().contact_radius;
   std::vector<double> gaps;
@@ -452,22 +553,23 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
   for (int k = 1; k <= kFoldAngleHalvings; ++k) gaps.push_back(std::ldexp(gaps.back(), -1));
   for (const double gap : gaps) {
     const double s = DugdalePath::kClosing - gap;
-    const DugdaleState state = path.walk_to(s, angle_walk);
-    const double here = control_slope(control, dugdale_contact_slopes(profile, law, state));
+    DugdaleState state;
+    const double here = slope_at_s(s, true, &state);
     if (here > 0.0) {
       above = here;
       s_above = s;
       a_above = state.contact_radius;
       continue;
     }
-    const RootBracket root = bracket_root(slope_at_s, s_above, s);
+    const RootBracket root = bracket_root(root_slope_at_s, s_above, s, above, here);
     const double at = 0.5 * (root.lo + root.hi);
+    const DugdaleSlopes search_slopes = last_slopes;
     DugdaleFold fold{.s = at, .state = path.walk_to(at, angle_walk), .force_error = 0.0};
-    const double bracket = std::abs(path.walk_to(root.lo, angle_walk).contact_radius -
-                                    path.walk_to(root.hi, angle_walk).contact_radius);
-    fold.force_error =
-        contact_fold_force_error(profile, law, control, fold.state, bracket,
-                                 (above - here) / std::abs(a_above - state.contact_radius));
+    // The root's bracket in the radius: its width in s at the scan's da/ds there.
+    const double radius_rate = std::abs(a_above - state.contact_radius) / (s - s_above);
+    fold.force_error = contact_fold_force_error(
+        profile, law, control, fold.state, search_slopes, radius_rate * (root.hi - root.lo),
+        (above - here) / std::abs(a_above - state.contact_radius));
     return fold;
   }
   return std::nullopt;

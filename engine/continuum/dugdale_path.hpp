@@ -41,6 +41,12 @@ class DugdalePath {
   /// through nearby places of one phase (a scan, a root search) costs one or two Newton steps
   /// a place. Keep one walk per phase (its variable is the radius in [0, 2), the angle in [2, 3)).
   DugdaleState walk_to(double s, ContinuedGuess& walk) const;
+  /// walk_to in the zone's angle (s in (2, 3)) with the slopes at its solve's last iterate
+  /// (dugdale_sloped_contact_state): one gap integral fewer than the state and its slopes.
+  /// Elsewhere walk_to's state with no slopes (an infinite offset). `enough`: as
+  /// dugdale_sloped_contact_state's (a scan's sign read, a step short of the root).
+  DugdaleSlopedState sloped_walk_to(double s, ContinuedGuess& walk,
+                                    const SlopedEnough& enough = {}) const;
   /// d'(s) [m]: a fourth-order central difference on s's own phase, its formula continued.
   double depth_slope(double s) const;
 

@@ -29,15 +29,20 @@ struct Opening {
   double slope;
 };
 
-Opening opening(const Profile& profile, const DugdaleLaw& law, double a, double s) {
-  const auto [t, c] = zone_at(a, s);
+/// The opening at the zone (t, c) of half-chord s from its gap integral.
+Opening opening_of(const DugdaleLaw& law, double a, double s, double t, double c,
+                   const DugdaleGap& gap) {
   // s t - (c - a) with c - a = s^2/(c + a); d/ds with dt/ds = a/c^2 and dc/ds = s/c.
   const double stretch = s * t - s * s / (c + a);
   const double stretch_slope = t - s * s * s / (c * c * (c + a));
-  const DugdaleGap gap = profile.dugdale_gap(a, c, t);
   const double z = law.zone_strain();
   return {.excess = (2.0 / kPi) * (gap.integral + z * stretch) - law.range(),
           .slope = (2.0 / kPi) * (gap.angle_slope * a / (c * c) + z * stretch_slope)};
+}
+
+Opening opening(const Profile& profile, const DugdaleLaw& law, double a, double s) {
+  const auto [t, c] = zone_at(a, s);
+  return opening_of(law, a, s, t, c, profile.dugdale_gap(a, c, t));
 }
 
 /// A first half-chord from the opening's leading terms at small t, (2/pi)(g'(a) a t^3/3 +
@@ -61,9 +66,32 @@ double first_half_chord(const Profile& profile, const DugdaleLaw& law, double a)
   return std::max(a * std::tan(1.0), h0 / (z * (1.0 - 2.0 / kPi)));
 }
 
-/// The contact branch at a [m] by Newton's steps from the half-chord `first` [m].
+}  // namespace
+
+DugdaleSlopes dugdale_slopes_at_zone(const Profile& profile, const DugdaleLaw& law, double a,
+                                     double s, double c, double t, const DugdaleGap& gap) {
+  const double z = law.zone_strain(), image_slope = profile.mdr_image_slope(a);
+  // At fixed s: dc/da = a/c, dt/da = -s/c^2; dJ/da = -g'(a) t (the lower limit, at fixed c)
+  // + (dJ/dt)/(dc/dt) a/c with dc/dt = c tan t = c s/a; d(s t - (c - a))/da = -a (c - a)/c^2.
+  const double opening_a = -image_slope * t + gap.angle_slope * a * a / (c * c * s) -
+                           z * a * (s * s / (c + a)) / (c * c);
+  const double opening_s = gap.angle_slope * a / (c * c) + z * (t - s * s * s / (c * c * (c + a)));
+  const double chord_slope = -opening_a / opening_s;  // ds/da (the factor 2/pi cancels)
+  // F = E* nf(a) - 2 sigma_0 (a s + c^2 t): dF/da at fixed s = 2 E* a g'(a) - 4 sigma_0 a t,
+  // dF/ds = -4 sigma_0 (a + s t); d = g(a) - (2 sigma_0/E*) s.
+  return {.indentation = image_slope - z * chord_slope,
+          .normal_force = 2.0 * law.effective_modulus * a * image_slope -
+                          4.0 * law.adhesive_stress * (a * t + (a + s * t) * chord_slope),
+          .half_chord = chord_slope};
+}
+
+namespace {
+
+/// The contact branch at a [m] by Newton's steps from the half-chord `first` [m]; `sloped`, where
+/// given, gains the slopes at the last iterate's zone, whose gap integral the steps have read.
 DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, double a,
-                                double first) {
+                                double first, DugdaleSlopedState* sloped = nullptr,
+                                const SlopedEnough& enough = {}) {
   // Newton in the half-chord s, which follows the zone on both sides: s = a tan t where it is
   // thin (t, and so s, to full precision) and s -> c where it is wide, where t -> pi/2 and the
   // opening's slope in t grows like sec^2 t. The steps are kept inside a bracket [lo, hi] of
@@ -82,7 +110,9 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
   bool hi_known = false;
   double s = std::min(first, 0.5 * widest);
   for (int iteration = 0; iteration < 200; ++iteration) {
-    const Opening o = opening(profile, law, a, s);
+    const auto [t, c] = zone_at(a, s);
+    const DugdaleGap gap = profile.dugdale_gap(a, c, t);
+    const Opening o = opening_of(law, a, s, t, c, gap);
     if (o.excess < 0.0) {
       lo = s;
     } else {
@@ -90,10 +120,27 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
       hi_known = true;
     }
     double next = s - o.excess / o.slope;
+    if (enough && next > lo && next < hi) {  // a caller content with this iterate's slopes
+      // The zone alone (a, c, t) for `enough`; d and F once it is content.
+      const auto [t_next, c_next] = zone_at(a, next);
+      DugdaleSlopedState here{
+          .state = {.contact_radius = a, .cohesive_radius = c_next, .angle = t_next},
+          .slopes = dugdale_slopes_at_zone(profile, law, a, s, c, t, gap),
+          .offset = std::abs(next - s)};
+      if (enough(here)) {
+        here.state = dugdale_contact_state_of_zone(profile, law, a, next, c_next, t_next);
+        *sloped = here;
+        return here.state;
+      }
+    }
     // Quadratic convergence: the step left is about (s O''/2O') 1e-18 s. A step onto the
     // bracket's end from a start at the root (a walk's exact guess, whose excess rounds to zero)
     // is converged too, not a step to bisect.
     if (std::abs(next - s) <= 1e-9 * s && next >= lo && next <= hi) {
+      if (sloped != nullptr) {
+        sloped->slopes = dugdale_slopes_at_zone(profile, law, a, s, c, t, gap);
+        sloped->offset = std::abs(next - s);
+      }
       s = next;
       break;
     }
@@ -110,7 +157,9 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
     if (hi_known && hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) break;
   }
   const auto [t, c] = zone_at(a, s);
-  return dugdale_contact_state_of_zone(profile, law, a, s, c, t);
+  const DugdaleState state = dugdale_contact_state_of_zone(profile, law, a, s, c, t);
+  if (sloped != nullptr) sloped->state = state;
+  return state;
 }
 
 }  // namespace
@@ -179,20 +228,19 @@ DugdaleSlopes dugdale_contact_slopes(const Profile& profile, const DugdaleLaw& l
                                      const DugdaleState& state) {
   const double a = state.contact_radius, c = state.cohesive_radius, t = state.angle;
   const double s = c * std::sin(t);
-  const double z = law.zone_strain(), image_slope = profile.mdr_image_slope(a);
-  const DugdaleGap gap = profile.dugdale_gap(a, c, t);
-  // At fixed s: dc/da = a/c, dt/da = -s/c^2; dJ/da = -g'(a) t (the lower limit, at fixed c)
-  // + (dJ/dt)/(dc/dt) a/c with dc/dt = c tan t = c s/a; d(s t - (c - a))/da = -a (c - a)/c^2.
-  const double opening_a = -image_slope * t + gap.angle_slope * a * a / (c * c * s) -
-                           z * a * (s * s / (c + a)) / (c * c);
-  const double opening_s = gap.angle_slope * a / (c * c) + z * (t - s * s * s / (c * c * (c + a)));
-  const double chord_slope = -opening_a / opening_s;  // ds/da (the factor 2/pi cancels)
-  // F = E* nf(a) - 2 sigma_0 (a s + c^2 t): dF/da at fixed s = 2 E* a g'(a) - 4 sigma_0 a t,
-  // dF/ds = -4 sigma_0 (a + s t); d = g(a) - (2 sigma_0/E*) s.
-  return {.indentation = image_slope - z * chord_slope,
-          .normal_force = 2.0 * law.effective_modulus * a * image_slope -
-                          4.0 * law.adhesive_stress * (a * t + (a + s * t) * chord_slope),
-          .half_chord = chord_slope};
+  return dugdale_slopes_at_zone(profile, law, a, s, c, t, profile.dugdale_gap(a, c, t));
+}
+
+DugdaleSlopedState dugdale_sloped_contact_state(const Profile& profile, const DugdaleLaw& law,
+                                                double a, double half_chord_guess,
+                                                const SlopedEnough& enough) {
+  const double first = half_chord_guess > 0.0 && std::isfinite(half_chord_guess)
+                           ? half_chord_guess
+                           : first_half_chord(profile, law, a);
+  DugdaleSlopedState sloped;
+  sloped.offset = std::numeric_limits<double>::infinity();
+  contact_state_from(profile, law, a, first, &sloped, enough);
+  return sloped;
 }
 
 DugdaleState dugdale_free_state(const Profile& profile, const DugdaleLaw& law, double c) {

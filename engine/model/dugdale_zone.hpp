@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -63,6 +64,35 @@ struct DugdaleSlopes {
 /// the zone is thin: relative accuracy about eps g'(a)/((2 sigma_0/E*) t) there.
 DugdaleSlopes dugdale_contact_slopes(const Profile& profile, const DugdaleLaw& law,
                                      const DugdaleState& state);
+
+/// The same slopes at the zone (a, s, c, t) [m, m, m, rad] from its gap integral `gap` there: those
+/// of dugdale_contact_slopes at a solved zone, off by about the distance to it at a Newton
+/// iterate next to the root (no gap integral of their own).
+DugdaleSlopes dugdale_slopes_at_zone(const Profile& profile, const DugdaleLaw& law, double a,
+                                     double s, double c, double t, const DugdaleGap& gap);
+
+/// A contact state with the slopes its solve read on the way: those at the last Newton iterate,
+/// whose gap integral the steps have already taken, `offset` [m] of the half-chord away from the
+/// state's (the last step, about the iterate's distance from the root: a rounding-sized offset
+/// where the guess was the root). Infinite where the solve ended by bisection (no slopes).
+struct DugdaleSlopedState {
+  DugdaleState state;
+  DugdaleSlopes slopes;
+  double offset = 0.0;
+};
+
+/// Whether a caller is content with a solve's iterate: its slopes and the zone (a, c, t) one
+/// Newton step on, whose d and F it is not shown (a scan that reads only a slope's sign stops
+/// there, a Newton step short of the root, and gains that state).
+using SlopedEnough = std::function<bool(const DugdaleSlopedState&)>;
+
+/// dugdale_contact_state from a half-chord guess (none: <= 0) with the slopes at its last iterate:
+/// one gap integral fewer than the state and dugdale_contact_slopes, at slopes off by about
+/// `offset` over the half-chord of their terms. Where `enough` is given and content with an
+/// iterate, the solve stops there: its state one Newton step on, not converged.
+DugdaleSlopedState dugdale_sloped_contact_state(const Profile& profile, const DugdaleLaw& law,
+                                                double a, double half_chord_guess,
+                                                const SlopedEnough& enough = {});
 
 /// A walk's guess of its next solve: the cubic through the last four (x, y) it added (Neville's
 /// scheme), the line through two, the one value of one; none (0) before. Within the curve's

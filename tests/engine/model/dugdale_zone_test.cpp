@@ -9,9 +9,12 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "engine/reference/maugis_reference.hpp"
@@ -272,6 +275,61 @@ TEST(DugdaleZone, AStateFromItsOwnRootTakesOneGapIntegral) {
       EXPECT_NEAR(third.cohesive_radius, alone.cohesive_radius, 1e-15 * alone.cohesive_radius);
     }
   }
+}
+
+// The slopes a solve reads at its last iterate (dugdale_sloped_contact_state) are the state's
+// own slopes where that iterate is the root (a solve from its own half-chord: one gap integral,
+// offset within 32 eps of the half-chord, slopes equal to dugdale_contact_slopes to 1e-12 of their
+// terms times the cancellation's gain 1 + g'/((2 sigma_0/E*) t)). Where the premise fails, an
+// iterate 1e-3 of the half-chord from the root (a guess that far off, taken as it stands), the
+// offset says so: it is 1e-3 of the half-chord, the slopes differ from the state's by more than
+// 1e-9 of their terms (not the state's to the route's 1e-10: a root search refuses them) and by
+// less than 64 times the offset's share of them times the gain (the margin a scan reading their
+// sign keeps; the worst seen is 1.4).
+TEST(DugdaleZone, SlopesAtTheLastIterateAreTheStatesToItsOffset) {
+  const ParabolicProfile parabola(0.01);
+  const SphereProfile sphere(0.01);
+  const PowerLawProfile power(3e3, 2.5);
+  const ConeProfile cone(5.0);
+  double worst = 0.0;
+  for (const Profile* inner :
+       {static_cast<const Profile*>(&parabola), static_cast<const Profile*>(&sphere),
+        static_cast<const Profile*>(&power), static_cast<const Profile*>(&cone)}) {
+    const CountingProfile profile(*inner);
+    for (const double stress : {1e8, 1.5e4, 1e3}) {
+      const DugdaleLaw law{
+          .adhesive_stress = stress, .work_of_adhesion = 0.05, .effective_modulus = 1e6};
+      const double z = law.zone_strain();
+      for (const double a : {2e-5, 1e-4, 5e-4}) {
+        SCOPED_TRACE(testing::Message() << "sigma_0 " << stress << " a " << a);
+        const DugdaleState state = dugdale_contact_state(profile, law, a);
+        const DugdaleSlopes exact = dugdale_contact_slopes(profile, law, state);
+        const double chord = state.cohesive_radius * std::sin(state.angle);
+        const double image_slope = profile.mdr_image_slope(a);
+        const double terms = (1.0 + image_slope / (z * state.angle)) *
+                             (image_slope + z * std::abs(exact.half_chord));
+        profile.gaps = 0;
+        const DugdaleSlopedState at_root = dugdale_sloped_contact_state(profile, law, a, chord);
+        EXPECT_EQ(profile.gaps, 1);
+        EXPECT_LE(at_root.offset, 32.0 * std::numeric_limits<double>::epsilon() * chord);
+        EXPECT_NEAR(at_root.slopes.indentation, exact.indentation, 1e-12 * terms);
+        EXPECT_NEAR(at_root.state.cohesive_radius, state.cohesive_radius,
+                    1e-14 * state.cohesive_radius);  // a step of the excess's rounding
+
+        const auto first_iterate = [](const DugdaleSlopedState&) { return true; };
+        const DugdaleSlopedState off =
+            dugdale_sloped_contact_state(profile, law, a, (1.0 + 1e-3) * chord, first_iterate);
+        EXPECT_GT(off.offset, 0.5e-3 * chord);
+        EXPECT_LT(off.offset, 2e-3 * chord);
+        const double miss = std::abs(off.slopes.indentation - exact.indentation);
+        EXPECT_GT(miss, 1e-9 * terms);
+        EXPECT_LT(miss, 64.0 * (off.offset / chord) * terms);
+        worst = std::max(worst, miss / ((off.offset / chord) * terms));
+      }
+    }
+  }
+  RecordProperty("worst_miss_over_offset", std::to_string(worst));
+  std::printf("worst slope miss over the offset's share: %.3g\n", worst);
 }
 
 // sigma_0 -> infinity at fixed dgamma is JKR for any shape: the zone shrinks onto the edge
