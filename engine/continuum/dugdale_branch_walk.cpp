@@ -29,19 +29,18 @@ DugdaleState DugdaleBranchWalk::at(double contact_radius) {
   return last_;
 }
 
-void DugdaleBranchWalk::add_sloped(double contact_radius, const DugdaleState& state,
-                                   double chord_slope) {
+void DugdaleBranchWalk::add_sloped(double contact_radius, double half_chord, double chord_slope) {
   if (!(sloped_known_ > 0 && sloped_[0].radius == contact_radius)) {
     sloped_[1] = sloped_[0];
     sloped_known_ = sloped_known_ > 0 ? 2 : 1;
   }
-  sloped_[0] = {contact_radius, state.cohesive_radius * std::sin(state.angle), chord_slope};
+  sloped_[0] = {contact_radius, half_chord, chord_slope};
 }
 
 DugdaleSlopes DugdaleBranchWalk::slopes_at(double contact_radius) {
   const DugdaleState state = at(contact_radius);
   const DugdaleSlopes slopes = dugdale_contact_slopes(profile_, law_, state);
-  add_sloped(contact_radius, state, slopes.half_chord);
+  add_sloped(contact_radius, state.cohesive_radius * std::sin(state.angle), slopes.half_chord);
   return slopes;
 }
 
@@ -50,9 +49,11 @@ DugdaleSlopedState DugdaleBranchWalk::sloped_at(double contact_radius, const Slo
       dugdale_sloped_contact_state(profile_, law_, contact_radius, guess(contact_radius), enough);
   last_ = sloped.state;
   last_converged_ = !enough;
-  chords_.add(contact_radius, last_.cohesive_radius * std::sin(last_.angle));
+  chords_.add(contact_radius, sloped.half_chord);
   ++solved_;
-  if (std::isfinite(sloped.offset)) add_sloped(contact_radius, last_, sloped.slopes.half_chord);
+  if (std::isfinite(sloped.offset)) {
+    add_sloped(contact_radius, sloped.half_chord, sloped.slopes.half_chord);
+  }
   return sloped;
 }
 

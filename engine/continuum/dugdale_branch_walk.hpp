@@ -33,7 +33,7 @@ class DugdaleBranchWalk {
   };
   double guess(double contact_radius) const;
   /// Keeps a solved zone and its slope ds/da as the newest node of the Hermite guess.
-  void add_sloped(double contact_radius, const DugdaleState& state, double chord_slope);
+  void add_sloped(double contact_radius, double half_chord, double chord_slope);
 
   const Profile& profile_;
   DugdaleLaw law_;

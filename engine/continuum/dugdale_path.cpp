@@ -126,7 +126,8 @@ DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& la
           .slopes =
               dugdale_slopes_at_zone(profile, law, a, a * tan_t, a / cos_t, t,
                                      {.integral = gap.integral, .angle_slope = gap.angle_slope}),
-          .offset = std::abs(next - a) * tan_t};
+          .offset = std::abs(next - a) * tan_t,
+          .half_chord = next * tan_t};
       if (enough(here)) {
         here.state =
             dugdale_contact_state_of_zone(profile, law, next, next * tan_t, next / cos_t, t);
@@ -152,7 +153,10 @@ DugdaleState contact_state_at_angle(const Profile& profile, const DugdaleLaw& la
   }
   const DugdaleState state =
       dugdale_contact_state_of_zone(profile, law, a, a * tan_t, a / cos_t, t);
-  if (sloped != nullptr) sloped->state = state;
+  if (sloped != nullptr) {
+    sloped->state = state;
+    sloped->half_chord = a * tan_t;
+  }
   return state;
 }
 
@@ -317,7 +321,14 @@ DugdaleSlopedState DugdalePath::sloped_walk_to(double s, ContinuedGuess& walk,
       profile_, law_, 0.5 * kPi - gap,
       guess > 0.0 ? guess : std::min(angle_state_.contact_radius, closing_radius_ * std::sin(gap)),
       &sloped, enough);
-  walk.add(sloped.state.angle, sloped.state.contact_radius);
+  // da/dt along the branch from ds/da, t = atan(s/a): dt/da = (a ds/da - s)/c^2.
+  const DugdaleState& st = sloped.state;
+  const double chord = sloped.half_chord;
+  const double rate = std::isfinite(sloped.offset)
+                          ? st.cohesive_radius * st.cohesive_radius /
+                                (st.contact_radius * sloped.slopes.half_chord - chord)
+                          : std::numeric_limits<double>::quiet_NaN();
+  walk.add(st.angle, st.contact_radius, rate);
   return sloped;
 }
 
@@ -433,13 +444,13 @@ double s_of_radius(const DugdalePath& path, double a) {
 /// The size of dv/da's terms at a state, times the cancellation's gain: dugdale_contact_slopes is
 /// good to about eps times this, and slopes read at a Newton iterate (dugdale_sloped_contact_state)
 /// to about the iterate's offset over the half-chord times this.
-double slope_terms(const Profile& profile, const DugdaleLaw& law, const AffineConstraint& control,
-                   const DugdaleState& state, const DugdaleSlopes& slopes) {
-  const double a = state.contact_radius, t = state.angle;
-  const double s = state.cohesive_radius * std::sin(t);
+double slope_terms(const DugdaleLaw& law, const AffineConstraint& control,
+                   const DugdaleState& state, const DugdaleSlopes& slopes, double half_chord) {
+  const double a = state.contact_radius, t = state.angle, s = half_chord;
   const double z = law.zone_strain();
-  const double image_slope = std::abs(profile.mdr_image_slope(a));
-  const double chord_slope = std::abs((profile.mdr_image_slope(a) - slopes.indentation) / z);
+  // g'(a) and ds/da as the slopes hold them: dd/da = g'(a) - z ds/da.
+  const double chord_slope = std::abs(slopes.half_chord);
+  const double image_slope = std::abs(slopes.indentation + z * slopes.half_chord);
   const double terms =
       std::abs(control.displacement_coefficient) * (image_slope + z * chord_slope) +
       std::abs(control.force_coefficient) *
@@ -452,11 +463,12 @@ double slope_terms(const Profile& profile, const DugdaleLaw& law, const AffineCo
 /// is good to about eps (1 + g'(a)/((2 sigma_0/E*) t)) of its terms (dugdale_contact_slopes),
 /// which moves its root by that over dv/da's rate (`slope_rate`, over the scan's bracket); F
 /// moves by dF/da (`slopes`, the state's or the search's last) times that and the root's bracket.
-double contact_fold_force_error(const Profile& profile, const DugdaleLaw& law,
-                                const AffineConstraint& control, const DugdaleState& state,
-                                const DugdaleSlopes& slopes, double bracket, double slope_rate) {
+double contact_fold_force_error(const DugdaleLaw& law, const AffineConstraint& control,
+                                const DugdaleState& state, const DugdaleSlopes& slopes,
+                                double bracket, double slope_rate) {
   const double eps = std::numeric_limits<double>::epsilon();
-  const double noise = 16.0 * eps * slope_terms(profile, law, control, state, slopes);
+  const double half_chord = state.cohesive_radius * std::sin(state.angle);
+  const double noise = 16.0 * eps * slope_terms(law, control, state, slopes, half_chord);
   const double place = bracket + (slope_rate > 0.0 ? noise / slope_rate : 0.0);
   return std::abs(slopes.normal_force) * place + 4.0 * eps * std::abs(state.normal_force);
 }
@@ -471,18 +483,17 @@ constexpr double kSlopeDoubt = 64.0;
 constexpr double kRootOffset = 32.0 * std::numeric_limits<double>::epsilon();
 
 /// dv/da from a solve's last iterate where `sloped` is close enough for `trust`, else nullopt.
-std::optional<double> read_slope(const Profile& profile, const DugdaleLaw& law,
-                                 const AffineConstraint& control, const DugdaleSlopedState& sloped,
-                                 bool sign_only) {
+std::optional<double> read_slope(const DugdaleLaw& law, const AffineConstraint& control,
+                                 const DugdaleSlopedState& sloped, bool sign_only) {
   if (!std::isfinite(sloped.offset)) return std::nullopt;
   const DugdaleState& st = sloped.state;
-  const double chord = st.cohesive_radius * std::sin(st.angle);
+  const double chord = sloped.half_chord;
   const double value = control_slope(control, sloped.slopes);
   if (sloped.offset <= kRootOffset * chord) return value;
   if (!sign_only) return std::nullopt;
   const double doubt = kSlopeDoubt *
                        (sloped.offset / chord + std::numeric_limits<double>::epsilon()) *
-                       slope_terms(profile, law, control, st, sloped.slopes);
+                       slope_terms(law, control, st, sloped.slopes, chord);
   if (std::abs(value) > doubt) return value;
   return std::nullopt;
 }
@@ -498,11 +509,11 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
   // a root search's value), else from the state's own slopes (one gap integral more).
   DugdaleSlopes last_slopes;
   const auto sign_read = [&](const DugdaleSlopedState& sloped) {
-    return read_slope(profile, law, control, sloped, true).has_value();
+    return read_slope(law, control, sloped, true).has_value();
   };
   const auto slope_at_radius = [&](double a, bool sign_only) {
     const DugdaleSlopedState sloped = sign_only ? walk.sloped_at(a, sign_read) : walk.sloped_at(a);
-    if (const auto value = read_slope(profile, law, control, sloped, sign_only)) {
+    if (const auto value = read_slope(law, control, sloped, sign_only)) {
       last_slopes = sloped.slopes;
       return *value;
     }
@@ -528,7 +539,7 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
     const double a = 0.5 * (root.lo + root.hi);
     const DugdaleSlopes search_slopes = last_slopes;
     DugdaleFold fold{.s = s_of_radius(path, a), .state = walk.at(a), .force_error = 0.0};
-    fold.force_error = contact_fold_force_error(profile, law, control, fold.state, search_slopes,
+    fold.force_error = contact_fold_force_error(law, control, fold.state, search_slopes,
                                                 root.hi - root.lo, (above - here) / (hi - lo));
     return fold;
   }
@@ -538,7 +549,7 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
     const DugdaleSlopedState sloped = sign_only ? path.sloped_walk_to(s, angle_walk, sign_read)
                                                 : path.sloped_walk_to(s, angle_walk);
     if (state != nullptr) *state = sloped.state;
-    if (const auto value = read_slope(profile, law, control, sloped, sign_only)) {
+    if (const auto value = read_slope(law, control, sloped, sign_only)) {
       last_slopes = sloped.slopes;
       return *value;
     }
@@ -568,7 +579,7 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
     // The root's bracket in the radius: its width in s at the scan's da/ds there.
     const double radius_rate = std::abs(a_above - state.contact_radius) / (s - s_above);
     fold.force_error = contact_fold_force_error(
-        profile, law, control, fold.state, search_slopes, radius_rate * (root.hi - root.lo),
+        law, control, fold.state, search_slopes, radius_rate * (root.hi - root.lo),
         (above - here) / std::abs(a_above - state.contact_radius));
     return fold;
   }

@@ -126,7 +126,8 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
       DugdaleSlopedState here{
           .state = {.contact_radius = a, .cohesive_radius = c_next, .angle = t_next},
           .slopes = dugdale_slopes_at_zone(profile, law, a, s, c, t, gap),
-          .offset = std::abs(next - s)};
+          .offset = std::abs(next - s),
+          .half_chord = next};
       if (enough(here)) {
         here.state = dugdale_contact_state_of_zone(profile, law, a, next, c_next, t_next);
         *sloped = here;
@@ -158,7 +159,10 @@ DugdaleState contact_state_from(const Profile& profile, const DugdaleLaw& law, d
   }
   const auto [t, c] = zone_at(a, s);
   const DugdaleState state = dugdale_contact_state_of_zone(profile, law, a, s, c, t);
-  if (sloped != nullptr) sloped->state = state;
+  if (sloped != nullptr) {
+    sloped->state = state;
+    sloped->half_chord = s;
+  }
   return state;
 }
 
@@ -188,6 +192,14 @@ DugdaleState dugdale_contact_state(const Profile& profile, const DugdaleLaw& law
 
 double ContinuedGuess::at(double x) const {
   if (known_ == 0) return 0.0;
+  if (known_ >= 2 && std::isfinite(slope_[0]) && std::isfinite(slope_[1])) {
+    // The cubic Hermite in u = (x - x1)/h from the older x1 (beyond [0, 1] it extrapolates).
+    const double h = x_[0] - x_[1], u = (x - x_[1]) / h;
+    const double u2 = u * u, u3 = u2 * u;
+    const double y = (2.0 * u3 - 3.0 * u2 + 1.0) * y_[1] + (u3 - 2.0 * u2 + u) * h * slope_[1] +
+                     (3.0 * u2 - 2.0 * u3) * y_[0] + (u3 - u2) * h * slope_[0];
+    if (y > 0.0 && std::isfinite(y)) return y;
+  }
   std::array<double, kFit> p = y_;
   for (int level = 1; level < known_; ++level) {
     for (int i = 0; i + level < known_; ++i) {
@@ -198,12 +210,14 @@ double ContinuedGuess::at(double x) const {
   return p[0];
 }
 
-void ContinuedGuess::add(double x, double y) {
+void ContinuedGuess::add(double x, double y, double slope) {
   if (known_ > 0 && x_[0] == x) return;
   std::copy_backward(x_.begin(), x_.end() - 1, x_.end());
   std::copy_backward(y_.begin(), y_.end() - 1, y_.end());
+  std::copy_backward(slope_.begin(), slope_.end() - 1, slope_.end());
   x_[0] = x;
   y_[0] = y;
+  slope_[0] = slope;
   known_ = std::min(known_ + 1, kFit);
 }
 

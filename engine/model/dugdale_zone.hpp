@@ -4,6 +4,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -79,6 +80,7 @@ struct DugdaleSlopedState {
   DugdaleState state;
   DugdaleSlopes slopes;
   double offset = 0.0;
+  double half_chord = 0.0;  ///< the state's sqrt(c^2 - a^2) [m], as its solver knows it
 };
 
 /// Whether a caller is content with a solve's iterate: its slopes and the zone (a, c, t) one
@@ -94,21 +96,23 @@ DugdaleSlopedState dugdale_sloped_contact_state(const Profile& profile, const Du
                                                 double a, double half_chord_guess,
                                                 const SlopedEnough& enough = {});
 
-/// A walk's guess of its next solve: the cubic through the last four (x, y) it added (Neville's
-/// scheme), the line through two, the one value of one; none (0) before. Within the curve's
-/// fourth derivative times the step^4: on close points, inside a Newton solve's own tolerance.
+/// A walk's guess of its next solve: the cubic Hermite through the last two (x, y) it added where
+/// both came with their slopes dy/dx, else the cubic through the last four (Neville's scheme),
+/// the line through two, the one value of one; none (0) before. Within the curve's fourth
+/// derivative times the step^4: on close points, inside a Newton solve's own tolerance; the
+/// Hermite's from the two nearest, where a scan's far samples would bend Neville's cubic.
 class ContinuedGuess {
  public:
   /// y at x, or 0 where nothing is known (or the scheme's value is not a finite positive).
   double at(double x) const;
-  /// Adds a solved (x, y); an x equal to the newest one is not added (the scheme would divide by
-  /// zero).
-  void add(double x, double y);
+  /// Adds a solved (x, y), with its slope dy/dx where known (else NaN); an x equal to the newest
+  /// one is not added (the scheme would divide by zero).
+  void add(double x, double y, double slope = std::numeric_limits<double>::quiet_NaN());
   void clear() { known_ = 0; }
 
  private:
   static constexpr int kFit = 4;
-  std::array<double, kFit> x_{}, y_{};  ///< the newest first
+  std::array<double, kFit> x_{}, y_{}, slope_{};  ///< the newest first
   int known_ = 0;
 };
 
