@@ -473,24 +473,26 @@ double contact_fold_force_error(const DugdaleLaw& law, const AffineConstraint& c
   return std::abs(slopes.normal_force) * place + 4.0 * eps * std::abs(state.normal_force);
 }
 
-/// A slope read at a solve's last iterate: a scan trusts its sign where it stands this many times
-/// its error (the offset's share of its terms) from zero, else reads the state's own slopes.
-constexpr double kSlopeDoubt = 64.0;
-/// A root search takes the slopes at an iterate this close to the root (over the half-chord):
+/// A slope read at a solve's last iterate: a scan and a root search trust its sign where it stands
+/// this many times its error (the offset's share of its terms times the cancellation's gain) from
+/// zero, else read the state's own slopes (the error's factor is at most 1.33 over the zone
+/// tests' profiles, stresses and radii: DugdaleZone.SlopesAtTheLastIterateAreTheStatesToItsOffset).
+constexpr double kSlopeDoubt = 8.0;
+/// An iterate this close to the root (over the half-chord) gives its slopes whatever their size:
 /// there they are the state's to about the rounding the fold's error already counts (16 eps of
 /// the terms), as they are once its guesses lie at its roots (a Newton step from the root itself
 /// is a few ulps of the excess over its slope).
 constexpr double kRootOffset = 32.0 * std::numeric_limits<double>::epsilon();
 
-/// dv/da from a solve's last iterate where `sloped` is close enough for `trust`, else nullopt.
+/// dv/da from a solve's last iterate where its sign is sure or the iterate is the root, else
+/// nullopt.
 std::optional<double> read_slope(const DugdaleLaw& law, const AffineConstraint& control,
-                                 const DugdaleSlopedState& sloped, bool sign_only) {
+                                 const DugdaleSlopedState& sloped) {
   if (!std::isfinite(sloped.offset)) return std::nullopt;
   const DugdaleState& st = sloped.state;
   const double chord = sloped.half_chord;
   const double value = control_slope(control, sloped.slopes);
   if (sloped.offset <= kRootOffset * chord) return value;
-  if (!sign_only) return std::nullopt;
   const double doubt = kSlopeDoubt *
                        (sloped.offset / chord + std::numeric_limits<double>::epsilon()) *
                        slope_terms(law, control, st, sloped.slopes, chord);
@@ -505,26 +507,26 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
   const DugdaleLaw& law = path.law();
   const double eps = std::numeric_limits<double>::epsilon();
   DugdaleBranchWalk walk(profile, law);
-  // dv/da at a radius: from the solve's last iterate where that is close enough (a scan's sign,
-  // a root search's value), else from the state's own slopes (one gap integral more).
+  // dv/da at a radius: from the solve's last iterate where its sign is sure (TOMS 748 keeps its
+  // bracket by signs: a value off by less than itself only slows it) or the iterate is the root
+  // to rounding, else from the state's own slopes (one gap integral more).
   DugdaleSlopes last_slopes;
   const auto sign_read = [&](const DugdaleSlopedState& sloped) {
-    return read_slope(law, control, sloped, true).has_value();
+    return read_slope(law, control, sloped).has_value();
   };
-  const auto slope_at_radius = [&](double a, bool sign_only) {
-    const DugdaleSlopedState sloped = sign_only ? walk.sloped_at(a, sign_read) : walk.sloped_at(a);
-    if (const auto value = read_slope(law, control, sloped, sign_only)) {
+  const auto slope_at_radius = [&](double a) {
+    const DugdaleSlopedState sloped = walk.sloped_at(a, sign_read);
+    if (const auto value = read_slope(law, control, sloped)) {
       last_slopes = sloped.slopes;
       return *value;
     }
     last_slopes = dugdale_contact_slopes(profile, law, sloped.state);
     return control_slope(control, last_slopes);
   };
-  const auto root_slope_at_radius = [&](double a) { return slope_at_radius(a, false); };
   const std::vector<BranchSample> samples = branch_samples(path);
   double above = 0.0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
-    const double here = slope_at_radius(samples[k].radius, true);
+    const double here = slope_at_radius(samples[k].radius);
     if (here > 0.0) {
       above = here;
       continue;
@@ -535,7 +537,7 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
       return fold;
     }
     const double lo = samples[k].radius, hi = samples[k - 1].radius;
-    const RootBracket root = bracket_root(root_slope_at_radius, lo, hi, here, above);
+    const RootBracket root = bracket_root(slope_at_radius, lo, hi, here, above);
     const double a = 0.5 * (root.lo + root.hi);
     const DugdaleSlopes search_slopes = last_slopes;
     DugdaleFold fold{.s = s_of_radius(path, a), .state = walk.at(a), .force_error = 0.0};
@@ -545,18 +547,17 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
   }
   // On in the zone's angle, s from 2 (a_t) towards the closing point.
   ContinuedGuess angle_walk;  // the scan's and the root search's zones, in the angle
-  const auto slope_at_s = [&](double s, bool sign_only, DugdaleState* state) {
-    const DugdaleSlopedState sloped = sign_only ? path.sloped_walk_to(s, angle_walk, sign_read)
-                                                : path.sloped_walk_to(s, angle_walk);
+  const auto slope_at_s = [&](double s, DugdaleState* state) {
+    const DugdaleSlopedState sloped = path.sloped_walk_to(s, angle_walk, sign_read);
     if (state != nullptr) *state = sloped.state;
-    if (const auto value = read_slope(law, control, sloped, sign_only)) {
+    if (const auto value = read_slope(law, control, sloped)) {
       last_slopes = sloped.slopes;
       return *value;
     }
     last_slopes = dugdale_contact_slopes(profile, law, sloped.state);
     return control_slope(control, last_slopes);
   };
-  const auto root_slope_at_s = [&](double s) { return slope_at_s(s, false, nullptr); };
+  const auto root_slope_at_s = [&](double s) { return slope_at_s(s, nullptr); };
   double s_above = 2.0;
   double a_above = path.angle_state().contact_radius;
   std::vector<double> gaps;
@@ -565,7 +566,7 @@ std::optional<DugdaleFold> contact_branch_fold(const DugdalePath& path,
   for (const double gap : gaps) {
     const double s = DugdalePath::kClosing - gap;
     DugdaleState state;
-    const double here = slope_at_s(s, true, &state);
+    const double here = slope_at_s(s, &state);
     if (here > 0.0) {
       above = here;
       s_above = s;

@@ -323,7 +323,7 @@ TEST(DugdaleZone, SlopesAtTheLastIterateAreTheStatesToItsOffset) {
         EXPECT_LT(off.offset, 2e-3 * chord);
         const double miss = std::abs(off.slopes.indentation - exact.indentation);
         EXPECT_GT(miss, 1e-9 * terms);
-        EXPECT_LT(miss, 64.0 * (off.offset / chord) * terms);
+        EXPECT_LT(miss, 8.0 * (off.offset / chord) * terms);
         worst = std::max(worst, miss / ((off.offset / chord) * terms));
       }
     }
