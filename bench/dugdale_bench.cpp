@@ -2,7 +2,7 @@
 // fixed-load pull-off search from a glued radius, and a 1000-point force curve down to the closing
 // point (independent states, and each from its neighbour's zone); the shorthand's path: its first
 // fold under each control, its most tensile state and its work up to the fold, and its --samples
-// curve (a scene run's parts).
+// curve (a scene run's parts); a fold's line counts the gap integrals it takes.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -128,6 +128,29 @@ void continued_force_curve(benchmark::State& state, const std::string& name) {
   state.counters["points"] = kCurvePoints;
 }
 
+/// A profile that counts its gap integrals J (what a Dugdale search pays for), read once after a
+/// timed loop.
+class CountingProfile final : public mdrsim::Profile {
+ public:
+  explicit CountingProfile(const mdrsim::Profile& p) : p_(p) {}
+  double shape(double r) const override { return p_.shape(r); }
+  double mdr_image(double x) const override { return p_.mdr_image(x); }
+  double mdr_image_slope(double x) const override { return p_.mdr_image_slope(x); }
+  double contact_radius_at_depth(double d) const override { return p_.contact_radius_at_depth(d); }
+  double nonadhesive_force_per_modulus(double a) const override {
+    return p_.nonadhesive_force_per_modulus(a);
+  }
+  mdrsim::DugdaleGap dugdale_gap(double a, double c, double t) const override {
+    ++gaps;
+    return p_.dugdale_gap(a, c, t);
+  }
+  double outer_radius() const override { return p_.outer_radius(); }
+  mutable int gaps = 0;
+
+ private:
+  const mdrsim::Profile& p_;
+};
+
 /// The path from a preload pressed to the glued radius's own depth (a_p = a_g).
 mdrsim::DugdalePath path_of(const mdrsim::Profile& profile) {
   return {profile, kLaw, kGluedRadius,
@@ -153,6 +176,11 @@ void path_first_fold(benchmark::State& state, const std::string& name, const std
   }
   state.counters["normal_force"] = fold ? fold->state.normal_force : 0.0;
   state.counters["contact_radius"] = fold ? fold->state.contact_radius : 0.0;
+  const CountingProfile counting(*profile);
+  const mdrsim::DugdalePath counted = path_of(counting);
+  counting.gaps = 0;
+  benchmark::DoNotOptimize(mdrsim::first_fold(counted, c));
+  state.counters["gap_integrals"] = counting.gaps;
 }
 
 /// The most tensile state and the work up to the fixed-load fold: the rest of a run's cost.
