@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "engine/base/hess_scale.hpp"
 #include "engine/base/radial_adhesion.hpp"
@@ -19,6 +20,13 @@ struct Grading {
 
   /// Whether the modulus varies with depth (k > 0); k = 0 takes the homogeneous path.
   bool graded() const { return exponent > 0.0; }
+};
+
+/// One Prony term of a viscoelastic bulk: a Maxwell arm (spring E_i, dashpot E_i tau_i) in
+/// parallel with the relaxed spring (docs/viscoelastic.md).
+struct PronyTerm {
+  double modulus;  ///< E_i* = E_i / (1 - nu^2) [Pa] > 0, plane strain as E* is
+  double time;     ///< tau_i [s] > 0
 };
 
 struct Material {
@@ -39,6 +47,9 @@ struct Material {
   /// material.grading; E* and G* above are then E0's (the springs' stiffness is
   /// grading.punch_constant's, docs/graded.md).
   Grading grading;
+  /// material.relaxation: E*(t) = E* + sum_i E_i* exp(-t / tau_i), E* above then the relaxed
+  /// (long-time) modulus. Empty: an elastic bulk.
+  std::vector<PronyTerm> relaxation;
 
   /// dgamma at the radius r [m] of a spring [J/m^2]: every criterion lets go with this.
   double work_of_adhesion_at(double r) const {
@@ -72,6 +83,16 @@ struct Material {
   }
   /// Whether the adhesion has a finite range (Maugis-Dugdale): sigma_0 > 0.
   bool finite_range() const { return adhesive_stress > 0.0; }
+  /// Whether the bulk relaxes (material.relaxation has terms).
+  bool relaxes() const { return !relaxation.empty(); }
+  /// E_0* = E* + sum_i E_i* [Pa]: the glassy (instantaneous) modulus.
+  double glassy_modulus() const {
+    double sum = effective_modulus;
+    for (const PronyTerm& term : relaxation) {
+      sum += term.modulus;
+    }
+    return sum;
+  }
   /// Whether any spring has glue to lose: dgamma > 0 somewhere.
   bool adhesive() const { return largest_work_of_adhesion() > 0.0; }
 

@@ -1,0 +1,54 @@
+// A free viscoelastic spring (it carries no load: lifted, or let go) creeping back to its rest
+// length, and the time the withdrawing or returning indenter meets it again.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "engine/base/material.hpp"
+#include "engine/model/prony_root.hpp"
+
+namespace mdrsim {
+
+/// With q = E* w + sum_j sigma_j = 0 held, the arm strains y_j = sigma_j / E_j obey
+///   (D + E E^T / E*) y' = -D Lambda y,  D = diag(E_j), Lambda = diag(1 / tau_j),
+/// a symmetric pencil: y(t) = sum_k alpha_k v_k exp(-mu_k t), the retardation rates mu_k the
+/// roots of E* = mu sum_j E_j / (1/tau_j - mu) (one in (0, 1/tau_1), one between each pair of
+/// the ascending 1/tau_j), v_kj = 1 / (1/tau_j - mu_k), and alpha_k by the pencil's D + E E^T / E*
+/// orthogonality. One term: mu = E* / (tau E_0*), the inverse retardation time. Terms with one
+/// relaxation time act as one arm; their differences from the shares of the sum decay at 1/tau.
+class FreeSpringCreep {
+ public:
+  /// The spring is free from now (t = 0) with arm stresses sigma_j [N/m]; its stretch is then
+  /// w = -sum_j sigma_j / E*.
+  FreeSpringCreep(double relaxed_modulus, std::span<const PronyTerm> terms,
+                  std::span<const double> stresses);
+
+  /// The stretch w(t) [m] at t [s] after the release.
+  double stretch(double t) const;
+  /// The arm stresses sigma_j(t) [N/m].
+  std::vector<double> stresses(double t) const;
+  /// w(t0 + s) as an exponential sum in s [s].
+  ExponentialSum stretch_from(double t0) const;
+  /// The retardation rates mu_k [1/s], ascending.
+  std::span<const double> rates() const { return rates_; }
+
+ private:
+  double relaxed_modulus_;
+  std::vector<PronyTerm> terms_;
+  std::vector<std::size_t> group_of_;         ///< the merged arm (distinct tau) of each term
+  std::vector<PronyTerm> groups_;             ///< the merged arms: summed moduli
+  std::vector<double> residuals_;             ///< sigma_j - (E_j / E_group) sigma_group at 0 [N/m]
+  std::vector<double> rates_;                 ///< mu_k [1/s]
+  std::vector<std::vector<double>> strains_;  ///< alpha_k v_kg: the strain of group g in mode k
+};
+
+/// The first s in (0, span] [s] at which the indenter, whose surface at the spring stands at
+/// stretch `indenter_stretch` [m] at s = 0 and moves at `rate` [m/s] (d(t) - g(x) under the
+/// indentation), meets the free spring t0 [s] after its release: E* w_free = E* w_indenter,
+/// reached from the side of no contact.
+std::optional<double> touch_time(const FreeSpringCreep& creep, double t0, double indenter_stretch,
+                                 double rate, double span);
+
+}  // namespace mdrsim

@@ -1,0 +1,128 @@
+// The monotone pieces of an exponential sum and the first that reaches a level.
+#include "engine/model/prony_root.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/base/bracketed_root.hpp"
+
+namespace mdrsim {
+namespace {
+
+// p(s) = constant + sum_j amplitude_j exp(-rate_j s), rates >= 0 and distinct after merging.
+struct DecaySum {
+  double constant = 0.0;
+  std::vector<std::pair<double, double>> terms;  // amplitude, rate [1/s]
+
+  double at(double s) const {
+    double sum = constant;
+    for (const auto& [amplitude, rate] : terms) {
+      sum += amplitude * std::exp(-rate * s);
+    }
+    return sum;
+  }
+};
+
+// Equal rates merged, zero amplitudes dropped, a zero rate folded into the constant, rates
+// ascending.
+DecaySum tidied(DecaySum p) {
+  std::sort(p.terms.begin(), p.terms.end(),
+            [](const auto& x, const auto& y) { return x.second < y.second; });
+  DecaySum out{p.constant, {}};
+  for (const auto& [amplitude, rate] : p.terms) {
+    if (rate == 0.0) {
+      out.constant += amplitude;
+    } else if (!out.terms.empty() && out.terms.back().second == rate) {
+      out.terms.back().first += amplitude;
+    } else {
+      out.terms.emplace_back(amplitude, rate);
+    }
+  }
+  std::erase_if(out.terms, [](const auto& term) { return term.first == 0.0; });
+  return out;
+}
+
+// The sign changes of fn over [points[i], points[i+1]] where fn is monotone on each piece.
+template <class Fn>
+std::vector<double> roots_on_pieces(Fn fn, const std::vector<double>& points) {
+  std::vector<double> roots;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const double lo = points[i], hi = points[i + 1];
+    const double f_lo = fn(lo), f_hi = fn(hi);
+    if (f_hi == 0.0) {
+      roots.push_back(hi);
+    } else if (f_lo != 0.0 && (f_lo < 0.0) != (f_hi < 0.0)) {
+      roots.push_back(bracketed_root(fn, lo, hi));
+    }
+  }
+  return roots;
+}
+
+// The zeros of p in (lo, hi): p' = exp(-r_1 s) q(s) with q = -a_1 r_1 - sum_{j >= 2} a_j r_j
+// exp(-(r_j - r_1) s), one decay fewer; p is monotone between q's zeros.
+std::vector<double> zeros_in(const DecaySum& raw, double lo, double hi) {
+  const DecaySum p = tidied(raw);
+  if (p.terms.empty()) {
+    return {};
+  }
+  const double slowest = p.terms.front().second;
+  DecaySum derivative{-p.terms.front().first * slowest, {}};
+  for (std::size_t j = 1; j < p.terms.size(); ++j) {
+    const auto& [amplitude, rate] = p.terms[j];
+    derivative.terms.emplace_back(-amplitude * rate, rate - slowest);
+  }
+  std::vector<double> points{lo};
+  for (const double s : zeros_in(derivative, lo, hi)) {
+    points.push_back(s);
+  }
+  points.push_back(hi);
+  std::vector<double> zeros = roots_on_pieces([&](double s) { return p.at(s); }, points);
+  std::erase_if(zeros, [&](double s) { return s <= lo || s >= hi; });
+  return zeros;
+}
+
+}  // namespace
+
+double ExponentialSum::at(double s) const {
+  double sum = constant + slope * s;
+  for (const ExponentialDecay& decay : decays) {
+    sum += decay.amplitude * std::exp(-s / decay.time);
+  }
+  return sum;
+}
+
+std::optional<double> first_crossing(const ExponentialSum& f, double level, double span) {
+  if (!(span > 0.0)) {
+    return std::nullopt;
+  }
+  const auto g = [&](double s) { return f.at(s) - level; };
+  DecaySum derivative{f.slope, {}};
+  for (const ExponentialDecay& decay : f.decays) {
+    derivative.terms.emplace_back(-decay.amplitude / decay.time, 1.0 / decay.time);
+  }
+  std::vector<double> points{0.0};
+  for (const double s : zeros_in(derivative, 0.0, span)) {
+    points.push_back(s);
+  }
+  points.push_back(span);
+  // The side: g at 0, or where g starts at the level, g at the end of the first piece (g moves
+  // monotonically away from the level there).
+  double side = g(0.0);
+  if (side == 0.0) {
+    side = g(points[1]);
+    if (side == 0.0) {
+      return std::nullopt;  // g vanishes on the whole first piece: constant, no crossing
+    }
+    points.erase(points.begin());
+  }
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const double lo = points[i], hi = points[i + 1];
+    const double g_hi = g(hi);
+    if (g_hi == 0.0 || (g_hi < 0.0) != (side < 0.0)) {
+      return g_hi == 0.0 ? hi : bracketed_root(g, lo, hi);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace mdrsim

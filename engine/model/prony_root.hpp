@@ -1,0 +1,34 @@
+// A line load over a linear motion of a viscoelastic spring, a + b s + sum_j c_j exp(-s / tau_j),
+// and the first time it reaches a level (a let-go, a lift, a touch), located exactly.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+namespace mdrsim {
+
+/// One decaying part c exp(-s / tau).
+struct ExponentialDecay {
+  double amplitude;  ///< c [the sum's unit]
+  double time;       ///< tau [s] > 0
+};
+
+/// f(s) = constant + slope s + sum_j amplitude_j exp(-s / time_j), s [s] from the motion's start.
+struct ExponentialSum {
+  double constant = 0.0;
+  double slope = 0.0;  ///< [the sum's unit / s]
+  std::vector<ExponentialDecay> decays;
+
+  double at(double s) const;
+};
+
+/// The first s in (0, span] at which f(s) = level, f reaching it from the side it is on just
+/// after s = 0 (so a spring whose load is 0 at the start and rises is not found at once);
+/// nullopt when f stays on that side up to span. Exact to the last bits of s: f is split into
+/// pieces where it is monotone, at the zeros of f' (found the same way, since f' = slope + a sum
+/// of decays, whose own derivative divided by its slowest decay is again a constant plus decays:
+/// an exponential sum with K decays has at most K such pieces), and the first piece whose ends
+/// straddle the level is solved by TOMS 748.
+std::optional<double> first_crossing(const ExponentialSum& f, double level, double span);
+
+}  // namespace mdrsim

@@ -1,0 +1,64 @@
+// The per-term sums of arms that share one drive, advanced exactly between events.
+#include "engine/model/prony_shared_drive.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/model/prony_arms.hpp"
+
+namespace mdrsim {
+
+SharedDriveArms::SharedDriveArms(std::vector<PronyTerm> terms)
+    : terms_(std::move(terms)), history_(terms_.size(), 0.0), decaying_(terms_.size(), 0.0) {}
+
+void SharedDriveArms::advance(double rate, double duration) {
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    history_[j] = maxwell_arm_after(history_[j], terms_[j], rate, duration);
+    decaying_[j] *= std::exp(-duration / terms_[j].time);
+  }
+  time_ += duration;
+}
+
+SharedDriveMember SharedDriveArms::enter(std::span<const double> stresses, double weight) {
+  SharedDriveMember member{time_, std::vector<double>(terms_.size()), weight};
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    member.offsets[j] = stresses[j] - history_[j];
+    decaying_[j] += weight * member.offsets[j];
+  }
+  weight_ += weight;
+  ++members_;
+  return member;
+}
+
+double SharedDriveArms::stress(const SharedDriveMember& member, std::size_t j) const {
+  return history_[j] + member.offsets[j] * std::exp(-(time_ - member.entry_time) / terms_[j].time);
+}
+
+std::vector<double> SharedDriveArms::leave(const SharedDriveMember& member) {
+  std::vector<double> stresses(terms_.size());
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    stresses[j] = stress(member, j);
+    decaying_[j] -= member.weight * (stresses[j] - history_[j]);
+  }
+  weight_ -= member.weight;
+  if (--members_ == 0) {
+    // An empty set sums to zero exactly, not to the roundoff of its additions and removals.
+    weight_ = 0.0;
+    std::fill(decaying_.begin(), decaying_.end(), 0.0);
+  }
+  return stresses;
+}
+
+double SharedDriveArms::arm_force(std::size_t j) const {
+  return weight_ * history_[j] + decaying_[j];
+}
+
+double SharedDriveArms::arm_force() const {
+  double sum = 0.0;
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    sum += arm_force(j);
+  }
+  return sum;
+}
+
+}  // namespace mdrsim

@@ -1,0 +1,58 @@
+// The Maxwell arms of a set of springs whose stretches all move at one rate (the springs in
+// contact all follow the indentation): their weighted sums per Prony term advance in O(1)
+// between events, with no loop over the springs.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "engine/base/material.hpp"
+
+namespace mdrsim {
+
+/// What a member keeps: its arm stress per term is sigma_j(t) = H_j(t) + offset_j
+/// exp(-(t - entry_time) / tau_j), H_j the drive's history below. O(1) per term.
+struct SharedDriveMember {
+  double entry_time = 0.0;      ///< [s] on the set's clock
+  std::vector<double> offsets;  ///< [N/m] per term
+  double weight = 0.0;          ///< dx [m]: the member's share of the sums
+};
+
+/// Every member's stretch moves at the same rate, so each arm obeys d sigma_j/dt = E_j w' -
+/// sigma_j / tau_j with one w'(t): sigma_j = H_j + a decay of the member's own, where H_j solves
+/// the same equation from H_j = 0 at the clock's start. The weighted sum over the members is
+/// S_j = W H_j + C_j with W the members' total weight and C_j = sum_i weight_i offset_ij
+/// exp(-(t - t_i) / tau_j), which only decays: one linear ODE per term, updated exactly.
+class SharedDriveArms {
+ public:
+  explicit SharedDriveArms(std::vector<PronyTerm> terms);
+
+  /// The drive moves at `rate` [m/s] for `duration` [s]: the clock, H_j and C_j advance.
+  void advance(double rate, double duration);
+  /// A spring joins now with arm stresses `stresses` [N/m] (zero for a fresh one) and weight dx.
+  SharedDriveMember enter(std::span<const double> stresses, double weight);
+  /// A member leaves now; its arm stresses then [N/m] are returned.
+  std::vector<double> leave(const SharedDriveMember& member);
+  /// A member's arm stress of term j now [N/m].
+  double stress(const SharedDriveMember& member, std::size_t j) const;
+
+  /// sum_i weight_i sigma_ij over the members [N], term j.
+  double arm_force(std::size_t j) const;
+  /// sum_j arm_force(j) [N].
+  double arm_force() const;
+  /// The members' total weight W [m].
+  double weight() const { return weight_; }
+  /// The set's clock [s].
+  double time() const { return time_; }
+  std::span<const PronyTerm> terms() const { return terms_; }
+
+ private:
+  std::vector<PronyTerm> terms_;
+  std::vector<double> history_;   ///< H_j [N/m]
+  std::vector<double> decaying_;  ///< C_j [N]
+  double weight_ = 0.0;
+  std::size_t members_ = 0;
+  double time_ = 0.0;
+};
+
+}  // namespace mdrsim

@@ -1,0 +1,96 @@
+// The first crossing of an exponential sum against closed forms: Lambert's W for one decay and a
+// slope, polynomials in x = exp(-s) for sums of decays with several crossings.
+#include "engine/model/prony_root.hpp"
+
+#include <gtest/gtest.h>
+
+#include <boost/math/special_functions/lambert_w.hpp>
+#include <cmath>
+
+namespace mdrsim {
+namespace {
+
+// a + b s + c exp(-s / tau) = 0: with u = s + a / b, (u / tau) exp(u / tau) = -c exp(a / (b tau))
+// / (b tau), so s = -a / b + tau W(z); two roots where -1/e < z < 0 (W_0 and W_-1), the first the
+// smaller. Tolerance 1e-13 relative: the root is exact to a few ulps, W to about 1e-15.
+TEST(PronyRoot, OneDecayAndASlopeByLambertW) {
+  // A spring unloading: a load that falls linearly and recovers a relaxed part, q(0) > 0.
+  const double a = 2.0, b = -3.0, c = 1.5, tau = 0.4;
+  const ExponentialSum f{a, b, {{c, tau}}};
+  const double z = -c * std::exp(a / (b * tau)) / (b * tau);
+  const double expected = -a / b + tau * boost::math::lambert_w0(z);
+  const auto s = first_crossing(f, 0.0, 10.0);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(*s, expected, 1e-13 * expected);
+  EXPECT_FALSE(first_crossing(f, 0.0, 0.99 * expected).has_value());
+
+  // Two roots: f = -0.95 + 0.5 s + exp(-s) starts at 0.05, dips below zero (its minimum at
+  // s = ln 2) and climbs back; z = -exp(-1.9) / 0.5 lies in (-1/e, 0).
+  const double a2 = -0.95, b2 = 0.5;
+  const ExponentialSum dip{a2, b2, {{1.0, 1.0}}};
+  const double zd = -std::exp(a2 / b2) / b2;
+  ASSERT_GT(zd, -1.0 / std::exp(1.0));
+  const double first = -a2 / b2 + boost::math::lambert_wm1(zd);
+  const double second = -a2 / b2 + boost::math::lambert_w0(zd);
+  ASSERT_LT(first, second);
+  const auto s_dip = first_crossing(dip, 0.0, 50.0);
+  ASSERT_TRUE(s_dip.has_value());
+  EXPECT_NEAR(*s_dip, first, 1e-13 * second);
+  // From between the roots (below zero), the way back up is the second.
+  const double mid = 0.5 * (first + second);
+  const ExponentialSum from_mid{a2 + b2 * mid, b2, {{std::exp(-mid), 1.0}}};
+  const auto s_back = first_crossing(from_mid, 0.0, 50.0);
+  ASSERT_TRUE(s_back.has_value());
+  EXPECT_NEAR(*s_back + mid, second, 1e-13 * second);
+}
+
+// (x - 0.9)(x - 0.5)(x - 0.2) with x = exp(-s): three decays (rates 1, 2, 3), roots at s =
+// -ln 0.9, -ln 0.5, -ln 0.2, each the first crossing from a start before it; a level the sum
+// reaches only inside its second monotone piece.
+TEST(PronyRoot, SeveralDecaysAndCrossings) {
+  const double p = 0.9, q = 0.5, r = 0.2;
+  const ExponentialSum f{
+      -p * q * r, 0.0, {{p * q + q * r + r * p, 1.0}, {-(p + q + r), 0.5}, {1.0, 1.0 / 3.0}}};
+  for (const double root : {p, q, r}) {
+    const double expected = -std::log(root);
+    // Start halfway between the previous root and this one.
+    const double start = root == p   ? 0.0
+                         : root == q ? 0.5 * (-std::log(p) - std::log(q))
+                                     : 0.5 * (-std::log(q) - std::log(r));
+    ExponentialSum from{f.constant, 0.0, {}};
+    for (const ExponentialDecay& decay : f.decays) {
+      from.decays.push_back({decay.amplitude * std::exp(-start / decay.time), decay.time});
+    }
+    const auto s = first_crossing(from, 0.0, 20.0);
+    ASSERT_TRUE(s.has_value()) << root;
+    EXPECT_NEAR(start + *s, expected, 1e-13 * expected) << root;
+  }
+  EXPECT_FALSE(first_crossing(f, 0.0, 0.5 * -std::log(p)).has_value());
+  // f's minimum between the roots at 0.9 and 0.5 lies at x = m, f(m) < 0; a level just above it
+  // is first reached on the way down, past the first root, from above (f(0) = 0.04 > level).
+  const double m =
+      ((p + q + r) + std::sqrt((p + q + r) * (p + q + r) - 3.0 * (p * q + q * r + r * p))) / 3.0;
+  const double lowest = (m - p) * (m - q) * (m - r);
+  ASSERT_LT(lowest, 0.0);
+  const double level = 0.5 * lowest;
+  const auto s = first_crossing(f, level, 20.0);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(f.at(*s), level, 1e-15);
+  EXPECT_GT(*s, -std::log(p));
+  EXPECT_LT(*s, -std::log(m));
+}
+
+// A sum that starts at the level and moves away is not found at s = 0; one that only touches the
+// level as s -> infinity is never found.
+TEST(PronyRoot, StartingAtTheLevel) {
+  const ExponentialSum rise{0.0, 0.0, {{1.0, 1.0}, {-1.0, 0.5}}};  // exp(-s) - exp(-2s) >= 0
+  EXPECT_FALSE(first_crossing(rise, 0.0, 100.0).has_value());
+  const ExponentialSum up_and_down{0.0, -0.05, {{1.0, 1.0}, {-1.0, 0.5}}};
+  const auto s = first_crossing(up_and_down, 0.0, 100.0);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_GT(*s, std::log(2.0));  // past the maximum
+  EXPECT_NEAR(up_and_down.at(*s), 0.0, 1e-16);
+}
+
+}  // namespace
+}  // namespace mdrsim
