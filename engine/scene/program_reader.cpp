@@ -106,12 +106,42 @@ bool moves(const std::optional<StageAxis>& axis) {
   return axis && axis->motion == StageAxis::Motion::by && axis->value != 0.0;
 }
 
+/// Whether the axis moves its held value over the stage: `to` (its change is known only as the
+/// stage starts) or a non-zero `by`.
+bool moves_held_value(const std::optional<StageAxis>& axis) {
+  return axis && (axis->motion == StageAxis::Motion::to ||
+                  (axis->motion == StageAxis::Motion::by && axis->value != 0.0));
+}
+
+/// A stage's `duration` or `speed` (docs/programs.md "Time").
+void read_stage_clock(TomlReader& t, Stage& stage) {
+  if (t.has("duration") && t.has("speed")) t.fail_at("speed", "give duration or speed, not both");
+  stage.duration = t.optional_number(
+      {.key = "duration",
+       .help = "the stage's duration [s] (per unit of the stage parameter until separation), > 0",
+       .lower = Bound{0.0, false}});
+  stage.speed =
+      t.optional_number({.key = "speed",
+                         .help = "the rate of the stage's moving held value [m/s or N/s], > 0",
+                         .lower = Bound{0.0, false}});
+  if (!stage.speed) return;
+  const bool normal = moves_held_value(stage.normal);
+  const bool tangential = moves_held_value(stage.tangential);
+  if (!normal && !tangential) {
+    t.fail_at("speed", "needs a moving axis (to, or a non-zero by); give duration for a hold");
+  }
+  // Two held values, perhaps a force and a displacement, have no one rate.
+  if (normal && tangential) {
+    t.fail_at("speed", "needs one moving axis; give duration for a stage that moves both");
+  }
+}
+
 /// The stage numbers (from 1) of the names the scene gave so far.
 using StageNumbers = std::map<std::string, std::size_t, std::less<>>;
 
 Stage read_stage(TomlReader& t, std::size_t number, const ControllerRegistry& controllers,
                  AxisControl& normal, AxisControl& tangential, StageNumbers& named) {
-  t.check_keys({"name", "normal", "tangential", "until"});
+  t.check_keys({"name", "normal", "tangential", "until", "duration", "speed"});
   Stage stage;
   if (const auto name = t.optional_text("name")) {
     if (!is_stage_name(*name)) {
@@ -141,6 +171,7 @@ Stage read_stage(TomlReader& t, std::size_t number, const ControllerRegistry& co
         "until",
         "\"separation\" needs a non-zero by on normal or tangential, or the stage never ends");
   }
+  read_stage_clock(t, stage);
   t.finish();
   return stage;
 }
@@ -173,6 +204,19 @@ Program read_program(TomlReader& loading, const ControllerRegistry& controllers)
   program.stages.reserve(stages.size());
   for (std::size_t i = 0; i < stages.size(); ++i) {
     program.stages.push_back(read_stage(stages[i], i + 1, controllers, normal, tangential, named));
+  }
+  // A clock that stops part way would leave later states without a time.
+  const auto timed = std::find_if(program.stages.begin(), program.stages.end(),
+                                  [](const Stage& s) { return s.timed(); });
+  if (timed != program.stages.end()) {
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+      if (!program.stages[i].timed()) {
+        stages[i].fail(fmt::format(
+            "has neither duration nor speed, which loading.stage.{} gives: a timed program "
+            "gives every stage one",
+            (timed - program.stages.begin()) + 1));
+      }
+    }
   }
   return program;
 }
