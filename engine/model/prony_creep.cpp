@@ -8,102 +8,114 @@
 
 namespace mdrsim {
 
-FreeSpringCreep::FreeSpringCreep(double relaxed_modulus, std::span<const PronyTerm> terms,
-                                 std::span<const double> stresses)
+RetardationModes::RetardationModes(double relaxed_modulus, std::span<const PronyTerm> terms)
     : relaxed_modulus_(relaxed_modulus), terms_(terms.begin(), terms.end()) {
   // Group the terms by relaxation time, ascending rate 1/tau.
   std::vector<std::size_t> order(terms_.size());
-  for (std::size_t j = 0; j < order.size(); ++j) {
-    order[j] = j;
-  }
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return terms_[a].time > terms_[b].time; });
   group_of_.resize(terms_.size());
-  std::vector<double> group_stress;
   for (const std::size_t j : order) {
     if (groups_.empty() || groups_.back().time != terms_[j].time) {
       groups_.push_back({0.0, terms_[j].time});
-      group_stress.push_back(0.0);
     }
     groups_.back().modulus += terms_[j].modulus;
-    group_stress.back() += stresses[j];
     group_of_[j] = groups_.size() - 1;
   }
-  residuals_.resize(terms_.size());
-  for (std::size_t j = 0; j < terms_.size(); ++j) {
-    const PronyTerm& group = groups_[group_of_[j]];
-    residuals_[j] = stresses[j] - terms_[j].modulus / group.modulus * group_stress[group_of_[j]];
-  }
-
   // The retardation rates: E* = mu sum_g E_g / (lambda_g - mu), one root per interval.
-  const std::size_t count = groups_.size();
   const auto secular = [&](double mu) {
     double sum = 0.0;
-    for (const PronyTerm& group : groups_) {
-      sum += group.modulus / (1.0 / group.time - mu);
-    }
+    for (const PronyTerm& group : groups_) sum += group.modulus / (1.0 / group.time - mu);
     return mu * sum - relaxed_modulus_;
   };
+  const std::size_t count = groups_.size();
   for (std::size_t k = 0; k < count; ++k) {
     const double lo = k == 0 ? 0.0 : std::nextafter(1.0 / groups_[k - 1].time, HUGE_VAL);
     const double hi = std::nextafter(1.0 / groups_[k].time, 0.0);
     rates_.push_back(bracketed_root(secular, lo, hi));
-  }
-
-  // alpha_k = <v_k, y0> / <v_k, v_k> in <u, v> = sum_g E_g u_g v_g + (sum E_g u_g)(sum E_g v_g) /
-  // E*.
-  const auto inner = [&](const std::vector<double>& u, const std::vector<double>& v) {
-    double diagonal = 0.0, eu = 0.0, ev = 0.0;
-    for (std::size_t g = 0; g < count; ++g) {
-      diagonal += groups_[g].modulus * u[g] * v[g];
-      eu += groups_[g].modulus * u[g];
-      ev += groups_[g].modulus * v[g];
-    }
-    return diagonal + eu * ev / relaxed_modulus_;
-  };
-  std::vector<double> initial(count);
-  for (std::size_t g = 0; g < count; ++g) {
-    initial[g] = group_stress[g] / groups_[g].modulus;
+    std::vector<double> mode(count);
+    for (std::size_t g = 0; g < count; ++g) mode[g] = 1.0 / (1.0 / groups_[g].time - rates_[k]);
+    modes_.push_back(std::move(mode));
   }
   for (std::size_t k = 0; k < count; ++k) {
-    std::vector<double> mode(count);
+    double diagonal = 0.0, weighted = 0.0;
     for (std::size_t g = 0; g < count; ++g) {
-      mode[g] = 1.0 / (1.0 / groups_[g].time - rates_[k]);
+      diagonal += groups_[g].modulus * modes_[k][g] * modes_[k][g];
+      weighted += groups_[g].modulus * modes_[k][g];
     }
-    const double alpha = inner(mode, initial) / inner(mode, mode);
-    for (double& v : mode) {
-      v *= alpha;
-    }
-    strains_.push_back(std::move(mode));
+    mode_norms_.push_back(diagonal + weighted * weighted / relaxed_modulus_);
   }
 }
 
-std::vector<double> FreeSpringCreep::stresses(double t) const {
-  std::vector<double> group_stress(groups_.size(), 0.0);
+std::vector<double> RetardationModes::amplitudes(std::span<const double> group_stresses) const {
+  // alpha_k = <v_k, y0> / <v_k, v_k>, <u, v> = sum_g E_g u_g v_g + (sum E_g u_g)(sum E_g v_g) / E*,
+  // with y0_g = sigma_g / E_g: E_g y0_g = sigma_g.
+  double stress_sum = 0.0;
+  for (const double sigma : group_stresses) stress_sum += sigma;
+  std::vector<double> alpha(rates_.size());
   for (std::size_t k = 0; k < rates_.size(); ++k) {
-    const double decay = std::exp(-rates_[k] * t);
+    double diagonal = 0.0, weighted = 0.0;
     for (std::size_t g = 0; g < groups_.size(); ++g) {
-      group_stress[g] += groups_[g].modulus * strains_[k][g] * decay;
+      diagonal += modes_[k][g] * group_stresses[g];
+      weighted += groups_[g].modulus * modes_[k][g];
+    }
+    alpha[k] = (diagonal + weighted * stress_sum / relaxed_modulus_) / mode_norms_[k];
+  }
+  return alpha;
+}
+
+FreeSpringCreep::FreeSpringCreep(std::shared_ptr<const RetardationModes> modes,
+                                 std::span<const double> stresses)
+    : modes_(std::move(modes)) {
+  const std::span<const PronyTerm> terms = modes_->terms();
+  std::vector<double> group_stresses(modes_->groups().size(), 0.0);
+  for (std::size_t j = 0; j < terms.size(); ++j) group_stresses[modes_->group_of(j)] += stresses[j];
+  amplitudes_ = modes_->amplitudes(group_stresses);
+  residuals_.resize(terms.size());
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    const std::size_t g = modes_->group_of(j);
+    residuals_[j] =
+        stresses[j] - terms[j].modulus / modes_->groups()[g].modulus * group_stresses[g];
+  }
+}
+
+FreeSpringCreep::FreeSpringCreep(double relaxed_modulus, std::span<const PronyTerm> terms,
+                                 std::span<const double> stresses)
+    : FreeSpringCreep(std::make_shared<const RetardationModes>(relaxed_modulus, terms), stresses) {}
+
+std::vector<double> FreeSpringCreep::stresses(double t) const {
+  const std::span<const PronyTerm> groups = modes_->groups();
+  std::vector<double> group_stress(groups.size(), 0.0);
+  for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
+    const double decay = amplitudes_[k] * std::exp(-modes_->rates()[k] * t);
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      group_stress[g] += groups[g].modulus * modes_->mode(k, g) * decay;
     }
   }
-  std::vector<double> out(terms_.size());
-  for (std::size_t j = 0; j < terms_.size(); ++j) {
-    const PronyTerm& group = groups_[group_of_[j]];
-    out[j] = terms_[j].modulus / group.modulus * group_stress[group_of_[j]] +
-             residuals_[j] * std::exp(-t / terms_[j].time);
+  const std::span<const PronyTerm> terms = modes_->terms();
+  std::vector<double> out(terms.size());
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    const std::size_t g = modes_->group_of(j);
+    out[j] = terms[j].modulus / groups[g].modulus * group_stress[g] +
+             residuals_[j] * std::exp(-t / terms[j].time);
   }
   return out;
 }
 
 ExponentialSum FreeSpringCreep::stretch_from(double t0) const {
   // w = -sum_g sigma_g / E* (the residuals of a group sum to zero).
+  const std::span<const PronyTerm> groups = modes_->groups();
   ExponentialSum w;
-  for (std::size_t k = 0; k < rates_.size(); ++k) {
+  for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
     double amplitude = 0.0;
-    for (std::size_t g = 0; g < groups_.size(); ++g) {
-      amplitude -= groups_[g].modulus * strains_[k][g];
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      amplitude -= groups[g].modulus * modes_->mode(k, g);
     }
-    w.decays.push_back({amplitude / relaxed_modulus_ * std::exp(-rates_[k] * t0), 1.0 / rates_[k]});
+    const double rate = modes_->rates()[k];
+    w.decays.push_back(
+        {amplitude * amplitudes_[k] / modes_->relaxed_modulus() * std::exp(-rate * t0),
+         1.0 / rate});
   }
   return w;
 }
@@ -114,9 +126,7 @@ std::optional<double> touch_time(const FreeSpringCreep& creep, double t0, double
                                  double rate, double span) {
   // The indenter's stretch less the free surface's: negative while apart, zero at the touch.
   ExponentialSum overlap = creep.stretch_from(t0);
-  for (ExponentialDecay& decay : overlap.decays) {
-    decay.amplitude = -decay.amplitude;
-  }
+  for (ExponentialDecay& decay : overlap.decays) decay.amplitude = -decay.amplitude;
   overlap.constant = indenter_stretch;
   overlap.slope = rate;
   return first_crossing(overlap, 0.0, span);

@@ -2,6 +2,7 @@
 // length, and the time the withdrawing or returning indenter meets it again.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -18,10 +19,41 @@ namespace mdrsim {
 /// the ascending 1/tau_j), v_kj = 1 / (1/tau_j - mu_k), and alpha_k by the pencil's D + E E^T / E*
 /// orthogonality. One term: mu = E* / (tau E_0*), the inverse retardation time. Terms with one
 /// relaxation time act as one arm; their differences from the shares of the sum decay at 1/tau.
+class RetardationModes {
+ public:
+  RetardationModes(double relaxed_modulus, std::span<const PronyTerm> terms);
+
+  double relaxed_modulus() const { return relaxed_modulus_; }
+  std::span<const PronyTerm> terms() const { return terms_; }
+  /// The retardation rates mu_k [1/s], ascending.
+  std::span<const double> rates() const { return rates_; }
+  /// The arms with distinct relaxation times (terms with one tau merged, moduli summed).
+  std::span<const PronyTerm> groups() const { return groups_; }
+  /// The group of term j.
+  std::size_t group_of(std::size_t j) const { return group_of_[j]; }
+  /// v_kg = 1 / (1/tau_g - mu_k), the strain of group g in mode k.
+  double mode(std::size_t k, std::size_t g) const { return modes_[k][g]; }
+  /// alpha_k of group stresses sigma_g [N/m]: y = sum_k alpha_k v_k at the release.
+  std::vector<double> amplitudes(std::span<const double> group_stresses) const;
+
+ private:
+  double relaxed_modulus_;
+  std::vector<PronyTerm> terms_;
+  std::vector<std::size_t> group_of_;
+  std::vector<PronyTerm> groups_;
+  std::vector<double> rates_;
+  std::vector<std::vector<double>> modes_;
+  std::vector<double> mode_norms_;  ///< <v_k, v_k> in the pencil's inner product
+};
+
+/// One free spring: O(1) per term (its modes' amplitudes and its terms' residuals), the modes
+/// shared by every spring of the material.
 class FreeSpringCreep {
  public:
   /// The spring is free from now (t = 0) with arm stresses sigma_j [N/m]; its stretch is then
   /// w = -sum_j sigma_j / E*.
+  FreeSpringCreep(std::shared_ptr<const RetardationModes> modes, std::span<const double> stresses);
+  /// The same with modes of its own.
   FreeSpringCreep(double relaxed_modulus, std::span<const PronyTerm> terms,
                   std::span<const double> stresses);
 
@@ -32,16 +64,12 @@ class FreeSpringCreep {
   /// w(t0 + s) as an exponential sum in s [s].
   ExponentialSum stretch_from(double t0) const;
   /// The retardation rates mu_k [1/s], ascending.
-  std::span<const double> rates() const { return rates_; }
+  std::span<const double> rates() const { return modes_->rates(); }
 
  private:
-  double relaxed_modulus_;
-  std::vector<PronyTerm> terms_;
-  std::vector<std::size_t> group_of_;         ///< the merged arm (distinct tau) of each term
-  std::vector<PronyTerm> groups_;             ///< the merged arms: summed moduli
-  std::vector<double> residuals_;             ///< sigma_j - (E_j / E_group) sigma_group at 0 [N/m]
-  std::vector<double> rates_;                 ///< mu_k [1/s]
-  std::vector<std::vector<double>> strains_;  ///< alpha_k v_kg: the strain of group g in mode k
+  std::shared_ptr<const RetardationModes> modes_;
+  std::vector<double> amplitudes_;  ///< alpha_k
+  std::vector<double> residuals_;   ///< sigma_j - (E_j / E_group) sigma_group at 0 [N/m]
 };
 
 /// The first s in (0, span] [s] at which the indenter, whose surface at the spring stands at

@@ -10,7 +10,7 @@ namespace mdrsim {
 namespace {
 
 // p(s) = constant + sum_j amplitude_j exp(-rate_j s), rates >= 0 and distinct after merging.
-struct DecaySum {
+struct ConstantPlusDecays {
   double constant = 0.0;
   std::vector<std::pair<double, double>> terms;  // amplitude, rate [1/s]
 
@@ -25,10 +25,10 @@ struct DecaySum {
 
 // Equal rates merged, zero amplitudes dropped, a zero rate folded into the constant, rates
 // ascending.
-DecaySum tidied(DecaySum p) {
+ConstantPlusDecays merged_decays(ConstantPlusDecays p) {
   std::sort(p.terms.begin(), p.terms.end(),
             [](const auto& x, const auto& y) { return x.second < y.second; });
-  DecaySum out{p.constant, {}};
+  ConstantPlusDecays out{p.constant, {}};
   for (const auto& [amplitude, rate] : p.terms) {
     if (rate == 0.0) {
       out.constant += amplitude;
@@ -44,7 +44,7 @@ DecaySum tidied(DecaySum p) {
 
 // The sign changes of fn over [points[i], points[i+1]] where fn is monotone on each piece.
 template <class Fn>
-std::vector<double> roots_on_pieces(Fn fn, const std::vector<double>& points) {
+std::vector<double> sign_changes_on_monotone_pieces(Fn fn, const std::vector<double>& points) {
   std::vector<double> roots;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const double lo = points[i], hi = points[i + 1];
@@ -60,23 +60,24 @@ std::vector<double> roots_on_pieces(Fn fn, const std::vector<double>& points) {
 
 // The zeros of p in (lo, hi): p' = exp(-r_1 s) q(s) with q = -a_1 r_1 - sum_{j >= 2} a_j r_j
 // exp(-(r_j - r_1) s), one decay fewer; p is monotone between q's zeros.
-std::vector<double> zeros_in(const DecaySum& raw, double lo, double hi) {
-  const DecaySum p = tidied(raw);
+std::vector<double> decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi) {
+  const ConstantPlusDecays p = merged_decays(raw);
   if (p.terms.empty()) {
     return {};
   }
   const double slowest = p.terms.front().second;
-  DecaySum derivative{-p.terms.front().first * slowest, {}};
+  ConstantPlusDecays derivative{-p.terms.front().first * slowest, {}};
   for (std::size_t j = 1; j < p.terms.size(); ++j) {
     const auto& [amplitude, rate] = p.terms[j];
     derivative.terms.emplace_back(-amplitude * rate, rate - slowest);
   }
   std::vector<double> points{lo};
-  for (const double s : zeros_in(derivative, lo, hi)) {
+  for (const double s : decay_sum_zeros(derivative, lo, hi)) {
     points.push_back(s);
   }
   points.push_back(hi);
-  std::vector<double> zeros = roots_on_pieces([&](double s) { return p.at(s); }, points);
+  std::vector<double> zeros =
+      sign_changes_on_monotone_pieces([&](double s) { return p.at(s); }, points);
   std::erase_if(zeros, [&](double s) { return s <= lo || s >= hi; });
   return zeros;
 }
@@ -91,17 +92,25 @@ double ExponentialSum::at(double s) const {
   return sum;
 }
 
+double ExponentialSum::slope_at(double s) const {
+  double sum = slope;
+  for (const ExponentialDecay& decay : decays) {
+    sum -= decay.amplitude / decay.time * std::exp(-s / decay.time);
+  }
+  return sum;
+}
+
 std::optional<double> first_crossing(const ExponentialSum& f, double level, double span) {
   if (!(span > 0.0)) {
     return std::nullopt;
   }
   const auto g = [&](double s) { return f.at(s) - level; };
-  DecaySum derivative{f.slope, {}};
+  ConstantPlusDecays derivative{f.slope, {}};
   for (const ExponentialDecay& decay : f.decays) {
     derivative.terms.emplace_back(-decay.amplitude / decay.time, 1.0 / decay.time);
   }
   std::vector<double> points{0.0};
-  for (const double s : zeros_in(derivative, 0.0, span)) {
+  for (const double s : decay_sum_zeros(derivative, 0.0, span)) {
     points.push_back(s);
   }
   points.push_back(span);

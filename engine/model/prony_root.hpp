@@ -20,6 +20,8 @@ struct ExponentialSum {
   std::vector<ExponentialDecay> decays;
 
   double at(double s) const;
+  /// f'(s) [the sum's unit / s].
+  double slope_at(double s) const;
 };
 
 /// The first s in (0, span] at which f(s) = level, f reaching it from the side it is on just
