@@ -18,6 +18,7 @@
 #include "engine/scene/friction_reader.hpp"
 #include "engine/scene/grading_reader.hpp"
 #include "engine/scene/program_reader.hpp"
+#include "engine/scene/relaxation_reader.hpp"
 #include "engine/scene/scene_document_impl.hpp"
 #include "engine/scene/scene_error.hpp"
 #include "engine/scene/shorthand_program.hpp"
@@ -48,7 +49,7 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings,
                        FiniteRangeKeys& finite_range) {
   t.check_keys({"youngs_modulus", "poisson_ratio", "work_of_adhesion", "effective_modulus",
                 "effective_shear_modulus", "approach_work_of_adhesion", "adhesive_stress",
-                "maugis_parameter", "grading"});
+                "maugis_parameter", "grading", "relaxation"});
   const bool youngs = t.has("youngs_modulus") || t.has("poisson_ratio");
   const bool effective = t.has("effective_modulus") || t.has("effective_shear_modulus");
   if (youngs && effective) {
@@ -71,6 +72,7 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings,
     apply_adhesion(t, dgamma, approach, m);
     warn_moduli(t, m, warnings);
     refuse_grading_without_poisson_ratio(t);
+    if (auto terms = read_relaxation(t, 1.0)) m.relaxation = std::move(*terms);
     return m;
   }
   const double e = t.number({.key = "youngs_modulus",
@@ -92,6 +94,9 @@ Material read_material(TomlReader& t, std::vector<std::string>& warnings,
     }
   }
   if (const auto grading = read_grading(t, e, nu)) m.grading = *grading;
+  if (auto terms = read_relaxation(t, 1.0 / ((1.0 - nu) * (1.0 + nu)))) {
+    m.relaxation = std::move(*terms);
+  }
   return m;
 }
 
@@ -525,11 +530,13 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                            {"max_events", scene.solver.max_events},
                            {"max_events_per_spring", scene.solver.max_events_per_spring}});
   }
+  refuse_outside_relaxation_scope(root, loading, material, route_keys, scene);
   refuse_outside_dugdale_scope(root, loading, route_keys, scene);
   if (scene.material.finite_range()) use_dugdale_route(*resolved, scene, route_keys);
   refuse_outside_grading_scope(root, loading, material, scene);
   use_graded_route(*resolved, route_keys, scene);
   read_discretization(root, route_keys, scene);
+  refuse_unrun_relaxation(material, route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);
   root.finish();
   scene.resolved = std::move(resolved);

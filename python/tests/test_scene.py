@@ -90,7 +90,7 @@ BAD = [
                  "--set: material.poisson: unknown key; did you mean 'poisson_ratio'? "
                  "(known: adhesive_stress, approach_work_of_adhesion, "
                  "effective_modulus, effective_shear_modulus, grading, maugis_parameter, poisson_ratio, "
-                 "work_of_adhesion, youngs_modulus)", id="bad-key"),
+                 "relaxation, work_of_adhesion, youngs_modulus)", id="bad-key"),
     pytest.param(FIG2, {"loading.stage.2.normal.by": 1e-6},
                  "--set: loading.stage.2.normal.by: the scene has no [[loading.stage]]",
                  id="bad-override"),
@@ -131,7 +131,7 @@ def test_bad_key_in_a_file_names_its_line():
         "typo.toml:8:1: material.poisson_rate: unknown key; did you mean 'poisson_ratio'? "
         "(known: adhesive_stress, approach_work_of_adhesion, "
         "effective_modulus, effective_shear_modulus, grading, maugis_parameter, poisson_ratio, "
-        "work_of_adhesion, youngs_modulus)")
+        "relaxation, work_of_adhesion, youngs_modulus)")
 
 
 def test_malformed_toml():

@@ -47,7 +47,7 @@ springs = 100
 
 constexpr const char* kMaterialKeys =
     "adhesive_stress, approach_work_of_adhesion, effective_modulus, effective_shear_modulus, "
-    "grading, maugis_parameter, poisson_ratio, work_of_adhesion, youngs_modulus";
+    "grading, maugis_parameter, poisson_ratio, relaxation, work_of_adhesion, youngs_modulus";
 
 /// `text` as one single-quoted shell word.
 std::string shell_word(std::string_view text) {

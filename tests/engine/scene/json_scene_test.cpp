@@ -78,12 +78,12 @@ TEST(JsonScene, BadInputNamesTheFile) {
   // Keys and values are checked as in TOML; JSON has no line numbers to give.
   nlohmann::json typo = nlohmann::json::parse(kScene);
   typo["material"]["poisson"] = 0.3;
-  EXPECT_THROW_MSG(
-      build(typo.dump()), SceneError,
-      "r.json: material.poisson: unknown key; did you mean 'poisson_ratio'? (known: "
-      "adhesive_stress, approach_work_of_adhesion, effective_modulus, "
-      "effective_shear_modulus, grading, maugis_parameter, poisson_ratio, work_of_adhesion, "
-      "youngs_modulus)");
+  EXPECT_THROW_MSG(build(typo.dump()), SceneError,
+                   "r.json: material.poisson: unknown key; did you mean 'poisson_ratio'? (known: "
+                   "adhesive_stress, approach_work_of_adhesion, effective_modulus, "
+                   "effective_shear_modulus, grading, maugis_parameter, poisson_ratio, relaxation, "
+                   "work_of_adhesion, "
+                   "youngs_modulus)");
 }
 
 }  // namespace

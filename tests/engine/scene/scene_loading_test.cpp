@@ -90,7 +90,7 @@ std::string help(const Registry& registry, std::string_view part, std::string_vi
 
 constexpr const char* kMaterialKeys =
     "adhesive_stress, approach_work_of_adhesion, effective_modulus, effective_shear_modulus, "
-    "grading, maugis_parameter, poisson_ratio, work_of_adhesion, youngs_modulus";
+    "grading, maugis_parameter, poisson_ratio, relaxation, work_of_adhesion, youngs_modulus";
 constexpr const char* kRootKeys =
     "detachment, discretization, friction, loading, material, profile, solver, title";
 

@@ -1,0 +1,98 @@
+// material.relaxation: the Prony terms and the scope the viscoelastic springs run in.
+#include "engine/scene/relaxation_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+
+#include "engine/scene/scene_error.hpp"
+
+namespace mdrsim {
+namespace {
+
+constexpr std::size_t kMostPronyTerms = 64;
+constexpr const char* kRelaxationScope = " (docs/viscoelastic.md \"What it refuses\")";
+
+std::string not_yet_with_relaxation(const std::string& what) {
+  return what + " is not yet taken with material.relaxation" + kRelaxationScope;
+}
+
+}  // namespace
+
+std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plane_strain) {
+  auto tables = t.optional_table_array("relaxation", kMostPronyTerms);
+  if (!tables) return std::nullopt;
+  // Before the routes these keys choose refuse the scene for reasons of their own.
+  for (const char* key : {"adhesive_stress", "maugis_parameter"}) {
+    if (t.has(key)) {
+      t.fail_at(key, std::string("finite-range adhesion is not taken with material.relaxation") +
+                         kRelaxationScope);
+    }
+  }
+  if (t.has("grading")) t.fail_at("grading", not_yet_with_relaxation("a graded half-space"));
+  std::vector<PronyTerm> terms;
+  for (TomlReader& term : *tables) {
+    term.check_keys({"modulus", "time"});
+    const double modulus = term.number(
+        {.key = "modulus", .help = "E_i [Pa] > 0 of the Prony term", .lower = Bound{0.0, false}});
+    const double time = term.number(
+        {.key = "time", .help = "tau_i [s] > 0 of the Prony term", .lower = Bound{0.0, false}});
+    term.finish();
+    terms.push_back({modulus * plane_strain, time});
+  }
+  return terms;
+}
+
+void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& loading,
+                                     const TomlReader& material, const RouteKeys& route_keys,
+                                     const Scene& scene) {
+  if (!scene.material.relaxes()) return;
+  if (!scene.program) {
+    material.fail_at("relaxation",
+                     std::string("needs a loading program whose stages all have a duration or "
+                                 "speed; the shorthand has no clock") +
+                         kRelaxationScope);
+  }
+  if (!scene.program->timed()) {
+    material.fail_at(
+        "relaxation",
+        std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
+  }
+  if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
+  if (scene.material.adhesive() || scene.material.approach_work_of_adhesion > 0.0 ||
+      scene.material.approach_work_of_adhesion_by_radius) {
+    material.fail_at("work_of_adhesion",
+                     not_yet_with_relaxation(
+                         "adhesion (the edge under a relaxing bulk), work_of_adhesion > 0,"));
+  }
+  for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
+    const Stage& stage = scene.program->stages[i];
+    if (stage.tangential && (stage.tangential->control != "fixed-grips" ||
+                             stage.tangential->motion != StageAxis::Motion::hold)) {
+      loading.fail_at("stage",
+                      not_yet_with_relaxation(fmt::format("loading.stage.{}.tangential", i + 1)));
+    }
+    if (stage.normal && stage.normal->control != "fixed-grips") {
+      loading.fail_at(
+          "stage", not_yet_with_relaxation(fmt::format("loading.stage.{}.normal.control = \"{}\"",
+                                                       i + 1, stage.normal->control)));
+    }
+  }
+  if (route_keys.method_given && scene.solver.method != SolverMethod::event) {
+    throw SceneError(route_keys.method_at +
+                     not_yet_with_relaxation("a method other than \"event\""));
+  }
+}
+
+void refuse_unrun_relaxation(const TomlReader& material, const RouteKeys& route_keys,
+                             const Scene& scene) {
+  if (!scene.material.relaxes()) return;
+  if (scene.discretization.rtol) {
+    throw SceneError(route_keys.rtol_at + not_yet_with_relaxation("rtol (give springs)"));
+  }
+  material.fail_at(
+      "relaxation",
+      std::string("the program row does not yet run viscoelastic springs") + kRelaxationScope);
+}
+
+}  // namespace mdrsim

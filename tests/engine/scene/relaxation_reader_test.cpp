@@ -1,0 +1,143 @@
+// material.relaxation: the Prony terms read into the material as plane-strain moduli, and every
+// key outside the viscoelastic springs' scope refused in one line at that key (the exact texts).
+#include "engine/scene/relaxation_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/expect_throw_msg.hpp"
+
+#include <string>
+
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
+#include "engine/scene/scene_error.hpp"
+
+namespace mdrsim::test {
+namespace {
+
+Scene build(const std::string& text) {
+  static const Registries registries = Registries::builtin();
+  return SceneDocument::from_text(text, "v.toml").build(registries);
+}
+
+// A parabola pressed at 1e-4 m/s for 0.2 s and withdrawn at the same speed into an SLS; the line
+// numbers in the messages below refer to this text.
+const std::string kViscous =
+    "[material]\n"
+    "youngs_modulus = 1.0e6\n"
+    "poisson_ratio = 0.5\n"
+    "work_of_adhesion = 0.0\n"
+    "relaxation = [ { modulus = 9.0e6, time = 0.1 } ]\n"
+    "[profile]\n"
+    "type = \"parabolic\"\n"
+    "radius = 0.01\n"
+    "[[loading.stage]]\n"
+    "normal = { control = \"fixed-grips\", to = 2.0e-5 }\n"
+    "duration = 0.2\n"
+    "[[loading.stage]]\n"
+    "normal = { by = -1.0e-4 }\n"
+    "until = \"separation\"\n"
+    "duration = 1.0\n"
+    "[discretization]\n"
+    "springs = 100\n";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+// E_i* = E_i / (1 - nu^2) with youngs_modulus; as given with effective_modulus.
+TEST(RelaxationReader, ReadsTheTermsAsPlaneStrainModuli) {
+  const auto read = [](const std::string& material, double factor) {
+    const toml::table table = toml::parse(material);
+    TomlReader reader(table, "material", "m.toml", ".");
+    return read_relaxation(reader, factor);
+  };
+  const auto terms =
+      read("relaxation = [ { modulus = 9.0e6, time = 0.1 }, { modulus = 2.0e6, time = 3.0 } ]\n",
+           4.0 / 3.0);
+  ASSERT_TRUE(terms.has_value());
+  ASSERT_EQ(terms->size(), 2u);
+  EXPECT_DOUBLE_EQ((*terms)[0].modulus, 1.2e7);
+  EXPECT_EQ((*terms)[0].time, 0.1);
+  EXPECT_DOUBLE_EQ((*terms)[1].modulus, 2.0e6 * 4.0 / 3.0);
+  EXPECT_EQ((*terms)[1].time, 3.0);
+  EXPECT_FALSE(read("youngs_modulus = 1.0\n", 1.0).has_value());
+}
+
+struct Refusal {
+  const char* name;
+  std::string text;
+  const char* message;
+};
+
+TEST(RelaxationReader, RefusesOneLineAtTheKey) {
+  const Refusal refusals[] = {
+      {"ZeroModulus", replaced(kViscous, "modulus = 9.0e6", "modulus = 0.0"),
+       "v.toml:5:28: material.relaxation.1.modulus = 0 is outside (0, inf)"},
+      {"NegativeTime", replaced(kViscous, "time = 0.1", "time = -0.1"),
+       "v.toml:5:42: material.relaxation.1.time = -0.1 is outside (0, inf)"},
+      {"UnknownKey", replaced(kViscous, "time = 0.1", "time = 0.1, viscosity = 1.0"),
+       "v.toml:5:47: material.relaxation.1.viscosity: unknown key (known: modulus, time)"},
+      {"NotATable", replaced(kViscous, "[ { modulus = 9.0e6, time = 0.1 } ]", "9.0e6"),
+       "v.toml:5:14: material.relaxation: expected an array of tables ([[material.relaxation]]), "
+       "got 9000000"},
+      {"Shorthand",
+       replaced(kViscous,
+                "[[loading.stage]]\nnormal = { control = \"fixed-grips\", to = 2.0e-5 }\nduration "
+                "= 0.2\n[[loading.stage]]\nnormal = { by = -1.0e-4 }\nuntil = "
+                "\"separation\"\nduration = 1.0\n",
+                "[loading]\npreload = { depth = 2.0e-5 }\nnormal = { control = \"fixed-grips\" "
+                "}\n"),
+       "v.toml:5:14: material.relaxation: needs a loading program whose stages all have a duration "
+       "or speed; the shorthand has no clock (docs/viscoelastic.md \"What it refuses\")"},
+      {"Untimed", replaced(replaced(kViscous, "duration = 0.2\n", ""), "duration = 1.0\n", ""),
+       "v.toml:5:14: material.relaxation: needs every loading stage to have a duration or speed "
+       "(docs/viscoelastic.md \"What it refuses\")"},
+      {"Friction", kViscous + "[friction]\ncoefficient = 0.3\n",
+       "v.toml:18:1: friction: [friction] is not yet taken with material.relaxation "
+       "(docs/viscoelastic.md \"What it refuses\")"},
+      {"AdhesiveStress",
+       replaced(kViscous, "work_of_adhesion = 0.0\n",
+                "work_of_adhesion = 0.05\nadhesive_stress = 1.0e5\n"),
+       "v.toml:5:19: material.adhesive_stress: finite-range adhesion is not taken with "
+       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      {"Grading",
+       replaced(kViscous, "work_of_adhesion = 0.0\n",
+                "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
+       "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
+       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      {"Adhesion", replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+       "v.toml:4:20: material.work_of_adhesion: adhesion (the edge under a relaxing bulk), "
+       "work_of_adhesion > 0, is not yet taken with material.relaxation (docs/viscoelastic.md "
+       "\"What it refuses\")"},
+      {"Tangential",
+       replaced(kViscous, "until = \"separation\"\n",
+                "tangential = { control = \"fixed-grips\", by = 1e-6 }\nuntil = \"separation\"\n"),
+       "v.toml:9:1: loading.stage: loading.stage.2.tangential is not yet taken with "
+       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      {"FixedLoad",
+       replaced(kViscous, "normal = { by = -1.0e-4 }",
+                "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
+       "v.toml:9:1: loading.stage: loading.stage.2.normal.control = \"fixed-load\" is not yet "
+       "taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      {"Continuum", kViscous + "[solver]\nmethod = \"continuum\"\n",
+       "v.toml:19:10: solver.method: a method other than \"event\" is not yet taken with "
+       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      {"Rtol", replaced(kViscous, "springs = 100", "rtol = 1e-3"),
+       "v.toml:17:8: discretization.rtol: rtol (give springs) is not yet taken with "
+       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+  };
+  for (const Refusal& r : refusals) {
+    EXPECT_THROW_MSG(build(r.text), SceneError, r.message) << r.name;
+  }
+  // Within the scope, the row does not yet run it.
+  EXPECT_THROW_MSG(
+      build(kViscous), SceneError,
+      "v.toml:5:14: material.relaxation: the program row does not yet run viscoelastic "
+      "springs (docs/viscoelastic.md \"What it refuses\")");
+}
+
+}  // namespace
+}  // namespace mdrsim::test
