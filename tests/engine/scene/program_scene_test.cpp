@@ -297,9 +297,8 @@ INSTANTIATE_TEST_SUITE_P(MaterialAndLoading, BadProgramTest,
 std::vector<BadProgram> stage_cases() {
   return {
       {"StageKeyTypo", "name = \"approach\"", "nmae = \"approach\"",
-       "scene.toml:13:1: loading.stage.1.nmae: unknown key; did you mean 'name'? (known: name, "
-       "normal, tangential, "
-       "until)"},
+       "scene.toml:13:1: loading.stage.1.nmae: unknown key; did you mean 'name'? (known: "
+       "duration, name, normal, speed, tangential, until)"},
       {"NameWithSpace", "name = \"shear\"", "name = \"pure shear\"",
        "scene.toml:16:8: loading.stage.2.name: \"pure shear\" is not a stage name: give letters, "
        "digits, '-' and '_' only, at least one"},
