@@ -34,6 +34,11 @@ class ShapePreservingCubic {
   double value_on(std::size_t k, double x) const;
   double slope_on(std::size_t k, double x) const;
   double curvature_on(std::size_t k, double x) const;
+  /// Piece k's cubic about x: p(x + u) = value + u (slope + u (half_curvature + u sixth_third)).
+  struct Taylor {
+    double value, slope, half_curvature, sixth_third;
+  };
+  Taylor taylor_on(std::size_t k, double x) const;
 
   double value(double x) const { return value_on(piece(x), x); }
   double slope(double x) const { return slope_on(piece(x), x); }
@@ -78,6 +83,15 @@ inline double ShapePreservingCubic::slope_on(std::size_t k, double x) const {
   const Piece& p = pieces_[k];
   const double s = (x - knots_[k]) / p.h;
   return (p.c1 + s * (2.0 * p.c2 + s * 3.0 * p.c3)) / p.h;
+}
+
+inline ShapePreservingCubic::Taylor ShapePreservingCubic::taylor_on(std::size_t k, double x) const {
+  const Piece& p = pieces_[k];
+  const double to_s = 1.0 / p.h;
+  const double s = (x - knots_[k]) * to_s;
+  return {p.y + s * (p.c1 + s * (p.c2 + s * p.c3)),
+          (p.c1 + s * (2.0 * p.c2 + s * 3.0 * p.c3)) * to_s, (p.c2 + 3.0 * p.c3 * s) * to_s * to_s,
+          p.c3 * to_s * to_s * to_s};
 }
 
 }  // namespace mdrsim

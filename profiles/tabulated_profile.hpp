@@ -65,7 +65,8 @@ class TabulatedProfile final : public Profile {
   /// Exact on the image's Hermite pieces: no quadrature over its ~1000 kinks.
   std::optional<ExactIntegral> squared_gap_integral(double contact_radius,
                                                     double indentation) const override;
-  /// Gauss-Legendre on each of the image's Hermite pieces the zone covers (in its angle), exact
+  /// On each of the image's Hermite pieces the zone covers (in its angle): J and dJ/dt in closed
+  /// form where J is integrated as defined (t >= 0.3), Gauss-Legendre below (J by parts); exact
   /// to rounding where the adaptive default halves its panels at every kink of g''.
   DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
                          double angle) const override;
@@ -89,6 +90,8 @@ class TabulatedProfile final : public Profile {
   ImageValue transform(double x) const;
 
   const ShapePreservingCubic& interpolated_shape() const { return shape_; }
+  /// g(x) on its grid: the cubic Hermite pieces every image operation is exact on.
+  const ShapePreservingCubic& interpolated_image() const { return image_; }
 
  private:
   ShapePreservingCubic shape_;       ///< f(r)
