@@ -129,7 +129,7 @@ ShapePreservingCubic::ShapePreservingCubic(std::vector<double> knots,
     const double c2 = 3.0 * rise - 2.0 * h * slopes[k] - h * slopes[k + 1];
     const double c3 = h * (slopes[k] + slopes[k + 1]) - 2.0 * rise;
     pieces_.push_back({h, values[k], c1, c2, c3, integral, first.value(), first_size.value(),
-                       square.value(), square_size.value()});
+                       square.value(), square_size.value(), 1.0 / h});
     integral += h * (values[k] + c1 / 2.0 + c2 / 3.0 + c3 / 4.0);
     const double c[4] = {values[k], c1, c2, c3};
     for (int i = 0; i <= 3; ++i) {

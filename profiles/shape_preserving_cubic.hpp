@@ -64,6 +64,7 @@ class ShapePreservingCubic {
     /// From x_0 to x_k, summed with compensation: int p, int p^2, and the sums of their
     /// pieces' terms' magnitudes.
     double first_before, first_size_before, square_before, square_size_before;
+    double to_s;  ///< 1 / h
   };
   ShapePreservingCubic(std::vector<double> knots, const std::vector<double>& values,
                        std::vector<double> slopes, bool given_slopes);
@@ -87,7 +88,7 @@ inline double ShapePreservingCubic::slope_on(std::size_t k, double x) const {
 
 inline ShapePreservingCubic::Taylor ShapePreservingCubic::taylor_on(std::size_t k, double x) const {
   const Piece& p = pieces_[k];
-  const double to_s = 1.0 / p.h;
+  const double to_s = p.to_s;
   const double s = (x - knots_[k]) * to_s;
   return {p.y + s * (p.c1 + s * (p.c2 + s * p.c3)),
           (p.c1 + s * (2.0 * p.c2 + s * 3.0 * p.c3)) * to_s, (p.c2 + 3.0 * p.c3 * s) * to_s * to_s,
