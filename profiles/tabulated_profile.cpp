@@ -44,16 +44,16 @@ void gauss_legendre(double lo, double hi, Fn fn) {
   }
 }
 
-/// cos and sin of a small angle |d| <= 0.16 by their Taylor series to d^11: the next terms,
-/// d^12/12! and d^13/13!, are below 4e-19, so that both are exact to rounding.
+/// cos - 1 and sin of a small angle |d| <= 0.16 by their Taylor series to d^11: the next
+/// terms, d^12/12! and d^13/13!, are below 4e-19 of 1, so that both are exact to rounding
+/// (cos - 1 with no cancellation where d is small).
 struct CosSin {
-  double cos, sin;
+  double cos_minus_one, sin;
 };
 CosSin small_cos_sin(double d) {
   const double q = d * d;
   const double c =
-      1.0 -
-      q * (1.0 / 2 - q * (1.0 / 24 - q * (1.0 / 720 - q * (1.0 / 40320 - q * (1.0 / 3628800)))));
+      -q * (1.0 / 2 - q * (1.0 / 24 - q * (1.0 / 720 - q * (1.0 / 40320 - q * (1.0 / 3628800)))));
   const double s =
       d * (1.0 - q * (1.0 / 6 - q * (1.0 / 120 - q * (1.0 / 5040 -
                                                       q * (1.0 / 362880 - q * (1.0 / 39916800))))));
@@ -64,30 +64,6 @@ CosSin small_cos_sin(double d) {
 struct Angle {
   double angle, cos, sin;
 };
-
-/// gauss_legendre over an angle [lo, hi] (hi - lo <= 0.32), with the cosine and sine of each
-/// node (and the node): the middle's from the ends' (cos lo + cos hi = 2 cos(mid) cos(half),
-/// sin likewise), each node's by rotation from the middle through the small angle of its offset
-/// (small_cos_sin), instead of a cos and a sin a node.
-template <unsigned N, class Fn>
-void gauss_legendre_angles(const Angle& lo, const Angle& hi, Fn fn) {
-  using Rule = boost::math::quadrature::gauss<double, N>;
-  const double half = 0.5 * (hi.angle - lo.angle), mid = 0.5 * (hi.angle + lo.angle);
-  const double to_mid = 0.5 / small_cos_sin(half).cos;
-  const double cm = (lo.cos + hi.cos) * to_mid, sm = (lo.sin + hi.sin) * to_mid;
-  const auto& x = Rule::abscissa();
-  const auto& w = Rule::weights();
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (x[i] == 0.0) {
-      fn(mid, cm, sm, w[i] * half);
-    } else {
-      const double d = half * x[i];
-      const auto [cd, sd] = small_cos_sin(d);
-      fn(mid - d, cm * cd + sm * sd, sm * cd - cm * sd, w[i] * half);
-      fn(mid + d, cm * cd - sm * sd, sm * cd + cm * sd, w[i] * half);
-    }
-  }
-}
 
 /// Power series in phi^2, lowest power first.
 constexpr std::size_t kSeriesLength = 16;
@@ -339,55 +315,51 @@ double TabulatedProfile::nonadhesive_force_per_modulus(double a) const {
 }
 
 // In x = c cos(psi) the image's pieces meet at psi_k = arccos(x_k/c), and on each g is a cubic
-// in cos(psi). Where J is integrated as defined (g(x) - g(a), t >= 0.3), J and dJ/dt's x g'(x)
-// are integrated in closed form on each arc [psi_m - d, psi_m + d] of a piece: with the cubic
-// expanded about x_m = c cos(psi_m), x - x_m = c (cos psi_m (cos phi - 1) - sin psi_m sin phi),
-// and its powers' integrals over phi in [-d, d] are the five even moments arc_moments sums
-// from their series, of one sign in each power: no cancellation however much the piece bends,
-// exact to rounding, a few dozen operations an arc. Where J is integrated by parts (c g'(x) psi
-// sin(psi), t < 0.3, where g(x) - g(a) would cancel), Gauss-Legendre with n nodes over a width w
-// errs by about (w/2)^(2n+1) 2^(2n+1) (n!)^4 / ((2n+1) ((2n)!)^3) 3^(2n) of the integrand's
-// scale (harmonics up to cos(3 psi)): 1e-16 of the piece for 4 nodes up to w = 0.05, 1e-25 for
-// 8 up to 0.3, on a smooth image; a piece that bends at its own scale h multiplies the
-// harmonics by up to (c/h)^2. Arcs are at most 0.3 wide (wider pieces are split). The adaptive
-// rule would halve its panels at every kink of g'' instead, some 30 panels of 21 nodes a zone.
+// in cos(psi). J and dJ/dt's x g'(x) are integrated in closed form on each arc [psi_m - d,
+// psi_m + d] of a piece: with the cubic expanded about x_m = c cos(psi_m), u = x - x_m =
+// x_m (cos phi - 1) - y_m sin phi (y_m = c sin(psi_m)), and the powers of u integrated over phi
+// in [-d, d] are sums of the five even moments arc_moments gives from their series, of one sign
+// in each power: no cancellation however much the piece bends, a few dozen operations an arc.
+// Where the zone is thin (t < 0.3) the difference g(x) - g(a), which would cancel there, is
+// never formed: the rise r(x) = g(x) - g(c) is carried down from c, arc by arc, by the cubic's
+// increments across it (each the arc's chord times a mean slope), and J = int_0^t r dpsi -
+// t r(a), whose two terms are about g'(c) c t^3 / 6 and g'(c) c t^3 / 2 (under 2 bits lost);
+// above, g(x) - g(a) is taken as it is (a carried rise would pile up the rounding of a rough
+// image's ups and downs). Arcs are at most 0.3 wide (wider pieces are split). The adaptive rule
+// would halve its panels at every kink of g'' instead, some 30 panels of 21 nodes a zone.
 DugdaleGap TabulatedProfile::dugdale_gap(double a, double c, double t) const {
   // Past the body's edge the image is infinite (mdr_image): the generic rule says so.
   if (!(c <= outer_radius()) || !(a > 0.0) || !(t > 0.0)) {
     return dugdale_gap_quadrature(*this, a, c, t);
   }
-  const bool by_parts = t < 0.3;  // as dugdale_gap_quadrature, for the same reason
-  const double image_at_contact = by_parts ? 0.0 : image_.value(a);
   const std::vector<double>& knots = image_.knots();
-  double gap = 0.0, slope = 0.0;
+  const bool carried = t < 0.3;
+  const double image_at_contact = carried ? 0.0 : image_.value(a);
+  double rise = 0.0;  // r at the arc's upper end (x nearer c)
+  double rise_integral = 0.0, slope = 0.0;
   std::size_t k = image_.piece(c);
   const std::size_t first = image_.piece(a);
-  const auto add_node = [&](double psi, double cos_psi, double sin_psi, double weight) {
-    const double x = c * cos_psi;
-    const double image_slope = image_.slope_on(k, x);
-    gap += weight * c * image_slope * psi * sin_psi;
-    slope += weight * x * image_slope;
-  };
   const auto add_arc = [&](const Angle& lo, const Angle& hi) {
     const double half = 0.5 * (hi.angle - lo.angle);
-    if (by_parts) {
-      if (2.0 * half <= 0.05) {
-        gauss_legendre_angles<4>(lo, hi, add_node);
-      } else {
-        gauss_legendre_angles<8>(lo, hi, add_node);
-      }
-      return;
-    }
-    const double to_mid = 0.5 / small_cos_sin(half).cos;
-    const double cm = (lo.cos + hi.cos) * to_mid, sm = (lo.sin + hi.sin) * to_mid;
-    const double xm = c * cm;
+    const auto [cos_half_minus_one, sin_half] = small_cos_sin(half);
+    const double to_mid = 0.5 / (1.0 + cos_half_minus_one);
+    const double xm = c * (lo.cos + hi.cos) * to_mid, ym = c * (lo.sin + hi.sin) * to_mid;
     const ShapePreservingCubic::Taylor p = image_.taylor_on(k, xm);
     const ArcMoments e = arc_moments(half);
-    // int u^j dphi over the arc, u = x - x_m.
-    const double u0 = 2.0 * half, u1 = xm * e.c1, u2 = c * c * (cm * cm * e.c2 + sm * sm * e.s2),
-                 u3 = c * c * xm * (cm * cm * e.c3 + 3.0 * sm * sm * e.c1s2);
-    gap += (p.value - image_at_contact) * u0 + p.slope * u1 + p.half_curvature * u2 +
-           p.sixth_third * u3;
+    // The arc's ends about its middle: u = x_m (cos d - 1) +- y_m sin d (+ at psi_m - d).
+    const double bend = xm * cos_half_minus_one, turn = ym * sin_half;
+    const double top = bend + turn, bottom = bend - turn;
+    // r(x_m) = r(top) - (g(top) - g(x_m)); the increment across the arc, g(bottom) - g(top),
+    // as (bottom - top) (g'_m + h_m (bottom + top) + s_m (bottom^2 + bottom top + top^2)).
+    const double rise_mid = rise - top * (p.slope + top * (p.half_curvature + top * p.sixth_third));
+    rise += -2.0 * turn *
+            (p.slope + p.half_curvature * 2.0 * bend +
+             p.sixth_third * (bottom * bottom + bottom * top + top * top));
+    // int u^j dphi over the arc.
+    const double u0 = 2.0 * half, u1 = xm * e.c1, u2 = xm * xm * e.c2 + ym * ym * e.s2,
+                 u3 = xm * (xm * xm * e.c3 + 3.0 * ym * ym * e.c1s2);
+    rise_integral += (carried ? rise_mid : p.value - image_at_contact) * u0 + p.slope * u1 +
+                     p.half_curvature * u2 + p.sixth_third * u3;
     // x g'(x) = (x_m + u) (g'_m + 2 h_m u + 3 s_m u^2) in powers of u.
     slope += xm * p.slope * u0 + (p.slope + 2.0 * p.half_curvature * xm) * u1 +
              (2.0 * p.half_curvature + 3.0 * p.sixth_third * xm) * u2 + 3.0 * p.sixth_third * u3;
@@ -422,7 +394,8 @@ DugdaleGap TabulatedProfile::dugdale_gap(double a, double c, double t) const {
     if (last) break;
     lo = hi;
   }
-  return {.integral = gap, .angle_slope = std::tan(t) * slope};
+  return {.integral = carried ? rise_integral - t * rise : rise_integral,
+          .angle_slope = std::tan(t) * slope};
 }
 
 std::optional<ExactIntegral> TabulatedProfile::squared_gap_integral(double a, double d) const {

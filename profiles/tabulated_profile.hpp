@@ -65,8 +65,7 @@ class TabulatedProfile final : public Profile {
   /// Exact on the image's Hermite pieces: no quadrature over its ~1000 kinks.
   std::optional<ExactIntegral> squared_gap_integral(double contact_radius,
                                                     double indentation) const override;
-  /// On each of the image's Hermite pieces the zone covers (in its angle): J and dJ/dt in closed
-  /// form where J is integrated as defined (t >= 0.3), Gauss-Legendre below (J by parts); exact
+  /// In closed form on each of the image's Hermite pieces the zone covers (in its angle): exact
   /// to rounding where the adaptive default halves its panels at every kink of g''.
   DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
                          double angle) const override;
