@@ -336,7 +336,7 @@ DugdaleGap TabulatedProfile::dugdale_gap(double a, double c, double t) const {
   const bool carried = t < 0.3;
   const double image_at_contact = carried ? 0.0 : image_.value(a);
   double rise = 0.0;  // r at the arc's upper end (x nearer c)
-  double rise_integral = 0.0, slope = 0.0;
+  double gap = 0.0, slope = 0.0;
   std::size_t k = image_.piece(c);
   const std::size_t first = image_.piece(a);
   const auto add_arc = [&](const Angle& lo, const Angle& hi) {
@@ -346,20 +346,23 @@ DugdaleGap TabulatedProfile::dugdale_gap(double a, double c, double t) const {
     const double xm = c * (lo.cos + hi.cos) * to_mid, ym = c * (lo.sin + hi.sin) * to_mid;
     const ShapePreservingCubic::Taylor p = image_.taylor_on(k, xm);
     const ArcMoments e = arc_moments(half);
-    // The arc's ends about its middle: u = x_m (cos d - 1) +- y_m sin d (+ at psi_m - d).
-    const double bend = xm * cos_half_minus_one, turn = ym * sin_half;
-    const double top = bend + turn, bottom = bend - turn;
-    // r(x_m) = r(top) - (g(top) - g(x_m)); the increment across the arc, g(bottom) - g(top),
-    // as (bottom - top) (g'_m + h_m (bottom + top) + s_m (bottom^2 + bottom top + top^2)).
-    const double rise_mid = rise - top * (p.slope + top * (p.half_curvature + top * p.sixth_third));
-    rise += -2.0 * turn *
-            (p.slope + p.half_curvature * 2.0 * bend +
-             p.sixth_third * (bottom * bottom + bottom * top + top * top));
+    // The integrand's constant term about x_m: g(x_m) - g(a), or the carried rise r(x_m).
+    double level = p.value - image_at_contact;
+    if (carried) {
+      // The arc's ends about its middle: u = x_m (cos d - 1) +- y_m sin d (+ at psi_m - d).
+      const double bend = xm * cos_half_minus_one, turn = ym * sin_half;
+      const double top = bend + turn, bottom = bend - turn;
+      // r(x_m) = r(top) - (g(top) - g(x_m)); the increment across the arc, g(bottom) - g(top),
+      // as (bottom - top) (g'_m + h_m (bottom + top) + s_m (bottom^2 + bottom top + top^2)).
+      level = rise - top * (p.slope + top * (p.half_curvature + top * p.sixth_third));
+      rise += -2.0 * turn *
+              (p.slope + p.half_curvature * 2.0 * bend +
+               p.sixth_third * (bottom * bottom + bottom * top + top * top));
+    }
     // int u^j dphi over the arc.
     const double u0 = 2.0 * half, u1 = xm * e.c1, u2 = xm * xm * e.c2 + ym * ym * e.s2,
                  u3 = xm * (xm * xm * e.c3 + 3.0 * ym * ym * e.c1s2);
-    rise_integral += (carried ? rise_mid : p.value - image_at_contact) * u0 + p.slope * u1 +
-                     p.half_curvature * u2 + p.sixth_third * u3;
+    gap += level * u0 + p.slope * u1 + p.half_curvature * u2 + p.sixth_third * u3;
     // x g'(x) = (x_m + u) (g'_m + 2 h_m u + 3 s_m u^2) in powers of u.
     slope += xm * p.slope * u0 + (p.slope + 2.0 * p.half_curvature * xm) * u1 +
              (2.0 * p.half_curvature + 3.0 * p.sixth_third * xm) * u2 + 3.0 * p.sixth_third * u3;
@@ -394,8 +397,7 @@ DugdaleGap TabulatedProfile::dugdale_gap(double a, double c, double t) const {
     if (last) break;
     lo = hi;
   }
-  return {.integral = carried ? rise_integral - t * rise : rise_integral,
-          .angle_slope = std::tan(t) * slope};
+  return {.integral = carried ? gap - t * rise : gap, .angle_slope = std::tan(t) * slope};
 }
 
 std::optional<ExactIntegral> TabulatedProfile::squared_gap_integral(double a, double d) const {
