@@ -7,7 +7,9 @@
 #include <string>
 
 #include "engine/model/graded_constants.hpp"
+#include "engine/model/graded_quadrature.hpp"
 #include "engine/scene/scene_error.hpp"
+#include "profiles/tabulated_profile.hpp"
 
 namespace mdrsim {
 namespace {
@@ -61,10 +63,28 @@ void apply_grading(TomlReader& material, const nlohmann::json& resolved, Scene& 
     second = profile_number(resolved, "exponent");
   }
   scene.graded_image = GradedImage::of_profile(type, first, second, g.exponent);
-  if (!scene.graded_image) {
+  if (scene.graded_image) return;
+  // The shapes with no closed form: the image by quadrature of their slope.
+  if (type == "sphere") {
+    scene.graded_image =
+        GradedImage::by_quadrature(graded_sphere(profile_number(resolved, "radius")), g.exponent);
+  } else if (type == "wavy") {
+    const double radius = profile_number(resolved, "radius");
+    const double amplitude = profile_number(resolved, "amplitude");
+    // A = 0 builds the parabola (profiles/register.cpp): its closed form, to the bit.
+    scene.graded_image =
+        amplitude == 0.0
+            ? GradedImage::of_power_law(0.5 / radius, 2.0, g.exponent)
+            : GradedImage::by_quadrature(
+                  graded_wavy(radius, amplitude, profile_number(resolved, "wavelength")),
+                  g.exponent);
+  } else if (const auto* table = dynamic_cast<const TabulatedProfile*>(scene.profile.get())) {
+    scene.graded_image =
+        GradedImage::by_quadrature(graded_table(table->interpolated_shape()), g.exponent);
+  } else {
     material.fail_at("grading",
                      fmt::format("profile.type = \"{}\" has no graded image yet (known: parabolic, "
-                                 "cone, power_law, flat_punch){}",
+                                 "cone, power_law, flat_punch, sphere, tabulated, wavy){}",
                                  type, kGradedScope));
   }
 }

@@ -50,6 +50,33 @@ TEST(GradingReader, EventMethodTakesTheGradedRow) {
   EXPECT_FALSE(s.resolved->contains("detachment"));
 }
 
+TEST(GradingReader, SphereTableAndWavyTakeTheQuadratureImage) {
+  // The shapes with no closed form: an image by quadrature (a table of the parabola gives the
+  // parabola's x^2 / ((1 + k) R) at its glued radius, 1e-10); a ripple of amplitude 0 is the
+  // parabola's closed form. On the row: the continuum route refuses the ripple's many folds.
+  for (const std::string profile : {"type = \"sphere\"\nradius = 0.01",
+                                    "type = \"wavy\"\nradius = 0.01\namplitude = 1e-7\n"
+                                    "wavelength = 1e-4",
+                                    "type = \"tabulated\"\nr = [0.0, 2e-4, 4e-4, 6e-4, 8e-4]\n"
+                                    "f = [0.0, 2e-6, 8e-6, 1.8e-5, 3.2e-5]"}) {
+    SCOPED_TRACE(profile);
+    std::string text(kGraded);
+    text.replace(text.find("type = \"parabolic\"\nradius = 0.01"), 32, profile);
+    const Scene s = build(text + "[solver]\nmethod = \"event\"\n");
+    ASSERT_TRUE(s.graded_image);
+    EXPECT_TRUE(s.graded_image->quadrature());
+    if (profile.find("tabulated") != std::string::npos) {
+      EXPECT_NEAR(s.graded_image->image(5e-4) / (5e-4 * 5e-4 / (1.5 * 0.01)), 1.0, 1e-10);
+    }
+  }
+  std::string flat(kGraded);
+  flat.replace(flat.find("type = \"parabolic\"\nradius = 0.01"), 32,
+               "type = \"wavy\"\nradius = 0.01\namplitude = 0.0\nwavelength = 1e-4");
+  const Scene s = build(flat);
+  ASSERT_TRUE(s.graded_image);
+  EXPECT_FALSE(s.graded_image->quadrature());
+}
+
 TEST(GradingReader, ExponentZeroKeepsTheRow) {
   std::string text(kGraded);
   text.replace(text.find("exponent = 0.5"), 14, "exponent = 0.0");
@@ -140,13 +167,6 @@ TEST(GradingReader, RefusesOneLineAtTheKey) {
        "= 5.0e-4 }\nnormal = { control = \"fixed-load\" }\n",
        "g.toml:4:20: material.work_of_adhesion: a work of adhesion that varies with the radius is "
        "not yet taken with material.grading (docs/graded.md \"What it refuses\")"},
-      {"Sphere",
-       "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\ngrading "
-       "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"sphere\"\nradius = "
-       "0.01\n[loading]\npreload = { contact_radius = 5.0e-4 }\nnormal = { control = "
-       "\"fixed-load\" }\n",
-       "g.toml:5:11: material.grading: profile.type = \"sphere\" has no graded image yet (known: "
-       "parabolic, cone, power_law, flat_punch) (docs/graded.md \"What it refuses\")"},
       {"TangentialStage",
        "[material]\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3\nwork_of_adhesion = 0.05\ngrading "
        "= { exponent = 0.5, depth = 1.0e-3 }\n\n[profile]\ntype = \"parabolic\"\nradius = "
