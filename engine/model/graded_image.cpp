@@ -14,17 +14,18 @@
 namespace mdrsim {
 namespace {
 
-/// The x in (0, outer) where fn(x) = target, fn rising from fn(0) = 0 (the first crossing a
-/// doubling search from 1e-3 of the scale brackets), as Profile::contact_radius_at_depth
-/// does; at a pole (fn = +infinity at `outer`) the distance to it is halved instead.
+/// The x in (0, outer) where fn(x) = target, fn rising from fn(0) = 0, as
+/// Profile::contact_radius_at_depth finds it: a root bracketed by doubling from 1 m where the
+/// shape has no end, by halving the distance to a pole (the sphere's fn = +infinity at R), and
+/// refused beyond a table's last point.
 template <class Fn>
-double graded_inverse(Fn fn, double target, double outer, const char* what) {
+double graded_inverse(Fn fn, double target, double outer, bool pole, const char* what) {
   const auto out_of_reach = [&] {
     return std::domain_error(std::string(what) + " is out of the profile's reach");
   };
   double lo = 0.0;
-  double hi = std::isfinite(outer) ? 0.5 * outer : 1.0;
-  if (std::isfinite(outer)) {
+  double hi = std::isfinite(outer) ? (pole ? 0.5 * outer : outer) : 1.0;
+  if (std::isfinite(outer) && pole) {
     double gap = 0.5 * outer;
     while (fn(hi) < target) {
       lo = hi;
@@ -32,6 +33,8 @@ double graded_inverse(Fn fn, double target, double outer, const char* what) {
       hi = outer - gap;
       if (!(hi > lo)) throw out_of_reach();
     }
+  } else if (std::isfinite(outer)) {
+    if (fn(hi) < target) throw out_of_reach();
   } else {
     for (int i = 0; fn(hi) < target; ++i) {
       if (i > 2000) throw out_of_reach();
@@ -117,7 +120,8 @@ double GradedImage::squared_gap_integral(double a, double d) const {
 double GradedImage::radius_at_depth(double d) const {
   if (quadrature_) {
     return graded_inverse([this](double x) { return quadrature_->image(x); }, d,
-                          quadrature_->pole_radius(), "the preload depth");
+                          quadrature_->outer_radius(), quadrature_->has_pole(),
+                          "the preload depth");
   }
   return std::pow(d / coefficient_, 1.0 / exponent_);
 }
@@ -126,7 +130,8 @@ double GradedImage::radius_at_force(double force, double punch_constant) const {
   if (quadrature_) {
     return graded_inverse(
         [this](double a) { return quadrature_->nonadhesive_force_per_constant(a); },
-        force / punch_constant, quadrature_->pole_radius(), "the preload force");
+        force / punch_constant, quadrature_->outer_radius(), quadrature_->has_pole(),
+        "the preload force");
   }
   const double n = exponent_, k = grading_;
   return std::pow(force * (n + 1.0 + k) / (punch_constant * coefficient_ * n), 1.0 / (n + 1.0 + k));

@@ -79,6 +79,7 @@ class TableSlopes final : public GradedShape {
     return static_cast<std::size_t>(it - (knots.begin() + 1));
   }
   double breakpoint(std::size_t j) const override { return shape_.knots()[j + 1]; }
+  double outer_radius() const override { return shape_.back(); }
 
  private:
   ShapePreservingCubic shape_;

@@ -1,6 +1,7 @@
 // The graded image of any shape with a slope f'(r), by quadrature: sphere, tables, wavy.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -28,6 +29,9 @@ class GradedShape {
   virtual double breakpoint(std::size_t j) const = 0;
   /// Where f' diverges (the sphere's radius R) [m]: g_k is +infinity from there on.
   virtual double pole_radius() const { return std::numeric_limits<double>::infinity(); }
+  /// The largest radius the shape is given on [m] (a table's last point; the pole), as
+  /// Profile::outer_radius: a preload is refused beyond it.
+  virtual double outer_radius() const { return pole_radius(); }
 };
 
 /// R - sqrt(R^2 - r^2): f' = r / sqrt(R^2 - r^2), its pole at R.
@@ -65,6 +69,8 @@ class GradedQuadrature {
   /// quadrature being finer there. The energy alone takes it.
   double squared_gap_integral(double a, double d) const;
   double pole_radius() const { return shape_->pole_radius(); }
+  bool has_pole() const { return std::isfinite(shape_->pole_radius()); }
+  double outer_radius() const { return shape_->outer_radius(); }
   double grading_exponent() const { return grading_; }
 
  private:

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "engine/model/graded_image.hpp"
@@ -148,6 +149,27 @@ TEST(GradedQuadrature, InverseTransformGivesBackTheSphere) {
   }
 }
 
+TEST(GradedQuadrature, WavyMatchesItsDefiningIntegral) {
+  // g_k(x) = x^(1-k) int_0^x f'(r) (x^2 - r^2)^((k-1)/2) dr with f' = r/R + A q sin(q r) by
+  // tanh-sinh on the integral as defined (about 1e-13 on its endpoint singularity; the ripple's
+  // 10 periods at x = 1 mm): 1e-10.
+  const double radius = 0.01, amplitude = 1e-7, wavelength = 1e-4;
+  const double q = 2.0 * std::numbers::pi / wavelength;
+  for (double k : {0.25, 0.75}) {
+    const GradedImage g = GradedImage::by_quadrature(graded_wavy(radius, amplitude, wavelength), k);
+    for (double x : {3e-5, 2.6e-4, 1e-3}) {
+      boost::math::quadrature::tanh_sinh<double> rule;
+      const auto integrand = [&](double r, double complement) {
+        const double to_end = complement > 0.0 ? complement : x - r;
+        return (r / radius + amplitude * q * std::sin(q * r)) *
+               std::pow(to_end * (x + r), 0.5 * (k - 1.0));
+      };
+      const double exact = std::pow(x, 1.0 - k) * rule.integrate(integrand, 0.0, x, 1e-14);
+      EXPECT_NEAR(g.image(x) / exact, 1.0, 1e-10) << k << " " << x;
+    }
+  }
+}
+
 TEST(GradedQuadrature, TableOfAParabolaIsTheParabolasImage) {
   // A table of r^2 / (2R) (the not-a-knot cubic is exact on it, and f'' jumps nowhere) split
   // at its 41 knots: the parabola's x^2 / ((1 + k) R) and its integrals to 1e-10.
@@ -171,6 +193,8 @@ TEST(GradedQuadrature, TableOfAParabolaIsTheParabolasImage) {
       EXPECT_NEAR(q.squared_gap_integral(x, d) / exact.squared_gap_integral(x, d), 1.0, 1e-10);
     }
     EXPECT_NEAR(q.radius_at_depth(exact.image(1.5e-3)) / 1.5e-3, 1.0, 1e-12);
+    // Beyond the table's last point (2 mm) as the homogeneous table refuses it.
+    EXPECT_THROW(q.radius_at_depth(exact.image(2.5e-3)), std::domain_error);
   }
 }
 
