@@ -18,14 +18,6 @@ constexpr int kAdhesiveParameters =
     5;  // youngs_modulus, work_of_adhesion, contact_point, offset, slope
 constexpr std::size_t kBranchSamples = 256;
 
-/// The model's force (less the baseline) and its partial derivatives at one indentation.
-struct ContactForce {
-  double force = 0.0;
-  double d_depth = 0.0;
-  double d_modulus = 0.0;  // per unit E*
-  double d_work = 0.0;
-};
-
 /// DMT's force for the paraboloid and the sphere: Hertz's less the adhesive force outside the
 /// contact, 2 pi w R in Derjaguin's approximation about the apex (exact for the paraboloid in
 /// Maugis' DMT limit; for the sphere while the contact stays small against R).
@@ -343,28 +335,31 @@ AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOption
     fit.adhesion_force_fitted =
         -JkrBranch(*options.tip.profile, fitted_reduced, p[1], fit.max_indentation).lowest_force();
   }
+  const bool positive = p[0] > 0.0 && p[1] > 0.0;
+  settle_status(fit, out, solution.outcome,
+                positive ? nullptr : "the fit went to a modulus or work of adhesion <= 0",
+                RefusalRank::after_non_finite);
+  return fit;
+}
+
+void settle_status(AdhesiveFit& fit, std::span<FitParameter* const> parameters,
+                   MinimizerOutcome outcome, const char* refusal, RefusalRank rank) {
   bool finite = std::isfinite(fit.residual_rms) && std::isfinite(fit.adhesion_force_fitted);
-  for (const FitParameter* q : out) {
+  for (const FitParameter* q : parameters) {
     finite = finite && std::isfinite(q->value) && std::isfinite(q->standard_error);
   }
-  if (const char* failure = minimizer_failure(solution.outcome)) {
-    fit.status = FitStatus::not_converged;
-    fit.message = failure;
-  } else if (!finite) {
-    fit.status = FitStatus::not_converged;
-    fit.message = "the fit gave numbers that are not finite";
-  } else if (!(p[0] > 0.0) || !(p[1] > 0.0)) {
-    fit.status = FitStatus::not_converged;
-    fit.message = "the fit went to a modulus or work of adhesion <= 0";
-  } else {
-    fit.status = FitStatus::fitted;
-  }
-  if (fit.status != FitStatus::fitted && !finite) {
-    for (FitParameter* q : out) *q = FitParameter{0.0, 0.0, q->fixed};
+  const char* non_finite = finite ? nullptr : "the fit gave numbers that are not finite";
+  const char* first = rank == RefusalRank::before_non_finite ? refusal : non_finite;
+  const char* second = rank == RefusalRank::before_non_finite ? non_finite : refusal;
+  const char* failure = minimizer_failure(outcome);
+  const char* message = failure ? failure : first ? first : second;
+  fit.status = message ? FitStatus::not_converged : FitStatus::fitted;
+  if (message) fit.message = message;
+  if (!finite) {
+    for (FitParameter* q : parameters) *q = FitParameter{0.0, 0.0, q->fixed};
     fit.residual_rms = 0.0;
     fit.adhesion_force_fitted = 0.0;
   }
-  return fit;
 }
 
 }  // namespace mdrsim::fit

@@ -5,9 +5,11 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "engine/fit/hertz_fit.hpp"
+#include "engine/fit/least_squares.hpp"
 #include "engine/fit/prepared_curve.hpp"
 #include "engine/fit/tip_shape.hpp"
 #include "profiles/profile.hpp"
@@ -79,5 +81,18 @@ class JkrBranch {
 /// Approach: the samples indented past the contact point lie on it. A curve without such a
 /// jump or dip gets no-contact.
 AdhesiveFit fit_adhesive(const PreparedSegment& segment, const AdhesiveFitOptions& options);
+
+/// Where a model's own refusal ranks against numbers that are not finite: a model that could
+/// not be evaluated at the minimum (the zone past the tip's edge) says so first; a bound on the
+/// fitted values (E or w <= 0, which a NaN also fails) yields to the non-finite message.
+enum class RefusalRank { before_non_finite, after_non_finite };
+
+/// Settles every adhesive fit's status once its numbers are written: not-converged with the
+/// minimiser's failure, else the model's refusal (nullptr: none) and the non-finite numbers
+/// (residual, adhesion force, a parameter's value or standard error) in `rank`'s order, else
+/// fitted. A fit left not finite is zeroed (values, errors, residual, adhesion force), its
+/// parameters keeping their held flags.
+void settle_status(AdhesiveFit& fit, std::span<FitParameter* const> parameters,
+                   MinimizerOutcome outcome, const char* refusal, RefusalRank rank);
 
 }  // namespace mdrsim::fit

@@ -69,14 +69,6 @@ void mark_contact(Samples& s, std::size_t approach_points, std::size_t retract_j
   }
 }
 
-/// The contact force (less the baseline) and its derivatives at one sample.
-struct JointContactForce {
-  double force = 0.0;
-  double d_depth = 0.0;
-  double d_modulus = 0.0;  // per unit E*
-  double d_work = 0.0;     // per unit of the segment's w
-};
-
 /// Calls visit(i, force or nullptr) for every sample at parameters p.
 template <class Visit>
 void each_sample(const Samples& s, const CombinedFitOptions& options, std::span<const double> p,
@@ -91,16 +83,16 @@ void each_sample(const Samples& s, const CombinedFitOptions& options, std::span<
   const double pull = 2.0 * std::numbers::pi * options.tip.radius;
   for (std::size_t i = 0; i < s.z.size(); ++i) {
     const double depth = p[kContact] - s.z[i];
-    JointContactForce c;
+    ContactForce c;
     if (!options.adhesive) {
       if (depth <= 0.0) {
-        visit(i, static_cast<const JointContactForce*>(nullptr));
+        visit(i, static_cast<const ContactForce*>(nullptr));
         continue;
       }
       const double g = options.tip.force_per_modulus(depth);
       c = {reduced * g, reduced * options.tip.stiffness_per_modulus(depth), g, 0.0};
     } else if (!s.contact[i]) {
-      visit(i, static_cast<const JointContactForce*>(nullptr));
+      visit(i, static_cast<const ContactForce*>(nullptr));
       continue;
     } else if (options.model == AdhesionModel::jkr) {
       const JkrBranch::State st = (s.approach[i] ? *approach_branch : *retract_branch).at(depth);
@@ -222,14 +214,14 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
   problem.walk = {Walk::logarithmic, Walk::logarithmic, Walk::logarithmic,
                   Walk::linear,      Walk::linear,      Walk::linear};
   problem.model = [&](std::span<const double> p, std::span<double> model) {
-    each_sample(samples, options, p, [&](std::size_t i, const JointContactForce* c) {
+    each_sample(samples, options, p, [&](std::size_t i, const ContactForce* c) {
       model[i] = p[kOffset] + p[kSlope] * (samples.z[i] - p[kContact]) + (c ? c->force : 0.0);
     });
   };
   problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
     // A column per parameter (least_squares.hpp): d[k * m + i] is d model_i / d p_k.
     const std::size_t m = samples.z.size();
-    each_sample(samples, options, p, [&](std::size_t i, const JointContactForce* c) {
+    each_sample(samples, options, p, [&](std::size_t i, const ContactForce* c) {
       d[kModulus * m + i] = c ? c->d_modulus / compliance : 0.0;
       d[kWork * m + i] = c && !samples.approach[i] ? c->d_work : 0.0;
       d[kApproachWork * m + i] = c && samples.approach[i] ? c->d_work : 0.0;
@@ -282,28 +274,11 @@ CombinedFit fit_combined(const PreparedSegment& approach, const PreparedSegment&
         -JkrBranch(*options.tip.profile, p[kModulus] / compliance, p[kWork], fit.max_indentation)
              .lowest_force();
   }
-  bool finite = std::isfinite(fit.residual_rms) && std::isfinite(fit.adhesion_force_fitted);
-  for (const FitParameter* q : out) {
-    finite = finite && std::isfinite(q->value) && std::isfinite(q->standard_error);
-  }
-  if (const char* failure = minimizer_failure(solution.outcome)) {
-    fit.status = FitStatus::not_converged;
-    fit.message = failure;
-  } else if (!finite) {
-    fit.status = FitStatus::not_converged;
-    fit.message = "the fit gave numbers that are not finite";
-  } else if (!(p[kModulus] > 0.0) ||
-             (options.adhesive && !(p[kWork] > 0.0 && p[kApproachWork] > 0.0))) {
-    fit.status = FitStatus::not_converged;
-    fit.message = "the fit went to a modulus or work of adhesion <= 0";
-  } else {
-    fit.status = FitStatus::fitted;
-  }
-  if (fit.status != FitStatus::fitted && !finite) {
-    for (FitParameter* q : out) *q = FitParameter{0.0, 0.0, q->fixed};
-    fit.residual_rms = 0.0;
-    fit.adhesion_force_fitted = 0.0;
-  }
+  const bool positive =
+      p[kModulus] > 0.0 && (!options.adhesive || (p[kWork] > 0.0 && p[kApproachWork] > 0.0));
+  settle_status(fit, out, solution.outcome,
+                positive ? nullptr : "the fit went to a modulus or work of adhesion <= 0",
+                RefusalRank::after_non_finite);
   return fit;
 }
 

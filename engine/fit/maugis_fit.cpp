@@ -618,27 +618,9 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
   } catch (const std::domain_error&) {
     reaches = false;
   }
-  bool finite = std::isfinite(fit.residual_rms) && std::isfinite(fit.adhesion_force_fitted);
-  for (const FitParameter* q : out) {
-    finite = finite && std::isfinite(q->value) && std::isfinite(q->standard_error);
-  }
-  if (const char* failure = minimizer_failure(solution.outcome)) {
-    fit.status = FitStatus::not_converged;
-    fit.message = failure;
-  } else if (!reaches) {
-    fit.status = FitStatus::not_converged;
-    fit.message = "the fitted cohesive zone reaches past the tip's edge";
-  } else if (!finite) {
-    fit.status = FitStatus::not_converged;
-    fit.message = "the fit gave numbers that are not finite";
-  } else {
-    fit.status = FitStatus::fitted;
-  }
-  if (fit.status != FitStatus::fitted && !finite) {
-    for (FitParameter* q : out) *q = FitParameter{0.0, 0.0, q->fixed};
-    fit.residual_rms = 0.0;
-    fit.adhesion_force_fitted = 0.0;
-  }
+  settle_status(fit, out, solution.outcome,
+                reaches ? nullptr : "the fitted cohesive zone reaches past the tip's edge",
+                RefusalRank::before_non_finite);
   return fit;
 }
 

@@ -19,6 +19,14 @@ struct PreparedSegment {
   double spring_constant = 0.0;      ///< [N/m] used (0 where the file gave force and tip)
 };
 
+/// An adhesive model's contact force (less the baseline) at one sample, and its derivatives.
+struct ContactForce {
+  double force = 0.0;      ///< [N]
+  double d_depth = 0.0;    ///< [N/m]
+  double d_modulus = 0.0;  ///< [m^2] per unit E*
+  double d_work = 0.0;     ///< [m] per unit of the work of adhesion the sample's segment takes
+};
+
 /// Where the fit starts (the contact point guess and the baseline under it).
 struct FirstGuess {
   bool contact = false;          ///< false: the curve never leaves the baseline's noise band

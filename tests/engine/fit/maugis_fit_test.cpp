@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <numbers>
 #include <ostream>
 #include <random>
@@ -464,28 +465,18 @@ void PrintTo(const ApproachRecovery& r, std::ostream* out) {
   *out << "lambda " << r.lambda << ", noise " << r.noise;
 }
 
-// Over 100 seeds, lambda fitted on the approach with its jump in: E within 2 %, the contact
-// point within 1 % of the largest indentation, lambda and w within the case's bounds, and the
-// one-sigma intervals covering the truth in [55, 81] of 100 (a binomial count at p = 0.683
-// lies there with probability 0.995). The standard error of lambda is about that of the
-// contact point over h0 = 2 / (pi lambda) depth units, linear in the noise: with 1 % it is
-// 1.2 % at lambda = 0.2 (the pre-contact pull's shape tells it), 4.6 % at 1 and 11 % at 3, so
-// the worst of 100 seeds (about 2.6 of them) meets 10 % at lambda = 1 from 0.5 % noise and at
-// lambda = 3 from 0.3 %. Each bound is the worst seen with some room; at lambda = 0.2 about a
-// tenth of the seeds lie 8-12 % high, several of their standard errors (a jump in that the
-// noise hides, placed late by more than its estimated spread).
-class MaugisApproachSynthetic : public ::testing::TestWithParam<ApproachRecovery> {};
-
-TEST_P(MaugisApproachSynthetic, RecoversLambdaFromTheJumpIn) {
-  const ApproachRecovery& r = GetParam();
+/// Fits `seeds` seeds by fit_seed(seed) and checks them against the truth of `curve` (E
+/// within 2 %, the contact point within 1 % of its largest indentation, lambda and w within
+/// r's bounds, the one-sigma intervals covering the truth in [55, 81] of 100); prints the worst
+/// errors and the coverage under `segments`' name.
+void expect_lambda_recovery(const char* segments, const ApproachRecovery& r, const Noiseless& curve,
+                            const std::function<AdhesiveFit(unsigned)>& fit_seed) {
   const double lambda = r.lambda;
-  const Lever lever = lever_curve(lambda, true);
-  const Noiseless& curve = lever.curve;
   int covered_e = 0, covered_w = 0, covered_c = 0, covered_l = 0;
   double worst_e = 0, worst_w = 0, worst_c = 0, worst_l = 0, error_l = 0, error_w = 0;
   const unsigned seeds = 100;
   for (unsigned seed = 1; seed <= seeds; ++seed) {
-    const AdhesiveFit fit = fit_maugis(with_noise(curve, seed, r.noise), approach_options());
+    const AdhesiveFit fit = fit_seed(seed);
     ASSERT_EQ(fit.status, FitStatus::fitted) << "seed " << seed << ": " << fit.message;
     const double de = std::abs(fit.youngs_modulus.value - kYoungs);
     const double dw = std::abs(fit.work_of_adhesion.value - kWork);
@@ -503,11 +494,11 @@ TEST_P(MaugisApproachSynthetic, RecoversLambdaFromTheJumpIn) {
     error_w += fit.work_of_adhesion.standard_error / kWork / seeds;
   }
   std::printf(
-      "recovery maugis approach lambda = %g, noise %g: worst |dE|/E = %.3f %%, |dw|/w = %.3f "
+      "recovery maugis %s lambda = %g, noise %g: worst |dE|/E = %.3f %%, |dw|/w = %.3f "
       "%%, |dc|/depth = %.3f %%, |dlambda|/lambda = %.3f %%, 1-sigma coverage E %d, w %d, "
       "contact point %d, lambda %d /100; mean standard error of lambda %.2f %%, of w %.2f %%\n",
-      lambda, r.noise, 100 * worst_e, 100 * worst_w, 100 * worst_c, 100 * worst_l, covered_e,
-      covered_w, covered_c, covered_l, 100 * error_l, 100 * error_w);
+      segments, lambda, r.noise, 100 * worst_e, 100 * worst_w, 100 * worst_c, 100 * worst_l,
+      covered_e, covered_w, covered_c, covered_l, 100 * error_l, 100 * error_w);
   EXPECT_LT(worst_e, 0.02);
   EXPECT_LT(worst_w, r.work_bound);
   EXPECT_LT(worst_c, 0.01);
@@ -516,6 +507,26 @@ TEST_P(MaugisApproachSynthetic, RecoversLambdaFromTheJumpIn) {
     EXPECT_GE(covered, 55);
     EXPECT_LE(covered, 81);
   }
+}
+
+// Over 100 seeds, lambda fitted on the approach with its jump in: E within 2 %, the contact
+// point within 1 % of the largest indentation, lambda and w within the case's bounds, and the
+// one-sigma intervals covering the truth in [55, 81] of 100 (a binomial count at p = 0.683
+// lies there with probability 0.995). The standard error of lambda is about that of the
+// contact point over h0 = 2 / (pi lambda) depth units, linear in the noise: with 1 % it is
+// 1.2 % at lambda = 0.2 (the pre-contact pull's shape tells it), 4.6 % at 1 and 11 % at 3, so
+// the worst of 100 seeds (about 2.6 of them) meets 10 % at lambda = 1 from 0.5 % noise and at
+// lambda = 3 from 0.3 %. Each bound is the worst seen with some room; at lambda = 0.2 about a
+// tenth of the seeds lie 8-12 % high, several of their standard errors (a jump in that the
+// noise hides, placed late by more than its estimated spread).
+class MaugisApproachSynthetic : public ::testing::TestWithParam<ApproachRecovery> {};
+
+TEST_P(MaugisApproachSynthetic, RecoversLambdaFromTheJumpIn) {
+  const ApproachRecovery& r = GetParam();
+  const Lever lever = lever_curve(r.lambda, true);
+  expect_lambda_recovery("approach", r, lever.curve, [&](unsigned seed) {
+    return fit_maugis(with_noise(lever.curve, seed, r.noise), approach_options());
+  });
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MaugisApproachSynthetic,
@@ -539,46 +550,11 @@ class MaugisBothSynthetic : public ::testing::TestWithParam<ApproachRecovery> {}
 
 TEST_P(MaugisBothSynthetic, RecoversLambdaFromBothSegments) {
   const ApproachRecovery& r = GetParam();
-  const double lambda = r.lambda;
-  const Lever in = lever_curve(lambda, true), out = lever_curve(lambda, false);
-  const Noiseless& curve = in.curve;
-  int covered_e = 0, covered_w = 0, covered_c = 0, covered_l = 0;
-  double worst_e = 0, worst_w = 0, worst_c = 0, worst_l = 0, error_l = 0, error_w = 0;
-  const unsigned seeds = 100;
-  for (unsigned seed = 1; seed <= seeds; ++seed) {
-    const AdhesiveFit fit =
-        fit_maugis_both(with_noise(in.curve, seed, r.noise),
-                        with_noise(out.curve, seed + 1000, r.noise), parabola());
-    ASSERT_EQ(fit.status, FitStatus::fitted) << "seed " << seed << ": " << fit.message;
-    const double de = std::abs(fit.youngs_modulus.value - kYoungs);
-    const double dw = std::abs(fit.work_of_adhesion.value - kWork);
-    const double dc = std::abs(fit.contact_point.value - curve.contact_point);
-    const double dl = std::abs(fit.maugis_parameter.value - lambda);
-    worst_e = std::max(worst_e, de / kYoungs);
-    worst_w = std::max(worst_w, dw / kWork);
-    worst_c = std::max(worst_c, dc / curve.depth);
-    worst_l = std::max(worst_l, dl / lambda);
-    covered_e += de <= fit.youngs_modulus.standard_error;
-    covered_w += dw <= fit.work_of_adhesion.standard_error;
-    covered_c += dc <= fit.contact_point.standard_error;
-    covered_l += dl <= fit.maugis_parameter.standard_error;
-    error_l += fit.maugis_parameter.standard_error / lambda / seeds;
-    error_w += fit.work_of_adhesion.standard_error / kWork / seeds;
-  }
-  std::printf(
-      "recovery maugis both lambda = %g, noise %g: worst |dE|/E = %.3f %%, |dw|/w = %.3f "
-      "%%, |dc|/depth = %.3f %%, |dlambda|/lambda = %.3f %%, 1-sigma coverage E %d, w %d, "
-      "contact point %d, lambda %d /100; mean standard error of lambda %.2f %%, of w %.2f %%\n",
-      lambda, r.noise, 100 * worst_e, 100 * worst_w, 100 * worst_c, 100 * worst_l, covered_e,
-      covered_w, covered_c, covered_l, 100 * error_l, 100 * error_w);
-  EXPECT_LT(worst_e, 0.02);
-  EXPECT_LT(worst_w, r.work_bound);
-  EXPECT_LT(worst_c, 0.01);
-  EXPECT_LT(worst_l, r.lambda_bound);
-  for (const int covered : {covered_e, covered_w, covered_c, covered_l}) {
-    EXPECT_GE(covered, 55);
-    EXPECT_LE(covered, 81);
-  }
+  const Lever in = lever_curve(r.lambda, true), out = lever_curve(r.lambda, false);
+  expect_lambda_recovery("both", r, in.curve, [&](unsigned seed) {
+    return fit_maugis_both(with_noise(in.curve, seed, r.noise),
+                           with_noise(out.curve, seed + 1000, r.noise), parabola());
+  });
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MaugisBothSynthetic,
