@@ -31,6 +31,9 @@ constexpr std::size_t kMaugisParameters = 6;
 /// errors that stopped the minimiser short of the minimum along the valley where w, lambda and
 /// the contact point trade against each other.
 constexpr double kDifferenceStep = 1e-4;
+/// The rise at a retract's jump off, in the force's noise, that makes it an observation: the
+/// largest of 10^4 differences of pure noise lies near 5.5 of it.
+constexpr double kReleaseNoises = 8.0;
 /// The thresholds of `--model auto` (Johnson & Greenwood 1997).
 constexpr double kDmtBelow = 0.1;
 constexpr double kJkrAbove = 5.0;
@@ -59,15 +62,41 @@ struct MaugisSamples {
   std::vector<char> contact;
 };
 
+/// Where the lever lets a retract go (MaugisBranch::release_depth) and the branch there.
+struct ReleaseSite {
+  double stiffness = 0.0;  ///< [N/m] the lever's (input)
+  double depth = 0.0;      ///< [m]
+  double force = 0.0;      ///< [N] the branch's contact force
+  double slope = 0.0;      ///< [N/m] dF/dd
+  double curvature = 0.0;  ///< [N/m^2] d2F/dd2
+  bool turns = false;      ///< false: the branch's shallow end
+  /// [m] The lever's base there in tip positions: the tip's less the bending the contact's
+  /// force makes (the baseline's drift is the instrument's, not a force on the lever).
+  double base(std::span<const double> p) const { return p[3] - depth - force / stiffness; }
+};
+
 /// The model's forces at parameters p (E, w, lambda, contact point, offset, slope), the branch's
-/// slopes dF/dd where `slopes` is given; throws std::domain_error as MaugisBranch does.
+/// slopes dF/dd where `slopes` is given, the lever's release where `release` is given; throws
+/// std::domain_error as MaugisBranch does.
 void maugis_forces(const MaugisSamples& s, const TipShape& tip, double compliance, double deepest,
                    std::span<const double> p, std::span<double> forces, double* pull_off = nullptr,
-                   std::span<double> slopes = {}) {
+                   std::span<double> slopes = {}, ReleaseSite* release = nullptr) {
   const double z_low = *std::min_element(s.z.begin(), s.z.end());
   const MaugisBranch branch(*tip.profile, maugis_law(tip, p[0] / compliance, p[1], p[2]),
                             std::max(deepest, p[3] - z_low));
   if (pull_off) *pull_off = -branch.lowest_force();
+  if (release) {
+    release->depth = branch.release_depth(release->stiffness, &release->turns);
+    const MaugisBranch::State at = branch.at(release->depth);
+    release->force = at.force;
+    release->slope = at.d_force_d_depth;
+    // A central difference of the slope over 1e-4 of the branch's span.
+    const double h = 1e-4 * std::max(deepest, p[3] - z_low);
+    release->curvature =
+        (branch.at(release->depth + h).d_force_d_depth -
+         branch.at(std::max(release->depth - h, branch.shallowest_depth())).d_force_d_depth) /
+        (release->depth + h - std::max(release->depth - h, branch.shallowest_depth()));
+  }
   for (std::size_t i = 0; i < s.z.size(); ++i) {
     double contact = 0.0, slope = 0.0;
     if (s.contact[i]) {
@@ -312,6 +341,27 @@ MaugisBranch::State MaugisBranch::at(double depth) const {
   return {f[0], d[1] > 0.0 ? f[1] / d[1] : 0.0};
 }
 
+double MaugisBranch::release_depth(double stiffness, bool* turns) const {
+  if (turns) *turns = false;
+  if (!(stiffness > 0.0) || depth_.size() < 2) return depth_.front();
+  const auto node_slope = [&](std::size_t k) {
+    return depth_slope_[k] > 0.0 ? force_slope_[k] / depth_slope_[k]
+                                 : -std::numeric_limits<double>::infinity();
+  };
+  // Coming out from the deepest node: the first interval whose shallow node is past -k.
+  std::size_t k = depth_.size() - 1;
+  while (k > 0 && node_slope(k - 1) > -stiffness) --k;
+  if (k == 0) return depth_.front();
+  // The slope falls through -k inside [depth_[k - 1], depth_[k]]: bisection on at().
+  double lo = depth_[k - 1], hi = depth_[k];
+  for (int step = 0; step < 50; ++step) {
+    const double mid = 0.5 * (lo + hi);
+    (at(mid).d_force_d_depth > -stiffness ? hi : lo) = mid;
+  }
+  if (turns) *turns = true;
+  return 0.5 * (lo + hi);
+}
+
 RegimeChoice choose_regime(double lambda) {
   const char* model = lambda < kDmtBelow ? "dmt" : lambda > kJkrAbove ? "jkr" : "maugis";
   return {model, fmt::format("auto: lambda = {:.3g} -> {}", lambda, model)};
@@ -355,6 +405,16 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
     const auto cut = static_cast<std::ptrdiff_t>(found - 50);
     near.tip_position.erase(near.tip_position.begin(), near.tip_position.begin() + cut);
     near.force.erase(near.force.begin(), near.force.begin() + cut);
+    start_segment = &near;
+    jkr = fit_adhesive(near, adhesive);
+  }
+  // A retract held by its lever nearly to the path's end (small lambda): the jump off is in the
+  // noise, whose largest rise can fall among the last samples, leaving no baseline; the starts
+  // from the segment without its last tenth.
+  if (options.retract && jkr.status == FitStatus::no_contact && n > 100) {
+    near = segment;
+    near.tip_position.resize(n - n / 10);
+    near.force.resize(n - n / 10);
     start_segment = &near;
     jkr = fit_adhesive(near, adhesive);
   }
@@ -426,10 +486,38 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
     }
   }
   const bool jump_row = jump_in && jump_weight > 0.0;
-  const std::size_t rows = used + (jump_row ? 1 : 0);
+  // A retract through a lever of known stiffness k adds the jump off: the base there stands
+  // where q = d + F/k turns on the branch (dF/dd = -k), which moves with lambda apart from the
+  // contact point unlike the jump in's -h0. Off the branch the tip is where the base is, which
+  // moves evenly: the line through the free samples' positions, taken back half a step past
+  // the last sample on the branch, places the jump within a uniform error of one step.
+  ReleaseSite release;
+  release.stiffness = segment.spring_constant;
+  double release_weight = 0.0, release_observed = 0.0;
+  if (options.retract && release.stiffness > 0.0 && jump + 10 < n) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = jump + 1; i < n; ++i) {
+      const double x = static_cast<double>(i), y = z[i];
+      sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double m = static_cast<double>(n - jump - 1);
+    const double rise = (sxy - sx * sy / m) / (sxx - sx * sx / m);
+    const double noise = difference_noise(f, jump + 1, n);
+    // Only a jump that stands out: where the lever holds the path nearly to its end (small
+    // lambda), the last step is lost in the noise and the one found is the noise's largest.
+    const bool stands_out = f[jump + 1] - f[jump] > kReleaseNoises * noise;
+    if (std::isfinite(rise) && rise != 0.0 && noise > 0.0 && stands_out) {
+      release_observed = (sy - rise * sx) / m + rise * (static_cast<double>(jump) + 0.5);
+      release_weight = noise / (std::abs(rise) * std::sqrt(1.0 / 12.0));
+    }
+  }
+  const bool release_row = release_weight > 0.0;
+  const std::size_t release_at = used + (jump_row ? 1 : 0);
+  const std::size_t rows = release_at + (release_row ? 1 : 0);
   std::vector<double> data = samples.force;
-  // Measured from the observed jump (the residual is a small difference of small numbers).
+  // Measured from the observed jumps (the residual is a small difference of small numbers).
   if (jump_row) data.push_back(0.0);
+  if (release_row) data.push_back(0.0);
   // The zone's range h0 = w / sigma_0 at parameters p.
   const auto zone_range = [&](std::span<const double> p) {
     return p[1] / maugis_adhesive_stress(p[2], p[0] / compliance, p[1], options.tip.radius);
@@ -456,7 +544,9 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
     return (p[3] + zone_range(p) - jump_observed) * jump_weight;
   };
   const auto sum_squares = [&](std::span<const double> p, double* pull_off) {
-    maugis_forces(samples, options.tip, compliance, deepest, p, forces, pull_off);
+    ReleaseSite site = release;
+    maugis_forces(samples, options.tip, compliance, deepest, p, forces, pull_off, {},
+                  release_row ? &site : nullptr);
     double sum = 0.0;
     for (std::size_t i = 0; i < used; ++i) {
       const double r = (forces[i] - samples.force[i]) / force_scale;
@@ -464,6 +554,10 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
     }
     if (jump_row) {
       const double r = jump_residual(p) / force_scale;
+      sum += r * r;
+    }
+    if (release_row) {
+      const double r = (site.base(p) - release_observed) * release_weight / force_scale;
       sum += r * r;
     }
     return sum;
@@ -513,8 +607,11 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
   };
   problem.model = [&](std::span<const double> p, std::span<double> model) {
     try {
-      maugis_forces(samples, options.tip, compliance, deepest, p, model.first(used));
+      ReleaseSite site = release;
+      maugis_forces(samples, options.tip, compliance, deepest, p, model.first(used), nullptr, {},
+                    release_row ? &site : nullptr);
       if (jump_row) model[used] = jump_residual(p);
+      if (release_row) model[release_at] = (site.base(p) - release_observed) * release_weight;
     } catch (const std::domain_error&) {
       refuse(model);
     }
@@ -522,7 +619,9 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
   std::vector<double> slopes(used), shifted(used), lowered(used);
   problem.derivatives = [&](std::span<const double> p, std::span<double> d) {
     try {
-      maugis_forces(samples, options.tip, compliance, deepest, p, forces, nullptr, slopes);
+      ReleaseSite site = release;
+      maugis_forces(samples, options.tip, compliance, deepest, p, forces, nullptr, slopes,
+                    release_row ? &site : nullptr);
       for (std::size_t i = 0; i < used; ++i) {
         d[3 * rows + i] = -p[5] + slopes[i];
         d[4 * rows + i] = 1.0;
@@ -546,17 +645,41 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
           d[i] = lever / p[0];
           d[rows + i] = (contact - lever) / p[1];
         }
+        if (release_row) {
+          // The same scaling at the release: dF/dln E and dF/dln w at its depth, and the depth's
+          // own shift, where the slope stays -k (implicit), or as delta at the fold.
+          const double dd = site.depth, lever = 2.0 / 3.0 * dd * site.slope;
+          const double d_force[2] = {lever, site.force - lever};
+          const double d_slope[2] = {2.0 / 3.0 * (site.slope + dd * site.curvature),
+                                     site.slope / 3.0 - 2.0 / 3.0 * dd * site.curvature};
+          const double d_depth_fold[2] = {-2.0 / 3.0 * dd, 2.0 / 3.0 * dd};
+          const double tilt = 1.0 + site.slope / site.stiffness;
+          for (std::size_t k = 0; k < 2; ++k) {
+            const double shift = site.turns && site.curvature != 0.0 ? -d_slope[k] / site.curvature
+                                                                     : d_depth_fold[k];
+            d[k * rows + release_at] =
+                (-tilt * shift - d_force[k] / site.stiffness) / p[k] * release_weight;
+          }
+        }
       }
       for (std::size_t k = scales ? 2 : 0; k < 3; ++k) {
         if (held[k]) continue;
         const double step = kDifferenceStep * p[k];
         q[k] = p[k] + step;
-        maugis_forces(samples, options.tip, compliance, deepest, q, shifted);
+        ReleaseSite up = release, down = release;
+        maugis_forces(samples, options.tip, compliance, deepest, q, shifted, nullptr, {},
+                      release_row ? &up : nullptr);
+        const double base_up = release_row ? up.base(q) : 0.0;
         q[k] = p[k] - step;
-        maugis_forces(samples, options.tip, compliance, deepest, q, lowered);
+        maugis_forces(samples, options.tip, compliance, deepest, q, lowered, nullptr, {},
+                      release_row ? &down : nullptr);
+        const double base_down = release_row ? down.base(q) : 0.0;
         q[k] = p[k];
         for (std::size_t i = 0; i < used; ++i) {
           d[k * rows + i] = (shifted[i] - lowered[i]) / (2.0 * step);
+        }
+        if (release_row) {
+          d[k * rows + release_at] = (base_up - base_down) / (2.0 * step) * release_weight;
         }
       }
       if (jump_row) {
@@ -567,6 +690,10 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
         d[2 * rows + used] = -h0 / p[2] * jump_weight;
         d[3 * rows + used] = jump_weight;
         d[4 * rows + used] = d[5 * rows + used] = 0.0;
+      }
+      if (release_row) {
+        d[3 * rows + release_at] = release_weight;
+        d[4 * rows + release_at] = d[5 * rows + release_at] = 0.0;
       }
     } catch (const std::domain_error&) {
       std::fill(d.begin(), d.end(), 0.0);
@@ -603,14 +730,61 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
       solution.evaluations += one.evaluations;
     }
   }
+  // A retract whose jump off is lost in the noise (the lever holds the path nearly to its end):
+  // the jump found is the noise's largest rise, anywhere along the path's tail. Its samples
+  // are then those the fitted model's lever holds (depth past the release), the fit run again
+  // from its minimum while that moves samples (at most three times).
+  const std::size_t retract_count = options.retract ? n : 0;
+  for (int pass = 0; pass < 3 && retract_count > 0 && release.stiffness > 0.0 && !release_row &&
+                     std::isfinite(solution.sum_squares);
+       ++pass) {
+    const std::span<const double> q(solution.values);
+    double release_depth = 0.0;
+    try {
+      const double low = *std::min_element(samples.z.begin(), samples.z.end());
+      const MaugisBranch branch(*options.tip.profile,
+                                maugis_law(options.tip, q[0] / compliance, q[1], q[2]),
+                                std::max(deepest, q[3] - low));
+      release_depth = branch.release_depth(release.stiffness);
+    } catch (const std::domain_error&) {
+      break;
+    }
+    bool moved = false;
+    for (std::size_t i = 0; i < retract_count; ++i) {
+      const char held_on = q[3] - samples.z[i] >= release_depth ? 1 : 0;
+      moved = moved || held_on != samples.contact[i];
+      samples.contact[i] = held_on;
+    }
+    if (!moved) break;
+    problem.start.assign(q.begin(), q.end());
+    std::array<FitParameter, kMaugisParameters> trial{};
+    std::array<FitParameter*, kMaugisParameters> into{};
+    for (std::size_t j = 0; j < kMaugisParameters; ++j) into[j] = &trial[j];
+    ScaledSolution again = minimize_scaled(problem, into);
+    again.iterations += solution.iterations;
+    again.evaluations += solution.evaluations;
+    solution = std::move(again);
+    for (std::size_t j = 0; j < kMaugisParameters; ++j) *out[j] = trial[j];
+  }
+  fit.contact_samples = static_cast<std::size_t>(
+      std::count(samples.contact.begin(), samples.contact.end(), static_cast<char>(1)));
   fit.iterations = solution.iterations;
   fit.evaluations = solution.evaluations;
   const std::vector<double>& p = solution.values;
-  // Of the force samples alone (the jump's row is a position).
-  const double jump_squares = jump_row ? std::pow(jump_residual(p) / force_scale, 2) : 0.0;
-  fit.residual_rms =
-      std::sqrt(std::max(solution.sum_squares - jump_squares, 0.0) / static_cast<double>(used)) *
-      force_scale;
+  // Of the force samples alone (the jumps' rows are positions).
+  double position_squares = jump_row ? std::pow(jump_residual(p) / force_scale, 2) : 0.0;
+  if (release_row) {
+    ReleaseSite site = release;
+    try {
+      maugis_forces(samples, options.tip, compliance, deepest, p, forces, nullptr, {}, &site);
+      position_squares +=
+          std::pow((site.base(p) - release_observed) * release_weight / force_scale, 2);
+    } catch (const std::domain_error&) {
+    }
+  }
+  fit.residual_rms = std::sqrt(std::max(solution.sum_squares - position_squares, 0.0) /
+                               static_cast<double>(used)) *
+                     force_scale;
   fit.max_indentation = std::max(0.0, p[3] - *z_low);
   bool reaches = true;
   try {

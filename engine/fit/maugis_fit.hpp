@@ -40,6 +40,10 @@ class MaugisBranch {
   /// [N] the lowest force along the branch (the pull-off under fixed load).
   double lowest_force() const { return lowest_force_; }
   double shallowest_depth() const { return depth_.front(); }  ///< [m]
+  /// [m] Where a lever of stiffness k [N/m] lets the retract go: the depth, coming out, at which
+  /// the branch's slope dF/dd first falls to -k (there the lever's base q = d + F/k turns),
+  /// else the branch's shallow end (its fixed-grips fold). `turns` tells which.
+  double release_depth(double stiffness, bool* turns = nullptr) const;
 
  private:
   // Nodes by rising depth: the no-contact branch's (in c) then the contact branch's (in a).
@@ -60,7 +64,10 @@ struct MaugisFitOptions {
 /// fixed-load pull-off as far as the lever held them, the rest on the baseline. Approach: the
 /// samples from the jump in (a change point of the force) lie on it, and the jump's position
 /// is one more residual: the tip there at d = -h0 = -w / sigma_0, the zone's range, which is
-/// what tells lambda (weighted by the sampling step and the change point's spread). Starts from
+/// what tells lambda (weighted by the sampling step and the change point's spread). A retract
+/// whose spring constant is known adds its jump off where it stands out of the noise: the
+/// lever's base there, where q = d + F/k turns on the path (release_depth); where it does not,
+/// the retract's samples on the path are those the fitted model's lever holds. Starts from
 /// the DMT and JKR fits (adhesive_fit) and the best of five lambdas.
 AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& options);
 
