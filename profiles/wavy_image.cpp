@@ -20,15 +20,19 @@ RippleIntegrals by_series(double z) {
   // term_j = (-1)^j z^(2j+1) / ((2j+1)!!)^2; the slope's term is (2j+1) term_j / z.
   double value = 0.0;
   double slope = 0.0;
-  double power = 1.0;  // (-1)^j z^(2j) / ((2j+1)!!)^2
+  double deficit = 0.0;  // 1 - I' = -sum_{j>=1} (2j+1) term_j / z, apart from I' (no cancellation)
+  double power = 1.0;    // (-1)^j z^(2j) / ((2j+1)!!)^2
   for (int j = 0; j < 40; ++j) {
     const double odd = 2.0 * j + 1.0;
-    if (j > 0) power *= -z * z / (odd * odd);
+    if (j > 0) {
+      power *= -z * z / (odd * odd);
+      deficit -= power * odd;
+    }
     value += power * z;
     slope += power * odd;
     if (std::abs(power) < 1e-18) break;
   }
-  return {value, slope};
+  return {value, slope, deficit};
 }
 
 RippleIntegrals by_bessel_sums(double z) {
@@ -62,7 +66,8 @@ RippleIntegrals by_bessel_sums(double z) {
     }
   }
   norm += at;  // J_0
-  return {2.0 * odd_sum / norm, (at + 2.0 * even_sum) / norm};
+  const double slope = (at + 2.0 * even_sum) / norm;
+  return {2.0 * odd_sum / norm, slope, 1.0 - slope};
 }
 
 /// The sum of an asymptotic series from its first term, each next term `next(term, k)` for
@@ -98,7 +103,8 @@ RippleIntegrals asymptotic(double z) {
   const double half_pi = 0.5 * std::numbers::pi;
   // The C library's Y_0 and Y_1 in double (POSIX y0, y1): Boost's, promoted to long double,
   // cost ten times as much, and the disk check of a rippled contact asks millions of times.
-  return {half_pi * ::y0(z) + value_tail, -half_pi * ::y1(z) + slope_tail};
+  const double slope = -half_pi * ::y1(z) + slope_tail;
+  return {half_pi * ::y0(z) + value_tail, slope, 1.0 - slope};
 }
 
 }  // namespace

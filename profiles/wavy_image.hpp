@@ -8,6 +8,9 @@ namespace mdrsim {
 struct RippleIntegrals {
   double value;  ///< I(z)
   double slope;  ///< I'(z)
+  /// 1 - I'(z) = (pi/2) H_1(z), from its own series where z is small (there I' is 1 - z^2/3 + ...,
+  /// and 1 - I' formed from it would keep only eps/z^2 of its digits).
+  double slope_deficit;
 };
 
 /// Small z by their power series, I(z) = sum_j (-1)^j z^(2j+1) / ((2j+1)!!)^2; otherwise

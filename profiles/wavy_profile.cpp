@@ -33,4 +33,14 @@ double WavyProfile::mdr_image_slope(double x) const {
   return 2.0 * x / radius_ + amplitude_ * wavenumber_ * (ripple.value + z * ripple.slope);
 }
 
+double WavyProfile::nonadhesive_force_per_modulus(double contact_radius) const {
+  // The parabola's 2 a^3/(3R) and the ripple's A a Z I(Z) - (A/k) int_0^Z z I(z) dz; the
+  // ripple's two terms do not cancel where Z is small (Z^2 - Z^2/3).
+  const double a = contact_radius;
+  const double z = wavenumber_ * a;
+  const RippleIntegrals ripple = ripple_integrals(z);
+  const double ripple_part = amplitude_ * a * (z * ripple.value - ripple.slope_deficit);
+  return 2.0 * (2.0 * a * a * a / (3.0 * radius_) + ripple_part);
+}
+
 }  // namespace mdrsim

@@ -4,8 +4,6 @@
 #include <numbers>
 #include <optional>
 
-#include <optional>
-
 #include "profiles/profile.hpp"
 
 namespace mdrsim {
@@ -27,6 +25,9 @@ class WavyProfile final : public Profile {
   double shape(double radius) const override;
   double mdr_image(double x) const override;
   double mdr_image_slope(double x) const override;
+  /// In closed form: 2 int_0^a (g(a) - g(x)) dx = 2 [2 a^3/(3R) + (A/k) Z (Z I(Z) - (1 - I'(Z)))]
+  /// with Z = k a, as int_0^Z z I(z) dz = (pi/2) Z H_1(Z) = Z (1 - I'(Z)) (d(z H_1)/dz = z H_0).
+  double nonadhesive_force_per_modulus(double contact_radius) const override;
   std::optional<double> jkr_scale_radius() const override { return radius_; }
   bool folds_at_every_crest() const override { return true; }
 
