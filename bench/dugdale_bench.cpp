@@ -253,11 +253,17 @@ int main(int argc, char** argv) {
                                  path_samples, name, true)
         ->Unit(benchmark::kMicrosecond);
   }
-  // The wavy profile's zone alone: no path (its branch folds at the crests), no curve (a state
-  // costs some 40 ms, 1000 of them a minute).
+  // The wavy profile's zone, its fixed-load pull-off and its path's first fixed-grips fold (the
+  // first of the folds at its crests); no curve.
   benchmark::RegisterBenchmark("dugdale_gap_pair/wavy", gap_integral, std::string("wavy"))
       ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("dugdale_state/wavy", contact_state, std::string("wavy"))
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("dugdale_fixed_load_pull_off/wavy", fixed_load_pull_off,
+                               std::string("wavy"))
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("dugdale_path_first_fold/wavy/fixed-grips", path_first_fold,
+                               std::string("wavy"), std::string("fixed-grips"))
       ->Unit(benchmark::kMicrosecond);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
