@@ -248,7 +248,9 @@ DugdaleState dugdale_held_state(const Profile& profile, const DugdaleLaw& law, d
 DugdaleState DugdalePath::in_phase(int phase, double s, double guess) const {
   switch (phase) {
     case 0:
-      if (s == 1.0) return glued_state_;
+      // A preload at or above the glued depth leaves a_p = a_g: the whole phase is the glued
+      // state, not one solve a sample (a walk would solve the same radius from its own root).
+      if (s == 1.0 || preload_radius_ == glued_radius_) return glued_state_;
       return dugdale_contact_state(profile_, law_,
                                    preload_radius_ - s * (preload_radius_ - glued_radius_), guess);
     case 1: {

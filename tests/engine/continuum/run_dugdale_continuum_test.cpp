@@ -288,5 +288,49 @@ TEST(RunDugdaleContinuum, TheSampledCurveIsThePathsStatesOneByOne) {
   }
 }
 
+/// A parabola that counts its gap integrals J.
+class GapCountingParabola final : public Profile {
+ public:
+  explicit GapCountingParabola(double radius) : parabola_(radius) {}
+  double shape(double r) const override { return parabola_.shape(r); }
+  double mdr_image(double x) const override { return parabola_.mdr_image(x); }
+  double mdr_image_slope(double x) const override { return parabola_.mdr_image_slope(x); }
+  double nonadhesive_force_per_modulus(double a) const override {
+    return parabola_.nonadhesive_force_per_modulus(a);
+  }
+  DugdaleGap dugdale_gap(double a, double c, double t) const override {
+    ++gaps;
+    return parabola_.dugdale_gap(a, c, t);
+  }
+  mutable int gaps = 0;
+
+ private:
+  ParabolicProfile parabola_;
+};
+
+// A preload at the glued depth (a_p = a_g): every sample of [0, 1] is the glued state itself, bit
+// for bit, and the walk takes no gap integral for them (it solved a_g again from its own root a
+// sample, one J each).
+TEST(RunDugdaleContinuum, APreloadAtTheGluedDepthSamplesTheGluedStateWithoutSolving) {
+  const MaugisUnits u;
+  const GapCountingParabola parabola(u.radius);
+  const double a = 3.0 * u.length();
+  const DugdaleLaw law = u.law(1.0);
+  const DugdalePath path(parabola, law, a, dugdale_contact_state(parabola, law, a).indentation);
+  ASSERT_EQ(path.preload_radius(), a);
+  std::vector<double> places;
+  for (int k = 0; k < 500; ++k) places.push_back(k / 500.0);
+  parabola.gaps = 0;
+  const std::vector<DugdaleState> curve = path.states(places);
+  EXPECT_EQ(parabola.gaps, 0);
+  const DugdaleState glued = path.at(1.0);
+  for (const DugdaleState& st : curve) {
+    EXPECT_EQ(st.contact_radius, glued.contact_radius);
+    EXPECT_EQ(st.cohesive_radius, glued.cohesive_radius);
+    EXPECT_EQ(st.indentation, glued.indentation);
+    EXPECT_EQ(st.normal_force, glued.normal_force);
+  }
+}
+
 }  // namespace
 }  // namespace mdrsim
