@@ -22,6 +22,7 @@
 #include "profiles/parabolic_profile.hpp"
 #include "profiles/power_law_profile.hpp"
 #include "profiles/sphere_profile.hpp"
+#include "profiles/wavy_profile.hpp"
 #include "tests/support/maugis_units.hpp"
 
 namespace mdrsim {
@@ -365,6 +366,46 @@ TEST(DugdaleZone, TheConesFreeBranchIsStraight) {
   const double slope = (two.indentation - one.indentation) / (0.5 * c0);
   EXPECT_NEAR(slope, tan_theta - 4.0 * law.adhesive_stress / (kPi * 1e6), 1e-12);
   EXPECT_GT(slope, 0.0);  // sigma_0/(E* tan) = 1/2 < pi/4: d rises with c, no fold
+}
+
+/// The wavy profile with the generic quadrature's non-adhesive force (Gauss-Kronrod, the slow
+/// path its states took before the closed form).
+class WavyByQuadrature final : public Profile {
+ public:
+  explicit WavyByQuadrature(const WavyProfile& wavy) : wavy_(wavy) {}
+  double shape(double r) const override { return wavy_.shape(r); }
+  double mdr_image(double x) const override { return wavy_.mdr_image(x); }
+  double mdr_image_slope(double x) const override { return wavy_.mdr_image_slope(x); }
+
+ private:
+  const WavyProfile& wavy_;
+};
+
+// Wavy states with the closed-form non-adhesive force against the same states by the quadrature
+// it replaces, in the transition (lambda = 1) on the bench's ripple (10 nm at 100 um, R = 1 cm)
+// and one ten times as strong: the zone is the same solve (a, c, d bit for bit), and F within
+// 1e-12 of its terms E* nf(a) + 2 sigma_0 c^2 t (each nf is good to about 1e-13 of 2 a g(a):
+// WavyProfile.NonadhesiveForceIsItsDefinition, the quadrature to its 1e-14 request).
+TEST(DugdaleZone, WavyStatesKeepTheirForceWithTheClosedFormContactForce) {
+  const double radius = 0.01, modulus = 1e6, work = 0.05;
+  const double stress =
+      1.0 / std::cbrt(9.0 * radius / (2.0 * kPi * work * modulus * modulus));  // lambda = 1
+  const DugdaleLaw law{
+      .adhesive_stress = stress, .work_of_adhesion = work, .effective_modulus = modulus};
+  for (const double amplitude : {1e-8, 1e-7}) {
+    const WavyProfile wavy(radius, amplitude, 1e-4);
+    const WavyByQuadrature slow(wavy);
+    for (const double a : {3e-5, 2.05e-4, 5e-4}) {
+      SCOPED_TRACE(testing::Message() << amplitude << " " << a);
+      const DugdaleState fast = dugdale_contact_state(wavy, law, a);
+      const DugdaleState before = dugdale_contact_state(slow, law, a);
+      EXPECT_EQ(fast.cohesive_radius, before.cohesive_radius);
+      EXPECT_EQ(fast.indentation, before.indentation);
+      const double terms = modulus * wavy.nonadhesive_force_per_modulus(a) +
+                           2.0 * stress * fast.cohesive_radius * fast.cohesive_radius * fast.angle;
+      EXPECT_NEAR(fast.normal_force, before.normal_force, 1e-12 * terms);
+    }
+  }
 }
 
 }  // namespace
