@@ -54,7 +54,8 @@ int run_command(const RunOptions& options) {
   if (!options.trajectory.empty()) {
     trajectory_file.emplace("--trajectory", options.trajectory);
     trajectory = std::make_unique<TrajectoryCsvWriter>(
-        trajectory_file->stream(), scene.friction.has_value(), scene.material.finite_range());
+        trajectory_file->stream(), scene.friction.has_value(), scene.material.finite_range(),
+        scene.program && scene.program->timed());
     stride = std::make_unique<TrajectoryStride>(*trajectory, options.trajectory_stride);
     observers.add(*stride);
     if (const auto warning = large_trajectory_warning(scene, options.trajectory_stride)) {

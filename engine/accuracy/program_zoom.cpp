@@ -95,6 +95,35 @@ ZoomRow zoomed_row(const Scene& scene, const LastStageStart& start, const ZeroSc
   return {std::move(row), exact};
 }
 
+/// The time of a state of the last stage, from the full row's state `reference` of that stage:
+/// the zoomed rows run without the program's clock, which is affine in the stage parameter as
+/// the held values are (docs/programs.md "Time").
+double last_stage_time(const Scene& scene, const LastStageStart& start,
+                       const ContactSnapshot& reference, const ContactSnapshot& s) {
+  const Stage& stage = scene.program->stages[start.stage];
+  const auto held = [](const MachineAxis& axis, double u, double f) {
+    return axis.constraint.displacement_coefficient * u + axis.constraint.force_coefficient * f;
+  };
+  const double normal = axis_motion(stage.normal, start.normal.held).rate;
+  const double tangential = axis_motion(stage.tangential, start.tangential.held).rate;
+  const double per_parameter = seconds_per_parameter(stage, normal != 0.0 ? normal : tangential);
+  if (per_parameter == 0.0) return reference.time;
+  if (normal != 0.0) {
+    return reference.time +
+           per_parameter *
+               (held(start.normal, s.indentation, s.normal_force) -
+                held(start.normal, reference.indentation, reference.normal_force)) /
+               normal;
+  }
+  if (tangential == 0.0) return reference.time;
+  return reference.time +
+         per_parameter *
+             (held(start.tangential, s.tangential_displacement, s.tangential_force) -
+              held(start.tangential, reference.tangential_displacement,
+                   reference.tangential_force)) /
+             tangential;
+}
+
 /// Whether the row's peak is its critical point, as the row located both: the zoom of one is
 /// the zoom of the other.
 bool peak_is_critical(const RunResult& row) {
@@ -189,6 +218,8 @@ std::optional<ZoomedCritical> zoom_program_state(const Scene& scene, const RunRe
   const auto estimate = seq.estimate(route);
   if (!value || !estimate) return std::nullopt;
   out.value = *value;
+  const ContactSnapshot& reference = target == Target::critical ? *coarse.critical : *coarse.peak;
+  out.value.time = last_stage_time(scene, start, reference, out.value);
   out.estimate = *estimate;
   out.route = route;
   out.outer_radius = radius;

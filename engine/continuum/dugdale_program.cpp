@@ -18,6 +18,7 @@
 #include "engine/base/text.hpp"
 #include "engine/continuum/continuum_branch.hpp"
 #include "engine/continuum/dugdale_path.hpp"
+#include "engine/continuum/program_clock.hpp"
 #include "engine/model/dugdale_material.hpp"
 #include "engine/result/rtol_rule.hpp"
 
@@ -317,6 +318,7 @@ struct Piece {
   AffineConstraint control;
   double u0 = 0.0;
   double u1 = 0.0;
+  ContinuumStageClock clock;  ///< its stage's time by the normal control
 };
 
 /// The machine's work over a piece [J]: int F dX with X = d + (a_F/a_u) F the machine's end
@@ -379,6 +381,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
   std::vector<Piece> pieces;
   std::vector<std::string> not_run;
   std::vector<Event> stage_ends;
+  double now = 0.0;  // the program's clock as the stage starts [s]
   const auto lost_contact = [&](const Stage& stage) {
     if (result.status != RunStatus::completed) return;
     result.status = RunStatus::no_instability;
@@ -399,6 +402,9 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
       target = v0 + stage.normal->value;
     }
     if (stage.until_separation) target = -std::numeric_limits<double>::infinity();
+    const ContinuumStageClock clock = continuum_stage_clock(stage, now, v0, target);
+    const std::size_t jumps_before = result.jumps.size();
+    const bool critical_before = result.critical.has_value();
     const int dir = target > v0 ? 1 : (target < v0 ? -1 : 0);
     while (dir != 0 && !flying && !at_edge && !(stage.until_separation && u <= 0.0)) {
       const Reach r = walk.march(u, dir, target);
@@ -408,7 +414,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
         result.critical_stage = stage.name;
         break;
       }
-      const Piece piece{&stage, control, u, r.u};
+      const Piece piece{&stage, control, u, r.u, clock};
       stage_work.normal += machine_work(eq, piece, work_error, work_scale);
       pieces.push_back(piece);
       if (dir < 0 && u > 0.0 && r.u <= 0.0) lost_contact(stage);
@@ -457,9 +463,17 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
       u = *landing;
       largest_radius = std::max(largest_radius, to.contact_radius);
     }
-    const ContactSnapshot end = dugdale_snapshot(eq.at(u), control);
+    for (std::size_t k = jumps_before; k < result.jumps.size(); ++k) {
+      clock.stamp(result.jumps[k].critical);
+      result.jumps[k].after.time = result.jumps[k].critical.time;  // a jump takes no time
+    }
+    if (result.critical && !critical_before) clock.stamp(*result.critical);
+    ContactSnapshot end = dugdale_snapshot(eq.at(u), control);
+    // A stage that runs to its end ends at its clock's end, whatever the rounding of its control.
+    end.time = stage.until_separation ? clock.at(end.normal_control) : clock.end;
     StageRecord record{stage.name, end, {}};
     if (flying) record.end = result.critical.value_or(end);
+    now = record.end.time;
     record.work = stage_work;
     result.stages.push_back(record);
     Event e{.kind = EventKind::stage_end, .state = record.end};
@@ -495,6 +509,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
         const double t = static_cast<double>(k) / static_cast<double>(per_piece - 1);
         Event e{.kind = EventKind::sample,
                 .state = dugdale_snapshot(eq.at(p.u0 + (p.u1 - p.u0) * t), p.control)};
+        p.clock.stamp(e.state);
         e.stage = p.stage->name;
         observers.emit(e);
       }
@@ -506,6 +521,7 @@ RunResult run_dugdale_program(const Scene& scene, double rtol, std::int64_t samp
     const DugdaleState s = eq.at(at);
     if (s.normal_force < 0.0 && (!result.peak || s.normal_force < result.peak->normal_force)) {
       result.peak = dugdale_snapshot(s, p.control);
+      p.clock.stamp(*result.peak);
       peak_error = error;
     }
   }

@@ -18,6 +18,7 @@
 #include "engine/base/text.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
+#include "engine/continuum/program_clock.hpp"
 #include "engine/model/gluing_depth.hpp"
 #include "engine/model/graded_constants.hpp"
 #include "engine/result/rtol_rule.hpp"
@@ -171,6 +172,7 @@ class ContinuumStage {
   long long iterations() const { return iterations_ + branch_.iterations(); }
 
   std::vector<Piece> pieces;
+  ContinuumStageClock clock;  ///< the stage's time by its normal control
 
  private:
   ContinuumBranch branch_;
@@ -390,6 +392,22 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
   }
 }
 
+/// Gives the states the stage added (its jumps, the critical point and the peak where it found
+/// them) their times.
+void stamp_stage_states(ProgramWalk& w, const ContinuumStageClock& clock, const Stage& stage,
+                        std::size_t jumps_before,
+                        const std::optional<ContactSnapshot>& peak_before) {
+  for (std::size_t k = jumps_before; k < w.result.jumps.size(); ++k) {
+    JumpRecord& jump = w.result.jumps[k];
+    clock.stamp(jump.critical);
+    jump.after.time = jump.critical.time;  // a jump takes no time
+  }
+  if (w.result.critical && w.result.critical_stage == stage.name) clock.stamp(*w.result.critical);
+  if (w.result.peak && (!peak_before || peak_before->normal_force != w.result.peak->normal_force)) {
+    clock.stamp(*w.result.peak);
+  }
+}
+
 /// `samples` points along the pieces, shared evenly, as `sample` events of their stage.
 void emit_samples(const std::vector<std::pair<const Stage*, ContinuumStage*>>& stages,
                   std::int64_t samples, const ObserverList& observers) {
@@ -420,6 +438,7 @@ void emit_samples(const std::vector<std::pair<const Stage*, ContinuumStage*>>& s
             break;
         }
         Event e{.kind = EventKind::sample, .state = s.snapshot()};
+        st->clock.stamp(e.state);
         e.stage = stage->name;
         observers.emit(e);
       }
@@ -441,6 +460,7 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
   std::vector<std::string> not_run;
   std::vector<Event> stage_ends;
   double largest_radius = 0.0;
+  double now = 0.0;  // the program's clock as the stage starts [s]
   for (const Stage& stage : scene.program->stages) {
     if (w.flying) {
       not_run.push_back(stage.name);
@@ -448,6 +468,9 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
     }
     if (stage.normal) control = stage.normal->controller->constraint();
     AxisWork stage_work;
+    double tangential_rate = 0.0;
+    const std::size_t jumps_before = w.result.jumps.size();
+    const std::optional<ContactSnapshot> peak_before = w.result.peak;
     if (stage.tangential) {
       // The normal axis holds (continuum_program_refusal): the disk keeps its radius and
       // stretch while u_x moves on the uniformly stretched glue, F_x = 2 G* a u_x.
@@ -462,6 +485,7 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
       if (stage.tangential->motion == StageAxis::Motion::by) t1 = t0 + stage.tangential->value;
       tangential = next;
       tangential_held = t1;
+      tangential_rate = t1 - t0;
       const ContinuumStage after(scene, control, tangential, tangential_held);
       const BranchState s1 = after.state(w.disk);
       const double shear = scene.material.effective_shear_modulus;
@@ -493,6 +517,7 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
     if (stage.normal && stage.normal->motion == StageAxis::Motion::by) {
       c1 = c0 + stage.normal->value;
     }
+    st.clock = continuum_stage_clock(stage, now, c0, c1, tangential_rate);
     if (stage.until_separation) {
       c1 = -std::numeric_limits<double>::infinity();
       if (w.disk.radius == 0.0) {
@@ -518,8 +543,13 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
     largest_radius = std::max(largest_radius, w.disk.radius);
     const BranchState end = st.state(w.disk);
     note_state(w, end);
+    stamp_stage_states(w, st.clock, stage, jumps_before, peak_before);
     StageRecord record{stage.name, end.snapshot(), {}};
-    if (w.flying) record.end = w.result.critical.value_or(end.snapshot());
+    // A stage that runs to its end ends at its clock's end, whatever the rounding of its control.
+    record.end.time =
+        stage.until_separation ? st.clock.at(record.end.normal_control) : st.clock.end;
+    if (w.flying) record.end = w.result.critical.value_or(record.end);
+    now = record.end.time;
     record.work = stage_work;
     w.result.stages.push_back(record);
     Event e{.kind = EventKind::stage_end, .state = record.end};

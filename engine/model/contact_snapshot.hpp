@@ -32,6 +32,9 @@ struct ContactSnapshot {
   /// With finite-range adhesion (docs/maugis.md): c, the outer radius of the cohesive zone, out
   /// to which the Dugdale stress pulls [m] (0 where nothing pulls).
   double cohesive_radius = 0.0;
+  /// Timed loading programs (docs/programs.md "Time"): the time since the program started [s];
+  /// 0 elsewhere, and not reported.
+  double time = 0.0;
 };
 
 }  // namespace mdrsim

@@ -88,12 +88,12 @@ inline constexpr std::array<SnapshotField, 5> kTrajectoryFields{
     snapshot_field(&ContactSnapshot::tangential_force)};
 
 /// Every quantity that varies smoothly along the branch: the fields above, the normal control
-/// value and the cohesive zone's radius. Interpolation between springs and extrapolation across
-/// rows use these.
-inline constexpr std::array<double ContactSnapshot::*, 7> kBranchQuantities{
+/// value, the cohesive zone's radius and the time (affine in the stage parameter, as the held
+/// values are). Interpolation between springs and extrapolation across rows use these.
+inline constexpr std::array<double ContactSnapshot::*, 8> kBranchQuantities{
     &ContactSnapshot::normal_control,   &ContactSnapshot::normal_force,
     &ContactSnapshot::tangential_force, &ContactSnapshot::contact_radius,
     &ContactSnapshot::indentation,      &ContactSnapshot::tangential_displacement,
-    &ContactSnapshot::cohesive_radius};
+    &ContactSnapshot::cohesive_radius,  &ContactSnapshot::time};
 
 }  // namespace mdrsim

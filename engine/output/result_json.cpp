@@ -15,11 +15,13 @@ namespace {
 struct StateKeys {
   bool friction = false;  ///< how much of it slides (docs/friction.md)
   bool cohesive = false;  ///< the cohesive zone's radius (docs/maugis.md)
+  bool time = false;      ///< a timed program's clock (docs/programs.md "Time")
 };
 
 nlohmann::ordered_json snapshot_json(const ContactSnapshot& c, StateKeys keys) {
   nlohmann::ordered_json j;
   for (const SnapshotField& f : kSnapshotFields) j[f.name] = c.*f.member;
+  if (keys.time) j["time"] = c.time;
   if (keys.cohesive) j["cohesive_radius"] = c.cohesive_radius;
   j["springs_in_contact"] = c.springs_in_contact;
   j["disk_valid"] = c.disk_valid;
@@ -48,7 +50,10 @@ nlohmann::ordered_json state_json(const ContactSnapshot& c, const std::optional<
 nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<PullOffScales>& s,
                                   StateKeys keys) {
   if (jump.end != JumpEnd::state) return {{to_string(jump.end), true}};
-  return state_json(jump.after, s, keys);
+  nlohmann::ordered_json j = state_json(jump.after, s, keys);
+  // A jump takes no time: a state refined between springs might say otherwise by rounding.
+  if (keys.time) j["time"] = jump.critical.time;
+  return j;
 }
 
 /// With friction the work says what of it friction dissipated.
@@ -176,7 +181,9 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const auto scales = dimensionless_scales(scene);
   const Accuracy& accuracy = result.accuracy;
   const bool friction = scene.friction.has_value();
-  const StateKeys keys{.friction = friction, .cohesive = scene.material.finite_range()};
+  const StateKeys keys{.friction = friction,
+                       .cohesive = scene.material.finite_range(),
+                       .time = scene.program && scene.program->timed()};
   ordered_json j;
   j["status"] = to_string(result.status);
   if (result.stop_reason) j["stop_reason"] = to_string(*result.stop_reason);
@@ -234,10 +241,16 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   }
   if (result.work) {
     ordered_json stages = ordered_json::array();
+    double stage_start = 0.0;  // a stage starts where the one before it ended
     for (const StageRecord& stage : result.stages) {
-      ordered_json record = {{"name", stage.name},
-                             {"end", state_json(stage.end, scales, keys)},
-                             {"work", work_json(stage.work, friction)}};
+      ordered_json record = {{"name", stage.name}};
+      if (keys.time) {
+        record["start_time"] = stage_start;
+        record["end_time"] = stage.end.time;
+        stage_start = stage.end.time;
+      }
+      record["end"] = state_json(stage.end, scales, keys);
+      record["work"] = work_json(stage.work, friction);
       if (stage.normal_force_error_estimate) {
         record["end_error_estimate"] = {
             {"normal_force", *stage.normal_force_error_estimate},

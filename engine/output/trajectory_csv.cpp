@@ -9,12 +9,12 @@
 
 namespace mdrsim {
 
-TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, bool friction, bool cohesive)
-    : out_(&out), friction_(friction), cohesive_(cohesive) {
+TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, bool friction, bool cohesive, bool time)
+    : out_(&out), friction_(friction), cohesive_(cohesive), time_(time) {
   *out_ << "stage,event,in_cascade";
   for (const SnapshotField& f : kTrajectoryFields) *out_ << ',' << f.name;
   *out_ << ",springs_in_contact" << (friction_ ? ",sliding" : "")
-        << (cohesive_ ? ",cohesive_radius\n" : "\n");
+        << (cohesive_ ? ",cohesive_radius" : "") << (time_ ? ",time\n" : "\n");
 }
 
 void TrajectoryCsvWriter::on_event(const Event& e) {
@@ -28,6 +28,7 @@ void TrajectoryCsvWriter::on_event(const Event& e) {
                field(1), field(2), field(3), field(4));
     if (friction_) *out_ << ',';
     if (cohesive_) fmt::print(*out_, ",{}", s.cohesive_radius);
+    if (time_) fmt::print(*out_, ",{}", s.time);
     *out_ << '\n';
     return;
   }
@@ -36,6 +37,7 @@ void TrajectoryCsvWriter::on_event(const Event& e) {
              s.springs_in_contact);
   if (friction_) fmt::print(*out_, ",{}", s.springs_sliding);
   if (cohesive_) fmt::print(*out_, ",{}", s.cohesive_radius);
+  if (time_) fmt::print(*out_, ",{}", s.time);
   *out_ << '\n';
 }
 

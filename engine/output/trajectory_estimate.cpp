@@ -24,9 +24,10 @@ bool has_tangential(const Scene& scene) {
 double typical_row_bytes(const Scene& scene) {
   std::ostringstream header;
   const bool cohesive = scene.material.finite_range();
-  TrajectoryCsvWriter header_only(header, scene.friction.has_value(), cohesive);
+  const bool time = scene.program && scene.program->timed();
+  TrajectoryCsvWriter header_only(header, scene.friction.has_value(), cohesive, time);
   std::ostringstream both;
-  TrajectoryCsvWriter writer(both, scene.friction.has_value(), cohesive);
+  TrajectoryCsvWriter writer(both, scene.friction.has_value(), cohesive, time);
   const double full = -1.2345678901234567e-05;
   const double tangential = has_tangential(scene) ? full : 0.0;
   Event event{.kind = EventKind::spring_detached,
@@ -39,6 +40,7 @@ double typical_row_bytes(const Scene& scene) {
   event.state.tangential_displacement = tangential;
   event.state.tangential_force = tangential;
   event.state.springs_in_contact = scene.springs;
+  if (time) event.state.time = 1.2345678901234567;
   if (scene.program && !scene.program->stages.empty()) {
     event.stage = scene.program->stages.front().name;
   }

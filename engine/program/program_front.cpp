@@ -12,6 +12,7 @@ namespace mdrsim {
 void StageLine::place(ProgramRow& row, double t) const {
   if (normal.rate != 0.0) row.set_normal_held(normal.start + normal.rate * t);
   if (tangential.rate != 0.0) row.set_tangential_held(tangential.start + tangential.rate * t);
+  row.set_time(clock.start + clock.rate * t);
 }
 
 double ProgramFront::let_go_margin(const ProgramRow& row) const {

@@ -18,7 +18,10 @@ namespace mdrsim {
 struct StageLine {
   AxisMotion normal;
   AxisMotion tangential;
-  /// Puts `row`'s held values at parameter t (inside the stage: start + rate t).
+  /// The program's clock over the stage: its start time [s] and seconds per unit of t (0 for
+  /// an untimed program).
+  AxisMotion clock;
+  /// Puts `row`'s held values and time at parameter t (inside the stage: start + rate t).
   void place(ProgramRow& row, double t) const;
 };
 

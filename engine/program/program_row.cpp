@@ -393,6 +393,7 @@ ContactSnapshot ProgramRow::snapshot() const {
   s.tangential_force = tangential_force();
   s.springs_in_contact = in_contact_;
   s.glued_radius = glued_ > 0 ? position(glued_) : 0.0;
+  s.time = time_;
   if (friction_) {
     s.springs_sliding = friction_->springs_sliding();
     s.stick_radius = in_contact_ > 0 ? friction_->stick_radius() : 0.0;

@@ -258,11 +258,17 @@ class ProgramRow {
   template <class Change, class Look>
   auto trial(Change&& change, Look&& look) {
     const Edges saved = edges();
+    const double time = time_;
     change(*this);
     auto seen = look(static_cast<const ProgramRow&>(*this));
     restore(saved);
+    time_ = time;
     return seen;
   }
+  /// The program's clock where the row stands (timed programs; 0 otherwise) [s]: snapshots
+  /// carry it.
+  void set_time(double time) { time_ = time; }
+  double time() const { return time_; }
   /// Whether snapshots carry the edge springs' forces (for rtol's estimates).
   void record_edge_forces(bool on) { edge_forces_ = on; }
 
@@ -386,6 +392,7 @@ class ProgramRow {
 
   /// All that a change at the edges or of the held values alters: the counts, the sums, the
   /// last run (a change pushes or pops one at most), the axes and what is cached of them.
+  double time_ = 0.0;
   struct Edges {
     std::int64_t glued, in_contact, ever_glued;
     CompensatedSum contact_images, glued_offsets;

@@ -13,6 +13,10 @@ void StagePosition::start(const Stage& next) {
   t = 0.0;
   line = {axis_motion(next.normal, row.normal().held),
           axis_motion(next.tangential, row.tangential().held)};
+  // The reader leaves a stage with a speed one moving axis.
+  const double rate = line.normal.rate != 0.0 ? line.normal.rate : line.tangential.rate;
+  line.clock = {
+      .start = row.time(), .rate = seconds_per_parameter(next, rate), .end = std::nullopt};
   guards = {};
   work = {};
   energy = {.stored_at_start = row.stored_energy(),
@@ -44,6 +48,7 @@ void StagePosition::set_parameter(double to) {
   if (line.tangential.rate != 0.0 || (lands && line.tangential.end)) {
     row.set_tangential_held(line.tangential.at(to, until_separation));
   }
+  row.set_time(line.clock.at(to, until_separation));
 }
 
 bool StagePosition::advance_to(double to) {

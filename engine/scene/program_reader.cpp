@@ -30,6 +30,9 @@ constexpr const char* kEitherShorthandOrStages =
     "a scene has either the shorthand keys (preload, tangential, normal) or [[loading.stage]], "
     "not both";
 
+constexpr const char* kClockPerStage =
+    "is a key of each [[loading.stage]]: every stage of a timed program gives its own";
+
 /// The controller an axis is under as the stages go by.
 struct AxisControl {
   std::string name;
@@ -184,6 +187,7 @@ Program read_program(TomlReader& loading, const ControllerRegistry& controllers)
                        if (key == "preload" || key == "tangential" || key == "normal") {
                          return kEitherShorthandOrStages;
                        }
+                       if (key == "duration" || key == "speed") return kClockPerStage;
                        return std::nullopt;
                      });
   Program program;
@@ -227,6 +231,10 @@ void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Mater
                        if (key == "rebinding") {
                          return "applies to loading programs ([[loading.stage]]) only";
                        }
+                       if (key == "duration" || key == "speed") {
+                         return "applies to a stage of a loading program ([[loading.stage]]); "
+                                "the shorthand has no stage to time";
+                       }
                        return std::nullopt;
                      });
   if (values.approach_work_of_adhesion > 0.0 || values.approach_work_of_adhesion_by_radius) {
@@ -234,6 +242,13 @@ void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Mater
                      "applies to loading programs ([[loading.stage]]) only; the shorthand's "
                      "preload glues on touch");
   }
+}
+
+void require_timed_program(const TomlReader& table, std::string_view key, const Program* program) {
+  if (program && program->timed()) return;
+  table.fail_at(key, fmt::format("a program whose every stage has duration or speed is needed "
+                                 "with {}",
+                                 table.key_path(key)));
 }
 
 }  // namespace mdrsim

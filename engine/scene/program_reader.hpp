@@ -2,6 +2,8 @@
 // program apart (docs/programs.md).
 #pragma once
 
+#include <string_view>
+
 #include "controllers/controller_registry.hpp"
 #include "engine/scene/program.hpp"
 #include "engine/scene/scene.hpp"
@@ -19,5 +21,9 @@ Program read_program(TomlReader& loading, const ControllerRegistry& controllers)
 /// Declares the shorthand's [loading] keys and refuses what applies to programs only:
 /// loading.rebinding and a positive material.approach_work_of_adhesion.
 void check_shorthand_keys(TomlReader& loading, TomlReader& material, const Material& values);
+
+/// Refuses `key` of `table` (a time key of the material or the criterion: the bulk's relaxation,
+/// the edge's rate law) unless the scene runs a timed program: `program` null for the shorthand.
+void require_timed_program(const TomlReader& table, std::string_view key, const Program* program);
 
 }  // namespace mdrsim

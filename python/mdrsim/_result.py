@@ -35,6 +35,9 @@ class State:
     # With adhesive_stress or maugis_parameter (docs/maugis.md), else None: the outer radius of
     # the cohesive zone, out to which the Dugdale stress pulls [m].
     cohesive_radius: float = None
+    # In a timed program (every stage has duration or speed: docs/programs.md "Time"), else
+    # None: the time since the program started [s].
+    time: float = None
 
     @classmethod
     def _of(cls, snapshot, scales):
@@ -57,9 +60,14 @@ class Work:
 
 @dataclass(frozen=True)
 class StageEnd:
+    """A stage's end state and work; in a timed program its start and end time [s], else
+    None."""
+
     name: str
     end: State
     work: Work
+    start_time: float = None
+    end_time: float = None
 
 
 @dataclass(frozen=True)
@@ -176,7 +184,8 @@ class Result:
 
     @cached_property
     def stages(self):
-        return [StageEnd(s["name"], State._of(s["end"], self.scales), Work(**s["work"]))
+        return [StageEnd(s["name"], State._of(s["end"], self.scales), Work(**s["work"]),
+                         s.get("start_time"), s.get("end_time"))
                 for s in self._raw.stages]
 
     @cached_property

@@ -103,9 +103,17 @@ py::array take_column(std::vector<T>& column, const py::dtype& dtype) {
   return array;
 }
 
-/// With friction the arrays gain `sliding`, and with finite-range adhesion `cohesive_radius`,
-/// as the CSV gains its columns (docs/friction.md, docs/maugis.md).
-py::dict take_trajectory(TrajectoryColumns& c, bool friction, bool cohesive) {
+/// What a run's states say beyond the fields every state has, as the JSON's do.
+struct PyStateKeys {
+  bool friction = false;  ///< how much of it slides (docs/friction.md)
+  bool cohesive = false;  ///< the cohesive zone's radius (docs/maugis.md)
+  bool time = false;      ///< a timed program's clock (docs/programs.md "Time")
+};
+
+/// With friction the arrays gain `sliding`, with finite-range adhesion `cohesive_radius`, and
+/// for a timed program `time`, as the CSV gains its columns (docs/friction.md, docs/maugis.md,
+/// docs/programs.md).
+py::dict take_trajectory(TrajectoryColumns& c, const PyStateKeys& keys) {
   std::vector<py::str> stage_names;
   for (const std::string& name : c.stage_names) stage_names.emplace_back(name);
   py::list stage(c.stage.size());
@@ -130,30 +138,33 @@ py::dict take_trajectory(TrajectoryColumns& c, bool friction, bool cohesive) {
   }
   t["springs_in_contact"] = take_column(c.springs_in_contact, py::dtype::of<std::int64_t>());
   t["normal_control"] = take_column(c.normal_control, f8);
-  if (friction) t["sliding"] = take_column(c.springs_sliding, py::dtype::of<std::int64_t>());
-  if (cohesive) t["cohesive_radius"] = take_column(c.cohesive_radius, f8);
+  if (keys.friction) {
+    t["sliding"] = take_column(c.springs_sliding, py::dtype::of<std::int64_t>());
+  }
+  if (keys.cohesive) t["cohesive_radius"] = take_column(c.cohesive_radius, f8);
+  if (keys.time) t["time"] = take_column(c.time, f8);
   return t;
 }
 
-/// With friction a state also says how much of it slides, and with finite-range adhesion the
-/// cohesive zone's radius, as the JSON's states do.
-py::dict snapshot(const ContactSnapshot& s, bool friction, bool cohesive = false) {
+/// With friction a state also says how much of it slides, with finite-range adhesion the
+/// cohesive zone's radius, and in a timed program its time, as the JSON's states do.
+py::dict snapshot(const ContactSnapshot& s, const PyStateKeys& keys) {
   py::dict d;
   d["normal_control"] = s.normal_control;
   for (const SnapshotField& f : kSnapshotFields) d[f.name] = s.*f.member;
-  if (cohesive) d["cohesive_radius"] = s.cohesive_radius;
+  if (keys.cohesive) d["cohesive_radius"] = s.cohesive_radius;
+  if (keys.time) d["time"] = s.time;
   d["springs_in_contact"] = s.springs_in_contact;
   d["disk_valid"] = s.disk_valid;
-  if (friction) {
+  if (keys.friction) {
     d["springs_sliding"] = s.springs_sliding;
     d["stick_radius"] = s.stick_radius;
   }
   return d;
 }
 
-py::object optional_snapshot(const std::optional<ContactSnapshot>& s, bool friction,
-                             bool cohesive) {
-  return s ? py::object(snapshot(*s, friction, cohesive)) : py::object(py::none());
+py::object optional_snapshot(const std::optional<ContactSnapshot>& s, const PyStateKeys& keys) {
+  return s ? py::object(snapshot(*s, keys)) : py::object(py::none());
 }
 
 /// With friction the work says what of it friction dissipated, as the JSON's does.
@@ -167,6 +178,11 @@ py::dict work(const AxisWork& w, bool friction) {
 
 bool has_friction(const ResultHandle& r) { return r.scene->friction.has_value(); }
 bool has_zone(const ResultHandle& r) { return r.scene->material.finite_range(); }
+PyStateKeys state_keys(const ResultHandle& r) {
+  return {.friction = has_friction(r),
+          .cohesive = has_zone(r),
+          .time = r.scene->program && r.scene->program->timed()};
+}
 
 void bind_scenes(py::module_& m) {
   py::class_<SceneHandle>(m, "Document", "A parsed scene and the Scene it builds (internal).")
@@ -215,13 +231,11 @@ void bind_results(py::module_& m) {
       .def_property_readonly("title", [](const ResultHandle& r) { return r.scene->title; })
       .def_property_readonly("critical",
                              [](const ResultHandle& r) {
-                               return optional_snapshot(r.result.critical, has_friction(r),
-                                                        has_zone(r));
+                               return optional_snapshot(r.result.critical, state_keys(r));
                              })
       .def_property_readonly("peak",
                              [](const ResultHandle& r) {
-                               return optional_snapshot(r.result.peak, has_friction(r),
-                                                        has_zone(r));
+                               return optional_snapshot(r.result.peak, state_keys(r));
                              })
       .def_property_readonly("sliding", [](const ResultHandle& r) { return r.result.sliding; })
       .def_property_readonly("tangential_strength",
@@ -229,10 +243,17 @@ void bind_results(py::module_& m) {
       .def_property_readonly("stages",
                              [](const ResultHandle& r) {
                                py::list out;
+                               const PyStateKeys keys = state_keys(r);
+                               double start = 0.0;  // where the stage before it ended
                                for (const StageRecord& s : r.result.stages) {
                                  py::dict d;
                                  d["name"] = s.name;
-                                 d["end"] = snapshot(s.end, has_friction(r), has_zone(r));
+                                 if (keys.time) {
+                                   d["start_time"] = start;
+                                   d["end_time"] = s.end.time;
+                                   start = s.end.time;
+                                 }
+                                 d["end"] = snapshot(s.end, keys);
                                  d["work"] = work(s.work, has_friction(r));
                                  out.append(d);
                                }
@@ -246,12 +267,14 @@ void bind_results(py::module_& m) {
               py::dict d;
               d["stage"] = j.stage;
               d["kind"] = j.inward ? "in" : "out";
-              d["critical"] = snapshot(j.critical, has_friction(r), has_zone(r));
+              const PyStateKeys keys = state_keys(r);
+              d["critical"] = snapshot(j.critical, keys);
               // A flight (docs/programs.md "A fixed load that loses the
-              // contact") has no state after it.
-              d["after"] = j.end == JumpEnd::state
-                               ? py::object(snapshot(j.after, has_friction(r), has_zone(r)))
-                               : py::object(py::none());
+              // contact") has no state after it; a jump takes no time.
+              ContactSnapshot after = j.after;
+              after.time = j.critical.time;
+              d["after"] = j.end == JumpEnd::state ? py::object(snapshot(after, keys))
+                                                   : py::object(py::none());
               d["end"] = to_string(j.end);
               d["springs"] = j.springs;
               d["glued_springs"] = j.glued_springs;
@@ -305,7 +328,7 @@ void bind_results(py::module_& m) {
         if (!r.trajectory && r.rows) {
           TrajectoryColumns columns = r.rows->columns();
           r.rows.reset();
-          r.trajectory = take_trajectory(columns, has_friction(r), has_zone(r));
+          r.trajectory = take_trajectory(columns, state_keys(r));
         }
         return r.trajectory ? r.trajectory : py::object(py::none());
       });

@@ -104,6 +104,7 @@ TrajectoryColumns TrajectoryRows::columns() const {
   c.springs_in_contact.resize(n);
   c.springs_sliding.resize(n);
   c.cohesive_radius.resize(n);
+  c.time.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const TrajectoryRow& row = rows[i];
     const ContactSnapshot& s = row.state;
@@ -117,6 +118,7 @@ TrajectoryColumns TrajectoryRows::columns() const {
     c.springs_in_contact[i] = s.springs_in_contact;
     c.springs_sliding[i] = s.springs_sliding;
     c.cohesive_radius[i] = s.cohesive_radius;
+    c.time[i] = s.time;
   }
   return c;
 }

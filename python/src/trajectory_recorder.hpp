@@ -26,6 +26,7 @@ struct TrajectoryColumns {
   std::vector<std::int64_t> springs_in_contact;
   std::vector<std::int64_t> springs_sliding;  ///< the CSV's `sliding` (docs/friction.md)
   std::vector<double> cohesive_radius;        ///< the CSV's `cohesive_radius` [m] (docs/maugis.md)
+  std::vector<double> time;                   ///< the CSV's `time` [s] (docs/programs.md "Time")
 };
 
 struct TrajectoryRow {

@@ -1,5 +1,6 @@
 """Scenes from a file, TOML text and a dict; with_values; every kind of bad input."""
 
+import copy
 import subprocess
 
 import pytest
@@ -55,6 +56,36 @@ def test_a_dict_with_an_array_of_tables_is_a_program():
     result = mdrsim.run(scene)
     assert [s.name for s in result.stages] == ["approach", "retract"]
     assert result.status == "instability"
+
+
+def test_a_timed_program_from_a_dict_has_time_in_its_states_and_trajectory():
+    # Press at 4 um/s for 5 s, hold 3 s, retract 10 um per unit of the stage parameter at
+    # 2 um/s (5 s per unit): docs/programs.md "Time".
+    table = copy.deepcopy(CYCLE_DICT)
+    table["loading"]["stage"] = [
+        {"name": "approach", "normal": {"control": "fixed-grips", "to": 2.0e-5}, "speed": 4.0e-6},
+        {"name": "hold", "duration": 3.0},
+        {"name": "retract", "normal": {"by": -1.0e-5}, "until": "separation", "speed": 2.0e-6},
+    ]
+    result = mdrsim.run(mdrsim.Scene.from_dict(table))
+    approach, hold, retract = result.stages
+    assert (approach.start_time, approach.end_time) == (0.0, 5.0)
+    assert (hold.start_time, hold.end_time) == (5.0, 8.0)
+    assert hold.end.time == 8.0
+    # Fixed grips: the retraction's parameter is (d - 2e-5) / -1e-5; 5 s per unit (1e-12:
+    # a few roundings of the affine clock).
+    c = result.critical
+    assert c.time == pytest.approx(8.0 + 5.0 * (2.0e-5 - c.indentation) / 1.0e-5, rel=1e-12)
+    jump = result.jumps[-1]
+    assert jump.critical.time == jump.after.time == c.time
+    time = result.trajectory["time"]
+    assert time[0] >= 0.0 and time[-1] == pytest.approx(retract.end_time, rel=1e-12)
+    assert all(b >= a for a, b in zip(time, time[1:]))
+    assert result.to_dict()["critical"]["time"] == c.time
+    # Untimed, the same path has no time anywhere and the same numbers.
+    plain = mdrsim.run(mdrsim.Scene.from_dict(CYCLE_DICT))
+    assert plain.critical.time is None and plain.stages[0].start_time is None
+    assert "time" not in plain.trajectory
 
 
 def test_with_values_is_a_new_scene_checked_like_set():

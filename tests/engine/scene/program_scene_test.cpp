@@ -368,6 +368,70 @@ std::vector<BadProgram> stage_cases() {
 }
 INSTANTIATE_TEST_SUITE_P(Stages, BadProgramTest, ::testing::ValuesIn(stage_cases()), case_name);
 
+// The clock's keys (docs/programs.md "Time"). kProgram's stage 2 moves the tangential axis
+// only, stage 3 both.
+std::vector<BadProgram> clock_cases() {
+  const std::string approach = "name = \"approach\"";
+  return {
+      {"DurationZero", approach, approach + "\nduration = 0.0",
+       "scene.toml:14:12: loading.stage.1.duration = 0 is outside (0, inf)"},
+      {"DurationNegative", approach, approach + "\nduration = -2.0",
+       "scene.toml:14:12: loading.stage.1.duration = -2 is outside (0, inf)"},
+      {"DurationNotFinite", approach, approach + "\nduration = nan",
+       "scene.toml:14:12: loading.stage.1.duration = nan is not a finite number"},
+      {"DurationNotANumber", approach, approach + "\nduration = \"2 s\"",
+       "scene.toml:14:12: loading.stage.1.duration: expected a number, got string \"2 s\""},
+      {"SpeedNegative", approach, approach + "\nspeed = -1e-6",
+       "scene.toml:14:9: loading.stage.1.speed = -1e-06 is outside (0, inf)"},
+      {"SpeedInfinite", approach, approach + "\nspeed = inf",
+       "scene.toml:14:9: loading.stage.1.speed = inf is not a finite number"},
+      {"DurationAndSpeed", approach, approach + "\nduration = 1.0\nspeed = 1e-6",
+       "scene.toml:15:9: loading.stage.1.speed: give duration or speed, not both"},
+      {"SpeedOnAHold", "tangential = { by = 4.0e-6 }", "tangential = { by = 0.0 }\nspeed = 1e-6",
+       "scene.toml:19:9: loading.stage.2.speed: needs a moving axis (to, or a non-zero by); give "
+       "duration for a hold"},
+      {"SpeedOnTwoMovingAxes", "until = \"separation\"", "until = \"separation\"\nspeed = 1e-6",
+       "scene.toml:23:9: loading.stage.3.speed: needs one moving axis; give duration for a stage "
+       "that moves both"},
+      {"SomeStagesTimed", approach, approach + "\nduration = 1.0",
+       "scene.toml:16:1: loading.stage.2: has neither duration nor speed, which loading.stage.1 "
+       "gives: a timed program gives every stage one"},
+      {"ALaterStageTimed", "until = \"separation\"", "until = \"separation\"\nduration = 1.0",
+       "scene.toml:12:1: loading.stage.1: has neither duration nor speed, which loading.stage.3 "
+       "gives: a timed program gives every stage one"},
+      {"DurationBesideTheStages", "rebinding = true\n", "rebinding = true\nduration = 1.0\n",
+       "scene.toml:12:12: loading.duration: is a key of each [[loading.stage]]: every stage of a "
+       "timed program gives its own"},
+      {"DurationInShorthand", "[loading]\n", "[loading]\nduration = 1.0\n",
+       "scene.toml:11:12: loading.duration: applies to a stage of a loading program "
+       "([[loading.stage]]); the shorthand has no stage to time",
+       true},
+      {"SpeedInShorthand", "[loading]\n", "[loading]\nspeed = 1.0\n",
+       "scene.toml:11:9: loading.speed: applies to a stage of a loading program "
+       "([[loading.stage]]); the shorthand has no stage to time",
+       true},
+  };
+}
+INSTANTIATE_TEST_SUITE_P(Clock, BadProgramTest, ::testing::ValuesIn(clock_cases()), case_name);
+
+TEST(ProgramScene, ReadsTheClock) {
+  std::string text = replaced(kProgram, "name = \"approach\"", "name = \"approach\"\nspeed = 4e-6");
+  text =
+      replaced(text, "tangential = { by = 4.0e-6 }", "tangential = { by = 4.0e-6 }\nspeed = 1e-6");
+  text = replaced(text, "until = \"separation\"", "until = \"separation\"\nduration = 7.0");
+  const Scene scene = build(text);
+  const auto& stages = scene.program->stages;
+  EXPECT_TRUE(scene.program->timed());
+  EXPECT_EQ(stages[0].speed, 4e-6);
+  EXPECT_FALSE(stages[0].duration.has_value());
+  EXPECT_EQ(stages[1].speed, 1e-6);
+  EXPECT_EQ(stages[2].duration, 7.0);
+  EXPECT_FALSE(build(kProgram).program->timed());
+  // Seconds per unit of the stage parameter: the duration, or |rate| / speed.
+  EXPECT_EQ(seconds_per_parameter(stages[2], -3.0), 7.0);
+  EXPECT_DOUBLE_EQ(seconds_per_parameter(stages[0], -2e-5), 5.0);
+}
+
 TEST(ProgramScene, TooManyStages) {
   std::string stages = "stage = [{}";
   for (int i = 1; i < 100'001; ++i) stages += ", {}";
@@ -397,6 +461,22 @@ TEST(ProgramSet, SetsAValueInAStage) {
   EXPECT_TRUE(shear.until_separation);
   EXPECT_EQ(scene.program->stages[2].tangential->value, 2e-6);
   EXPECT_FALSE(scene.program->rebinding);
+}
+
+TEST(ProgramSet, SetsTheClockOfEveryStage) {
+  SceneDocument d = program_document();
+  d.set_value("loading.stage.1.duration", "2.0");
+  d.set_value("loading.stage.2.speed", "1e-6");
+  d.set_number("loading.stage.3.duration", 3.0, "--vary");
+  const Scene scene = d.build(registries());
+  EXPECT_TRUE(scene.program->timed());
+  EXPECT_EQ(scene.program->stages[0].duration, 2.0);
+  EXPECT_EQ(scene.program->stages[1].speed, 1e-6);
+  EXPECT_EQ(scene.program->stages[2].duration, 3.0);
+  SceneDocument bad = program_document();
+  bad.set_value("loading.stage.2.speed", "-1e-6");
+  EXPECT_THROW_MSG(bad.build(registries()), SceneError,
+                   "--set: loading.stage.2.speed = -1e-06 is outside (0, inf)");
 }
 
 TEST(ProgramSet, CreatesATableInsideAStage) {
