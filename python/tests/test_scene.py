@@ -69,13 +69,15 @@ def test_a_timed_program_from_a_dict_has_time_in_its_states_and_trajectory():
     ]
     result = mdrsim.run(mdrsim.Scene.from_dict(table))
     approach, hold, retract = result.stages
-    assert (approach.start_time, approach.end_time) == (0.0, 5.0)
-    assert (hold.start_time, hold.end_time) == (5.0, 8.0)
-    assert hold.end.time == 8.0
+    # 2e-5 / 4e-6 is 5 to one rounding; the hold adds its 3 s exactly.
+    assert approach.start_time == 0.0 and approach.end_time == pytest.approx(5.0, rel=1e-15)
+    assert hold.start_time == approach.end_time and hold.end_time == approach.end_time + 3.0
+    assert hold.end.time == hold.end_time
     # Fixed grips: the retraction's parameter is (d - 2e-5) / -1e-5; 5 s per unit (1e-12:
     # a few roundings of the affine clock).
     c = result.critical
-    assert c.time == pytest.approx(8.0 + 5.0 * (2.0e-5 - c.indentation) / 1.0e-5, rel=1e-12)
+    assert c.time == pytest.approx(hold.end_time + 5.0 * (2.0e-5 - c.indentation) / 1.0e-5,
+                                   rel=1e-12)
     jump = result.jumps[-1]
     assert jump.critical.time == jump.after.time == c.time
     time = result.trajectory["time"]
