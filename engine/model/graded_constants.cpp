@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <boost/math/special_functions/beta.hpp>
+
 namespace mdrsim {
 
 double graded_point_force_compliance(const Grading& grading, double youngs_modulus,
@@ -34,6 +36,14 @@ double graded_let_go_stretch(double exponent, double punch_constant, double work
                              double a) {
   return std::sqrt(4.0 * std::numbers::pi * std::pow(a, 1.0 - exponent) *
                    (work_of_adhesion / ((1.0 + exponent) * punch_constant)));
+}
+
+double graded_punch_surface_displacement(double exponent, double depth, double a, double r) {
+  if (r <= a) return depth;
+  const double k = exponent;
+  // boost's beta(p, q, x) is the incomplete beta without the normalization.
+  return depth * std::cos(0.5 * std::numbers::pi * k) *
+         boost::math::beta(0.5 * (1.0 + k), 0.5 * (1.0 - k), (a / r) * (a / r)) / std::numbers::pi;
 }
 
 }  // namespace mdrsim

@@ -25,4 +25,10 @@ double graded_spring_stiffness(double exponent, double punch_constant, double x)
 double graded_let_go_stretch(double exponent, double punch_constant, double work_of_adhesion,
                              double a);
 
+/// The surface displacement [m] at radius r [m] around a flat punch of radius a [m] pressed by
+/// d [m]: d under the punch, and outside it the MDR's back-transform of the springs' uniform
+/// stretch, (2 cos(pi k / 2) / pi) int_0^a x^k d (r^2 - x^2)^(-(1+k)/2) dx
+/// = d cos(pi k / 2) B(a^2 / r^2; (1 + k) / 2, (1 - k) / 2) / pi (k = 0: (2 d / pi) asin(a / r)).
+double graded_punch_surface_displacement(double exponent, double depth, double a, double r);
+
 }  // namespace mdrsim

@@ -83,4 +83,31 @@ double graded_punch_deflection(double exponent, double compliance, double a, dou
   return 2.0 * compliance * half_turn;
 }
 
+double graded_punch_deflection_outside(double exponent, double compliance, double a, double r) {
+  const double k = exponent;
+  // A ray at angle phi from the line to the centre crosses the disk on the chord rho in
+  // [mid - half, mid + half], mid = r cos(phi), half = sqrt(a^2 - r^2 sin^2 phi), where
+  // a^2 - s^2 = half^2 (1 - u^2). The area element rho drho dphi over the kernel's rho^(1+k)
+  // leaves rho^-k: the chord gives half^k int (mid + half u)^-k (1 - u^2)^((k-1)/2) du.
+  boost::math::quadrature::tanh_sinh<double> along_chord;
+  const auto over_chord = [&](double psi) {
+    const double sin_phi = (a / r) * std::sin(psi);
+    const double cos_phi = std::sqrt(1.0 - sin_phi * sin_phi);
+    const double half = a * std::cos(psi);
+    const double mid = r * cos_phi;
+    const auto integrand = [&](double u) {
+      const double edge = (1.0 - u) * (1.0 + u);
+      if (!(edge > 0.0)) return 0.0;
+      return std::pow(mid + half * u, -k) * std::pow(edge, 0.5 * (k - 1.0));
+    };
+    const double chord = std::pow(half, k) * along_chord.integrate(integrand, -1.0, 1.0, 1e-14);
+    // dphi = (a / r) cos(psi) dpsi / cos(phi)
+    return chord * (a / r) * std::cos(psi) / cos_phi;
+  };
+  // Both sides of the line to the centre: twice psi in [0, pi/2].
+  const double half_fan = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
+      over_chord, 0.0, 0.5 * std::numbers::pi, 12, 1e-14);
+  return 2.0 * compliance * half_fan;
+}
+
 }  // namespace mdrsim::test

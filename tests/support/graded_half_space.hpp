@@ -30,4 +30,9 @@ double graded_point_force_compliance_by_hankel(double exponent, double youngs_mo
 /// M / rho^(1+k) for the given M [m^(2+k) / N] over the disk (polar coordinates about the point).
 double graded_punch_deflection(double exponent, double compliance, double a, double r);
 
+/// The same pressure's surface deflection [m] at radius r > a [m], outside the disk: the rays
+/// from the point that cross the disk, sin(phi) = (a / r) sin(psi), each chord by
+/// rho = mid + half u with the pressure's edge factor (1 - u^2)^((k-1)/2) kept whole.
+double graded_punch_deflection_outside(double exponent, double compliance, double a, double r);
+
 }  // namespace mdrsim::test

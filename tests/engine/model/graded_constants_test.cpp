@@ -58,6 +58,29 @@ TEST(GradedConstants, FlatPunchMatchesTheKernelQuadrature) {
   }
 }
 
+TEST(GradedConstants, PunchOuterSurfaceMatchesTheKernelQuadrature) {
+  // Outside the punch the MDR's back-transform of the springs' uniform stretch against the
+  // point-force kernel integrated over the punch's pressure: the deflection under the punch (d)
+  // and outside it both from the kernel, their ratio against graded_punch_surface_displacement /
+  // d. The outside's quadrature holds about 1e-13; d's carries 8.5e-9 at k = 0 (the pressure's
+  // inverse square root at the rim, 1e-10 and less for k > 0): 2e-8.
+  for (double k : {0.0, 0.25, 0.5, 0.75, 0.9}) {
+    const Grading grading{k, 1e-3};
+    const double m = graded_point_force_compliance(grading, 1e6, 0.3);
+    const double a = 2e-4;
+    const double d = test::graded_punch_deflection(k, m, a, 0.0);
+    for (double r : {1.02 * a, 1.3 * a, 2.0 * a, 5.0 * a, 20.0 * a}) {
+      const double kernel = test::graded_punch_deflection_outside(k, m, a, r);
+      EXPECT_NEAR(graded_punch_surface_displacement(k, d, a, r) / kernel, 1.0, 2e-8)
+          << "k = " << k << ", r/a = " << r / a;
+    }
+    EXPECT_EQ(graded_punch_surface_displacement(k, d, a, 0.5 * a), d);
+  }
+  // k = 0: Boussinesq's punch, (2 d / pi) asin(a / r).
+  EXPECT_NEAR(graded_punch_surface_displacement(0.0, 1.0, 1.0, 2.0),
+              2.0 / std::numbers::pi * std::asin(0.5), 1e-15);
+}
+
 TEST(GradedConstants, SpringsAddUpToThePunch) {
   // 2 int_0^a c_k(x) dx = C_k a^(1+k): the springs under a punch carry its force.
   const double k = 0.4, ck = 7.0e7, a = 3e-4;
