@@ -18,6 +18,7 @@
 #include "engine/base/text.hpp"
 #include "engine/continuum/continuum_pull_off.hpp"
 #include "engine/continuum/continuum_work.hpp"
+#include "engine/continuum/front_speed_walk.hpp"
 #include "engine/continuum/program_clock.hpp"
 #include "engine/model/gluing_depth.hpp"
 #include "engine/model/graded_constants.hpp"
@@ -44,9 +45,10 @@ struct Disk {
 /// stretch goes from e0 to e1, or moving from radius a0 to a1 on the limit `advancing`
 /// (else the let-go stretch).
 struct Piece {
-  enum class Kind { pinned, advancing, receding, empty } kind;
-  double a0 = 0.0, a1 = 0.0;  ///< [m]
-  double e0 = 0.0, e1 = 0.0;  ///< pinned: the stretches; empty: the indentations [m]
+  enum class Kind { pinned, advancing, receding, empty, rate_law } kind;
+  double a0 = 0.0, a1 = 0.0;          ///< [m]
+  double e0 = 0.0, e1 = 0.0;          ///< pinned: the stretches; empty: the indentations [m]
+  std::vector<FrontSpeedPoint> path;  ///< rate_law: the front's walk, step by step
 };
 
 /// The advancing limit on a graded half-space at radius a [m]: Hess's rule on the graded
@@ -194,6 +196,16 @@ struct ProgramWalk {
   BranchState peak;          ///< result.peak's state
   double force_scale = 0.0;  ///< the largest |F| met [N]
   long long iterations = 0;
+  /// The rate law of the receding front, where the scene gives one, and the rtol its walks
+  /// meet.
+  std::optional<FrontSpeedLaw> front_speed_law;
+  double rtol = 0.0;
+  /// Where a rate-law walk lost the contact: its time [s], which the stage's clock cannot
+  /// give from the indentation in a hold.
+  std::optional<double> lost_time;
+  /// The largest relative error estimate of the indentation where a rate-law walk lost the
+  /// contact [1].
+  double lost_indentation_error = 0.0;
 };
 
 void note_state(ProgramWalk& w, const BranchState& s) {
@@ -272,6 +284,77 @@ void press(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
   disk = end;
 }
 
+/// G / dgamma of the disk: E* e^2 / (2 pi a dgamma) in tension, 0 in compression.
+double release_ratio(ContinuumStage& st, const Disk& disk) {
+  const double e = std::max(st.branch().image(disk.radius) - disk.indentation, 0.0);
+  const Material& m = st.branch().material();
+  return e * e / (hess_scale(m.work_of_adhesion, m.effective_modulus) * disk.radius);
+}
+
+/// The normal fixed grips lowered towards c1 (or held, c1 = c0) with the receding front on the
+/// rate law: pinned while G <= dgamma, then a(t) by walk_front_speed to the stage's end or to the
+/// axis, where the contact is lost (docs/viscoelastic.md "Rate law of the edge").
+void recede_by_rate_law(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
+                        AxisWork& stage_work) {
+  Disk& disk = w.disk;
+  const double a = disk.radius;
+  const Material& m = st.branch().material();
+  if (release_ratio(st, disk) < 1.0) {
+    // Pinned until e reaches Hess's stretch sqrt(2 pi a dgamma / E*): G = dgamma.
+    const double onset =
+        st.branch().image(a) - std::sqrt(hess_scale(m.work_of_adhesion, m.effective_modulus) * a);
+    if (c1 >= onset) {
+      const Disk end = st.pinned_at(a, c1);
+      stage_work += st.work(disk, end, w.work_error);
+      st.pieces.push_back(
+          {Piece::Kind::pinned, a, a, st.state(disk).stretch, st.state(end).stretch});
+      disk = end;
+      return;
+    }
+    const Disk start = st.pinned_at(a, onset);
+    stage_work += st.work(disk, start, w.work_error);
+    st.pieces.push_back(
+        {Piece::Kind::pinned, a, a, st.state(disk).stretch, st.state(start).stretch});
+    disk = start;
+  }
+  note_state(w, st.state(disk));
+  w.retracted = true;
+
+  const ContinuumStageClock& clock = st.clock;
+  FrontSpeedStart start{.radius = disk.radius, .indentation = disk.indentation};
+  start.rate = clock.per_control != 0.0 ? 1.0 / clock.per_control : 0.0;
+  start.time = clock.per_control != 0.0 ? clock.at(disk.indentation) : clock.start;
+  start.end_time = stage.until_separation ? std::numeric_limits<double>::infinity() : clock.end;
+  const FrontSpeedWalk walk = walk_front_speed(st.branch(), *w.front_speed_law, start, w.rtol);
+  w.result.counts.steps += walk.steps;  // the walks' ODE steps
+  stage_work.normal += walk.machine_work;
+  stage_work.front += walk.dissipated;
+  w.work_error += walk.energy_error;
+  if (walk.peak) {
+    note_state(w, *walk.peak);
+    w.peak_error = std::max(w.peak_error, walk.peak_error);
+  }
+  Piece piece{Piece::Kind::rate_law, disk.radius, walk.end.contact_radius, 0.0, 0.0};
+  piece.path = walk.path;
+  st.pieces.push_back(std::move(piece));
+  disk = {walk.end.contact_radius, walk.end.indentation};
+  if (!walk.lost) return;
+  // The front reached the axis: the contact is lost there, at a finite speed, with no jump.
+  w.result.critical_stage = stage.name;
+  w.result.status = RunStatus::instability;
+  w.result.critical = walk.end.snapshot();
+  w.critical = walk.end;
+  w.critical_error = 0.0;  // F = 0 at the axis exactly; the walk's error is in d and t
+  w.lost_indentation_error =
+      std::max(w.lost_indentation_error, walk.end_error / std::abs(walk.end.indentation));
+  w.lost_time = walk.end_time;
+  disk = {0.0, walk.end.indentation};
+  if (std::isfinite(c1) && !stage.until_separation) {
+    st.pieces.push_back({Piece::Kind::empty, 0.0, 0.0, disk.indentation, c1});
+    disk.indentation = c1;
+  }
+}
+
 /// Lowers the control from c0 towards c1 (or until the contact is lost, for `until =
 /// "separation"`): pinned until the boundary reaches its let-go stretch, then the receding
 /// branch with its partial jumps, and the jump-out at the fold.
@@ -288,6 +371,10 @@ void retract(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
       st.pieces.push_back({Piece::Kind::empty, 0.0, 0.0, disk.indentation, c1});
       disk.indentation = c1;
     }
+    return;
+  }
+  if (w.front_speed_law) {
+    recede_by_rate_law(st, w, stage, c1, stage_work);
     return;
   }
   const double a = disk.radius;
@@ -436,9 +523,22 @@ void emit_samples(const std::vector<std::pair<const Stage*, ContinuumStage*>>& s
           case Piece::Kind::empty:
             s = st->state({0.0, piece.e0 + (piece.e1 - piece.e0) * t});
             break;
+          case Piece::Kind::rate_law:
+            break;
+        }
+        std::optional<double> time;
+        if (piece.kind == Piece::Kind::rate_law) {
+          // The walk's steps, evenly by index: its own times, not the clock's of d.
+          if (piece.path.empty()) continue;
+          const std::size_t last = piece.path.size() - 1;
+          const FrontSpeedPoint& p =
+              piece.path[static_cast<std::size_t>(std::llround(t * static_cast<double>(last)))];
+          s = st->state({p.radius, p.indentation});
+          time = p.time;
         }
         Event e{.kind = EventKind::sample, .state = s.snapshot()};
         st->clock.stamp(e.state);
+        if (time) e.state.time = *time;
         e.stage = stage->name;
         observers.emit(e);
       }
@@ -449,6 +549,8 @@ void emit_samples(const std::vector<std::pair<const Stage*, ContinuumStage*>>& s
 RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
                        const ObserverList& observers) {
   ProgramWalk w;
+  w.front_speed_law = scene.front_speed_law;
+  w.rtol = rtol;
   w.result.accuracy.route = Accuracy::Route::continuum;
   w.result.status = RunStatus::completed;
   AffineConstraint control = FixedGripsController().constraint();
@@ -539,11 +641,18 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
       press(st, w, stage, c1, stage_work);
     } else if (c1 < c0) {
       retract(st, w, stage, c1, stage_work);
+    } else if (w.front_speed_law && w.disk.radius > 0.0 && release_ratio(st, w.disk) > 1.0) {
+      // A hold on the rate law: the front goes on receding while G > dgamma.
+      recede_by_rate_law(st, w, stage, c1, stage_work);
     }
     largest_radius = std::max(largest_radius, w.disk.radius);
     const BranchState end = st.state(w.disk);
     note_state(w, end);
     stamp_stage_states(w, st.clock, stage, jumps_before, peak_before);
+    if (w.lost_time) {
+      w.result.critical->time = *w.lost_time;
+      w.lost_time.reset();
+    }
     StageRecord record{stage.name, end.snapshot(), {}};
     // A stage that runs to its end ends at its clock's end, whatever the rounding of its control.
     record.end.time =
@@ -626,6 +735,7 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
     met = met && meets_rtol(*w.result.accuracy.critical_error_estimate,
                             w.result.critical->normal_force, rtol, floor);
   }
+  met = met && w.lost_indentation_error <= rtol;
   w.result.accuracy.rtol_met = met;
   if (!met) {
     w.result.warnings.push_back(fmt::format(

@@ -65,9 +65,11 @@ nlohmann::ordered_json energy_json(const EnergyBalance& e) {
       {"jump_losses", e.jump_losses},       {"residual", e.residual}};
 }
 
-nlohmann::ordered_json work_json(const AxisWork& w, bool friction = false) {
+nlohmann::ordered_json work_json(const AxisWork& w, bool friction = false,
+                                 bool front_speed_law = false) {
   nlohmann::ordered_json j = {{"normal", w.normal}, {"tangential", w.tangential}};
   if (friction) j["dissipated_by_friction"] = w.friction;
+  if (front_speed_law) j["dissipated_at_front"] = w.front;
   return j;
 }
 
@@ -250,7 +252,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
         stage_start = stage.end.time;
       }
       record["end"] = state_json(stage.end, scales, keys);
-      record["work"] = work_json(stage.work, friction);
+      record["work"] = work_json(stage.work, friction, scene.front_speed_law.has_value());
       if (stage.normal_force_error_estimate) {
         record["end_error_estimate"] = {
             {"normal_force", *stage.normal_force_error_estimate},
@@ -280,7 +282,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       }
     }
     j["jumps"] = jumps;
-    j["work"] = work_json(*result.work, friction);
+    j["work"] = work_json(*result.work, friction, scene.front_speed_law.has_value());
     if (result.energy) j["energy"] = energy_json(*result.energy);
   }
   if (continuum) drop_spring_counts(j);

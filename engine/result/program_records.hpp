@@ -17,10 +17,14 @@ struct AxisWork {
   /// The part of the work friction dissipated: the slip limit times each slip distance,
   /// summed (docs/friction.md `dissipated_by_friction`) [J].
   double friction = 0.0;
+  /// The part of it the rate law's front dissipated: int (G - dgamma) 2 pi a |da|
+  /// (docs/viscoelastic.md `dissipated_at_front`) [J].
+  double front = 0.0;
   AxisWork& operator+=(const AxisWork& more) {
     normal += more.normal;
     tangential += more.tangential;
     friction += more.friction;
+    front += more.front;
     return *this;
   }
 };

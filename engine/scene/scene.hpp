@@ -12,6 +12,7 @@
 #include "detachment/criterion.hpp"
 #include "engine/base/material.hpp"
 #include "engine/model/friction_settings.hpp"
+#include "engine/model/front_speed_law.hpp"
 #include "engine/model/graded_image.hpp"
 #include "engine/scene/program.hpp"
 #include "engine/scene/route_plan.hpp"
@@ -119,6 +120,9 @@ struct Scene {
   std::string detachment_law() const {
     return material.finite_range() ? "maugis-dugdale" : criterion_name;
   }
+  /// detachment.front_speed_law: the receding front moves by the rate law (continuum route,
+  /// docs/viscoelastic.md "Rate law of the edge"); none: it recedes quasi-statically.
+  std::optional<FrontSpeedLaw> front_speed_law;
   /// [friction] where it acts (docs/friction.md); none: springs not glued push frictionlessly.
   std::optional<FrictionSettings> friction;
   std::int64_t springs = 0;  ///< springs across the glued radius (one half)

@@ -16,6 +16,7 @@
 #include "engine/scene/dugdale_reader.hpp"
 #include "engine/scene/embedded_table.hpp"
 #include "engine/scene/friction_reader.hpp"
+#include "engine/scene/front_speed_reader.hpp"
 #include "engine/scene/grading_reader.hpp"
 #include "engine/scene/program_reader.hpp"
 #include "engine/scene/relaxation_reader.hpp"
@@ -360,18 +361,22 @@ void read_profile(TomlReader& root, const Registries& registries, nlohmann::json
   profile.finish();
 }
 
-/// [detachment]: the criterion by name (mode-mixed where the table is not given).
-void read_criterion(TomlReader& root, const Registries& registries, Scene& scene) {
+/// [detachment]: the criterion by name (mode-mixed where the table is not given), and the rate
+/// law of the edge, whose key's place goes to `front_speed_at`.
+void read_criterion(TomlReader& root, const Registries& registries, Scene& scene,
+                    std::string& front_speed_at) {
   const InterfaceProperties interface = scene.material.interface_properties();
   scene.criterion_name = "mode-mixed";
   if (auto detachment = root.optional_table("detachment")) {
     scene.criterion_name =
         detachment->name("criterion", registries.criteria.names(), scene.criterion_name);
-    check_part_keys(*detachment, "criterion", scene.criterion_name, registries.criteria);
+    check_part_keys(*detachment, "criterion", scene.criterion_name, registries.criteria,
+                    {"front_speed_law"});
     const auto* entry = registries.criteria.find(scene.criterion_name);
     const ParameterValues values = detachment->read_all(entry->parameters);
     scene.criterion =
         create_part(*detachment, "criterion", [&] { return entry->create(values, interface); });
+    scene.front_speed_law = read_front_speed_law(*detachment, scene, front_speed_at);
     detachment->finish();
   } else {
     const auto* entry = registries.criteria.find(scene.criterion_name);
@@ -518,7 +523,8 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   }
   loading.finish();
 
-  read_criterion(root, registries, scene);
+  std::string front_speed_at;
+  read_criterion(root, registries, scene, front_speed_at);
 
   RouteKeys route_keys;
   if (auto solver = root.optional_table("solver")) {
@@ -538,6 +544,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   read_discretization(root, route_keys, scene);
   refuse_unrun_relaxation(material, route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);
+  refuse_outside_front_speed_scope(scene, front_speed_at);
   root.finish();
   scene.resolved = std::move(resolved);
   return scene;

@@ -589,7 +589,7 @@ TEST_F(Cli, EveryKeyOfTheSceneWrongThroughSet) {
        fmt::format(
            "--set: detachment.criterion: unknown 'stres'; did you mean 'stress'? (known: {})",
            criteria)},
-      {"detachment.x=1", "--set: detachment.x: unknown key (known: criterion)"},
+      {"detachment.x=1", "--set: detachment.x: unknown key (known: criterion, front_speed_law)"},
       {"detachment={ criterion = \"mode-dependent\" }",
        "--set: detachment.lambda: missing, expected a number (mode sensitivity: 0 = "
        "normal-only, 1 = mode-mixed)"},

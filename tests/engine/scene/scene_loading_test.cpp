@@ -446,7 +446,7 @@ std::vector<BadScene> detachment_cases() {
        R"(test.toml:15:10: detachment.lambda: expected a number, got string "half")"},
       {"LambdaTypo", "criterion = \"mode-mixed\"", "criterion = \"mode-dependent\"\nlamda = 0.5",
        "test.toml:15:1: detachment.lamda: unknown key; did you mean 'lambda'? (known: criterion, "
-       "lambda)"},
+       "lambda, front_speed_law)"},
       {"LambdaWithOtherCriterion", "criterion = \"mode-mixed\"",
        "criterion = \"mode-mixed\"\nlambda = 0.5",
        "test.toml:15:10: detachment.lambda: applies to criterion = \"mode-dependent\" only"},
