@@ -429,7 +429,7 @@ std::vector<BadScene> detachment_cases() {
        "test.toml:14:13: detachment.criterion: expected a string, got 20"},
       {"CriterionTypo", "criterion = \"mode-mixed\"", "criterio = \"stress\"",
        "test.toml:14:1: detachment.criterio: unknown key; did you mean 'criterion'? (known: "
-       "criterion)"},
+       "criterion, front_speed_law)"},
       {"LambdaMissing", "criterion = \"mode-mixed\"", "criterion = \"mode-dependent\"",
        fmt::format("test.toml:13:1: detachment.lambda: missing, expected a number ({})",
                    lambda_help)},
@@ -446,7 +446,7 @@ std::vector<BadScene> detachment_cases() {
        R"(test.toml:15:10: detachment.lambda: expected a number, got string "half")"},
       {"LambdaTypo", "criterion = \"mode-mixed\"", "criterion = \"mode-dependent\"\nlamda = 0.5",
        "test.toml:15:1: detachment.lamda: unknown key; did you mean 'lambda'? (known: criterion, "
-       "lambda, front_speed_law)"},
+       "front_speed_law, lambda)"},
       {"LambdaWithOtherCriterion", "criterion = \"mode-mixed\"",
        "criterion = \"mode-mixed\"\nlambda = 0.5",
        "test.toml:15:10: detachment.lambda: applies to criterion = \"mode-dependent\" only"},
