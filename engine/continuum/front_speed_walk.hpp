@@ -1,5 +1,5 @@
 // The receding front under the rate law on the continuum branch: a(t) as one ODE while the
-// normal grips move at a constant rate (docs/viscoelastic.md "Rate law of the edge").
+// normal grips move at a constant rate (docs/rate_law.md).
 #pragma once
 
 #include <optional>

@@ -293,7 +293,7 @@ double release_ratio(ContinuumStage& st, const Disk& disk) {
 
 /// The normal fixed grips lowered towards c1 (or held, c1 = c0) with the receding front on the
 /// rate law: pinned while G <= dgamma, then a(t) by walk_front_speed to the stage's end or to the
-/// axis, where the contact is lost (docs/viscoelastic.md "Rate law of the edge").
+/// axis, where the contact is lost (docs/rate_law.md).
 void recede_by_rate_law(ContinuumStage& st, ProgramWalk& w, const Stage& stage, double c1,
                         AxisWork& stage_work) {
   Disk& disk = w.disk;

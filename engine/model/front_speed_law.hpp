@@ -1,6 +1,5 @@
 // The rate law of the receding edge (detachment.front_speed_law): how fast the front recedes
-// when its energy release rate exceeds the threshold toughness (docs/viscoelastic.md "Rate law
-// of the edge").
+// when its energy release rate exceeds the threshold toughness (docs/rate_law.md).
 #pragma once
 
 #include <cmath>

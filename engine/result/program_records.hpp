@@ -18,7 +18,7 @@ struct AxisWork {
   /// summed (docs/friction.md `dissipated_by_friction`) [J].
   double friction = 0.0;
   /// The part of it the rate law's front dissipated: int (G - dgamma) 2 pi a |da|
-  /// (docs/viscoelastic.md `dissipated_at_front`) [J].
+  /// (docs/rate_law.md `dissipated_at_front`) [J].
   double front = 0.0;
   AxisWork& operator+=(const AxisWork& more) {
     normal += more.normal;

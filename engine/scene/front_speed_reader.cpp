@@ -9,7 +9,7 @@
 namespace mdrsim {
 namespace {
 
-constexpr const char* kFrontSpeedScope = " (docs/viscoelastic.md \"Rate law of the edge\")";
+constexpr const char* kFrontSpeedScope = " (docs/rate_law.md)";
 
 [[noreturn]] void refuse_front_speed(const std::string& at, const std::string& why) {
   throw SceneError(fmt::format("{}{}{}", at, why, kFrontSpeedScope));

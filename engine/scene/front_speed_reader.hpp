@@ -1,6 +1,5 @@
 // Reads detachment.front_speed_law (the rate law of the receding edge) and refuses, one line
-// each at its key, what the rate law does not take yet (docs/viscoelastic.md "Rate law of the
-// edge").
+// each at its key, what the rate law does not take yet (docs/rate_law.md).
 #pragma once
 
 #include <optional>

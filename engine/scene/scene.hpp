@@ -121,7 +121,7 @@ struct Scene {
     return material.finite_range() ? "maugis-dugdale" : criterion_name;
   }
   /// detachment.front_speed_law: the receding front moves by the rate law (continuum route,
-  /// docs/viscoelastic.md "Rate law of the edge"); none: it recedes quasi-statically.
+  /// docs/rate_law.md); none: it recedes quasi-statically.
   std::optional<FrontSpeedLaw> front_speed_law;
   /// [friction] where it acts (docs/friction.md); none: springs not glued push frictionlessly.
   std::optional<FrictionSettings> friction;

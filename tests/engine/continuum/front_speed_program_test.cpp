@@ -147,7 +147,7 @@ TEST(FrontSpeedReader, RefusesBadValuesAndKeys) {
 }
 
 TEST(FrontSpeedReader, RefusesWhatItDoesNotTakeYet) {
-  const std::string scope = " (docs/viscoelastic.md \"Rate law of the edge\")";
+  const std::string scope = " (docs/rate_law.md)";
   // An untimed program.
   std::string untimed = rate_law_scene(1.0, 1.0);
   untimed.replace(untimed.find("duration = 2\n"), std::string("duration = 2\n").size(), "");
