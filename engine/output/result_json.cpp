@@ -58,18 +58,24 @@ nlohmann::ordered_json after_json(const JumpRecord& jump, const std::optional<Pu
 
 /// With friction the work says what of it friction dissipated.
 /// Field names as in docs/outputs.md ("energy").
-nlohmann::ordered_json energy_json(const EnergyBalance& e) {
-  return {
-      {"machine_work", e.machine_work},     {"stored_change", e.stored_change},
-      {"surface_change", e.surface_change}, {"dissipated_by_friction", e.dissipated_by_friction},
-      {"jump_losses", e.jump_losses},       {"residual", e.residual}};
+/// With a relaxing bulk both say what its dashpots dissipated (docs/viscoelastic.md).
+nlohmann::ordered_json energy_json(const EnergyBalance& e, bool bulk = false) {
+  nlohmann::ordered_json j = {{"machine_work", e.machine_work},
+                              {"stored_change", e.stored_change},
+                              {"surface_change", e.surface_change},
+                              {"dissipated_by_friction", e.dissipated_by_friction}};
+  if (bulk) j["dissipated_by_bulk"] = e.dissipated_by_bulk;
+  j["jump_losses"] = e.jump_losses;
+  j["residual"] = e.residual;
+  return j;
 }
 
 nlohmann::ordered_json work_json(const AxisWork& w, bool friction = false,
-                                 bool front_speed_law = false) {
+                                 bool front_speed_law = false, bool bulk = false) {
   nlohmann::ordered_json j = {{"normal", w.normal}, {"tangential", w.tangential}};
   if (friction) j["dissipated_by_friction"] = w.friction;
   if (front_speed_law) j["dissipated_at_front"] = w.front;
+  if (bulk) j["dissipated_by_bulk"] = w.bulk;
   return j;
 }
 
@@ -183,6 +189,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const auto scales = dimensionless_scales(scene);
   const Accuracy& accuracy = result.accuracy;
   const bool friction = scene.friction.has_value();
+  const bool bulk = scene.material.relaxes();
   const StateKeys keys{.friction = friction,
                        .cohesive = scene.material.finite_range(),
                        .time = scene.program && scene.program->timed()};
@@ -252,7 +259,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
         stage_start = stage.end.time;
       }
       record["end"] = state_json(stage.end, scales, keys);
-      record["work"] = work_json(stage.work, friction, scene.front_speed_law.has_value());
+      record["work"] = work_json(stage.work, friction, scene.front_speed_law.has_value(), bulk);
       if (stage.normal_force_error_estimate) {
         record["end_error_estimate"] = {
             {"normal_force", *stage.normal_force_error_estimate},
@@ -261,7 +268,7 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       if (stage.work_error_estimate) {
         record["work_error_estimate"] = work_json(*stage.work_error_estimate);
       }
-      if (stage.energy) record["energy"] = energy_json(*stage.energy);
+      if (stage.energy) record["energy"] = energy_json(*stage.energy, bulk);
       stages.push_back(record);
     }
     j["stages"] = stages;
@@ -282,8 +289,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
       }
     }
     j["jumps"] = jumps;
-    j["work"] = work_json(*result.work, friction, scene.front_speed_law.has_value());
-    if (result.energy) j["energy"] = energy_json(*result.energy);
+    j["work"] = work_json(*result.work, friction, scene.front_speed_law.has_value(), bulk);
+    if (result.energy) j["energy"] = energy_json(*result.energy, bulk);
   }
   if (continuum) drop_spring_counts(j);
   j["warnings"] = result.warnings;

@@ -1,6 +1,7 @@
 // The viscoelastic row's event loop: a queue of each spring's next touch or release.
 #include "engine/program/viscoelastic_row.hpp"
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <queue>
@@ -21,7 +22,13 @@ struct ViscoelasticSpringState {
   SharedDriveMember member;              ///< while pressed
   std::optional<FreeSpringCreep> creep;  ///< while free
   double released_at = 0.0;              ///< [s]
-  std::uint32_t version = 0;             ///< bumped at each change: older queue entries are stale
+  /// The energy summed up to `counted_at` [s]: while pressed, the stretch [m] and arm stresses
+  /// [N/m] then; while free, the energy it stored then [J/m].
+  double counted_at = 0.0;
+  double counted_stretch = 0.0;
+  std::vector<double> counted_stresses;
+  double counted_stored = 0.0;
+  std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
 };
 
 struct ViscoelasticRowEvent {
@@ -33,16 +40,36 @@ struct ViscoelasticRowEvent {
   }
 };
 
-class ViscoelasticRow {
+/// The integrals of an arm's stress sigma(h) = c + (sigma_0 - c) exp(-h / tau), c = E_j w' tau,
+/// over [0, h] [N s / m] and of its square [N^2 s / m^2].
+struct ArmStressIntegrals {
+  double stress;
+  double square;
+};
+
+ArmStressIntegrals arm_stress_integrals(const PronyTerm& term, double sigma0, double rate,
+                                        double h) {
+  const double c = term.modulus * rate * term.time;
+  const double a = sigma0 - c;
+  const double once = -std::expm1(-h / term.time) * term.time;
+  const double twice = -std::expm1(-2.0 * h / term.time) * term.time * 0.5;
+  return {c * h + a * once, c * c * h + 2.0 * c * a * once + a * a * twice};
+}
+
+}  // namespace
+
+class ViscoelasticRowDrive::Row {
  public:
-  explicit ViscoelasticRow(const ViscoelasticRowSprings& springs)
+  explicit Row(const ViscoelasticRowSprings& springs)
       : springs_(springs),
         arms_(springs.terms),
         modes_(std::make_shared<const RetardationModes>(springs.relaxed_modulus, springs.terms)),
         state_(springs.images.size()) {}
 
-  /// A new segment from the present time: every spring's next event within it is queued.
+  /// A new segment from the present time: every spring's next event within it is queued (the
+  /// energy summed up to now, the rate changing).
   void begin_segment(const DriveSegment& segment) {
+    count_all();
     segment_start_ = time_;
     segment_depth_ = depth_;
     rate_ = segment.rate;
@@ -52,6 +79,7 @@ class ViscoelasticRow {
   }
 
   double end() const { return end_; }
+  double spacing() const { return springs_.spacing; }
   std::optional<ViscoelasticRowEvent> next_event() {
     while (!queue_.empty() && queue_.top().version != state_[queue_.top().spring].version) {
       queue_.pop();
@@ -67,11 +95,14 @@ class ViscoelasticRow {
   }
 
   /// The queued event of spring k at the present time: a touch or a release.
-  void apply(std::size_t k, ViscoelasticRowRun& run) {
+  ViscoelasticRowChange apply(std::size_t k, ViscoelasticRowRun& run) {
     queue_.pop();
     ViscoelasticSpringState& s = state_[k];
-    if (s.phase == ViscoelasticSpringPhase::pressed) {
+    const bool release = s.phase == ViscoelasticSpringPhase::pressed;
+    if (release) {
+      count_pressed(s, springs_.images[k]);
       const std::vector<double> stresses = arms_.leave(s.member);
+      s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
       s.creep.emplace(modes_, stresses);
       s.released_at = time_;
       s.phase = ViscoelasticSpringPhase::free;
@@ -83,7 +114,11 @@ class ViscoelasticRow {
       const std::vector<double> stresses = s.phase == ViscoelasticSpringPhase::free
                                                ? s.creep->stresses(time_ - s.released_at)
                                                : std::vector<double>(springs_.terms.size(), 0.0);
+      if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
       s.member = arms_.enter(stresses, 1.0);
+      s.counted_at = time_;
+      s.counted_stretch = depth_ - springs_.images[k];
+      s.counted_stresses = stresses;
       s.creep.reset();
       s.phase = ViscoelasticSpringPhase::pressed;
       pressed_.insert(k);
@@ -93,6 +128,26 @@ class ViscoelasticRow {
     }
     ++s.version;
     schedule(k);
+    return release ? ViscoelasticRowChange::release : ViscoelasticRowChange::touch;
+  }
+
+  bool in_contact() const { return !pressed_.empty(); }
+
+  /// The energy up to now, per unit x of one half [J/m].
+  ViscoelasticRowEnergy energy() {
+    count_all();
+    ViscoelasticRowEnergy e{machine_work_.value(), 0.0, dissipated_.value()};
+    CompensatedSum stored;
+    for (std::size_t k = 0; k < state_.size(); ++k) {
+      const ViscoelasticSpringState& s = state_[k];
+      if (s.phase == ViscoelasticSpringPhase::pressed) {
+        stored.add(stored_of(s.counted_stretch, s.counted_stresses));
+      } else if (s.phase == ViscoelasticSpringPhase::free) {
+        stored.add(s.counted_stored);
+      }
+    }
+    e.stored = stored.value();
+    return e;
   }
 
   ViscoelasticRowSample sample() const {
@@ -106,6 +161,58 @@ class ViscoelasticRow {
   }
 
  private:
+  static double sum_of(const std::vector<double>& values) {
+    double sum = 0.0;
+    for (const double v : values) sum += v;
+    return sum;
+  }
+
+  /// What a spring of stretch w and arm stresses sigma_j stores [J/m]: E* w^2 / 2 +
+  /// sum_j sigma_j^2 / (2 E_j).
+  double stored_of(double stretch, const std::vector<double>& stresses) const {
+    double e = 0.5 * springs_.relaxed_modulus * stretch * stretch;
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      e += 0.5 * stresses[j] * stresses[j] / springs_.terms[j].modulus;
+    }
+    return e;
+  }
+
+  /// A pressed spring's work and dissipation from its last count to now, the drive's rate
+  /// unchanged in between (every pressed spring is counted where the rate changes).
+  void count_pressed(ViscoelasticSpringState& s, double image) {
+    const double h = time_ - s.counted_at;
+    const double w0 = s.counted_stretch;
+    double load_integral = springs_.relaxed_modulus * (w0 * h + 0.5 * rate_ * h * h);
+    double dissipated = 0.0;
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      const PronyTerm& term = springs_.terms[j];
+      const ArmStressIntegrals i = arm_stress_integrals(term, s.counted_stresses[j], rate_, h);
+      load_integral += i.stress;
+      dissipated += i.square / (term.modulus * term.time);
+      s.counted_stresses[j] = arms_.stress(s.member, j);
+    }
+    machine_work_.add(rate_ * load_integral);
+    dissipated_.add(dissipated);
+    s.counted_at = time_;
+    s.counted_stretch = depth_ - image;
+  }
+
+  /// A free spring's dissipation from its last count to now: the energy it stores less.
+  void count_free(ViscoelasticSpringState& s) {
+    const double t = time_ - s.released_at;
+    const double stored = stored_of(s.creep->stretch(t), s.creep->stresses(t));
+    dissipated_.add(s.counted_stored - stored);
+    s.counted_stored = stored;
+    s.counted_at = time_;
+  }
+
+  void count_all() {
+    for (const std::size_t k : pressed_) count_pressed(state_[k], springs_.images[k]);
+    for (ViscoelasticSpringState& s : state_) {
+      if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
+    }
+  }
+
   /// Spring k's next event from now within the segment, queued; none beyond its end.
   void schedule(std::size_t k) {
     if (const auto delay = next_event_delay(k)) {
@@ -157,33 +264,74 @@ class ViscoelasticRow {
   double segment_depth_ = 0.0;
   double rate_ = 0.0;
   double end_ = 0.0;
+  CompensatedSum machine_work_;  ///< [J/m]
+  CompensatedSum dissipated_;    ///< [J/m]
 };
 
-}  // namespace
+ViscoelasticRowDrive::ViscoelasticRowDrive(const ViscoelasticRowSprings& springs)
+    : row_(std::make_unique<Row>(springs)) {}
+
+ViscoelasticRowDrive::~ViscoelasticRowDrive() = default;
+
+bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separation,
+                               std::span<const double> sample_times,
+                               std::vector<ViscoelasticRowSample>& samples,
+                               const OnChange& on_change) {
+  Row& row = *row_;
+  row.begin_segment(segment);
+  std::size_t next_sample = 0;
+  for (;;) {
+    const auto event = row.next_event();
+    const double event_time = event ? event->time : row.end();
+    // Samples at or before the next event see the state before it.
+    while (next_sample < sample_times.size() && sample_times[next_sample] <= event_time &&
+           sample_times[next_sample] <= row.end()) {
+      row.advance_to(sample_times[next_sample++]);
+      samples.push_back(row.sample());
+    }
+    if (!event) break;
+    row.advance_to(event->time);
+    // A release is reported as the spring leaves (the state before it is removed, as an elastic
+    // program's lift), a touch with the spring pressed.
+    const ViscoelasticRowSample before = row.sample();
+    const ViscoelasticRowChange change = row.apply(event->spring, counts_);
+    if (on_change) {
+      on_change(change, change == ViscoelasticRowChange::release ? before : row.sample());
+    }
+    if (stop_at_separation && change == ViscoelasticRowChange::release && !row.in_contact()) {
+      return true;
+    }
+  }
+  row.advance_to(row.end());
+  return false;
+}
+
+ViscoelasticRowSample ViscoelasticRowDrive::sample() const { return row_->sample(); }
+
+ViscoelasticRowEnergy ViscoelasticRowDrive::energy() {
+  ViscoelasticRowEnergy e = row_->energy();
+  // Both halves: each spring of the row stands for 2 dx of the foundation.
+  const double both_halves = 2.0 * row_->spacing();
+  return {e.machine_work * both_halves, e.stored * both_halves, e.dissipated_by_bulk * both_halves};
+}
 
 ViscoelasticRowRun run_viscoelastic_row(const ViscoelasticRowSprings& springs,
                                         std::span<const DriveSegment> segments,
                                         std::span<const double> sample_times) {
-  ViscoelasticRowRun run;
-  ViscoelasticRow row(springs);
-  std::size_t next_sample = 0;
+  ViscoelasticRowDrive drive(springs);
+  std::vector<ViscoelasticRowSample> samples;
+  std::size_t first = 0;
+  double start = 0.0;
   for (const DriveSegment& segment : segments) {
-    row.begin_segment(segment);
-    for (;;) {
-      const auto event = row.next_event();
-      const double event_time = event ? event->time : row.end();
-      // Samples at or before the next event see the state before it.
-      while (next_sample < sample_times.size() && sample_times[next_sample] <= event_time &&
-             sample_times[next_sample] <= row.end()) {
-        row.advance_to(sample_times[next_sample++]);
-        run.samples.push_back(row.sample());
-      }
-      if (!event) break;
-      row.advance_to(event->time);
-      row.apply(event->spring, run);
-    }
-    row.advance_to(row.end());
+    // Each segment takes the samples up to its end; the last takes the rest within it.
+    std::size_t last = first;
+    while (last < sample_times.size() && sample_times[last] <= start + segment.duration) ++last;
+    drive.run(segment, false, sample_times.subspan(first, last - first), samples);
+    first = last;
+    start += segment.duration;
   }
+  ViscoelasticRowRun run = drive.counts();
+  run.samples = std::move(samples);
   return run;
 }
 

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -45,6 +47,52 @@ struct ViscoelasticRowRun {
   std::optional<double> separation_time;
   std::int64_t touches = 0;   ///< springs met by the indenter (fresh or free)
   std::int64_t releases = 0;  ///< springs whose load fell to zero
+};
+
+/// The row's energy since it started (d = 0, t = 0, every spring at rest), both halves [J]:
+/// the machine's work int F dd, the energy the springs and arms store now, and what the
+/// dashpots dissipated, sum_j int sigma_j^2 / (E_j tau_j) dt dx. Each is summed spring by spring
+/// in closed form between the spring's events and the drive's changes of rate, apart from the
+/// others, so that machine_work = stored + dissipated_by_bulk closes to rounding. A free spring
+/// carries no load, so no work reaches it: what its dashpots dissipate while it creeps is the
+/// energy it stores less.
+struct ViscoelasticRowEnergy {
+  double machine_work = 0.0;
+  double stored = 0.0;
+  double dissipated_by_bulk = 0.0;
+};
+
+/// A touch (a spring met by the indenter) or a release (a pressed spring's load fell to zero).
+enum class ViscoelasticRowChange { touch, release };
+
+/// The row run segment by segment, for a caller that reports between them (a program's stages).
+class ViscoelasticRowDrive {
+ public:
+  /// Every spring at rest, d = 0, t = 0. `springs` must outlive the drive.
+  explicit ViscoelasticRowDrive(const ViscoelasticRowSprings& springs);
+  ~ViscoelasticRowDrive();
+  ViscoelasticRowDrive(const ViscoelasticRowDrive&) = delete;
+  ViscoelasticRowDrive& operator=(const ViscoelasticRowDrive&) = delete;
+
+  using OnChange = std::function<void(ViscoelasticRowChange, const ViscoelasticRowSample&)>;
+  /// Runs `segment` from the present state: `on_change` at each event (a touch's state after
+  /// it, a release's as the spring leaves, before it is removed),
+  /// a sample at each of `sample_times` (ascending, within the segment) into `samples`. With
+  /// `stop_at_separation` the segment ends where the last pressed spring lets go; whether it
+  /// did is returned.
+  bool run(const DriveSegment& segment, bool stop_at_separation,
+           std::span<const double> sample_times, std::vector<ViscoelasticRowSample>& samples,
+           const OnChange& on_change = {});
+  ViscoelasticRowSample sample() const;
+  /// The energy so far (a pass over the springs).
+  ViscoelasticRowEnergy energy();
+  /// As ViscoelasticRowRun's.
+  const ViscoelasticRowRun& counts() const { return counts_; }
+
+ private:
+  class Row;
+  std::unique_ptr<Row> row_;
+  ViscoelasticRowRun counts_;
 };
 
 /// Runs the segments from d = 0, t = 0 (every spring at rest), reporting at `sample_times`

@@ -20,19 +20,23 @@ struct AxisWork {
   /// The part of it the rate law's front dissipated: int (G - dgamma) 2 pi a |da|
   /// (docs/rate_law.md `dissipated_at_front`) [J].
   double front = 0.0;
+  /// The part of the work a relaxing bulk's dashpots dissipated (docs/viscoelastic.md
+  /// `dissipated_by_bulk`) [J].
+  double bulk = 0.0;
   AxisWork& operator+=(const AxisWork& more) {
     normal += more.normal;
     tangential += more.tangential;
     friction += more.friction;
     front += more.front;
+    bulk += more.bulk;
     return *this;
   }
 };
 
 /// The energy balance of a stage, or of the program (docs/outputs.md, "energy"), each term
 /// computed on its own, so that machine_work = stored_change + surface_change +
-/// dissipated_by_friction + jump_losses + residual, the residual rounding [J]. A term a later
-/// physics adds (a viscous loss) is one more field here and one more key.
+/// dissipated_by_friction + dissipated_by_bulk + jump_losses + residual, the residual rounding [J].
+/// A term a later physics adds (a viscous loss) is one more field here and one more key.
 struct EnergyBalance {
   double machine_work = 0.0;   ///< the machine's work on both axes (AxisWork's normal + tangential)
   double stored_change = 0.0;  ///< the springs' elastic energy (a compliant machine's included)
@@ -40,6 +44,7 @@ struct EnergyBalance {
   /// those that glued.
   double surface_change = 0.0;
   double dissipated_by_friction = 0.0;  ///< AxisWork::friction
+  double dissipated_by_bulk = 0.0;      ///< AxisWork::bulk
   /// What the row's changes at one parameter value (glues and let-gos) lost: the machine's
   /// work there less their change of stored, surface and friction energy; >= 0 (to rounding).
   double jump_losses = 0.0;
@@ -49,6 +54,7 @@ struct EnergyBalance {
     stored_change += more.stored_change;
     surface_change += more.surface_change;
     dissipated_by_friction += more.dissipated_by_friction;
+    dissipated_by_bulk += more.dissipated_by_bulk;
     jump_losses += more.jump_losses;
     residual += more.residual;
     return *this;

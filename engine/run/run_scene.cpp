@@ -24,6 +24,7 @@
 #include "engine/events/cascade_buffer.hpp"
 #include "engine/model/criterion_contract.hpp"
 #include "engine/program/run_program.hpp"
+#include "engine/program/run_viscoelastic_program.hpp"
 #include "engine/pull_off/pull_off.hpp"
 #include "engine/result/status_margin.hpp"
 #include "engine/run/disk_states.hpp"
@@ -165,6 +166,8 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
 }
 
 RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
+  // One row of viscoelastic springs (the relaxation reader refuses rtol and Richardson).
+  if (scene.material.relaxes()) return run_viscoelastic_program(scene, observers);
   RunResult result;
   switch (scene.plan.driver) {
     case RouteDriver::rtol:
@@ -233,8 +236,11 @@ RunResult run_as_given(const Scene& scene, const ObserverList& observers, std::i
       warn_resolution(scene, result);
       break;
   }
-  // The disk check knows no cohesive zone: with one it is not made (docs/maugis.md).
-  if (!scene.material.finite_range()) check_disk_states(scene, result);
+  // The disk check knows no cohesive zone (docs/maugis.md) and no relaxing bulk, whose
+  // pressures are not the elastic ones: with either it is not made.
+  if (!scene.material.finite_range() && !scene.material.relaxes()) {
+    check_disk_states(scene, result);
+  }
   result.warnings.insert(result.warnings.begin(), scene.warnings.begin(), scene.warnings.end());
   return result;
 }

@@ -84,15 +84,15 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
   }
 }
 
-void refuse_unrun_relaxation(const TomlReader& material, const RouteKeys& route_keys,
-                             const Scene& scene) {
+void refuse_unrun_relaxation(const RouteKeys& route_keys, const Scene& scene) {
   if (!scene.material.relaxes()) return;
   if (scene.discretization.rtol) {
     throw SceneError(route_keys.rtol_at + not_yet_with_relaxation("rtol (give springs)"));
   }
-  material.fail_at(
-      "relaxation",
-      std::string("the program row does not yet run viscoelastic springs") + kRelaxationScope);
+  if (scene.discretization.richardson()) {
+    throw SceneError(route_keys.extrapolation_at +
+                     not_yet_with_relaxation("extrapolation = \"richardson\" (give springs)"));
+  }
 }
 
 }  // namespace mdrsim

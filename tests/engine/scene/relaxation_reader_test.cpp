@@ -128,15 +128,16 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
       {"Rtol", replaced(kViscous, "springs = 100", "rtol = 1e-3"),
        "v.toml:17:8: discretization.rtol: rtol (give springs) is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      {"Richardson",
+       replaced(kViscous, "springs = 100", "springs = 100\nextrapolation = \"richardson\""),
+       "v.toml:18:17: discretization.extrapolation: extrapolation = \"richardson\" (give springs) "
+       "is not yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
   };
   for (const Refusal& r : refusals) {
     EXPECT_THROW_MSG(build(r.text), SceneError, r.message) << r.name;
   }
-  // Within the scope, the row does not yet run it.
-  EXPECT_THROW_MSG(
-      build(kViscous), SceneError,
-      "v.toml:5:14: material.relaxation: the program row does not yet run viscoelastic "
-      "springs (docs/viscoelastic.md \"What it refuses\")");
+  // Within the scope the scene is built, its terms in the material.
+  EXPECT_EQ(build(kViscous).material.relaxation.size(), 1u);
 }
 
 }  // namespace

@@ -1,0 +1,148 @@
+// The viscoelastic row driven by a program's stages: segments of constant rate, records, events.
+#include "engine/program/run_viscoelastic_program.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "engine/program/run_program.hpp"
+#include "engine/program/viscoelastic_row.hpp"
+
+namespace mdrsim {
+namespace {
+
+/// How far the held depth of a stage moves and in what time: its change [m] (per unit of the
+/// stage parameter until separation) and seconds (the same).
+struct ViscoelasticStageDrive {
+  double change = 0.0;
+  double seconds = 0.0;
+  double rate() const { return seconds > 0.0 ? change / seconds : 0.0; }
+};
+
+ViscoelasticStageDrive stage_drive(const Stage& stage, double held) {
+  ViscoelasticStageDrive drive;
+  if (stage.normal && stage.normal->motion == StageAxis::Motion::to) {
+    drive.change = stage.normal->value - held;
+  } else if (stage.normal && stage.normal->motion == StageAxis::Motion::by) {
+    drive.change = stage.normal->value;
+  }
+  drive.seconds = seconds_per_parameter(stage, drive.change);
+  return drive;
+}
+
+ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s) {
+  ContactSnapshot c;
+  c.normal_control = s.depth;
+  c.indentation = s.depth;
+  // The contact's force is a sum of pressed springs' loads: none pressed, none at all.
+  c.normal_force = s.pressed > 0 ? s.force : 0.0;
+  c.contact_radius = s.contact_radius;
+  c.springs_in_contact = s.pressed;
+  c.glued_radius = 0.0;  // nothing glues
+  c.time = s.time;
+  return c;
+}
+
+/// A stage until separation runs in pieces of its parameter's unit until the contact is lost;
+/// this many without a loss is taken for one that never comes.
+constexpr int kMostSeparationPieces = 1 << 16;
+
+}  // namespace
+
+RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& observers) {
+  RunResult result;
+  const Program& program = *scene.program;
+  const std::int64_t n = scene.springs;
+  result.springs = n;
+  result.accuracy.rows = {n};
+
+  // The row: spring N where g reaches the deepest held depth, as an elastic program's frame
+  // puts it (program_row_frame) for a fixed-grips program without adhesion.
+  const ProgramRowFrame frame = program_row_frame(scene);
+  const ProgramRowSpec spec = program_row(scene, frame, n);
+  result.accuracy.outer_radius = spec.reference_radius;
+  ViscoelasticRowSprings springs{scene.material.effective_modulus,
+                                 scene.material.relaxation,
+                                 spec.reference_radius / static_cast<double>(n),
+                                 {}};
+  springs.images.reserve(static_cast<std::size_t>(n));
+  for (std::int64_t i = 1; i < n; ++i) {
+    springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
+  }
+  springs.images.push_back(spec.reference_image);
+
+  ViscoelasticRowDrive drive(springs);
+  std::string_view stage_name;
+  const auto on_change = [&](ViscoelasticRowChange change, const ViscoelasticRowSample& s) {
+    observers.emit({.kind = change == ViscoelasticRowChange::touch ? EventKind::spring_touched
+                                                                   : EventKind::spring_lifted,
+                    .state = viscoelastic_snapshot(s),
+                    .stage = stage_name});
+  };
+  std::vector<ViscoelasticRowSample> no_samples;
+  ViscoelasticRowEnergy before = drive.energy();
+  AxisWork total;
+  EnergyBalance total_energy;
+  bool ever_in_contact = false;
+  bool lost = false;
+  double held = 0.0;
+  for (const Stage& stage : program.stages) {
+    stage_name = stage.name;
+    const ViscoelasticStageDrive sd = stage_drive(stage, held);
+    const double rate = sd.rate();
+    if (!stage.until_separation) {
+      drive.run({sd.seconds, rate}, false, {}, no_samples, on_change);
+      held += sd.change;
+    } else if (drive.sample().pressed > 0) {
+      bool separated = false;
+      if (rate < 0.0) {
+        for (int piece = 0; piece < kMostSeparationPieces && !separated; ++piece) {
+          separated = drive.run({sd.seconds, rate}, true, {}, no_samples, on_change);
+        }
+      }
+      held = drive.sample().depth;
+      if (!separated) {
+        stop_at_limit(result, StopReason::no_end);
+        result.warnings.push_back(fmt::format(
+            "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
+            "springs in contact): the program stops here",
+            stage.name, drive.sample().pressed));
+      }
+    }
+    const ViscoelasticRowSample end = drive.sample();
+    ever_in_contact = ever_in_contact || drive.counts().touches > 0;
+    const ViscoelasticRowEnergy now = drive.energy();
+    StageRecord record;
+    record.name = stage.name;
+    record.end = viscoelastic_snapshot(end);
+    record.work.normal = now.machine_work - before.machine_work;
+    record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
+    EnergyBalance e;
+    e.machine_work = record.work.normal;
+    e.stored_change = now.stored - before.stored;
+    e.dissipated_by_bulk = record.work.bulk;
+    e.residual = e.machine_work - e.stored_change - e.dissipated_by_bulk;
+    record.energy = e;
+    total += record.work;
+    total_energy += e;
+    before = now;
+    result.stages.push_back(record);
+    observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
+    lost = ever_in_contact && end.pressed == 0;
+    if (result.stop_reason) break;
+  }
+  result.work = total;
+  result.energy = total_energy;
+  result.counts.events = drive.counts().touches + drive.counts().releases;
+  if (!result.stop_reason) {
+    // Without glue the contact is lost at zero force: no critical point (docs/programs.md
+    // "How a program ends").
+    result.status = lost ? RunStatus::no_instability : RunStatus::completed;
+  }
+  return result;
+}
+
+}  // namespace mdrsim
