@@ -19,15 +19,18 @@ namespace {
 struct ViscoelasticStageDrive {
   double change = 0.0;
   double seconds = 0.0;
+  double end = 0.0;  ///< the held depth at the stage's end [m] (not until separation)
   double rate() const { return seconds > 0.0 ? change / seconds : 0.0; }
 };
 
 ViscoelasticStageDrive stage_drive(const Stage& stage, double held) {
-  ViscoelasticStageDrive drive;
+  ViscoelasticStageDrive drive{.end = held};
   if (stage.normal && stage.normal->motion == StageAxis::Motion::to) {
     drive.change = stage.normal->value - held;
+    drive.end = stage.normal->value;
   } else if (stage.normal && stage.normal->motion == StageAxis::Motion::by) {
     drive.change = stage.normal->value;
+    drive.end = held + drive.change;
   }
   drive.seconds = seconds_per_parameter(stage, drive.change);
   return drive;
@@ -94,8 +97,8 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     const ViscoelasticStageDrive sd = stage_drive(stage, held);
     const double rate = sd.rate();
     if (!stage.until_separation) {
-      drive.run({sd.seconds, rate}, false, {}, no_samples, on_change);
-      held += sd.change;
+      drive.run({sd.seconds, rate, sd.end}, false, {}, no_samples, on_change);
+      held = sd.end;
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
       if (rate < 0.0) {

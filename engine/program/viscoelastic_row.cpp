@@ -74,6 +74,7 @@ class ViscoelasticRowDrive::Row {
     segment_depth_ = depth_;
     rate_ = segment.rate;
     end_ = time_ + segment.duration;
+    end_depth_ = segment.end_depth.value_or(depth_ + rate_ * segment.duration);
     queue_ = {};
     for (std::size_t k = 0; k < state_.size(); ++k) schedule(k);
   }
@@ -91,7 +92,7 @@ class ViscoelasticRowDrive::Row {
   void advance_to(double t) {
     arms_.advance(rate_, t - time_);
     time_ = t;
-    depth_ = segment_depth_ + rate_ * (t - segment_start_);
+    depth_ = t == end_ ? end_depth_ : segment_depth_ + rate_ * (t - segment_start_);
   }
 
   /// The queued event of spring k at the present time: a touch or a release.
@@ -245,7 +246,9 @@ class ViscoelasticRowDrive::Row {
     ExponentialSum load =
         line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
     const double now = load.at(0.0);
-    if (now <= 0.0 && load.slope_at(0.0) <= 0.0) return 0.0;
+    // A spring at zero load that stays there (met at the turn of a hold) stays pressed, as an
+    // elastic row counts a spring whose image the depth reaches.
+    if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
     if (now < 0.0) load.constant -= now;
     return first_crossing(load, 0.0, span);
   }
@@ -264,6 +267,7 @@ class ViscoelasticRowDrive::Row {
   double segment_depth_ = 0.0;
   double rate_ = 0.0;
   double end_ = 0.0;
+  double end_depth_ = 0.0;
   CompensatedSum machine_work_;  ///< [J/m]
   CompensatedSum dissipated_;    ///< [J/m]
 };

@@ -28,6 +28,9 @@ struct ViscoelasticRowSprings {
 struct DriveSegment {
   double duration;  ///< [s] >= 0
   double rate;      ///< d' [m/s]; 0: a hold
+  /// The depth at its end [m] where it is known exactly (a stage's held value), so that a
+  /// spring whose image is that depth is met; else the start's plus rate times duration.
+  std::optional<double> end_depth = std::nullopt;
 };
 
 /// The row's state at one time.

@@ -167,6 +167,41 @@ TEST(ViscoelasticProgram, EveryStageBalancesItsEnergy) {
   EXPECT_GT(r.energy->stored_change, 0.0);  // the free springs have not crept back yet
 }
 
+// A hold between press and withdrawal: under fixed grips every pressed spring keeps its stretch
+// and its arm decays, so the force's arm part, F(t_m) less Hertz's force of E*_inf at V t_m, falls
+// by exp(-T / tau) (Lee-Radok's arm part at t_m from the reference). Tolerance 2 / N of F(t_m),
+// the row's edge error. The machine does no work in the hold: what the arms store less is what
+// their dashpots dissipate (to rounding, 1e-12 of it), free springs included in the withdrawal.
+TEST(ViscoelasticProgram, AHoldRelaxesTheArmsAndBalancesItsEnergy) {
+  constexpr double kHoldTime = 0.05;
+  const std::string text =
+      replaced_in_scene(scene_file_text(), "[[loading.stage]]\nname = \"withdraw\"",
+                        fmt::format("[[loading.stage]]\nname = \"hold\"\nduration = {}\n"
+                                    "[[loading.stage]]\nname = \"withdraw\"",
+                                    kHoldTime));
+  const RunResult r = run_text(text).result;
+  ASSERT_EQ(r.stages.size(), 3u);
+  const double tm = kSceneRamp.turn_time;
+  const double peak = test::lee_radok_force(kSceneSolid, kSceneRamp, tm);
+  const double relaxed =
+      test::hertz_force(kSceneSolid.relaxed_modulus, kSceneRamp.radius, kSceneRamp.indentation(tm));
+  const double held =
+      relaxed + (peak - relaxed) * std::exp(-kHoldTime / kSceneSolid.relaxation_time);
+  const StageRecord& hold = r.stages[1];
+  EXPECT_EQ(hold.end.time, tm + kHoldTime);
+  EXPECT_EQ(hold.end.springs_in_contact, 400);
+  EXPECT_NEAR(hold.end.normal_force, held, 2.0 / 400 * peak);
+  EXPECT_EQ(hold.work.normal, 0.0);
+  EXPECT_GT(hold.work.bulk, 0.0);
+  for (const StageRecord& stage : r.stages) {
+    const EnergyBalance& e = *stage.energy;
+    EXPECT_NEAR(e.machine_work, e.stored_change + e.dissipated_by_bulk,
+                1e-12 * std::max(std::abs(e.machine_work), e.dissipated_by_bulk))
+        << stage.name;
+  }
+  EXPECT_EQ(r.status, RunStatus::no_instability);
+}
+
 // An arm of tau = 1e-9 s relaxes at once: the row is the elastic one of E*_inf, its arms adding
 // E_1 V tau / (E_inf d) ~ 5e-8 of the force. Every touch and lift, in order, against the elastic
 // program's (the scene without `relaxation`): the same springs, the force within 1e-6 of F(t_m)
