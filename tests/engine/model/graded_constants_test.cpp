@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "tests/support/graded_half_space.hpp"
@@ -33,6 +34,9 @@ TEST(GradedConstants, PointForceMatchesTheHankelSolution) {
       const double spec = graded_point_force_compliance({k, z0}, e0, nu);
       const double hankel = test::graded_point_force_compliance_by_hankel(k, e0, z0, nu);
       EXPECT_NEAR(spec / hankel, 1.0, 1e-8) << "k = " << k << ", nu = " << nu;
+      // The table a reader checks against SPEC's formula: M E0 z0^-k and the two's distance.
+      std::printf("k = %.2f  nu = %.2f  M E0 z0^-k = %.12f  Hankel %.12f  rel. diff %.1e\n", k, nu,
+                  spec * e0 / std::pow(z0, k), hankel * e0 / std::pow(z0, k), spec / hankel - 1.0);
     }
   }
 }
