@@ -201,6 +201,24 @@ JumpIn approach_jump(const std::vector<double>& f) {
   return out;
 }
 
+/// Where the lever's base stood half way between samples k - 1 and k of an approach: the
+/// least-squares line through the free samples' tip positions z[0, k) over the index, taken at
+/// k - 1/2. Off the path the tip is where the base is, which moves evenly; the line, unlike
+/// z[k - 1], stays put where the split is placed a sample late (the sample then one on the
+/// path, the tip pulled past the base by the contact's force over the lever's stiffness).
+double free_line_at(const std::vector<double>& z, std::size_t k) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < k; ++i) {
+    const double x = static_cast<double>(i), y = z[i];
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double m = static_cast<double>(k);
+  const double vxx = sxx - sx * sx / m;
+  if (!(vxx > 0.0)) return z[k - 1];
+  const double rise = (sxy - sx * sy / m) / vxx;
+  return (sy - rise * sx) / m + rise * (static_cast<double>(k) - 0.5);
+}
+
 bool finite_start(const AdhesiveFit& f) {
   return std::isfinite(f.youngs_modulus.value) && f.youngs_modulus.value > 0.0 &&
          std::isfinite(f.work_of_adhesion.value) && f.work_of_adhesion.value > 0.0 &&
@@ -454,7 +472,7 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
   // The approach (with a retract): far first, on the baseline before its jump in.
   const std::vector<double>& jz = approach ? approach->tip_position : z;
   const std::vector<double>& jf = approach ? approach->force : f;
-  const std::size_t jump_index = approach ? found : jump;
+  std::size_t jump_index = approach ? found : jump;
   for (std::size_t i = 0; approach && i < jz.size(); ++i) {
     samples.z.push_back(jz[i]);
     samples.force.push_back(jf[i]);
@@ -469,20 +487,20 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
   // lambda above 0.5 (the branch changes by 1e-4 of the peak force); this position does, as
   // h0 = 2 / (pi lambda) of Maugis' depth unit.
   const bool jump_in = (approach || !options.retract) && jump_index > 0;
-  double jump_weight = 0.0, jump_observed = 0.0;
+  double jump_weight = 0.0, jump_observed = 0.0, jump_step = 0.0, jump_noise = 0.0;
   if (jump_in) {
     std::vector<double> steps;
     for (std::size_t i = 0; i + 1 < jump_index; ++i) steps.push_back(std::abs(jz[i + 1] - jz[i]));
     std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
                      steps.end());
-    const double step = steps.empty() ? 0.0 : steps[steps.size() / 2];
+    jump_step = steps.empty() ? 0.0 : steps[steps.size() / 2];
     // The jump's position weighs as the force's noise over its standard deviation: the step's
     // uniform 1/sqrt(12) and the spread of the found index.
-    const double noise = difference_noise(jf, 0, jump_index);
+    jump_noise = difference_noise(jf, 0, jump_index);
     const double spread = found > 0 ? jump_in_found.spread : 0.0;
-    if (step > 0.0 && noise > 0.0) {
-      jump_weight = noise / (step * std::sqrt(1.0 / 12.0 + spread * spread));
-      jump_observed = jz[jump_index - 1] - 0.5 * step;
+    if (jump_step > 0.0 && jump_noise > 0.0) {
+      jump_weight = jump_noise / (jump_step * std::sqrt(1.0 / 12.0 + spread * spread));
+      jump_observed = free_line_at(jz, jump_index);
     }
   }
   const bool jump_row = jump_in && jump_weight > 0.0;
@@ -732,39 +750,172 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
   }
   // A retract whose jump off is lost in the noise (the lever holds the path nearly to its end):
   // the jump found is the noise's largest rise, anywhere along the path's tail. Its samples
-  // are then those the fitted model's lever holds (depth past the release), the fit run again
-  // from its minimum while that moves samples (at most three times).
+  // are then those the fitted model's lever holds (depth past the release). An approach's jump
+  // in, found apart from the model, can lie late where the jump is a few noise deviations (or
+  // anywhere near it where it is one): its first sample on the path is then the split of least
+  // squares of the fitted model over the approach's samples (the baseline before, the path
+  // from it), its spread from those sums as a likelihood, and the jump's row moves with it.
+  // The fit runs again from its minimum while that moves samples (at most three times for a
+  // retract alone, twenty with a jump in, which can creep a few samples a pass).
   const std::size_t retract_count = options.retract ? n : 0;
-  for (int pass = 0; pass < 3 && retract_count > 0 && release.stiffness > 0.0 && !release_row &&
-                     std::isfinite(solution.sum_squares);
-       ++pass) {
-    const std::span<const double> q(solution.values);
-    double release_depth = 0.0;
-    try {
-      const double low = *std::min_element(samples.z.begin(), samples.z.end());
-      const MaugisBranch branch(*options.tip.profile,
-                                maugis_law(options.tip, q[0] / compliance, q[1], q[2]),
-                                std::max(deepest, q[3] - low));
-      release_depth = branch.release_depth(release.stiffness);
-    } catch (const std::domain_error&) {
-      break;
+  const bool reclassify_retract = retract_count > 0 && release.stiffness > 0.0 && !release_row;
+  const std::size_t approach_from = used - jz.size();
+  std::vector<double> on_path(used);
+  const auto reclassify = [&](ScaledSolution& settled) {
+    for (int pass = 0; pass < (jump_row ? 20 : 3) && (reclassify_retract || jump_row) &&
+                       std::isfinite(settled.sum_squares);
+         ++pass) {
+      const std::span<const double> q(settled.values);
+      bool moved = false;
+      if (reclassify_retract) {
+        double release_depth = 0.0;
+        try {
+          const double low = *std::min_element(samples.z.begin(), samples.z.end());
+          const MaugisBranch branch(*options.tip.profile,
+                                    maugis_law(options.tip, q[0] / compliance, q[1], q[2]),
+                                    std::max(deepest, q[3] - low));
+          release_depth = branch.release_depth(release.stiffness);
+        } catch (const std::domain_error&) {
+          break;
+        }
+        for (std::size_t i = 0; i < retract_count; ++i) {
+          const char held_on = q[3] - samples.z[i] >= release_depth ? 1 : 0;
+          moved = moved || held_on != samples.contact[i];
+          samples.contact[i] = held_on;
+        }
+      }
+      if (jump_row) {
+        MaugisSamples all_on = samples;
+        std::fill(all_on.contact.begin() + static_cast<std::ptrdiff_t>(approach_from),
+                  all_on.contact.end(), static_cast<char>(1));
+        // The first sample the path reaches: the tip lands past -h0 (the lever pulls it on), so
+        // a split before the zone's range would put free samples on a path they cannot be on.
+        std::size_t reach = 1;
+        try {
+          maugis_forces(all_on, options.tip, compliance, deepest, q, on_path);
+          const double range = zone_range(q);
+          for (std::size_t i = 0; i < jz.size(); ++i) {
+            if (q[3] - jz[i] <= -range) reach = std::max(reach, i + 1);
+          }
+        } catch (const std::domain_error&) {
+          break;
+        }
+        if (reach + 1 >= jz.size()) break;
+        // squares[k]: the approach's samples before k on the baseline, from k on the path.
+        const std::size_t m = jz.size();
+        std::vector<double> squares(m + 1, 0.0);
+        for (std::size_t i = 0; i < m; ++i) {
+          const double off = q[4] + q[5] * (jz[i] - q[3]) - jf[i];
+          squares[i + 1] = squares[i] + off * off;
+        }
+        double after = 0.0;
+        for (std::size_t i = m; i-- > 0;) {
+          const double on = on_path[approach_from + i] - jf[i];
+          after += on * on;
+          squares[i] += after;
+        }
+        std::size_t best_k = std::max(jump_index, reach);
+        for (std::size_t k = reach; k < m; ++k) {
+          if (squares[k] < squares[best_k]) best_k = k;
+        }
+        double weight = 0.0, mean = 0.0, second = 0.0;
+        for (std::size_t k = reach; k < m; ++k) {
+          const double pk =
+              std::exp(-(squares[k] - squares[best_k]) / (2.0 * jump_noise * jump_noise));
+          const double x = static_cast<double>(k) - static_cast<double>(best_k);
+          weight += pk, mean += pk * x, second += pk * x * x;
+        }
+        mean /= weight;
+        const double spread = std::sqrt(std::max(second / weight - mean * mean, 0.0));
+        for (std::size_t i = 0; i < m; ++i) {
+          const char held_on = i >= best_k ? 1 : 0;
+          moved = moved || held_on != samples.contact[approach_from + i];
+          samples.contact[approach_from + i] = held_on;
+        }
+        jump_index = best_k;
+        jump_weight = jump_noise / (jump_step * std::sqrt(1.0 / 12.0 + spread * spread));
+        jump_observed = free_line_at(jz, jump_index);
+      }
+      if (!moved) break;
+      problem.start.assign(q.begin(), q.end());
+      std::array<FitParameter, kMaugisParameters> trial{};
+      std::array<FitParameter*, kMaugisParameters> into{};
+      for (std::size_t j = 0; j < kMaugisParameters; ++j) into[j] = &trial[j];
+      ScaledSolution again = minimize_scaled(problem, into);
+      again.iterations += settled.iterations;
+      again.evaluations += settled.evaluations;
+      settled = std::move(again);
+      for (std::size_t j = 0; j < kMaugisParameters; ++j) *out[j] = trial[j];
     }
-    bool moved = false;
-    for (std::size_t i = 0; i < retract_count; ++i) {
-      const char held_on = q[3] - samples.z[i] >= release_depth ? 1 : 0;
-      moved = moved || held_on != samples.contact[i];
-      samples.contact[i] = held_on;
+  };
+  reclassify(solution);
+  // Where the approach's jump in is a noise deviation or so (small lambda), its change point
+  // can lie far late, and the fit from it settles where the path starts there (lambda several
+  // times the truth). The retract alone places the jump in too, where the tip reaches -h0 of
+  // its fit: the joint fit from there, kept where its samples' sum of squares is lower.
+  if (approach && jump_row) {
+    const AdhesiveFit alone = fit_maugis_segments(segment, options, nullptr);
+    Parameters q = {alone.youngs_modulus.value,   alone.work_of_adhesion.value,
+                    alone.maugis_parameter.value, alone.contact_point.value,
+                    alone.baseline_offset.value,  alone.baseline_slope.value};
+    std::size_t k = 0;
+    if (alone.status == FitStatus::fitted) {
+      try {
+        const double range = zone_range(q);
+        while (k < jz.size() && q[3] - jz[k] <= -range) ++k;
+      } catch (const std::domain_error&) {
+        k = 0;
+      }
     }
-    if (!moved) break;
-    problem.start.assign(q.begin(), q.end());
-    std::array<FitParameter, kMaugisParameters> trial{};
-    std::array<FitParameter*, kMaugisParameters> into{};
-    for (std::size_t j = 0; j < kMaugisParameters; ++j) into[j] = &trial[j];
-    ScaledSolution again = minimize_scaled(problem, into);
-    again.iterations += solution.iterations;
-    again.evaluations += solution.evaluations;
-    solution = std::move(again);
-    for (std::size_t j = 0; j < kMaugisParameters; ++j) *out[j] = trial[j];
+    const auto sample_squares = [&](std::span<const double> p) {
+      try {
+        maugis_forces(samples, options.tip, compliance, deepest, p, forces);
+      } catch (const std::domain_error&) {
+        return std::numeric_limits<double>::infinity();
+      }
+      double sum = 0.0;
+      for (std::size_t i = 0; i < used; ++i) sum += std::pow(forces[i] - samples.force[i], 2);
+      return sum;
+    };
+    if (k > 0 && k < jz.size() && k != jump_index && std::isfinite(solution.sum_squares)) {
+      const double kept_squares = sample_squares(solution.values);
+      const MaugisSamples kept_samples = samples;
+      const std::size_t kept_index = jump_index;
+      const double kept_weight = jump_weight, kept_observed = jump_observed;
+      ScaledSolution kept = solution;
+      std::array<FitParameter, kMaugisParameters> kept_out{};
+      for (std::size_t j = 0; j < kMaugisParameters; ++j) kept_out[j] = *out[j];
+      for (std::size_t i = 0; i < jz.size(); ++i) {
+        samples.contact[approach_from + i] = i >= k ? 1 : 0;
+      }
+      jump_index = k;
+      jump_observed = free_line_at(jz, k);
+      for (std::size_t j = 0; j < kMaugisParameters; ++j) {
+        if (held[j]) q[j] = *held[j];
+      }
+      problem.start.assign(q.begin(), q.end());
+      std::array<FitParameter, kMaugisParameters> trial{};
+      std::array<FitParameter*, kMaugisParameters> into{};
+      for (std::size_t j = 0; j < kMaugisParameters; ++j) into[j] = &trial[j];
+      ScaledSolution other = minimize_scaled(problem, into);
+      for (std::size_t j = 0; j < kMaugisParameters; ++j) *out[j] = trial[j];
+      other.iterations += solution.iterations;
+      other.evaluations += solution.evaluations;
+      reclassify(other);
+      const double other_squares = sample_squares(other.values);
+      if (other.outcome == MinimizerOutcome::converged && other_squares < kept_squares) {
+        solution = std::move(other);
+      } else {
+        samples = kept_samples;
+        jump_index = kept_index;
+        jump_weight = kept_weight;
+        jump_observed = kept_observed;
+        kept.iterations = other.iterations;
+        kept.evaluations = other.evaluations;
+        solution = std::move(kept);
+        for (std::size_t j = 0; j < kMaugisParameters; ++j) *out[j] = kept_out[j];
+      }
+    }
   }
   fit.contact_samples = static_cast<std::size_t>(
       std::count(samples.contact.begin(), samples.contact.end(), static_cast<char>(1)));
