@@ -62,18 +62,20 @@ struct MaugisFitOptions {
 /// Fits the model. Retract: the samples from the deepest point to the jump off (the largest
 /// rise of the force after its minimum, as adhesive_fit finds it) lie on the path, past the
 /// fixed-load pull-off as far as the lever held them, the rest on the baseline. Approach: the
-/// samples from the jump in (a change point of the force) lie on it, and the jump's position
-/// is one more residual: the tip there at d = -h0 = -w / sigma_0, the zone's range, which is
-/// what tells lambda (weighted by the sampling step and the change point's spread). A retract
-/// whose spring constant is known adds its jump off where it stands out of the noise: the
-/// lever's base there, where q = d + F/k turns on the path (release_depth); where it does not,
-/// the retract's samples on the path are those the fitted model's lever holds. Starts from
-/// the DMT and JKR fits (adhesive_fit) and the best of five lambdas.
+/// samples from the jump in (a change point of the force, then the split of least squares of
+/// the fitted model) lie on it, and the jump's position is one more residual: the tip there at d =
+/// -h0 = -w / sigma_0, the zone's range, which is what tells lambda (weighted by the sampling step
+/// and the change point's spread). A retract whose spring constant is known adds its jump off where
+/// it stands out of the noise: the lever's base there, where q = d + F/k turns on the path
+/// (release_depth); where it does not, the retract's samples on the path are those the fitted
+/// model's lever holds. Starts from the DMT and JKR fits (adhesive_fit) and the best of five
+/// lambdas.
 AdhesiveFit fit_maugis(const PreparedSegment& segment, const MaugisFitOptions& options);
 
 /// Approach and retract on one path (`--segment both`): one E, dgamma, lambda, contact point and
 /// baseline; the retract's samples as fit_maugis takes them, the approach's from its jump in,
-/// and the jump in's position. Starts from the retract's DMT and JKR fits.
+/// and the jump in's position. Starts from the retract's DMT and JKR fits, and again from the
+/// retract's own Maugis fit with the jump in where its tip passes -h0 (the lower squares kept).
 AdhesiveFit fit_maugis_both(const PreparedSegment& approach, const PreparedSegment& retract,
                             const MaugisFitOptions& options);
 
