@@ -32,6 +32,7 @@ set(MDRSIM_PUBLIC_HEADERS
     engine/scene/route_plan.hpp
     engine/model/friction_settings.hpp
     engine/model/graded_image.hpp
+    engine/model/front_speed_law.hpp
     engine/scene/scene_error.hpp
     # the run and its result
     engine/run/run_scene.hpp
