@@ -26,7 +26,9 @@ set(mdrsim_slow_tests
     "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$"  # 1.4 s
     "^RoughAdhesion\\.FrontPinnedAtAStepFarOutside$"  # 4.9 s: rows of 2^19 springs
     "^ProgramRtolPinned\\.RebindingReloadWorkMeetsRtolAgainstItsClosedForm$"  # 3 s: rows of 2^24
-    "^RouteAgreement\\.")  # 120 scenes on both routes, the row at rtol 1e-8: 5 s
+    "^RouteAgreement\\."  # 120 scenes on both routes, the row at rtol 1e-8: 5 s
+    # 100 seeds of a Maugis fit of both segments a case: 3-20 s
+    "^Cases/MaugisBothSynthetic\\.")
 
 # Also labelled `unsanitized`: cases that run the paths other cases cover, on bigger rows or
 # more scenes, 10 to 20 times slower under AddressSanitizer (or a plot through matplotlib). scripts/test.sh leaves them
@@ -42,7 +44,11 @@ set(mdrsim_unsanitized_tests
     "^PlotProgram\\."
     "^StatusMargin\\.TheStatusDoesNotDependOnRtol$"
     "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$"
-    "^RouteAgreement\\.")
+    "^RouteAgreement\\."
+    # the Maugis fits' recovery over 100 seeds (MaugisFit's single fits run the same code under
+    # the sanitizers): 30-140 s a case there
+    "^Cases/MaugisBothSynthetic\\."
+    "^Cases/MaugisApproachSynthetic\\.")
 
 set(mdrsim_quick_names)
 set(mdrsim_slow_names)

@@ -56,6 +56,8 @@ class FrontEquations {
   /// G / dgamma - 1: e^2 / (2 pi a dgamma / E* a) - 1 in tension, -1 in compression.
   double excess(double x, double d) const {
     const double e = std::max(stretch(x, d), 0.0);
+    // At the axis a stretched edge releases without bound; an unstretched one not at all.
+    if (!(x > 0.0)) return e > 0.0 ? std::numeric_limits<double>::infinity() : -1.0;
     return e * e / (hess_per_radius_ * length_ * x) - 1.0;
   }
   /// v / v*.
@@ -136,10 +138,14 @@ struct ScaledWalk {
 /// turns from negative to non-negative within a step the walk ends there; where `peak` does
 /// (before any stop), the state there is the walk's peak. Both are located by redoing the step
 /// with the plain stepper, its length root-found (TOMS 748).
+/// A step that leaves the walk's domain (a radius below the axis, or a number that is not
+/// finite: the front's speed grows without bound there) is taken again at half its length, as a
+/// step whose error is too large: a loose tolerance must not carry the walk past the axis.
 template <class System, class ToScaled, class Peak, class Stop, class GoOn, class Bound>
 void front_walk_steps(const System& system, FrontVector& y, double& v, double step, double tol,
                       const ToScaled& to_scaled, const Peak& peak, const Stop& stop,
-                      const GoOn& go_on, const Bound& bound, ScaledWalk& walk, bool record) {
+                      const GoOn& go_on, const Bound& bound, ScaledWalk& walk, bool record,
+                      bool first_is_radius) {
   auto controlled = odeint::make_controlled(tol, tol, FrontStepper());
   FrontStepper plain;
   for (;;) {
@@ -149,7 +155,18 @@ void front_walk_steps(const System& system, FrontVector& y, double& v, double st
     const FrontVector before = y;
     const double v_before = v;
     double tried = bound(to_scaled(y, v), step);
-    while (controlled.try_step(system, y, v, tried) == odeint::fail) {
+    for (;;) {
+      while (controlled.try_step(system, y, v, tried) == odeint::fail) {
+      }
+      const bool finite =
+          std::isfinite(v) && std::isfinite(y[0]) && std::isfinite(y[1]) && std::isfinite(y[2]);
+      if (finite && !(first_is_radius && y[0] < 0.0)) break;
+      tried = 0.5 * (v - v_before);
+      y = before;
+      v = v_before;
+      if (!(std::abs(tried) > 0.0)) {
+        throw std::runtime_error("continuum: the rate-law front's step fell to zero at the axis");
+      }
     }
     step = tried;
     const FrontScaled at_start = to_scaled(before, v_before);
@@ -214,8 +231,13 @@ ScaledWalk scaled_front_walk(const FrontEquations& eq, double s_end, double tol,
                      if (q > 0.0) next = std::min(next, 0.5 * p.x / q);
                      return std::min(next, s_end - p.s);
                    },
-                   walk, record);
+                   walk, record, true);
   if (!switch_to_radius) return walk;
+  if (!(walk.end.x > 0.0)) {  // the time walk reached the axis itself
+    walk.lost = true;
+    walk.end.x = 0.0;
+    return walk;
+  }
 
   // In the radius down to the axis, or to the stage's end on the way.
   FrontVector z{walk.end.s, walk.end.dissipated, walk.end.work};
@@ -233,7 +255,7 @@ ScaledWalk scaled_front_walk(const FrontEquations& eq, double s_end, double tol,
                    },
                    [&](const FrontScaled& p) { return p.x > 0.0; },
                    [&](const FrontScaled& p, double next) { return std::max(next, -p.x); }, walk,
-                   record);
+                   record, false);
   walk.lost = !ended;
   if (walk.lost) walk.end.x = 0.0;
   return walk;

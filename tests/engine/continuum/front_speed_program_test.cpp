@@ -91,6 +91,29 @@ TEST(FrontSpeedProgram, RetractionAgreesWithTheReference) {
   }
 }
 
+// A loose rtol walks the front in long steps: one of them must not carry the radius past the
+// axis, where the front's speed has no bound (at rtol 1e-3 the walk ran on to s = inf with a
+// NaN radius and the run ended on a non-finite force). The lost contact's state is finite and
+// the peak within rtol of the reference's.
+TEST(FrontSpeedProgram, LooseRtolStaysFiniteAtTheAxis) {
+  const test::RateLawScales sc = test::rate_law_scales(kModulus, kRadius, kWork, kFrontSpeed);
+  const test::RateLawRetraction ref = test::rate_law_retraction(1.0, 0.5, 1e-10);
+  for (const double rtol : {1e-2, 1e-3, 1e-4}) {
+    const RunResult r = run_scene(
+        test::build_scene_text(rate_law_scene(
+            1.0, 0.5,
+            fmt::format("[solver]\nmethod = \"continuum\"\n[discretization]\nrtol = {}\n", rtol))),
+        {});
+    EXPECT_EQ(r.status, RunStatus::instability) << rtol;
+    ASSERT_TRUE(r.peak);
+    ASSERT_TRUE(r.critical);
+    EXPECT_EQ(r.critical->contact_radius, 0.0) << rtol;
+    EXPECT_TRUE(std::isfinite(r.critical->normal_force)) << rtol;
+    EXPECT_TRUE(std::isfinite(r.critical->indentation)) << rtol;
+    EXPECT_NEAR(r.peak->normal_force / (ref.peak.force * sc.force), 1.0, rtol) << rtol;
+  }
+}
+
 // The rate law dissipates where the quasi-static front does not: the same scene without the
 // key reaches JKR's fixed-grips peak -F0, and with it the peak is beyond it.
 TEST(FrontSpeedProgram, SlowRetractionNearsJkr) {
