@@ -28,7 +28,9 @@ set(mdrsim_slow_tests
     "^ProgramRtolPinned\\.RebindingReloadWorkMeetsRtolAgainstItsClosedForm$"  # 3 s: rows of 2^24
     "^RouteAgreement\\."  # 120 scenes on both routes, the row at rtol 1e-8: 5 s
     # 100 seeds of a Maugis fit of both segments a case: 3-20 s
-    "^Cases/MaugisBothSynthetic\\.")
+    "^Cases/MaugisBothSynthetic\\."
+    # the point-force kernel over a punch from 25 points outside it: 7.6 s
+    "^GradedConstants\\.PunchOuterSurfaceMatchesTheKernelQuadrature$")
 
 # Also labelled `unsanitized`: cases that run the paths other cases cover, on bigger rows or
 # more scenes, 10 to 20 times slower under AddressSanitizer (or a plot through matplotlib). scripts/test.sh leaves them
@@ -48,7 +50,9 @@ set(mdrsim_unsanitized_tests
     # the Maugis fits' recovery over 100 seeds (MaugisFit's single fits run the same code under
     # the sanitizers): 30-140 s a case there
     "^Cases/MaugisBothSynthetic\\."
-    "^Cases/MaugisApproachSynthetic\\.")
+    "^Cases/MaugisApproachSynthetic\\."
+    # the kernel quadrature FlatPunchMatchesTheKernelQuadrature runs there, from outside the disk
+    "^GradedConstants\\.PunchOuterSurfaceMatchesTheKernelQuadrature$")
 
 set(mdrsim_quick_names)
 set(mdrsim_slow_names)
