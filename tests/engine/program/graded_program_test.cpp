@@ -190,24 +190,36 @@ TEST(GradedProgram, FixedLoadCycleOnBothRoutes) {
             row.accuracy.work_error_estimate->normal);
 }
 
-TEST(GradedProgram, ShorthandWrittenAsAProgramOnTheContinuumRoute) {
-  // Press (gluing on touch) to 2 mm's depth and pull off under fixed grips, as the shorthand's
-  // stages; the same numbers to the routes' rtol 1e-10 (1e-9: two root searches apart).
-  const double k = 0.5;
+/// The shorthand's fixed-grips pull-off from the depth that glues kGlued, and the same path
+/// written as two stages (gluing on touch, then pulling until separation), both with `solver`.
+struct ShorthandAndProgram {
+  double depth = 0.0;  ///< g_k(kGlued) [m]
+  RunResult shorthand;
+  RunResult program;
+};
+ShorthandAndProgram shorthand_and_program(double k, const std::string& solver) {
   const GradedParabola b = branch_of(k);
-  const double depth = b.depth(kGlued) + b.s() * std::pow(kGlued, 0.5 * (1.0 - k));  // g_k(a)
+  ShorthandAndProgram runs;
+  runs.depth = b.depth(kGlued) + b.s() * std::pow(kGlued, 0.5 * (1.0 - k));  // g_k(a)
   char depth_text[64];
-  std::snprintf(depth_text, sizeof depth_text, "%.17g", depth);
-  const RunResult shorthand =
-      run(material(k, 0.0) + "[loading]\npreload = { depth = " + depth_text +
-          " }\nnormal = { control = \"fixed-grips\" }\n");
-  const RunResult program =
+  std::snprintf(depth_text, sizeof depth_text, "%.17g", runs.depth);
+  runs.shorthand = run(material(k, 0.0) + "[loading]\npreload = { depth = " + depth_text +
+                       " }\nnormal = { control = \"fixed-grips\" }\n" + solver);
+  runs.program =
       run(material(k, 0.0) +
           "[loading]\n[[loading.stage]]\nname = \"preload\"\nnormal = { "
           "control = \"fixed-grips\", to = " +
           depth_text +
           " }\n[[loading.stage]]\nname = \"pull-off\"\nnormal = { control = \"fixed-grips\", by "
-          "= -1.0e-4 }\nuntil = \"separation\"\n");
+          "= -1.0e-4 }\nuntil = \"separation\"\n" +
+          solver);
+  return runs;
+}
+
+TEST(GradedProgram, ShorthandWrittenAsAProgramOnTheContinuumRoute) {
+  // Press (gluing on touch) to 2 mm's depth and pull off under fixed grips, as the shorthand's
+  // stages; the same numbers to the routes' rtol 1e-10 (1e-9: two root searches apart).
+  const auto [depth, shorthand, program] = shorthand_and_program(0.5, "");
   ASSERT_TRUE(shorthand.critical);
   ASSERT_TRUE(program.critical);
   const double f = shorthand.critical->normal_force;
@@ -227,23 +239,8 @@ TEST(GradedProgram, ShorthandWrittenAsAProgramOnTheRow) {
   // The shorthand's row and the program's row of the same 2000 springs across the glued
   // radius: the same springs, images and let-gos, so the same critical point but for the
   // rounding of their different sums (1e-12).
-  const double k = 0.5;
-  const GradedParabola b = branch_of(k);
-  const double depth = b.depth(kGlued) + b.s() * std::pow(kGlued, 0.5 * (1.0 - k));
-  char depth_text[64];
-  std::snprintf(depth_text, sizeof depth_text, "%.17g", depth);
-  const std::string solver = "[solver]\nmethod = \"event\"\n[discretization]\nsprings = 2000\n";
-  const RunResult shorthand =
-      run(material(k, 0.0) + "[loading]\npreload = { depth = " + depth_text +
-          " }\nnormal = { control = \"fixed-grips\" }\n" + solver);
-  const RunResult program =
-      run(material(k, 0.0) +
-          "[loading]\n[[loading.stage]]\nname = \"preload\"\nnormal = { "
-          "control = \"fixed-grips\", to = " +
-          depth_text +
-          " }\n[[loading.stage]]\nname = \"pull-off\"\nnormal = { control = \"fixed-grips\", by "
-          "= -1.0e-4 }\nuntil = \"separation\"\n" +
-          solver);
+  const auto [depth, shorthand, program] = shorthand_and_program(
+      0.5, "[solver]\nmethod = \"event\"\n[discretization]\nsprings = 2000\n");
   ASSERT_TRUE(shorthand.critical && program.critical);
   const double f = shorthand.critical->normal_force;
   EXPECT_NEAR(program.critical->normal_force, f, 1e-12 * std::abs(f));
