@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/model/prony_arms.hpp"
+#include "engine/model/prony_load_drive.hpp"
 
 namespace mdrsim {
 
@@ -14,6 +15,14 @@ SharedDriveArms::SharedDriveArms(std::vector<PronyTerm> terms)
 void SharedDriveArms::advance(double rate, double duration) {
   for (std::size_t j = 0; j < terms_.size(); ++j) {
     history_[j] = maxwell_arm_after(history_[j], terms_[j], rate, duration);
+    decaying_[j] *= std::exp(-duration / terms_[j].time);
+  }
+  time_ += duration;
+}
+
+void SharedDriveArms::advance_along(const ExponentialSum& motion, double duration) {
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    history_[j] = arm_stress_under(history_[j], terms_[j], motion).at(duration);
     decaying_[j] *= std::exp(-duration / terms_[j].time);
   }
   time_ += duration;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/base/material.hpp"
+#include "engine/model/prony_root.hpp"
 
 namespace mdrsim {
 
@@ -29,6 +30,9 @@ class SharedDriveArms {
 
   /// The drive moves at `rate` [m/s] for `duration` [s]: the clock, H_j and C_j advance.
   void advance(double rate, double duration);
+  /// The drive follows `motion` (its stretch as a sum in s from now, prony_load_drive.hpp) for
+  /// `duration` [s].
+  void advance_along(const ExponentialSum& motion, double duration);
   /// A spring joins now with arm stresses `stresses` [N/m] (zero for a fresh one) and weight dx.
   SharedDriveMember enter(std::span<const double> stresses, double weight);
   /// A member leaves now; its arm stresses then [N/m] are returned.

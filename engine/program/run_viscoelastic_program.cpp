@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/program/run_program.hpp"
+#include "engine/program/stage_motion.hpp"
 #include "engine/program/viscoelastic_row.hpp"
 
 namespace mdrsim {
@@ -36,12 +37,26 @@ ViscoelasticStageDrive stage_drive(const Stage& stage, double held) {
   return drive;
 }
 
-ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s) {
+/// The row's force [N]: a sum of pressed springs' loads, so none pressed, none at all.
+double row_force(const ViscoelasticRowSample& s) { return s.pressed > 0 ? s.force : 0.0; }
+
+/// The held value of `control` at the row's state: a_u d + a_F F.
+double held_value(const AffineConstraint& control, const ViscoelasticRowSample& s) {
+  return control.displacement_coefficient * s.depth + control.force_coefficient * row_force(s);
+}
+
+/// What a machine spring stores at force F [J]: F^2 / (2 k), k = a_u / a_F; none without one.
+double machine_spring_energy(const AffineConstraint& control, double force) {
+  if (!drives_through_spring(control)) return 0.0;
+  return 0.5 * force * force * control.force_coefficient / control.displacement_coefficient;
+}
+
+ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s,
+                                      const AffineConstraint& control) {
   ContactSnapshot c;
-  c.normal_control = s.depth;
+  c.normal_control = held_value(control, s);
   c.indentation = s.depth;
-  // The contact's force is a sum of pressed springs' loads: none pressed, none at all.
-  c.normal_force = s.pressed > 0 ? s.force : 0.0;
+  c.normal_force = row_force(s);
   c.contact_radius = s.contact_radius;
   c.springs_in_contact = s.pressed;
   c.glued_radius = 0.0;  // nothing glues
@@ -52,6 +67,48 @@ ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s) {
 /// A stage until separation runs in pieces of its parameter's unit until the contact is lost;
 /// this many without a loss is taken for one that never comes.
 constexpr int kMostSeparationPieces = 1 << 16;
+
+/// Springs beyond spring N where a stage holds a force or a machine end: the frame's radius is
+/// the relaxed elastic contact's, which a creeping contact reaches only in the limit, but a
+/// force switched on from a glassy state can carry it further.
+constexpr std::int64_t kHeldReachSprings = 16;
+
+bool holds_other_than_depth(const Program& program) {
+  return std::any_of(program.stages.begin(), program.stages.end(), [](const Stage& stage) {
+    return stage.normal && !stage.normal->controller->is_fixed_grips();
+  });
+}
+
+/// A stage under a fixed load or a machine spring: its held value h moves linearly in time, the
+/// depth following the row (viscoelastic_row.hpp). Until separation it runs in pieces of the
+/// stage parameter's unit until the contact is lost; whether it was is returned with h there.
+struct HeldStageEnd {
+  double held;
+  bool separated;
+};
+
+HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
+                            const AffineConstraint& control, double held,
+                            const ViscoelasticRowDrive::OnChange& on_change) {
+  const AxisMotion m = axis_motion(stage.normal, held);
+  const double seconds = seconds_per_parameter(stage, m.rate);
+  const double rate = seconds > 0.0 ? m.rate / seconds : 0.0;
+  std::vector<ViscoelasticRowSample> no_samples;
+  if (!stage.until_separation) {
+    drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}}, false, {},
+              no_samples, on_change);
+    return {m.end.value_or(held + m.rate), false};
+  }
+  if (drive.sample().pressed == 0) return {held, false};
+  bool separated = false;
+  for (int piece = 0; piece < kMostSeparationPieces && !separated && rate < 0.0; ++piece) {
+    const double start = drive.sample().time;
+    separated = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}}, true,
+                          {}, no_samples, on_change);
+    held += rate * (drive.sample().time - start);
+  }
+  return {held, separated};
+}
 
 }  // namespace
 
@@ -76,13 +133,29 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
   }
   springs.images.push_back(spec.reference_image);
+  if (holds_other_than_depth(program)) {
+    const double outer = scene.profile->outer_radius();
+    for (std::int64_t i = n + 1; i <= 2 * n + kHeldReachSprings; ++i) {
+      const double x = springs.spacing * static_cast<double>(i);
+      if (!(x < outer)) break;
+      const double g = program_image(scene, x);
+      if (!std::isfinite(g)) break;
+      springs.images.push_back(g);
+    }
+  }
+  const bool extended = springs.images.size() > static_cast<std::size_t>(n);
+  const double row_end = springs.spacing * static_cast<double>(springs.images.size());
+  bool reached_row_end = false;
 
   ViscoelasticRowDrive drive(springs);
   std::string_view stage_name;
+  // The normal axis's controller and held value; a program starts under fixed grips at 0.
+  AffineConstraint control{1.0, 0.0};
   const auto on_change = [&](ViscoelasticRowChange change, const ViscoelasticRowSample& s) {
+    if (extended && s.contact_radius >= row_end * (1.0 - 1e-12)) reached_row_end = true;
     observers.emit({.kind = change == ViscoelasticRowChange::touch ? EventKind::spring_touched
                                                                    : EventKind::spring_lifted,
-                    .state = viscoelastic_snapshot(s),
+                    .state = viscoelastic_snapshot(s, control),
                     .stage = stage_name});
   };
   std::vector<ViscoelasticRowSample> no_samples;
@@ -94,9 +167,30 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   double held = 0.0;
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
+    if (stage.normal) {
+      const AffineConstraint c = stage.normal->controller->constraint();
+      if (c.displacement_coefficient != control.displacement_coefficient ||
+          c.force_coefficient != control.force_coefficient) {
+        // A switch sets the new held value from the present state: nothing jumps.
+        held = held_value(c, drive.sample());
+        control = c;
+      }
+    }
+    const double spring_energy_before = machine_spring_energy(control, row_force(drive.sample()));
     const ViscoelasticStageDrive sd = stage_drive(stage, held);
     const double rate = sd.rate();
-    if (!stage.until_separation) {
+    if (!is_fixed_grips(control)) {
+      const bool in_contact = drive.sample().pressed > 0;
+      const HeldStageEnd held_end = run_held_stage(drive, stage, control, held, on_change);
+      held = held_end.held;
+      if (stage.until_separation && in_contact && !held_end.separated) {
+        stop_at_limit(result, StopReason::no_end);
+        result.warnings.push_back(fmt::format(
+            "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
+            "springs in contact): the program stops here",
+            stage.name, drive.sample().pressed));
+      }
+    } else if (!stage.until_separation) {
       drive.run({sd.seconds, rate, sd.end}, false, {}, no_samples, on_change);
       held = sd.end;
     } else if (drive.sample().pressed > 0) {
@@ -120,12 +214,13 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     const ViscoelasticRowEnergy now = drive.energy();
     StageRecord record;
     record.name = stage.name;
-    record.end = viscoelastic_snapshot(end);
+    record.end = viscoelastic_snapshot(end, control);
     record.work.normal = now.machine_work - before.machine_work;
     record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
     EnergyBalance e;
     e.machine_work = record.work.normal;
-    e.stored_change = now.stored - before.stored;
+    e.stored_change = now.stored - before.stored + machine_spring_energy(control, row_force(end)) -
+                      spring_energy_before;
     e.dissipated_by_bulk = record.work.bulk;
     e.residual = e.machine_work - e.stored_change - e.dissipated_by_bulk;
     record.energy = e;
@@ -136,6 +231,12 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
     lost = ever_in_contact && end.pressed == 0;
     if (result.stop_reason) break;
+  }
+  if (reached_row_end) {
+    result.warnings.push_back(fmt::format(
+        "the contact reached the row's last spring (x = {:.6g} m): the row ends there, so the "
+        "force beyond it is too small",
+        row_end));
   }
   result.work = total;
   result.energy = total_energy;

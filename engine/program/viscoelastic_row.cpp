@@ -1,6 +1,7 @@
 // The viscoelastic row's event loop: a queue of each spring's next touch or release.
 #include "engine/program/viscoelastic_row.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/prony_arms.hpp"
 #include "engine/model/prony_creep.hpp"
+#include "engine/model/prony_load_drive.hpp"
 #include "engine/model/prony_shared_drive.hpp"
 
 namespace mdrsim {
@@ -76,12 +78,23 @@ class ViscoelasticRowDrive::Row {
     end_ = time_ + segment.duration;
     end_depth_ = segment.end_depth.value_or(depth_ + rate_ * segment.duration);
     queue_ = {};
+    held_.reset();
+    if (segment.held) {
+      // Per unit length of one half: kappa d + q_total = phi (prony_load_drive.hpp).
+      const AffineConstraint& c = segment.held->constraint;
+      const double per_half = 2.0 * springs_.spacing * c.force_coefficient;
+      held_ = RowHeldAxis{c.displacement_coefficient / per_half, segment.held->start / per_half,
+                          segment.held->rate / per_half};
+      rebuild_motion();
+      return;
+    }
     for (std::size_t k = 0; k < state_.size(); ++k) schedule(k);
   }
 
   double end() const { return end_; }
   double spacing() const { return springs_.spacing; }
   std::optional<ViscoelasticRowEvent> next_event() {
+    if (held_) return held_next_event();
     while (!queue_.empty() && queue_.top().version != state_[queue_.top().spring].version) {
       queue_.pop();
     }
@@ -90,6 +103,10 @@ class ViscoelasticRowDrive::Row {
   }
 
   void advance_to(double t) {
+    if (held_) {
+      held_advance_to(t);
+      return;
+    }
     arms_.advance(rate_, t - time_);
     time_ = t;
     depth_ = t == end_ ? end_depth_ : segment_depth_ + rate_ * (t - segment_start_);
@@ -97,7 +114,7 @@ class ViscoelasticRowDrive::Row {
 
   /// The queued event of spring k at the present time: a touch or a release.
   ViscoelasticRowChange apply(std::size_t k, ViscoelasticRowRun& run) {
-    queue_.pop();
+    if (!held_) queue_.pop();
     ViscoelasticSpringState& s = state_[k];
     const bool release = s.phase == ViscoelasticSpringPhase::pressed;
     if (release) {
@@ -128,7 +145,11 @@ class ViscoelasticRowDrive::Row {
       run.separation_time.reset();
     }
     ++s.version;
-    schedule(k);
+    if (held_) {
+      rebuild_motion();
+    } else {
+      schedule(k);
+    }
     return release ? ViscoelasticRowChange::release : ViscoelasticRowChange::touch;
   }
 
@@ -181,6 +202,16 @@ class ViscoelasticRowDrive::Row {
   /// A pressed spring's work and dissipation from its last count to now, the drive's rate
   /// unchanged in between (every pressed spring is counted where the rate changes).
   void count_pressed(ViscoelasticSpringState& s, double image) {
+    if (held_) {
+      // A held segment counts the work and the dissipation of every pressed spring together
+      // (count_held_piece); the spring only notes where it stands.
+      for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+        s.counted_stresses[j] = arms_.stress(s.member, j);
+      }
+      s.counted_at = time_;
+      s.counted_stretch = depth_ - image;
+      return;
+    }
     const double h = time_ - s.counted_at;
     const double w0 = s.counted_stretch;
     double load_integral = springs_.relaxed_modulus * (w0 * h + 0.5 * rate_ * h * h);
@@ -253,6 +284,205 @@ class ViscoelasticRowDrive::Row {
     return first_crossing(load, 0.0, span);
   }
 
+  // A held segment (fixed load, a machine spring): the depth follows motion_, rebuilt at every
+  // event, and each event is the first of every spring's found against it.
+
+  RowHeldAxis held_now() const {
+    RowHeldAxis axis = *held_;
+    axis.held += axis.rate * (time_ - segment_start_);
+    return axis;
+  }
+
+  std::vector<double> arm_sums() const {
+    std::vector<double> sums(springs_.terms.size());
+    for (std::size_t j = 0; j < sums.size(); ++j) sums[j] = arms_.arm_force(j);
+    return sums;
+  }
+
+  /// The depth at which the indenter meets the nearest spring that is not pressed [m].
+  double nearest_surface() const {
+    double nearest = HUGE_VAL;
+    for (std::size_t k = 0; k < state_.size(); ++k) {
+      const ViscoelasticSpringState& s = state_[k];
+      if (s.phase == ViscoelasticSpringPhase::pressed) continue;
+      const double w =
+          s.phase == ViscoelasticSpringPhase::free ? s.creep->stretch(time_ - s.released_at) : 0.0;
+      nearest = std::min(nearest, springs_.images[k] + w);
+    }
+    return nearest;
+  }
+
+  void rebuild_motion() {
+    const RowHeldAxis axis = held_now();
+    if (pressed_.empty() && axis.stiffness == 0.0 && (axis.held > 0.0 || axis.rate > 0.0)) {
+      // A force that nothing holds yet (at zero force, so with no work): the indenter moves in
+      // to the nearest surface at once.
+      const double nearest = nearest_surface();
+      if (std::isfinite(nearest)) depth_ = nearest;
+    }
+    const std::vector<double> sums = arm_sums();
+    motion_ = depth_under_held_axis(
+        springs_.relaxed_modulus, springs_.terms,
+        {static_cast<std::int64_t>(pressed_.size()), pressed_images_.value(), sums}, axis, depth_);
+    depth_ = motion_.at(0.0);
+  }
+
+  void held_advance_to(double t) {
+    const double h = t - time_;
+    if (h > 0.0) {
+      count_held_piece(h);
+      arms_.advance_along(motion_, h);
+      depth_ = motion_.at(h);
+      motion_ = shifted(motion_, h);
+    }
+    time_ = t;
+  }
+
+  /// The machine's work and the pressed springs' dissipation over the next h [s] of motion_, all
+  /// springs at once: the load per half is phi - kappa d; each pressed spring's arm is its own
+  /// stress decaying plus the arms' common response R_j to the motion, so sum_i sigma_ij^2 =
+  /// n R_j^2 + 2 R_j S_j(0) exp(-s/tau_j) + sum_i sigma_ij(0)^2 exp(-2 s/tau_j).
+  void count_held_piece(double h) {
+    const RowHeldAxis axis = held_now();
+    ExponentialSum load{axis.held, axis.rate, {}};
+    // Under a machine spring its end moves at h' = phi' / kappa.
+    ExponentialSum driving{axis.rate / std::max(axis.stiffness, 1e-300), 0.0, {}};
+    if (axis.stiffness > 0.0) {
+      load.constant -= axis.stiffness * motion_.constant;
+      load.slope -= axis.stiffness * motion_.slope;
+      for (const ExponentialDecay& d : motion_.decays) {
+        load.decays.push_back({-axis.stiffness * d.amplitude, d.time});
+      }
+    } else {
+      // Under a fixed load the machine moves with the indenter: d'(s).
+      driving.constant = motion_.slope;
+      for (const ExponentialDecay& d : motion_.decays) {
+        driving.decays.push_back({-d.amplitude / d.time, d.time});
+      }
+    }
+    machine_work_.add(integral_of_product(load, driving, h));
+    if (pressed_.empty()) return;
+    const auto n = static_cast<double>(pressed_.size());
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      const PronyTerm& term = springs_.terms[j];
+      const ExponentialSum common = arm_stress_under(0.0, term, motion_);
+      const ExponentialSum own{0.0, 0.0, {{1.0, term.time}}};
+      const ExponentialSum own_squared{0.0, 0.0, {{1.0, 0.5 * term.time}}};
+      double squares = 0.0;
+      for (const std::size_t k : pressed_) {
+        const double sigma = arms_.stress(state_[k].member, j);
+        squares += sigma * sigma;
+      }
+      const double integral = n * integral_of_product(common, common, h) +
+                              2.0 * arms_.arm_force(j) * integral_of_product(common, own, h) +
+                              squares * integral_of_product(own_squared, {1.0, 0.0, {}}, h);
+      dissipated_.add(integral / (term.modulus * term.time));
+    }
+  }
+
+  /// The pressed springs' shared load part E* d(s) + sum_j R_j(s), each spring's load being it
+  /// less E* g_i plus its own arms' stresses decaying.
+  ExponentialSum shared_load() const {
+    ExponentialSum q{
+        springs_.relaxed_modulus * motion_.constant, springs_.relaxed_modulus * motion_.slope, {}};
+    for (const ExponentialDecay& d : motion_.decays) {
+      q.decays.push_back({springs_.relaxed_modulus * d.amplitude, d.time});
+    }
+    for (const PronyTerm& term : springs_.terms) {
+      const ExponentialSum r = arm_stress_under(0.0, term, motion_);
+      q.constant += r.constant;
+      q.decays.insert(q.decays.end(), r.decays.begin(), r.decays.end());
+    }
+    return q;
+  }
+
+  /// Whether spring k may have an event within `limit` [s] of now, by bounds on each part of its
+  /// gap or load (never false where it has one).
+  bool held_may_act(std::size_t k, double limit, const ExponentialSumBounds& depth,
+                    const ExponentialSumBounds& shared) const {
+    const ViscoelasticSpringState& s = state_[k];
+    const double g = springs_.images[k];
+    if (s.phase == ViscoelasticSpringPhase::untouched) return depth.hi - g >= 0.0;
+    if (s.phase == ViscoelasticSpringPhase::free) {
+      const ExponentialSum w = s.creep->stretch_from(time_ - s.released_at);
+      return depth.hi - g - bounds_over(w, limit).lo >= 0.0;
+    }
+    double lo = shared.lo - springs_.relaxed_modulus * g;
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      const double sigma = arms_.stress(s.member, j);
+      lo += std::min(sigma, sigma * std::exp(-limit / springs_.terms[j].time));
+    }
+    return lo <= 0.0;
+  }
+
+  /// Spring k's next event within `limit` [s] of now under motion_, as next_event_delay has it
+  /// for a linear drive.
+  std::optional<double> held_delay(std::size_t k, double limit,
+                                   const ExponentialSum& shared) const {
+    const ViscoelasticSpringState& s = state_[k];
+    const double g = springs_.images[k];
+    if (s.phase == ViscoelasticSpringPhase::untouched) {
+      if (depth_ - g >= 0.0) return 0.0;
+      ExponentialSum gap = motion_;
+      gap.constant -= g;
+      return first_crossing(gap, 0.0, limit);
+    }
+    if (s.phase == ViscoelasticSpringPhase::free) {
+      ExponentialSum overlap = motion_;
+      overlap.constant -= g;
+      for (const ExponentialDecay& d : s.creep->stretch_from(time_ - s.released_at).decays) {
+        overlap.decays.push_back({-d.amplitude, d.time});
+      }
+      const double now = overlap.at(0.0);
+      if (now >= 0.0 && overlap.slope_at(0.0) > 0.0) return 0.0;
+      return first_crossing(overlap, std::max(now, 0.0), limit);
+    }
+    ExponentialSum load = shared;
+    load.constant -= springs_.relaxed_modulus * g;
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      load.decays.push_back({arms_.stress(s.member, j), springs_.terms[j].time});
+    }
+    // A spring at zero load within rounding starts on its level (f - level is then exactly 0 at
+    // s = 0, and first_crossing takes its side from where it moves).
+    const double now = load.at(0.0);
+    if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
+    return first_crossing(load, std::min(now, 0.0), limit);
+  }
+
+  /// The first event of any spring from now within the segment: the springs at the contact's
+  /// edge first (their times bound the search), then every spring whose bounds allow one.
+  std::optional<ViscoelasticRowEvent> held_next_event() const {
+    const double span = end_ - time_;
+    const ExponentialSum shared = shared_load();
+    std::optional<double> best;
+    std::size_t best_k = 0;
+    double bounded_limit = -1.0;
+    ExponentialSumBounds depth{0.0, 0.0}, shared_bounds{0.0, 0.0};
+    const auto offer = [&](std::size_t k) {
+      const double limit = best ? *best : span;
+      if (limit != bounded_limit) {
+        depth = bounds_over(motion_, limit);
+        shared_bounds = bounds_over(shared, limit);
+        bounded_limit = limit;
+      }
+      if (!held_may_act(k, limit, depth, shared_bounds)) return;
+      const auto delay = held_delay(k, limit, shared);
+      if (delay && (!best || *delay < *best || (*delay == *best && k < best_k))) {
+        best = delay;
+        best_k = k;
+      }
+    };
+    if (!pressed_.empty()) {
+      const std::size_t edge = *pressed_.rbegin();
+      for (const std::size_t k : {edge, edge + 1, edge + 2}) {
+        if (k < state_.size()) offer(k);
+      }
+    }
+    for (std::size_t k = 0; k < state_.size(); ++k) offer(k);
+    if (!best) return std::nullopt;
+    return ViscoelasticRowEvent{time_ + *best, best_k, state_[best_k].version};
+  }
+
   const ViscoelasticRowSprings& springs_;
   SharedDriveArms arms_;
   std::shared_ptr<const RetardationModes> modes_;
@@ -268,8 +498,10 @@ class ViscoelasticRowDrive::Row {
   double rate_ = 0.0;
   double end_ = 0.0;
   double end_depth_ = 0.0;
-  CompensatedSum machine_work_;  ///< [J/m]
-  CompensatedSum dissipated_;    ///< [J/m]
+  std::optional<RowHeldAxis> held_;  ///< set in a held segment
+  ExponentialSum motion_;            ///< the depth from now in a held segment [m]
+  CompensatedSum machine_work_;      ///< [J/m]
+  CompensatedSum dissipated_;        ///< [J/m]
 };
 
 ViscoelasticRowDrive::ViscoelasticRowDrive(const ViscoelasticRowSprings& springs)

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "controllers/controller.hpp"
 #include "engine/base/material.hpp"
 
 namespace mdrsim {
@@ -24,13 +25,23 @@ struct ViscoelasticRowSprings {
   std::vector<double> images;    ///< g(x_i) [m], i = 1..N
 };
 
-/// A stretch of the program during which the indentation moves at one rate.
+/// What a segment holds instead of the depth: the constraint a_u d + a_F F = h (fixed load,
+/// a machine spring), h moving linearly in time.
+struct HeldAxisMotion {
+  AffineConstraint constraint;
+  double start;  ///< h at the segment's start [N under a fixed load, m under a machine spring]
+  double rate;   ///< h' [N/s or m/s]
+};
+
+/// A stretch of the program during which the indentation moves at one rate, or, with `held`, a
+/// force or a machine end does (the depth then follows the row's creep between events).
 struct DriveSegment {
   double duration;  ///< [s] >= 0
   double rate;      ///< d' [m/s]; 0: a hold
   /// The depth at its end [m] where it is known exactly (a stage's held value), so that a
   /// spring whose image is that depth is met; else the start's plus rate times duration.
   std::optional<double> end_depth = std::nullopt;
+  std::optional<HeldAxisMotion> held = std::nullopt;
 };
 
 /// The row's state at one time.

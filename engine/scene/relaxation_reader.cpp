@@ -72,10 +72,19 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
       loading.fail_at("stage",
                       not_yet_with_relaxation(fmt::format("loading.stage.{}.tangential", i + 1)));
     }
-    if (stage.normal && stage.normal->control != "fixed-grips") {
-      loading.fail_at(
-          "stage", not_yet_with_relaxation(fmt::format("loading.stage.{}.normal.control = \"{}\"",
-                                                       i + 1, stage.normal->control)));
+    if (stage.normal && stage.normal->controller->holds_force()) {
+      // The row carries a held force while it presses: the contact lost under a load (the
+      // indenter's flight) is not carried.
+      const StageAxis& axis = *stage.normal;
+      const bool falls = (axis.motion == StageAxis::Motion::to && !(axis.value > 0.0)) ||
+                         (axis.motion == StageAxis::Motion::by && axis.value < 0.0);
+      if (stage.until_separation || falls) {
+        loading.fail_at("stage",
+                        not_yet_with_relaxation(fmt::format(
+                            "loading.stage.{}.normal: a fixed load until separation, lowered "
+                            "(by < 0) or to a force <= 0,",
+                            i + 1)));
+      }
     }
   }
   if (route_keys.method_given && scene.solver.method != SolverMethod::event) {

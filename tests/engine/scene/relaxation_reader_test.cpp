@@ -120,8 +120,15 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
       {"FixedLoad",
        replaced(kViscous, "normal = { by = -1.0e-4 }",
                 "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
-       "v.toml:9:1: loading.stage: loading.stage.2.normal.control = \"fixed-load\" is not yet "
-       "taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+       "v.toml:9:1: loading.stage: loading.stage.2.normal: a fixed load until separation, "
+       "lowered (by < 0) or to a force <= 0, is not yet taken with material.relaxation "
+       "(docs/viscoelastic.md \"What it refuses\")"},
+      {"FixedLoadToZero",
+       replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
+                "normal = { control = \"fixed-load\", to = 0.0 }"),
+       "v.toml:9:1: loading.stage: loading.stage.1.normal: a fixed load until separation, "
+       "lowered (by < 0) or to a force <= 0, is not yet taken with material.relaxation "
+       "(docs/viscoelastic.md \"What it refuses\")"},
       {"Continuum", kViscous + "[solver]\nmethod = \"continuum\"\n",
        "v.toml:19:10: solver.method: a method other than \"event\" is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
@@ -138,6 +145,14 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
   }
   // Within the scope the scene is built, its terms in the material.
   EXPECT_EQ(build(kViscous).material.relaxation.size(), 1u);
+  // A held force that stays pressing and a machine spring are within it.
+  EXPECT_NO_THROW(build(replaced(
+      replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
+               "normal = { control = \"fixed-load\", to = 0.05 }"),
+      "normal = { by = -1.0e-4 }", "normal = { control = \"fixed-grips\", by = -1.0e-4 }")));
+  EXPECT_NO_THROW(
+      build(replaced(kViscous, "normal = { by = -1.0e-4 }",
+                     "normal = { control = \"compliant\", stiffness = 1e3, by = -1e-4 }")));
 }
 
 }  // namespace
