@@ -1,7 +1,7 @@
-// A program's row of viscoelastic springs under normal fixed grips without adhesion: the
-// indentation moves linearly in time stage by stage, a spring is pressed from the moment the
-// indenter reaches it until its load falls to zero (Ting), and a free spring creeps back and
-// may be met again (docs/viscoelastic.md).
+// A program's row of viscoelastic springs without adhesion: the indentation moves linearly in
+// time stage by stage, or follows a held force or machine end, a spring is pressed from the
+// moment the indenter reaches it until its load falls to zero (Ting), and a free spring creeps
+// back and may be met again (docs/viscoelastic.md).
 #pragma once
 
 #include <cstdint>
@@ -64,12 +64,12 @@ struct ViscoelasticRowRun {
 };
 
 /// The row's energy since it started (d = 0, t = 0, every spring at rest), both halves [J]:
-/// the machine's work int F dd, the energy the springs and arms store now, and what the
-/// dashpots dissipated, sum_j int sigma_j^2 / (E_j tau_j) dt dx. Each is summed spring by spring
-/// in closed form between the spring's events and the drive's changes of rate, apart from the
-/// others, so that machine_work = stored + dissipated_by_bulk closes to rounding. A free spring
-/// carries no load, so no work reaches it: what its dashpots dissipate while it creeps is the
-/// energy it stores less.
+/// the machine's work int F dd (int F dh at the end of a machine spring), the energy the springs
+/// and arms store now, and what the dashpots dissipated, sum_j int sigma_j^2 / (E_j tau_j) dt dx.
+/// Each is summed spring by spring in closed form between the spring's events and the drive's
+/// changes of rate, apart from the others, so that machine_work = stored + dissipated_by_bulk
+/// closes to rounding. A free spring carries no load, so no work reaches it: what its dashpots
+/// dissipate while it creeps is the energy it stores less.
 struct ViscoelasticRowEnergy {
   double machine_work = 0.0;
   double stored = 0.0;
@@ -109,6 +109,9 @@ class ViscoelasticRowDrive {
   ViscoelasticRowRun counts_;
 };
 
+/// Under a held force or machine end the springs are coupled through the depth: each event
+/// rebuilds d(t) (prony_load_drive.hpp) and is the first of all springs' against it; the
+/// machine's work and the pressed springs' dissipation are counted for all of them at once.
 /// Runs the segments from d = 0, t = 0 (every spring at rest), reporting at `sample_times`
 /// (ascending, within the segments' span). Events (a touch, a release) are located exactly in
 /// time, one spring's next event at a time in a queue: between events nothing loops over the

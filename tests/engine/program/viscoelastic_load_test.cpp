@@ -321,3 +321,85 @@ TEST(ViscoelasticLoad, MachineSpringFollowsItsVolterraEquation) {
 
 }  // namespace
 }  // namespace mdrsim
+
+namespace mdrsim {
+namespace {
+
+// Pressed under a fixed load, unloaded under it to a quarter (springs let go under the held
+// force), then retracted through a machine spring until separation.
+const std::string kHeldCycle =
+    "[material]\n"
+    "effective_modulus = 1.0e6\n"
+    "work_of_adhesion = 0.0\n"
+    "relaxation = [ { modulus = 9.0e6, time = 0.1 } ]\n"
+    "[profile]\n"
+    "type = \"parabolic\"\n"
+    "radius = 0.01\n"
+    "[[loading.stage]]\n"
+    "name = \"press\"\n"
+    "normal = { control = \"fixed-load\", to = 0.05 }\n"
+    "duration = 0.2\n"
+    "[[loading.stage]]\n"
+    "name = \"unload\"\n"
+    "normal = { control = \"fixed-load\", to = 0.0125 }\n"
+    "duration = 0.2\n"
+    "[[loading.stage]]\n"
+    "name = \"retract\"\n"
+    "normal = { control = \"compliant\", stiffness = 2000.0, by = -1.0e-4 }\n"
+    "until = \"separation\"\n"
+    "duration = 1.0\n"
+    "[discretization]\n"
+    "springs = 200\n";
+
+// An arm of tau = 1e-9 s relaxes at once: the held cycle is the elastic program of E*_inf (the
+// scene without `relaxation`, run by the elastic program's own row), every touch and let-go in
+// order with its force and time within 1e-6 of F0 and of the stage's second (the arm adds E_1 d'
+// tau to a load), each stage's end and work the same. With tau = 0.1 s the cycle creeps on while
+// it is unloaded and still separates, every stage balanced.
+TEST(ViscoelasticLoad, HeldCycleOfAFastArmIsTheElasticProgram) {
+  const LoadRun fast = run_load_text(replaced_text(kHeldCycle, "time = 0.1 }", "time = 1.0e-9 }"));
+  const LoadRun elastic = run_load_text(
+      replaced_text(kHeldCycle, "relaxation = [ { modulus = 9.0e6, time = 0.1 } ]\n", ""));
+  ASSERT_EQ(fast.events.states.size(), elastic.events.states.size());
+  EXPECT_EQ(fast.events.stages, elastic.events.stages);
+  for (std::size_t i = 0; i < fast.events.states.size(); ++i) {
+    const ContactSnapshot& f = fast.events.states[i];
+    const ContactSnapshot& e = elastic.events.states[i];
+    EXPECT_EQ(f.springs_in_contact, e.springs_in_contact) << i;
+    EXPECT_NEAR(f.normal_force, e.normal_force, 1e-6 * kLoad) << i;
+    EXPECT_NEAR(f.time, e.time, 1e-6) << i;
+  }
+  EXPECT_EQ(fast.result.status, RunStatus::no_instability);
+  EXPECT_EQ(fast.result.status, elastic.result.status);
+  ASSERT_EQ(fast.result.stages.size(), 3u);
+  ASSERT_EQ(elastic.result.stages.size(), 3u);
+  const double work_scale = std::abs(elastic.result.stages[0].work.normal);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const StageRecord& f = fast.result.stages[i];
+    const StageRecord& e = elastic.result.stages[i];
+    EXPECT_NEAR(f.end.normal_force, e.end.normal_force, 1e-6 * kLoad) << f.name;
+    EXPECT_NEAR(f.end.indentation, e.end.indentation,
+                1e-6 * elastic.result.stages[0].end.indentation)
+        << f.name;
+    EXPECT_NEAR(f.end.time, e.end.time, 1e-6) << f.name;
+    EXPECT_NEAR(f.work.normal, e.work.normal, 1e-6 * work_scale) << f.name;
+  }
+  expect_balanced_stages(fast.result);
+
+  const LoadRun slow = run_load_text(kHeldCycle);
+  EXPECT_EQ(slow.result.status, RunStatus::no_instability);
+  ASSERT_EQ(slow.result.stages.size(), 3u);
+  EXPECT_EQ(slow.result.stages[2].end.springs_in_contact, 0);
+  EXPECT_GT(slow.result.stages[1].end.indentation, slow.result.stages[0].end.indentation);
+  for (std::size_t i = 0; i < slow.events.states.size(); ++i) {
+    // Under the held load every touch and let-go sits at the held force of its time.
+    if (slow.events.stages[i] == "retract") continue;
+    const double t = slow.events.states[i].time;
+    const double held = t <= 0.2 ? kLoad * t / 0.2 : kLoad - 0.75 * kLoad * (t - 0.2) / 0.2;
+    EXPECT_NEAR(slow.events.states[i].normal_force, held, 1e-9 * kLoad) << i;
+  }
+  expect_balanced_stages(slow.result);
+}
+
+}  // namespace
+}  // namespace mdrsim
