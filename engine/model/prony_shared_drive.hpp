@@ -44,6 +44,8 @@ class SharedDriveArms {
   double arm_force(std::size_t j) const;
   /// sum_j arm_force(j) [N].
   double arm_force() const;
+  /// H_j [N/m]: the stress of an arm that has followed the drive from rest at the clock's start.
+  double history(std::size_t j) const { return history_[j]; }
   /// The members' total weight W [m].
   double weight() const { return weight_; }
   /// The set's clock [s].

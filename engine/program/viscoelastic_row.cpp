@@ -33,6 +33,19 @@ struct ViscoelasticSpringState {
   std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
 };
 
+/// A spring's key in a held segment's search (Row::index_held).
+struct HeldSpringKey {
+  double key;
+  std::size_t spring;
+  std::uint32_t version;
+};
+struct HeldKeyBelow {
+  bool operator()(const HeldSpringKey& a, const HeldSpringKey& b) const { return a.key < b.key; }
+};
+struct HeldKeyAbove {
+  bool operator()(const HeldSpringKey& a, const HeldSpringKey& b) const { return a.key > b.key; }
+};
+
 struct ViscoelasticRowEvent {
   double time;
   std::size_t spring;
@@ -85,6 +98,7 @@ class ViscoelasticRowDrive::Row {
       const double per_half = 2.0 * springs_.spacing * c.force_coefficient;
       held_ = RowHeldAxis{c.displacement_coefficient / per_half, segment.held->start / per_half,
                           segment.held->rate / per_half};
+      index_held();
       rebuild_motion();
       return;
     }
@@ -146,6 +160,7 @@ class ViscoelasticRowDrive::Row {
     }
     ++s.version;
     if (held_) {
+      index_change(k, release);
       rebuild_motion();
     } else {
       schedule(k);
@@ -332,6 +347,9 @@ class ViscoelasticRowDrive::Row {
     if (h > 0.0) {
       count_held_piece(h);
       arms_.advance_along(motion_, h);
+      for (std::size_t j = 0; j < own_squares_.size(); ++j) {
+        own_squares_[j] *= std::exp(-2.0 * h / springs_.terms[j].time);
+      }
       depth_ = motion_.at(h);
       motion_ = shifted(motion_, h);
     }
@@ -368,15 +386,79 @@ class ViscoelasticRowDrive::Row {
       const ExponentialSum common = arm_stress_under(0.0, term, motion_);
       const ExponentialSum own{0.0, 0.0, {{1.0, term.time}}};
       const ExponentialSum own_squared{0.0, 0.0, {{1.0, 0.5 * term.time}}};
-      double squares = 0.0;
-      for (const std::size_t k : pressed_) {
-        const double sigma = arms_.stress(state_[k].member, j);
-        squares += sigma * sigma;
-      }
+      // sum_i sigma_ij^2 = n H_j^2 + 2 H_j C_j + sum_i delta_ij^2, sigma_ij = H_j + delta_ij.
+      const double history = arms_.history(j);
+      const double own_sum = arms_.arm_force(j) - n * history;
+      const double squares =
+          n * history * history + 2.0 * history * own_sum + std::max(own_squares_[j], 0.0);
       const double integral = n * integral_of_product(common, common, h) +
                               2.0 * arms_.arm_force(j) * integral_of_product(common, own, h) +
                               squares * integral_of_product(own_squared, {1.0, 0.0, {}}, h);
       dissipated_.add(integral / (term.modulus * term.time));
+    }
+  }
+
+  // The held search's indexes. Each spring's next event is looked for only where a bound allows
+  // one, and the bounds are kept so that the springs that cannot act are never visited:
+  // - an untouched spring's gap g - d(s) reaches 0 only where g <= max d (its image, in order);
+  // - a pressed spring's load is q_i(s) = Q(s) - E* g_i + sum_j delta_ij exp(-s / tau_j), with
+  //   Q = E* d + sum_j (the arms' history H_j driven on) shared and delta_ij = sigma_ij - H_j its
+  //   own decaying part, so q_i >= min Q - K_i, K_i = E* g_i - sum_j min(delta_ij, 0): a key
+  //   that only falls as the deltas decay, kept in a max-heap (a stale key is too high, never
+  //   too low);
+  // - a free spring's surface g_i + w_i(t), w_i a sum of decays, is at least g_i + sum_k
+  //   min(a_ik(t), 0), a key that only rises, kept in a min-heap (a stale key is too low).
+
+  double pressed_key(std::size_t k) const {
+    double key = springs_.relaxed_modulus * springs_.images[k];
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      key -= std::min(arms_.stress(state_[k].member, j) - arms_.history(j), 0.0);
+    }
+    return key;
+  }
+
+  double free_key(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    double key = springs_.images[k];
+    for (const ExponentialDecay& d : s.creep->stretch_from(time_ - s.released_at).decays) {
+      key += std::min(d.amplitude, 0.0);
+    }
+    return key;
+  }
+
+  void index_held() {
+    untouched_by_image_.clear();
+    pressed_keys_ = {};
+    free_keys_ = {};
+    own_squares_.assign(springs_.terms.size(), 0.0);
+    for (std::size_t k = 0; k < state_.size(); ++k) {
+      const ViscoelasticSpringState& s = state_[k];
+      if (s.phase == ViscoelasticSpringPhase::untouched) {
+        untouched_by_image_.insert({springs_.images[k], k});
+      } else if (s.phase == ViscoelasticSpringPhase::pressed) {
+        pressed_keys_.push({pressed_key(k), k, s.version});
+        for (std::size_t j = 0; j < own_squares_.size(); ++j) {
+          const double delta = arms_.stress(s.member, j) - arms_.history(j);
+          own_squares_[j] += delta * delta;
+        }
+      } else {
+        free_keys_.push({free_key(k), k, s.version});
+      }
+    }
+  }
+
+  /// Spring k was just touched or released (its stresses then in counted_stresses).
+  void index_change(std::size_t k, bool release) {
+    const ViscoelasticSpringState& s = state_[k];
+    for (std::size_t j = 0; j < own_squares_.size(); ++j) {
+      const double delta = s.counted_stresses[j] - arms_.history(j);
+      own_squares_[j] += release ? -delta * delta : delta * delta;
+    }
+    if (release) {
+      free_keys_.push({free_key(k), k, s.version});
+    } else {
+      untouched_by_image_.erase({springs_.images[k], k});
+      pressed_keys_.push({pressed_key(k), k, s.version});
     }
   }
 
@@ -450,21 +532,39 @@ class ViscoelasticRowDrive::Row {
   }
 
   /// The first event of any spring from now within the segment: the springs at the contact's
-  /// edge first (their times bound the search), then every spring whose bounds allow one.
-  std::optional<ViscoelasticRowEvent> held_next_event() const {
+  /// edge first (their times bound the search), then the springs the indexes name as able to
+  /// act before the best so far, each checked by its own bounds and then exactly.
+  std::optional<ViscoelasticRowEvent> held_next_event() {
     const double span = end_ - time_;
     const ExponentialSum shared = shared_load();
+    ExponentialSum history_load{
+        springs_.relaxed_modulus * motion_.constant, springs_.relaxed_modulus * motion_.slope, {}};
+    for (const ExponentialDecay& d : motion_.decays) {
+      history_load.decays.push_back({springs_.relaxed_modulus * d.amplitude, d.time});
+    }
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      const ExponentialSum h = arm_stress_under(arms_.history(j), springs_.terms[j], motion_);
+      history_load.constant += h.constant;
+      history_load.decays.insert(history_load.decays.end(), h.decays.begin(), h.decays.end());
+    }
     std::optional<double> best;
     std::size_t best_k = 0;
     double bounded_limit = -1.0;
-    ExponentialSumBounds depth{0.0, 0.0}, shared_bounds{0.0, 0.0};
-    const auto offer = [&](std::size_t k) {
+    ExponentialSumBounds depth{0.0, 0.0}, shared_bounds{0.0, 0.0}, history_bounds{0.0, 0.0};
+    // A key within rounding of its bound is looked at.
+    const auto slack = [](double x) { return 1e-12 * std::abs(x); };
+    const auto bound = [&] {
       const double limit = best ? *best : span;
       if (limit != bounded_limit) {
         depth = bounds_over(motion_, limit);
         shared_bounds = bounds_over(shared, limit);
+        history_bounds = bounds_over(history_load, limit);
         bounded_limit = limit;
       }
+      return limit;
+    };
+    const auto offer = [&](std::size_t k) {
+      const double limit = bound();
       if (!held_may_act(k, limit, depth, shared_bounds)) return;
       const auto delay = held_delay(k, limit, shared);
       if (delay && (!best || *delay < *best || (*delay == *best && k < best_k))) {
@@ -478,7 +578,35 @@ class ViscoelasticRowDrive::Row {
         if (k < state_.size()) offer(k);
       }
     }
-    for (std::size_t k = 0; k < state_.size(); ++k) offer(k);
+    for (const auto& [image, k] : untouched_by_image_) {
+      bound();
+      if (image > depth.hi + slack(depth.hi)) break;
+      offer(k);
+    }
+    std::vector<HeldSpringKey> looked;
+    while (!pressed_keys_.empty()) {
+      bound();
+      const HeldSpringKey top = pressed_keys_.top();
+      if (top.key < history_bounds.lo - slack(history_bounds.lo)) break;
+      pressed_keys_.pop();
+      if (top.version != state_[top.spring].version) continue;
+      const double key = pressed_key(top.spring);
+      looked.push_back({key, top.spring, top.version});
+      if (key >= history_bounds.lo - slack(history_bounds.lo)) offer(top.spring);
+    }
+    for (const HeldSpringKey& key : looked) pressed_keys_.push(key);
+    looked.clear();
+    while (!free_keys_.empty()) {
+      bound();
+      const HeldSpringKey top = free_keys_.top();
+      if (top.key > depth.hi + slack(depth.hi)) break;
+      free_keys_.pop();
+      if (top.version != state_[top.spring].version) continue;
+      const double key = free_key(top.spring);
+      looked.push_back({key, top.spring, top.version});
+      if (key <= depth.hi + slack(depth.hi)) offer(top.spring);
+    }
+    for (const HeldSpringKey& key : looked) free_keys_.push(key);
     if (!best) return std::nullopt;
     return ViscoelasticRowEvent{time_ + *best, best_k, state_[best_k].version};
   }
@@ -498,7 +626,11 @@ class ViscoelasticRowDrive::Row {
   double rate_ = 0.0;
   double end_ = 0.0;
   double end_depth_ = 0.0;
-  std::optional<RowHeldAxis> held_;  ///< set in a held segment
+  std::optional<RowHeldAxis> held_;                              ///< set in a held segment
+  std::set<std::pair<double, std::size_t>> untouched_by_image_;  ///< in a held segment
+  std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyBelow> pressed_keys_;
+  std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyAbove> free_keys_;
+  std::vector<double> own_squares_;  ///< sum_i delta_ij^2 over the pressed springs [N^2/m^2]
   ExponentialSum motion_;            ///< the depth from now in a held segment [m]
   CompensatedSum machine_work_;      ///< [J/m]
   CompensatedSum dissipated_;        ///< [J/m]
