@@ -38,12 +38,19 @@ struct HeldSpringKey {
   double key;
   std::size_t spring;
   std::uint32_t version;
+  double valid_until = HUGE_VAL;  ///< [s]: a free spring's key bounds it until then
+  std::uint32_t generation = 0;   ///< a free spring's keys are renewed: older ones are stale
 };
 struct HeldKeyBelow {
   bool operator()(const HeldSpringKey& a, const HeldSpringKey& b) const { return a.key < b.key; }
 };
 struct HeldKeyAbove {
   bool operator()(const HeldSpringKey& a, const HeldSpringKey& b) const { return a.key > b.key; }
+};
+struct HeldKeyExpiresLater {
+  bool operator()(const HeldSpringKey& a, const HeldSpringKey& b) const {
+    return a.valid_until > b.valid_until;
+  }
 };
 
 struct ViscoelasticRowEvent {
@@ -417,19 +424,40 @@ class ViscoelasticRowDrive::Row {
     return key;
   }
 
-  double free_key(std::size_t k) const {
+  /// A free spring's surface g + w over the next `horizon` [s] is at least this: each decay of w
+  /// at its lower end.
+  double free_key(std::size_t k, double horizon) const {
     const ViscoelasticSpringState& s = state_[k];
     double key = springs_.images[k];
     for (const ExponentialDecay& d : s.creep->stretch_from(time_ - s.released_at).decays) {
-      key += std::min(d.amplitude, 0.0);
+      key += std::min(d.amplitude, d.amplitude * std::exp(-horizon / d.time));
     }
     return key;
+  }
+
+  /// A free spring's key is kept for a quarter of the fastest retardation time (so that the
+  /// part of its surface still pressed in counts), renewed when it runs out.
+  double free_key_horizon() const { return 0.25 / modes_->rates().back(); }
+
+  void push_free_key(std::size_t k, double horizon) {
+    const std::uint32_t generation = ++free_generation_[k];
+    const HeldSpringKey entry{free_key(k, horizon), k, state_[k].version, time_ + horizon,
+                              generation};
+    free_keys_.push(entry);
+    free_expiry_.push(entry);
+  }
+
+  bool free_key_is_current(const HeldSpringKey& entry) const {
+    return entry.version == state_[entry.spring].version &&
+           entry.generation == free_generation_[entry.spring];
   }
 
   void index_held() {
     untouched_by_image_.clear();
     pressed_keys_ = {};
     free_keys_ = {};
+    free_expiry_ = {};
+    free_generation_.resize(state_.size(), 0);
     own_squares_.assign(springs_.terms.size(), 0.0);
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
@@ -442,7 +470,7 @@ class ViscoelasticRowDrive::Row {
           own_squares_[j] += delta * delta;
         }
       } else {
-        free_keys_.push({free_key(k), k, s.version});
+        push_free_key(k, free_key_horizon());
       }
     }
   }
@@ -455,7 +483,7 @@ class ViscoelasticRowDrive::Row {
       own_squares_[j] += release ? -delta * delta : delta * delta;
     }
     if (release) {
-      free_keys_.push({free_key(k), k, s.version});
+      push_free_key(k, free_key_horizon());
     } else {
       untouched_by_image_.erase({springs_.images[k], k});
       pressed_keys_.push({pressed_key(k), k, s.version});
@@ -596,15 +624,21 @@ class ViscoelasticRowDrive::Row {
     }
     for (const HeldSpringKey& key : looked) pressed_keys_.push(key);
     looked.clear();
+    // Keys that run out before the search's end are renewed over it first.
+    const double reach = bound();
+    while (!free_expiry_.empty() && free_expiry_.top().valid_until < time_ + reach) {
+      const HeldSpringKey top = free_expiry_.top();
+      free_expiry_.pop();
+      if (free_key_is_current(top)) push_free_key(top.spring, std::max(free_key_horizon(), reach));
+    }
     while (!free_keys_.empty()) {
       bound();
       const HeldSpringKey top = free_keys_.top();
       if (top.key > depth.hi + slack(depth.hi)) break;
       free_keys_.pop();
-      if (top.version != state_[top.spring].version) continue;
-      const double key = free_key(top.spring);
-      looked.push_back({key, top.spring, top.version});
-      if (key <= depth.hi + slack(depth.hi)) offer(top.spring);
+      if (!free_key_is_current(top)) continue;
+      looked.push_back(top);
+      offer(top.spring);
     }
     for (const HeldSpringKey& key : looked) free_keys_.push(key);
     if (!best) return std::nullopt;
@@ -630,6 +664,8 @@ class ViscoelasticRowDrive::Row {
   std::set<std::pair<double, std::size_t>> untouched_by_image_;  ///< in a held segment
   std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyBelow> pressed_keys_;
   std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyAbove> free_keys_;
+  std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyExpiresLater> free_expiry_;
+  std::vector<std::uint32_t> free_generation_;
   std::vector<double> own_squares_;  ///< sum_i delta_ij^2 over the pressed springs [N^2/m^2]
   ExponentialSum motion_;            ///< the depth from now in a held segment [m]
   CompensatedSum machine_work_;      ///< [J/m]
