@@ -1,4 +1,4 @@
-// The viscoelastic row's event loop: a queue of each spring's next touch or release.
+// The viscoelastic row's event loop: each spring's next touch or release, queued or indexed.
 #include "engine/program/viscoelastic_row.hpp"
 
 #include <algorithm>
