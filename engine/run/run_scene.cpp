@@ -23,6 +23,7 @@
 #include "engine/continuum/run_dugdale_continuum.hpp"
 #include "engine/events/cascade_buffer.hpp"
 #include "engine/model/criterion_contract.hpp"
+#include "engine/program/rate_law_row.hpp"
 #include "engine/program/run_program.hpp"
 #include "engine/program/run_viscoelastic_program.hpp"
 #include "engine/pull_off/pull_off.hpp"
@@ -116,8 +117,12 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
                         "discretization.rtol refines the row until it is resolved"};
   const bool adhesive = scene.material.adhesive();
-  for (auto w : {never_in_contact(result, row), unresolved_critical(result, row),
-                 unresolved_smooth_peel(result, row, adhesive)}) {
+  // The rate law's front loses the contact at the axis, where the last spring lets go: a
+  // critical point of no springs that no row resolves better.
+  const bool at_axis = scene.front_speed_law.has_value();
+  for (auto w :
+       {never_in_contact(result, row), at_axis ? std::nullopt : unresolved_critical(result, row),
+        unresolved_smooth_peel(result, row, adhesive)}) {
     if (w) result.warnings.push_back(std::move(*w));
   }
   if (!status_resolved(result)) result.warnings.push_back(cannot_tell_status(result));
@@ -168,6 +173,8 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
 RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
   // One row of viscoelastic springs (the relaxation reader refuses rtol and Richardson).
   if (scene.material.relaxes()) return run_viscoelastic_program(scene, observers);
+  // The rate law's row (front_speed_reader refuses rtol and Richardson with it).
+  if (scene.front_speed_law) return run_rate_law_row(scene, observers);
   RunResult result;
   switch (scene.plan.driver) {
     case RouteDriver::rtol:

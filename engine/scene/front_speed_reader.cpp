@@ -62,11 +62,21 @@ void refuse_outside_front_speed_scope(const Scene& scene, const std::string& at)
                                          printable(stage.name)));
     }
   }
-  if (scene.plan.engine != RouteEngine::continuum) {
+  if (scene.plan.engine == RouteEngine::continuum) return;
+  // The program row: one plain row by the event method, an elastic bulk.
+  if (scene.solver.method != SolverMethod::event) {
     refuse_front_speed(at,
-                       "runs on the continuum route only so far: give solver.method = "
-                       "\"continuum\" or discretization.rtol");
+                       "runs on the row with solver.method = \"event\" (or on the continuum "
+                       "route: solver.method = \"continuum\")");
   }
+  if (scene.plan.driver != RouteDriver::one_row) {
+    refuse_front_speed(
+        at, fmt::format("is not yet taken with {} on the row: give "
+                        "solver.method = \"continuum\" with discretization.rtol",
+                        scene.plan.driver == RouteDriver::rtol ? "discretization.rtol"
+                                                               : "discretization.extrapolation"));
+  }
+  if (m.relaxes()) refuse_front_speed(at, "is not yet taken with material.relaxation");
 }
 
 }  // namespace mdrsim

@@ -180,14 +180,13 @@ TEST(FrontSpeedReader, RefusesWhatItDoesNotTakeYet) {
                    std::string(kRateLawAt) +
                        "a program whose every stage has duration or speed is needed with "
                        "detachment.front_speed_law");
-  // The spring rows.
+  // The spring rows take the event method only (tests/engine/program/rate_law_row_test.cpp).
   EXPECT_THROW_MSG(
-      test::build_scene_text(rate_law_scene(
-          1.0, 1.0, "[solver]\nmethod = \"event\"\n[discretization]\nsprings = 100\n")),
+      test::build_scene_text(rate_law_scene(1.0, 1.0, "[solver]\nmethod = \"stepping\"\n")),
       SceneError,
       std::string(kRateLawAt) +
-          "runs on the continuum route only so far: give solver.method = \"continuum\" or "
-          "discretization.rtol" +
+          "runs on the row with solver.method = \"event\" (or on the continuum route: "
+          "solver.method = \"continuum\")" +
           scope);
   // Friction (on its own the scene would take the row; the law's scope is checked first).
   EXPECT_THROW_MSG(
