@@ -32,7 +32,6 @@
 #include "engine/base/hess_scale.hpp"
 #include "engine/model/gluing_depth.hpp"
 #include "engine/program/run_program.hpp"
-#include "engine/scene/scene_error.hpp"
 
 namespace mdrsim {
 namespace {
@@ -123,13 +122,6 @@ class RateLawRow {
     stage_start_ = t_;
     stage_depth_ = d_;
     drive_ = drive;
-    if (drive.rate > 0.0 && let_go_ever_ && !scene_.program->rebinding) {
-      throw SceneError(fmt::format(
-          "loading: stage '{}' presses the contact again after springs let go: without "
-          "loading.rebinding = true they push back unglued, which the rate law's row does not "
-          "follow (docs/rate_law.md)",
-          printable(stage.name)));
-    }
     const bool until_separation = !std::isfinite(drive.end_time);
     for (;;) {
       double next_glue = std::numeric_limits<double>::infinity();
@@ -160,6 +152,7 @@ class RateLawRow {
   long long root_iterations() const { return root_iterations_; }
   std::int64_t let_gos() const { return let_gos_; }
   const std::optional<ContactSnapshot>& peak() const { return peak_; }
+  const std::vector<JumpRecord>& jumps() const { return jumps_; }
   /// Keeps `s` as the peak where it is the most tensile state so far.
   void note(const ContactSnapshot& s) {
     if (s.normal_force < 0.0 && (!peak_ || s.normal_force < peak_->normal_force)) peak_ = s;
@@ -176,15 +169,31 @@ class RateLawRow {
   /// Glues every spring the advancing limit takes at d (a cascade at touch), then places the
   /// front on the continuum's advancing front between the outermost glued spring and the next.
   void glue_due() {
+    const ContactSnapshot before = snapshot();
+    std::int64_t glued_now = 0;
     while (m_ < n_ && d_ >= gluing_depth_of(m_ + 1)) {
       ++m_;
+      ++glued_now;
       const double e = g(m_) - d_;
       const double surface = 2.0 * std::numbers::pi * x(m_) * work_of_adhesion_ * dx_;
       surface_ -= surface;
       glue_losses_ += surface - modulus_ * dx_ * e * e;
       const ContactSnapshot s = snapshot();
       note(s);
-      observers_.emit({.kind = EventKind::spring_glued, .state = s, .stage = stage_});
+      Event glued{.kind = EventKind::spring_glued, .state = s, .stage = stage_};
+      glued.in_cascade = glued_now > 1;
+      observers_.emit(glued);
+    }
+    if (glued_now > 1) {
+      // Several springs at one depth (the jump-in at touch): a jump, as the program row has it.
+      const ContactSnapshot after = snapshot();
+      jumps_.push_back({.stage = std::string(stage_),
+                        .inward = true,
+                        .critical = before,
+                        .after = after,
+                        .springs = glued_now,
+                        .glued_springs = glued_now});
+      observers_.emit({.kind = EventKind::jump, .state = after, .stage = stage_});
     }
     if (m_ == 0) return;
     a_ = std::max(a_, x(m_));
@@ -213,7 +222,6 @@ class RateLawRow {
     front_losses_ += modulus_ * dx_ * stretch * stretch - surface;
     --m_;
     ++let_gos_;
-    let_go_ever_ = true;
     if (m_ == 0) {
       a_ = 0.0;
       lost_at_ = snapshot();
@@ -421,7 +429,6 @@ class RateLawRow {
   double stage_start_ = 0.0;
   double stage_depth_ = 0.0;
   RowStageDrive drive_;
-  bool let_go_ever_ = false;
 
   double machine_work_ = 0.0;
   double surface_ = 0.0;
@@ -431,6 +438,7 @@ class RateLawRow {
   long long root_iterations_ = 0;
   std::int64_t let_gos_ = 0;
   std::optional<ContactSnapshot> peak_;
+  std::vector<JumpRecord> jumps_;
   ContactSnapshot lost_at_;
 };
 
@@ -524,6 +532,7 @@ RunResult run_rate_law_row(const Scene& scene, const ObserverList& observers) {
   result.work = total;
   result.energy = total_energy;
   result.peak = row.peak();
+  result.jumps = row.jumps();
   result.counts.events = row.let_gos();
   result.counts.steps = row.steps();
   result.counts.root_iterations = row.root_iterations();
