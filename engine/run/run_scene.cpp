@@ -11,6 +11,7 @@
 #include "engine/accuracy/adaptive_resolution.hpp"
 #include "engine/accuracy/dugdale_rows.hpp"
 #include "engine/accuracy/program_resolution.hpp"
+#include "engine/accuracy/rate_law_rows.hpp"
 #include "engine/accuracy/resolution_warning.hpp"
 #include "engine/accuracy/row_refinement.hpp"
 #include "engine/accuracy/row_sequence.hpp"
@@ -173,8 +174,17 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
 RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
   // One row of viscoelastic springs (the relaxation reader refuses rtol and Richardson).
   if (scene.material.relaxes()) return run_viscoelastic_program(scene, observers);
-  // The rate law's row (front_speed_reader refuses rtol and Richardson with it).
-  if (scene.front_speed_law) return run_rate_law_row(scene, observers);
+  if (scene.front_speed_law) {
+    switch (scene.plan.driver) {
+      case RouteDriver::rtol:
+        return run_rate_law_rtol(scene, *scene.discretization.rtol, observers);
+      case RouteDriver::richardson:
+        return run_rate_law_richardson(scene, observers);
+      case RouteDriver::one_row:
+        break;
+    }
+    return run_rate_law_row(scene, observers);
+  }
   RunResult result;
   switch (scene.plan.driver) {
     case RouteDriver::rtol:

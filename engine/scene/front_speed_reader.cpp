@@ -63,18 +63,11 @@ void refuse_outside_front_speed_scope(const Scene& scene, const std::string& at)
     }
   }
   if (scene.plan.engine == RouteEngine::continuum) return;
-  // The program row: one plain row by the event method, an elastic bulk.
+  // The program row: the event method's rows, an elastic bulk.
   if (scene.solver.method != SolverMethod::event) {
     refuse_front_speed(at,
                        "runs on the row with solver.method = \"event\" (or on the continuum "
                        "route: solver.method = \"continuum\")");
-  }
-  if (scene.plan.driver != RouteDriver::one_row) {
-    refuse_front_speed(
-        at, fmt::format("is not yet taken with {} on the row: give "
-                        "solver.method = \"continuum\" with discretization.rtol",
-                        scene.plan.driver == RouteDriver::rtol ? "discretization.rtol"
-                                                               : "discretization.extrapolation"));
   }
   if (m.relaxes()) refuse_front_speed(at, "is not yet taken with material.relaxation");
   // A press after a stage in which the front may have receded (a pull, or a hold: the front
