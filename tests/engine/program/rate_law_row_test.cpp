@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "engine/events/observer.hpp"
 #include "engine/reference/jkr_scenario.hpp"
@@ -147,6 +148,37 @@ TEST(RateLawRow, AgreesWithTheContinuumRoute) {
         relative_error(row.jumps[0].after.normal_force, continuum.jumps[0].after.normal_force),
         2.0 / 4000);
   }
+}
+
+/// Keeps the let-gos' events.
+class LetGoEvents : public Observer {
+ public:
+  void on_event(const Event& event) override {
+    if (event.kind == EventKind::spring_detached) events.push_back(event);
+  }
+  std::vector<Event> events;
+};
+
+// One spring_detached event per let-go (the --trajectory's rows), outermost first, each with its
+// time, in order, from the approach's end to the lost contact's time.
+TEST(RateLawRow, EachLetGoIsAnEventWithItsTime) {
+  LetGoEvents let_gos;
+  ObserverList observers;
+  observers.add(let_gos);
+  const RunResult r =
+      run_scene(test::build_scene_text(row_rate_law_scene(1.0, 0.5, row_of(1000))), observers);
+  ASSERT_TRUE(r.critical);
+  ASSERT_EQ(let_gos.events.size(), 1000u);
+  EXPECT_EQ(r.counts.events, 1000);
+  double before = kPress;
+  for (std::size_t k = 0; k < let_gos.events.size(); ++k) {
+    const Event& e = let_gos.events[k];
+    EXPECT_EQ(e.spring, static_cast<std::int64_t>(1000 - k));
+    EXPECT_EQ(e.stage, "retract");
+    EXPECT_GE(e.state.time, before);
+    before = e.state.time;
+  }
+  EXPECT_EQ(let_gos.events.back().state.time, r.critical->time);
 }
 
 // Each stage's energy: machine work = stored change + surface change + jump_losses, where the
