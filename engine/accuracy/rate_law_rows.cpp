@@ -1,13 +1,16 @@
-// Rows of the rate law's row combined: Richardson across N/2, N and 2N springs, and rtol by
+// Rows of the rate law's row combined: Richardson across N/4 ... 2N springs, and rtol by
 // doubling the springs until the estimates meet it.
 #include "engine/accuracy/rate_law_rows.hpp"
 
 #include <fmt/format.h>
+#include <array>
+#include <span>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,8 +31,9 @@ RunResult rate_law_row_of(const Scene& scene, std::int64_t springs, const Observ
 
 /// Whether the rows end alike (status, stages, where the contact was lost, a peak), so that
 /// their values are the same quantities.
-bool rate_law_rows_alike(const RunResult& a, const RunResult& b, const RunResult& c) {
-  for (const RunResult* r : {&a, &b}) {
+bool rate_law_rows_alike(std::span<const RunResult> rows) {
+  const RunResult& c = rows.back();
+  for (const RunResult* r = rows.data(); r != &c; ++r) {
     if (r->status != c.status || r->stages.size() != c.stages.size() ||
         r->critical_stage != c.critical_stage || r->peak.has_value() != c.peak.has_value()) {
       return false;
@@ -38,19 +42,25 @@ bool rate_law_rows_alike(const RunResult& a, const RunResult& b, const RunResult
   return true;
 }
 
-/// A value of the rows of N/2, N and 2N springs, whose error is c / N: extrapolated,
-/// 2 Q_2N - Q_N with twice the change from 2 Q_N - Q_N/2 as its estimate (as a program's
-/// Richardson has it: what is left is the peak's place between let-gos, which does not fall
-/// smoothly with N); else the finest row's own with |Q_2N - Q_N| (its error, for a pure c / N).
+/// A value of the rows of N/4, N/2, N and 2N springs, whose error is c / N plus what is left of
+/// the peak's place between let-gos, which does not fall smoothly with N: extrapolated,
+/// 2 Q_2N - Q_N with twice the larger change of the last two extrapolations as its estimate (the
+/// last change alone can vanish by chance: at beta = 100, n = 1/2 and 1000 springs it was 2.3
+/// times below the error); plain, the finest row's own with the larger of |Q_2N - Q_N| and
+/// |Q_N - Q_N/2| / 2 (its error, for a pure c / N).
 struct RateLawValue {
   double value = 0.0;
   double error = 0.0;
 };
-RateLawValue rate_law_value(double coarse, double middle, double fine, bool extrapolate) {
-  if (!extrapolate) return {fine, std::abs(fine - middle)};
+RateLawValue rate_law_value(double coarsest, double coarse, double middle, double fine,
+                            bool extrapolate) {
+  if (!extrapolate) {
+    return {fine, std::max(std::abs(fine - middle), 0.5 * std::abs(middle - coarse))};
+  }
   const double finer = 2.0 * fine - middle;
   const double coarser = 2.0 * middle - coarse;
-  return {finer, 2.0 * std::abs(finer - coarser)};
+  const double coarsest_pair = 2.0 * coarse - coarsest;
+  return {finer, 2.0 * std::max(std::abs(finer - coarser), std::abs(coarser - coarsest_pair))};
 }
 
 struct RateLawCombined {
@@ -58,11 +68,15 @@ struct RateLawCombined {
   bool met = true;  ///< every estimate meets rtol (of the call)
 };
 
-/// The finest row `fine` with the peak tension, the stages' end forces and works and the total
-/// work replaced by their values across `coarse`, `middle` and `fine`, and their estimates.
-RateLawCombined combine_rate_law_rows(const RunResult& coarse, const RunResult& middle,
-                                      const RunResult& fine, bool extrapolate, double rtol) {
-  RateLawCombined out{fine, true};
+/// The finest of four rows (N/4, N/2, N, 2N springs) with the peak tension, the stages' end
+/// forces and works and the total work replaced by their values across the rows, and their
+/// estimates.
+RateLawCombined combine_rate_law_rows(std::span<const RunResult, 4> rows, bool extrapolate,
+                                      double rtol) {
+  const RunResult& coarsest = rows[0];
+  const RunResult& coarse = rows[1];
+  const RunResult& middle = rows[2];
+  RateLawCombined out{rows[3], true};
   RunResult& r = out.result;
   double force_scale = r.peak ? std::abs(r.peak->normal_force) : 0.0;
   double work_scale = 1e-300;
@@ -74,8 +88,9 @@ RateLawCombined combine_rate_law_rows(const RunResult& coarse, const RunResult& 
   // force (JKR's zero-force state), where its relative error has no meaning.
   const double force_floor = 1e-300 + force_scale;
   if (r.peak) {
-    const RateLawValue v = rate_law_value(coarse.peak->normal_force, middle.peak->normal_force,
-                                          r.peak->normal_force, extrapolate);
+    const RateLawValue v =
+        rate_law_value(coarsest.peak->normal_force, coarse.peak->normal_force,
+                       middle.peak->normal_force, r.peak->normal_force, extrapolate);
     r.peak->normal_force = v.value;
     r.accuracy.peak_error_estimate = v.error;
     out.met = out.met && meets_rtol(v.error, v.value, rtol, force_floor);
@@ -84,13 +99,15 @@ RateLawCombined combine_rate_law_rows(const RunResult& coarse, const RunResult& 
   AxisWork total_error;
   for (std::size_t k = 0; k < r.stages.size(); ++k) {
     StageRecord& s = r.stages[k];
+    const StageRecord& sa = coarsest.stages[k];
     const StageRecord& sc = coarse.stages[k];
     const StageRecord& sm = middle.stages[k];
-    const RateLawValue f =
-        rate_law_value(sc.end.normal_force, sm.end.normal_force, s.end.normal_force, extrapolate);
+    const RateLawValue f = rate_law_value(sa.end.normal_force, sc.end.normal_force,
+                                          sm.end.normal_force, s.end.normal_force, extrapolate);
     const RateLawValue w =
-        rate_law_value(sc.work.normal, sm.work.normal, s.work.normal, extrapolate);
-    const RateLawValue d = rate_law_value(sc.work.front, sm.work.front, s.work.front, extrapolate);
+        rate_law_value(sa.work.normal, sc.work.normal, sm.work.normal, s.work.normal, extrapolate);
+    const RateLawValue d =
+        rate_law_value(sa.work.front, sc.work.front, sm.work.front, s.work.front, extrapolate);
     s.end.normal_force = f.value;
     s.normal_force_error_estimate = f.error;
     s.work.normal = w.value;
@@ -109,7 +126,7 @@ RateLawCombined combine_rate_law_rows(const RunResult& coarse, const RunResult& 
   r.accuracy.work_error_estimate = total_error;
   r.accuracy.covers = {"peak_adhesion.normal_force", "stages.end.normal_force", "stages.work",
                        "work"};
-  r.accuracy.rows = {coarse.springs, middle.springs, fine.springs};
+  r.accuracy.rows = {coarsest.springs, coarse.springs, middle.springs, r.springs};
   return out;
 }
 
@@ -117,23 +134,22 @@ RateLawCombined combine_rate_law_rows(const RunResult& coarse, const RunResult& 
 
 RunResult run_rate_law_richardson(const Scene& scene, const ObserverList& observers) {
   const std::int64_t n = scene.springs;
-  const RunResult coarse = rate_law_row_of(scene, n / 2, {});
-  const RunResult middle = rate_law_row_of(scene, n, {});
-  const RunResult fine = rate_law_row_of(scene, 2 * n, observers);
+  const std::array<RunResult, 4> rows{
+      rate_law_row_of(scene, n / 4, {}), rate_law_row_of(scene, n / 2, {}),
+      rate_law_row_of(scene, n, {}), rate_law_row_of(scene, 2 * n, observers)};
   RunResult result;
-  if (rate_law_rows_alike(coarse, middle, fine)) {
-    result = combine_rate_law_rows(coarse, middle, fine, true, 0.0).result;
+  if (rate_law_rows_alike(rows)) {
+    result = combine_rate_law_rows(rows, true, 0.0).result;
   } else {
-    result = fine;
-    result.accuracy.rows = {n / 2, n, 2 * n};
+    result = rows.back();
+    result.accuracy.rows = {n / 4, n / 2, n, 2 * n};
     result.warnings.push_back(fmt::format(
-        "richardson: the rows of {}, {} and {} springs end differently; the finest row is "
+        "richardson: the rows of {}, {}, {} and {} springs end differently; the finest row is "
         "reported as it is",
-        n / 2, n, 2 * n));
+        n / 4, n / 2, n, 2 * n));
   }
-  result.counts = coarse.counts;
-  result.counts += middle.counts;
-  result.counts += fine.counts;
+  result.counts = RunCounts{};
+  for (const RunResult& row : rows) result.counts += row.counts;
   result.accuracy.route = Accuracy::Route::richardson;
   result.accuracy.rtol_met = true;
   return result;
@@ -143,17 +159,18 @@ RunResult run_rate_law_rtol(const Scene& scene, double rtol, const ObserverList&
   const bool extrapolate =
       scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::none;
   const std::int64_t cap = scene.discretization.max_row_springs;
-  std::vector<RunResult> rows;  // the last three
+  std::vector<RunResult> rows;  // the last four
   RunCounts counts;
   std::int64_t springs = kFirstRateLawSprings;
   RunResult result;
   for (;;) {
     rows.push_back(rate_law_row_of(scene, springs, {}));
     counts += rows.back().counts;
-    if (rows.size() > 3) rows.erase(rows.begin());
+    if (rows.size() > 4) rows.erase(rows.begin());
     std::optional<RateLawCombined> combined;
-    if (rows.size() == 3 && rate_law_rows_alike(rows[0], rows[1], rows[2])) {
-      combined = combine_rate_law_rows(rows[0], rows[1], rows[2], extrapolate, rtol);
+    if (rows.size() == 4 && rate_law_rows_alike(rows)) {
+      combined =
+          combine_rate_law_rows(std::span<const RunResult, 4>(rows.data(), 4), extrapolate, rtol);
       if (combined->met) {
         result = std::move(combined->result);
         result.accuracy.rtol_met = true;

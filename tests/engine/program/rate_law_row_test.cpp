@@ -233,12 +233,12 @@ TEST(RateLawRow, EnergyBalanceClosesPerStage) {
   EXPECT_GT(r.stages[3].end.springs_in_contact, hold.end.springs_in_contact);
 }
 
-// Richardson across rows of 500, 1000 and 2000 springs removes the row's c / N: the peak
+// Richardson across rows of 250, 500, 1000 and 2000 springs removes the row's c / N: the peak
 // within 1e-6 of the reference at every beta and n (measured: 1e-7 to 5.4e-7; the plain
-// 2000-spring row's error is up to 6e-4). Its estimate, twice the change from the coarser
-// pair's extrapolation, is no bound on what is left (the peak's place between let-gos, which
-// does not fall smoothly with N): the error is within 3 times it (measured: up to 2.3 times,
-// at beta = 100, n = 1/2; below it elsewhere).
+// 2000-spring row's error is up to 6e-4). What is left (the peak's place between let-gos) does
+// not fall smoothly with N, so the last extrapolation's change alone can vanish by chance (at
+// beta = 100, n = 1/2 it was 2.3 times below the error); the estimate, twice the larger change of
+// the last two extrapolations, bounds the error in every case.
 TEST(RateLawRow, RichardsonRemovesTheOneOverN) {
   const test::RateLawScales sc = test::rate_law_scales(kModulus, kRadius, kWork, kFrontSpeed);
   for (const double n : {1.0, 0.5}) {
@@ -264,13 +264,13 @@ TEST(RateLawRow, RichardsonRemovesTheOneOverN) {
           work_error / std::abs(ref.lost.dissipated * sc.energy),
           r.stages[1].work_error_estimate->front / std::abs(ref.lost.dissipated * sc.energy));
       EXPECT_LT(error, 1e-6 * std::abs(reference)) << beta << " " << n;
-      EXPECT_LE(error, 3.0 * *r.accuracy.peak_error_estimate) << beta << " " << n;
+      EXPECT_LE(error, *r.accuracy.peak_error_estimate) << beta << " " << n;
     }
   }
 }
 
 // rtol on the row doubles the springs until Richardson's estimates meet it: the peak within
-// rtol of the reference at 1e-3 (1024 springs) and 1e-5 (4096).
+// rtol of the reference at 1e-3 (2048 springs) and 1e-5 (8192).
 TEST(RateLawRow, RtolMeetsTheReference) {
   const test::RateLawScales sc = test::rate_law_scales(kModulus, kRadius, kWork, kFrontSpeed);
   const test::RateLawRetraction ref = test::rate_law_retraction(1.0, 0.5, 1e-10);
