@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/model/viscoelastic_edge.hpp"
 #include "engine/program/run_program.hpp"
+#include "engine/program/viscoelastic_jumps.hpp"
 #include "engine/program/viscoelastic_row.hpp"
 
 namespace mdrsim {
@@ -36,17 +38,18 @@ ViscoelasticStageDrive stage_drive(const Stage& stage, double held) {
   return drive;
 }
 
-ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s) {
-  ContactSnapshot c;
-  c.normal_control = s.depth;
-  c.indentation = s.depth;
-  // The contact's force is a sum of pressed springs' loads: none pressed, none at all.
-  c.normal_force = s.pressed > 0 ? s.force : 0.0;
-  c.contact_radius = s.contact_radius;
-  c.springs_in_contact = s.pressed;
-  c.glued_radius = 0.0;  // nothing glues
-  c.time = s.time;
-  return c;
+EventKind viscoelastic_event_kind(ViscoelasticRowChange change) {
+  switch (change) {
+    case ViscoelasticRowChange::touch:
+      return EventKind::spring_touched;
+    case ViscoelasticRowChange::release:
+      return EventKind::spring_lifted;
+    case ViscoelasticRowChange::glue:
+      return EventKind::spring_glued;
+    case ViscoelasticRowChange::let_go:
+      break;
+  }
+  return EventKind::spring_detached;
 }
 
 /// A stage until separation runs in pieces of its parameter's unit until the contact is lost;
@@ -76,14 +79,36 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
   }
   springs.images.push_back(spec.reference_image);
+  // The adhesive edge: the scene's criterion is built on the glassy material (a let-go is
+  // instantaneous), docs/viscoelastic.md.
+  const bool adhesive = scene.material.adhesive();
+  std::optional<ViscoelasticEdge> edge;
+  if (adhesive) {
+    edge = viscoelastic_edge(*scene.criterion, scene.material, springs.spacing,
+                             springs.images.size(), program.rebinding);
+    springs.edge = &*edge;
+  }
 
   ViscoelasticRowDrive drive(springs);
+  ViscoelasticJumps jumps;
   std::string_view stage_name;
+  const auto report_jump = [&](std::optional<JumpRecord> jump) {
+    if (!jump) return;
+    observers.emit({.kind = EventKind::jump, .state = jump->after, .stage = jump->stage});
+    result.jumps.push_back(std::move(*jump));
+  };
   const auto on_change = [&](ViscoelasticRowChange change, const ViscoelasticRowSample& s) {
-    observers.emit({.kind = change == ViscoelasticRowChange::touch ? EventKind::spring_touched
-                                                                   : EventKind::spring_lifted,
-                    .state = viscoelastic_snapshot(s),
-                    .stage = stage_name});
+    if (adhesive) {
+      report_jump(jumps.change(change, stage_name, drive.before_last_change(), drive.sample()));
+    }
+    Event event{.kind = viscoelastic_event_kind(change),
+                .state = viscoelastic_snapshot(s),
+                .stage = stage_name};
+    if (change == ViscoelasticRowChange::let_go) {
+      event.spring = s.glued;
+      event.in_cascade = jumps.cascading();
+    }
+    observers.emit(event);
   };
   std::vector<ViscoelasticRowSample> no_samples;
   ViscoelasticRowEnergy before = drive.energy();
@@ -116,7 +141,11 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       }
     }
     const ViscoelasticRowSample end = drive.sample();
-    ever_in_contact = ever_in_contact || drive.counts().touches > 0;
+    if (adhesive) {
+      report_jump(jumps.close());
+      jumps.observe(end);
+    }
+    ever_in_contact = ever_in_contact || drive.counts().touches + drive.counts().glues > 0;
     const ViscoelasticRowEnergy now = drive.energy();
     StageRecord record;
     record.name = stage.name;
@@ -127,7 +156,10 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     e.machine_work = record.work.normal;
     e.stored_change = now.stored - before.stored;
     e.dissipated_by_bulk = record.work.bulk;
-    e.residual = e.machine_work - e.stored_change - e.dissipated_by_bulk;
+    e.surface_change = now.surface - before.surface;
+    e.jump_losses = now.jump_losses - before.jump_losses;
+    e.residual =
+        e.machine_work - e.stored_change - e.surface_change - e.dissipated_by_bulk - e.jump_losses;
     record.energy = e;
     total += record.work;
     total_energy += e;
@@ -139,11 +171,19 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   }
   result.work = total;
   result.energy = total_energy;
-  result.counts.events = drive.counts().touches + drive.counts().releases;
+  result.counts.events = drive.counts().touches + drive.counts().releases + drive.counts().glues +
+                         drive.counts().let_gos;
   if (!result.stop_reason) {
     // Without glue the contact is lost at zero force: no critical point (docs/programs.md
-    // "How a program ends").
+    // "How a program ends"); a contact lost after its glue ends as the cascade that lost the
+    // glue decides.
     result.status = lost ? RunStatus::no_instability : RunStatus::completed;
+    if (lost && jumps.glue_loss()) {
+      ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
+    }
+  }
+  if (const auto& peak = jumps.most_tensile(); peak && peak->force < -spec.zero.force) {
+    result.peak = viscoelastic_snapshot(*peak);
   }
   return result;
 }

@@ -116,7 +116,10 @@ void drop_peak_that_never_pulls(const Scene& scene, RunResult& result) {
 void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
   const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
-                        "discretization.rtol refines the row until it is resolved"};
+                        scene.material.relaxes()
+                            ? "more discretization.springs resolve it (rtol is not yet taken "
+                              "with material.relaxation)"
+                            : "discretization.rtol refines the row until it is resolved"};
   const bool adhesive = scene.material.adhesive();
   // The rate law's front loses the contact at the axis, where the last spring lets go: a
   // critical point of no springs that no row resolves better.
