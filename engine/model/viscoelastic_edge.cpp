@@ -49,6 +49,18 @@ ViscoelasticEdge viscoelastic_edge(const DetachmentCriterion& glassy_criterion,
   return edge;
 }
 
+std::optional<double> reach_time(const FreeSpringCreep& creep, double t0, double reach, double rate,
+                                 double span, bool on_level) {
+  // The reach less the free surface: negative while apart, zero where they meet.
+  ExponentialSum apart = creep.stretch_from(t0);
+  for (ExponentialDecay& decay : apart.decays) decay.amplitude = -decay.amplitude;
+  apart.constant = reach - apart.constant;
+  apart.slope = rate - apart.slope;
+  // On the level: the level where the difference stands, to the bit, so that its side is
+  // read from where it goes.
+  return first_crossing(apart, on_level ? apart.at(0.0) : 0.0, span);
+}
+
 void glassy_step(std::span<double> stresses, std::span<const PronyTerm> terms, double step) {
   for (std::size_t j = 0; j < terms.size(); ++j) stresses[j] += terms[j].modulus * step;
 }

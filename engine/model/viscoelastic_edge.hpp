@@ -9,6 +9,7 @@
 
 #include "detachment/criterion.hpp"
 #include "engine/base/material.hpp"
+#include "engine/model/prony_creep.hpp"
 
 namespace mdrsim {
 
@@ -44,5 +45,13 @@ ViscoelasticEdge viscoelastic_edge(const DetachmentCriterion& glassy_criterion,
 /// The arm stresses [N/m] after the spring's stretch steps by `step` [m] at once: each arm's
 /// spring takes the whole step, sigma_j + E_j step.
 void glassy_step(std::span<double> stresses, std::span<const PronyTerm> terms, double step);
+
+/// The first s in (0, span] [s] at which the indenter, whose reach (its stretch at the spring
+/// plus the glue gap) [m] is `reach` at s = 0 and moves at `rate` [m/s], meets the surface of
+/// a free spring t0 [s] after its release, from the side of no contact. With `on_level` the
+/// two are taken to stand together at s = 0 (they do up to rounding): the meeting is then the
+/// one after they part, never one the rounding of the start makes up.
+std::optional<double> reach_time(const FreeSpringCreep& creep, double t0, double reach, double rate,
+                                 double span, bool on_level);
 
 }  // namespace mdrsim

@@ -119,6 +119,13 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   double held = 0.0;
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
+    if (adhesive) {
+      // The glue's changes settle in a few events per spring and stage; a stage that takes more
+      // than solver.max_events_per_spring stops, as an elastic program's does.
+      const ViscoelasticRowRun& c = drive.counts();
+      drive.limit_events(c.touches + c.releases + c.glues + c.let_gos +
+                         scene.solver.max_events_per_spring * n);
+    }
     const ViscoelasticStageDrive sd = stage_drive(stage, held);
     const double rate = sd.rate();
     if (!stage.until_separation) {
@@ -127,18 +134,26 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
       if (rate < 0.0) {
-        for (int piece = 0; piece < kMostSeparationPieces && !separated; ++piece) {
+        for (int piece = 0; piece < kMostSeparationPieces && !separated && !drive.limited();
+             ++piece) {
           separated = drive.run({sd.seconds, rate}, true, {}, no_samples, on_change);
         }
       }
       held = drive.sample().depth;
-      if (!separated) {
+      if (!separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
         result.warnings.push_back(fmt::format(
             "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
             "springs in contact): the program stops here",
             stage.name, drive.sample().pressed));
       }
+    }
+    if (drive.limited()) {
+      stop_at_limit(result, StopReason::max_events_per_spring);
+      result.warnings.push_back(fmt::format(
+          "stage '{}' took more than {} events per spring (solver.max_events_per_spring): the "
+          "program stops here",
+          stage.name, scene.solver.max_events_per_spring));
     }
     const ViscoelasticRowSample end = drive.sample();
     if (adhesive) {

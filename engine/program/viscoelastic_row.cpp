@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <queue>
 #include <set>
@@ -25,6 +26,7 @@ struct ViscoelasticSpringState {
   SharedDriveMember member;              ///< while pressed or glued
   std::optional<FreeSpringCreep> creep;  ///< while free
   double released_at = 0.0;              ///< [s]
+  double glued_at = -1.0;                ///< [s] the last glue; < 0: never glued
   /// The energy summed up to `counted_at` [s]: while in contact, the stretch [m] and arm stresses
   /// [N/m] then; while free, the energy it stored then [J/m].
   double counted_at = 0.0;
@@ -33,6 +35,10 @@ struct ViscoelasticSpringState {
   double counted_stored = 0.0;
   std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
 };
+
+/// The share of a let-go load within which a boundary spring's load is on it (a load summed
+/// from E* w and the arms rounds at a few eps of its terms).
+constexpr double kEdgeRounding = 64.0 * std::numeric_limits<double>::epsilon();
 
 struct ViscoelasticRowEvent {
   double time;
@@ -293,6 +299,7 @@ class ViscoelasticRowDrive::Row {
       surface_.add(-surface);
       jump_losses_.add(surface - (stored_of(stretch, stresses) - before));
       glued_.insert(k);
+      s.glued_at = time_;
       ++run.glues;
     } else {
       ++run.touches;
@@ -411,9 +418,16 @@ class ViscoelasticRowDrive::Row {
       if (boundary() != k) return std::nullopt;
       ExponentialSum load = load_over(s, stretch);
       const double level = -springs_.edge->let_go_loads[k];
-      const double now = load.at(0.0);
-      if (now < level || (now == level && load.slope_at(0.0) <= 0.0)) return 0.0;
-      return first_crossing(load, level, span);
+      // Beyond the threshold it goes now (a cascade), on it only if the tension grows. A spring
+      // that glued just now sits on it (at dgamma_a = dgamma, up to the rounding of loads summed
+      // from stresses far larger than it): it starts on it.
+      const double slack = load.at(0.0) - level;
+      const double slope = load.slope_at(0.0);
+      const bool on_it = s.glued_at == time_ || -slack <= kEdgeRounding * std::abs(level);
+      if (slack <= 0.0 && (slope < 0.0 || !on_it)) return 0.0;
+      // Within rounding below the level: the level is taken where the load stands, so that the
+      // crossing is the one back down, after the load has risen.
+      return first_crossing(load, slack < 0.0 ? load.at(0.0) : level, span);
     }
     if (s.phase == ViscoelasticSpringPhase::pressed) {
       ExponentialSum load = load_over(s, stretch);
@@ -431,16 +445,19 @@ class ViscoelasticRowDrive::Row {
       const double delay = -reach / rate_;
       return delay <= span ? std::optional<double>(delay) : std::nullopt;
     }
-    // A free spring is not taken back at the time it let go (with dgamma_a = dgamma its gap
-    // then is the glue gap itself).
+    // Within rounding of its free surface (of d and g, far larger than it) the indenter stands
+    // on it (with dgamma_a = dgamma a spring that let go stands at its glue gap), and takes it
+    // only as the motion leads on; a spring that glued and let go at this time is not taken
+    // back at it.
     const ExponentialSum free_surface = s.creep->stretch_from(time_ - s.released_at);
-    const double overlap = reach - free_surface.at(0.0);
-    if (s.released_at < time_ &&
-        (overlap > 0.0 || (overlap == 0.0 && rate_ - free_surface.slope_at(0.0) > 0.0))) {
-      return 0.0;
-    }
-    return touch_time(*s.creep, time_ - s.released_at, overlap > 0.0 ? reach - overlap : reach,
-                      rate_, span);
+    const double surface = free_surface.at(0.0);
+    const double overlap = reach - surface;
+    const double rounding =
+        kEdgeRounding * (std::abs(depth_) + std::abs(springs_.images[k]) + std::abs(surface) + gap);
+    const bool approaching = rate_ - free_surface.slope_at(0.0) > 0.0;
+    const bool again_now = s.glued_at == time_;
+    if (!again_now && (overlap > rounding || (overlap >= -rounding && approaching))) return 0.0;
+    return reach_time(*s.creep, time_ - s.released_at, reach, rate_, span, overlap >= -rounding);
   }
 
   /// Spring s's line load from now over the segment's motion (its stretch `stretch` now).
@@ -504,6 +521,11 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
         change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
     if (on_change) on_change(change, leaves ? before : row.sample());
     if (stop_at_separation && leaves && !row.in_contact()) return true;
+    const ViscoelasticRowRun& n = counts_;
+    if (n.touches + n.releases + n.glues + n.let_gos >= event_limit_) {
+      limited_ = true;
+      return false;
+    }
   }
   row.advance_to(row.end());
   return false;

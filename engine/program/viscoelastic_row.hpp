@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -106,6 +107,10 @@ class ViscoelasticRowDrive {
            std::span<const double> sample_times, std::vector<ViscoelasticRowSample>& samples,
            const OnChange& on_change = {});
   ViscoelasticRowSample sample() const;
+  /// Stops run() once the row has taken `most` events in all (a guard against changes that
+  /// never settle); whether it did.
+  void limit_events(std::int64_t most) { event_limit_ = most; }
+  bool limited() const { return limited_; }
   /// The state just before the last change (an on_change may ask for it).
   const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }
   /// The energy so far (a pass over the springs).
@@ -118,6 +123,8 @@ class ViscoelasticRowDrive {
   std::unique_ptr<Row> row_;
   ViscoelasticRowRun counts_;
   ViscoelasticRowSample before_last_change_{};
+  std::int64_t event_limit_ = std::numeric_limits<std::int64_t>::max();
+  bool limited_ = false;
 };
 
 /// Runs the segments from d = 0, t = 0 (every spring at rest), reporting at `sample_times`

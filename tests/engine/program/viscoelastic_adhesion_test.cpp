@@ -360,5 +360,79 @@ TEST(ViscoelasticAdhesion, RebindingDecidesWhetherALetGoSpringGluesAgain) {
   }
 }
 
+TEST(ViscoelasticAdhesion, AVanishingArmIsTheElasticProgram) {
+  // E_1 = 1e-9 E_inf: E_0 = E_inf (1 + 1e-9). The elastic program row of E_inf, the same
+  // stages, must report the same pull-off, critical point and jump to ~1e-9.
+  for (const double approach : {0.0, 0.02}) {
+    std::string text = cycle_text({2.25e-4, 1.0e-3, 1.0, 1.0e-3, 200, approach});
+    const auto at = text.find(fmt::format("modulus = {}", kArm));
+    ASSERT_NE(at, std::string::npos);
+    const std::string viscous =
+        std::string(text).replace(at, fmt::format("modulus = {}", kArm).size(), "modulus = 1.0e-3");
+    const std::string line_start = "relaxation = ";
+    const auto from = text.find(line_start);
+    const std::string elastic = text.erase(from, text.find('\n', from) - from + 1);
+    const Registries registries = Registries::builtin();
+    const RunResult v =
+        run_scene(SceneDocument::from_text(viscous, "v.toml").build(registries), {});
+    const RunResult e =
+        run_scene(SceneDocument::from_text(elastic, "e.toml").build(registries), {});
+    ASSERT_TRUE(v.peak && e.peak && v.critical && e.critical);
+    std::printf(
+        "vanishing arm, dgamma_a = %g: pull-off %.12e (elastic %.12e), critical %.12e "
+        "(%.12e), %zu jumps (%zu)\n",
+        approach, v.peak->normal_force, e.peak->normal_force, v.critical->normal_force,
+        e.critical->normal_force, v.jumps.size(), e.jumps.size());
+    EXPECT_NEAR(v.peak->normal_force, e.peak->normal_force, 1e-8 * std::abs(e.peak->normal_force));
+    EXPECT_NEAR(v.critical->normal_force, e.critical->normal_force,
+                1e-8 * std::abs(e.critical->normal_force));
+    EXPECT_EQ(v.critical->springs_in_contact, e.critical->springs_in_contact);
+    EXPECT_EQ(v.status, e.status);
+    ASSERT_EQ(v.jumps.size(), e.jumps.size());
+    for (std::size_t i = 0; i < v.jumps.size(); ++i) {
+      EXPECT_EQ(v.jumps[i].inward, e.jumps[i].inward) << i;
+      EXPECT_EQ(v.jumps[i].springs, e.jumps[i].springs) << i;
+    }
+  }
+}
+
+TEST(ViscoelasticAdhesion, ReversibleAdhesionWithTwoArmsSettles) {
+  // dgamma_a = dgamma: a spring glues at exactly the gap it lets go at, so a glue puts it on its
+  // threshold and a let-go on its glue gap, both to rounding; with two arms a free spring's
+  // creep may turn back toward the indenter. The row must neither chatter between the two nor
+  // miss a glue: the cycle runs to separation, each stage's balance closes.
+  const std::string text =
+      "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\n"
+      "approach_work_of_adhesion = 0.05\n"
+      "relaxation = [ { modulus = 9.0e6, time = 0.1 }, { modulus = 2.0e6, time = 1.0 } ]\n"
+      "[profile]\ntype = \"parabolic\"\nradius = 0.01\n[loading]\nrebinding = true\n"
+      "[[loading.stage]]\nname = \"press\"\nnormal = { control = \"fixed-grips\", to = 1e-4 }\n"
+      "speed = 1.0e-3\n"
+      "[[loading.stage]]\nname = \"pull\"\nnormal = { by = -3e-5 }\nspeed = 1.0e-4\n"
+      "[[loading.stage]]\nname = \"hold\"\nduration = 0.5\n"
+      "[[loading.stage]]\nname = \"press2\"\nnormal = { to = 1e-4 }\nspeed = 1.0e-3\n"
+      "[[loading.stage]]\nname = \"off\"\nnormal = { by = -1.0e-3 }\nuntil = \"separation\"\n"
+      "speed = 1.0e-3\n[discretization]\nsprings = 300\n";
+  const RunResult r =
+      run_scene(SceneDocument::from_text(text, "rev.toml").build(Registries::builtin()), {});
+  EXPECT_EQ(r.status, RunStatus::instability);
+  EXPECT_LT(r.counts.events, 4 * 300);
+  for (const StageRecord& s : r.stages) {
+    const double scale =
+        std::max(std::abs(s.energy->machine_work), std::abs(s.energy->stored_change));
+    EXPECT_LT(std::abs(s.energy->residual), 1e-12 * scale) << s.name;
+  }
+}
+
+TEST(ViscoelasticAdhesion, AStageBeyondItsEventsPerSpringStops) {
+  Cycle c{2.25e-4, 1.0e-3, 0.0, 1.0e-3, 200};
+  std::string text = cycle_text(c) + "max_events_per_spring = 1\n";
+  const RunResult r =
+      run_scene(SceneDocument::from_text(text, "limit.toml").build(Registries::builtin()), {});
+  EXPECT_EQ(r.status, RunStatus::step_limit);
+  ASSERT_TRUE(r.stop_reason.has_value());
+  EXPECT_EQ(*r.stop_reason, StopReason::max_events_per_spring);
+}
+
 }  // namespace
 }  // namespace mdrsim
