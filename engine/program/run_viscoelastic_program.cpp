@@ -52,6 +52,43 @@ EventKind viscoelastic_event_kind(ViscoelasticRowChange change) {
   return EventKind::spring_detached;
 }
 
+/// The row's N springs: x_i = i a_max / N, spring N at the frame's image.
+ViscoelasticRowSprings viscoelastic_springs(const Scene& scene, const ProgramRowSpec& spec,
+                                            std::int64_t n) {
+  ViscoelasticRowSprings springs{scene.material.effective_modulus,
+                                 scene.material.relaxation,
+                                 spec.reference_radius / static_cast<double>(n),
+                                 {}};
+  springs.images.reserve(static_cast<std::size_t>(n));
+  for (std::int64_t i = 1; i < n; ++i) {
+    springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
+  }
+  springs.images.push_back(spec.reference_image);
+  return springs;
+}
+
+/// A stage's record: its end, its work and energy balance from the row's energies at its start
+/// and end, each term summed apart.
+StageRecord viscoelastic_stage_record(const std::string& name, const ViscoelasticRowSample& end,
+                                      const ViscoelasticRowEnergy& before,
+                                      const ViscoelasticRowEnergy& now) {
+  StageRecord record;
+  record.name = name;
+  record.end = viscoelastic_snapshot(end);
+  record.work.normal = now.machine_work - before.machine_work;
+  record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
+  EnergyBalance e;
+  e.machine_work = record.work.normal;
+  e.stored_change = now.stored - before.stored;
+  e.dissipated_by_bulk = record.work.bulk;
+  e.surface_change = now.surface - before.surface;
+  e.jump_losses = now.jump_losses - before.jump_losses;
+  e.residual =
+      e.machine_work - e.stored_change - e.surface_change - e.dissipated_by_bulk - e.jump_losses;
+  record.energy = e;
+  return record;
+}
+
 /// A stage until separation runs in pieces of its parameter's unit until the contact is lost;
 /// this many without a loss is taken for one that never comes.
 constexpr int kMostSeparationPieces = 1 << 16;
@@ -65,20 +102,21 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   result.springs = n;
   result.accuracy.rows = {n};
 
-  // The row: spring N where g reaches the deepest held depth, as an elastic program's frame
-  // puts it (program_row_frame) for a fixed-grips program without adhesion.
+  // The row: spring N where the front reaches at the deepest held depth, as an elastic
+  // program's frame puts it (program_row_frame) for a fixed-grips program.
   const ProgramRowFrame frame = program_row_frame(scene);
-  const ProgramRowSpec spec = program_row(scene, frame, n);
-  result.accuracy.outer_radius = spec.reference_radius;
-  ViscoelasticRowSprings springs{scene.material.effective_modulus,
-                                 scene.material.relaxation,
-                                 spec.reference_radius / static_cast<double>(n),
-                                 {}};
-  springs.images.reserve(static_cast<std::size_t>(n));
-  for (std::int64_t i = 1; i < n; ++i) {
-    springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
+  ProgramRowSpec spec = program_row(scene, frame, n);
+  if (!scene.material.glues_on_touch()) {
+    // The front glues at the glassy gap: spring N where it glues at the deepest depth (the zero
+    // scale stays the relaxed material's).
+    Scene glassy = scene;
+    glassy.material = glassy_material(scene.material);
+    const ProgramRowFrame at_glassy_gap = program_row_frame(glassy);
+    spec.reference_radius = at_glassy_gap.radius;
+    spec.reference_image = at_glassy_gap.image;
   }
-  springs.images.push_back(spec.reference_image);
+  result.accuracy.outer_radius = spec.reference_radius;
+  ViscoelasticRowSprings springs = viscoelastic_springs(scene, spec, n);
   // The adhesive edge: the scene's criterion is built on the glassy material (a let-go is
   // instantaneous), docs/viscoelastic.md.
   const bool adhesive = scene.material.adhesive();
@@ -122,9 +160,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     if (adhesive) {
       // The glue's changes settle in a few events per spring and stage; a stage that takes more
       // than solver.max_events_per_spring stops, as an elastic program's does.
-      const ViscoelasticRowRun& c = drive.counts();
-      drive.limit_events(c.touches + c.releases + c.glues + c.let_gos +
-                         scene.solver.max_events_per_spring * n);
+      drive.limit_events(drive.counts().events() + scene.solver.max_events_per_spring * n);
     }
     const ViscoelasticStageDrive sd = stage_drive(stage, held);
     const double rate = sd.rate();
@@ -162,22 +198,9 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     }
     ever_in_contact = ever_in_contact || drive.counts().touches + drive.counts().glues > 0;
     const ViscoelasticRowEnergy now = drive.energy();
-    StageRecord record;
-    record.name = stage.name;
-    record.end = viscoelastic_snapshot(end);
-    record.work.normal = now.machine_work - before.machine_work;
-    record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
-    EnergyBalance e;
-    e.machine_work = record.work.normal;
-    e.stored_change = now.stored - before.stored;
-    e.dissipated_by_bulk = record.work.bulk;
-    e.surface_change = now.surface - before.surface;
-    e.jump_losses = now.jump_losses - before.jump_losses;
-    e.residual =
-        e.machine_work - e.stored_change - e.surface_change - e.dissipated_by_bulk - e.jump_losses;
-    record.energy = e;
+    const StageRecord record = viscoelastic_stage_record(stage.name, end, before, now);
     total += record.work;
-    total_energy += e;
+    total_energy += *record.energy;
     before = now;
     result.stages.push_back(record);
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
@@ -186,8 +209,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   }
   result.work = total;
   result.energy = total_energy;
-  result.counts.events = drive.counts().touches + drive.counts().releases + drive.counts().glues +
-                         drive.counts().let_gos;
+  result.counts.events = drive.counts().events();
   if (!result.stop_reason) {
     // Without glue the contact is lost at zero force: no critical point (docs/programs.md
     // "How a program ends"); a contact lost after its glue ends as the cascade that lost the

@@ -521,8 +521,7 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
         change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
     if (on_change) on_change(change, leaves ? before : row.sample());
     if (stop_at_separation && leaves && !row.in_contact()) return true;
-    const ViscoelasticRowRun& n = counts_;
-    if (n.touches + n.releases + n.glues + n.let_gos >= event_limit_) {
+    if (counts_.events() >= event_limit_) {
       limited_ = true;
       return false;
     }

@@ -59,6 +59,7 @@ struct ViscoelasticRowRun {
   std::int64_t releases = 0;  ///< springs whose load fell to zero
   std::int64_t glues = 0;     ///< springs glued by the advancing front
   std::int64_t let_gos = 0;   ///< boundary springs let go
+  std::int64_t events() const { return touches + releases + glues + let_gos; }
 };
 
 /// The row's energy since it started (d = 0, t = 0, every spring at rest), both halves [J]:

@@ -183,7 +183,7 @@ TEST(ViscoelasticAdhesion, SlowAndFastLimitsAreJkrOfTheRelaxedAndGlassyModuli) {
   std::printf("%6s %8s %22s %22s %12s %12s\n", "limit", "springs", "pull-off F [N]", "JKR [N]",
               "vs row sum", "vs JKR");
   for (const std::int64_t n : {200, 800}) {
-    // Slow: 1e-7 m/s, the whole cycle ~2300 s = 23000 tau. Every arm reaches the steady
+    // Slow: 1e-7 m/s, the press 2250 s = 22500 tau. Every arm reaches the steady
     // E_1 tau V, common to the glued springs: the relaxed row's sum exactly.
     const double slow_preload = 2.25e-4;
     const CycleRun slow = run_cycle({slow_preload, 1.0e-7, 0.0, 1.0e-7, n});
