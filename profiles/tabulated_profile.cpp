@@ -130,15 +130,16 @@ double arc_moment(const ArcSeries& s, double d, double d2) {
 /// sin^2 = -(cos - 1)^2 - 2 (cos - 1) follow from them, each a difference whose smaller term is
 /// below d^2/5 of the larger (no cancellation).
 struct ArcMoments {
-  double c1, c2, c3, s2, c1s2;
+  double c1, c2, c3;
+  double s2() const { return -c2 - 2.0 * c1; }
+  double c1s2() const { return -c3 - 2.0 * c2; }
 };
 template <std::size_t Terms>
 ArcMoments arc_moments_to(double d) {
   static constexpr ArcSeries kC1 = arc_series(1, 0), kC2 = arc_series(2, 0), kC3 = arc_series(3, 0);
   const double d2 = d * d;
-  const double c1 = arc_moment<Terms>(kC1, d, d2), c2 = arc_moment<Terms>(kC2, d, d2),
-               c3 = arc_moment<Terms>(kC3, d, d2);
-  return {c1, c2, c3, -c2 - 2.0 * c1, -c3 - 2.0 * c2};
+  return {arc_moment<Terms>(kC1, d, d2), arc_moment<Terms>(kC2, d, d2),
+          arc_moment<Terms>(kC3, d, d2)};
 }
 ArcMoments arc_moments(double d) {
   return d < 0.02 ? arc_moments_to<4>(d) : arc_moments_to<kArcTerms>(d);
@@ -315,8 +316,10 @@ namespace {
 /// A Dugdale zone's J and dJ/dt on the image's Hermite pieces (TabulatedProfile::dugdale_gap),
 /// `Carried` where the zone is thin. The arcs are taken in blocks: the block's knot angles first
 /// (one arccos and one square root a knot, each shared by the two arcs that meet there), then
-/// each arc's middle and moments, then the sums, in loops with no call inside, so that the
-/// processor overlaps the arcs where one loop over arcs waited on each in turn.
+/// each arc's middle, then its moments, then the sums, each a loop of its own with no call
+/// inside, so that the processor overlaps the arcs where one loop over arcs waited on each in
+/// turn (its knot's arccos, its half-angle's series, the division to its middle, its moments'
+/// series).
 template <bool Carried>
 DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, double t) {
   const std::vector<double>& knots = image.knots();
@@ -329,6 +332,7 @@ DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, 
   std::array<double, kMostArcs + 1> angle, cosine, sine;  // the arcs' ends, from the cohesive edge
   std::array<std::size_t, kMostArcs> piece_of;
   std::array<double, kMostArcs> half, cos_half_minus_one, sin_half, mid_x, mid_y;
+  std::array<double, kMostArcs> moment_c1, moment_c2, moment_c3;
   std::array<double, kBlock> knot_angle, knot_cos, knot_sin;
   const double to_unit = 1.0 / c;
   const double cos_t = std::cos(t), sin_t = std::sin(t);
@@ -380,15 +384,21 @@ DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, 
       half[i] = 0.5 * (angle[i + 1] - angle[i]);
       const CosSin h = small_cos_sin(half[i]);
       cos_half_minus_one[i] = h.cos_minus_one;
-      sin_half[i] = h.sin;
+      if constexpr (Carried) sin_half[i] = h.sin;
       const double to_mid = 0.5 / (1.0 + h.cos_minus_one);
       mid_x[i] = c * (cosine[i] + cosine[i + 1]) * to_mid;
       mid_y[i] = c * (sine[i] + sine[i + 1]) * to_mid;
     }
     for (std::size_t i = 0; i < arcs; ++i) {
+      const ArcMoments e = arc_moments(half[i]);
+      moment_c1[i] = e.c1;
+      moment_c2[i] = e.c2;
+      moment_c3[i] = e.c3;
+    }
+    for (std::size_t i = 0; i < arcs; ++i) {
       const double xm = mid_x[i], ym = mid_y[i];
       const ShapePreservingCubic::Taylor p = image.taylor_on(piece_of[i], xm);
-      const ArcMoments e = arc_moments(half[i]);
+      const ArcMoments e{moment_c1[i], moment_c2[i], moment_c3[i]};
       // The integrand's constant term about x_m: g(x_m) - g(a), or the carried rise r(x_m).
       double level = p.value - image_at_contact;
       if constexpr (Carried) {
@@ -403,8 +413,8 @@ DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, 
                  p.sixth_third * (bottom * bottom + bottom * top + top * top));
       }
       // int u^j dphi over the arc.
-      const double u0 = 2.0 * half[i], u1 = xm * e.c1, u2 = xm * xm * e.c2 + ym * ym * e.s2,
-                   u3 = xm * (xm * xm * e.c3 + 3.0 * ym * ym * e.c1s2);
+      const double u0 = 2.0 * half[i], u1 = xm * e.c1, u2 = xm * xm * e.c2 + ym * ym * e.s2(),
+                   u3 = xm * (xm * xm * e.c3 + 3.0 * ym * ym * e.c1s2());
       gap += level * u0 + p.slope * u1 + p.half_curvature * u2 + p.sixth_third * u3;
       // x g'(x) = (x_m + u) (g'_m + 2 h_m u + 3 s_m u^2) in powers of u.
       slope += xm * p.slope * u0 + (p.slope + 2.0 * p.half_curvature * xm) * u1 +
@@ -416,7 +426,7 @@ DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, 
     cosine[0] = cosine[arcs];
     sine[0] = sine[arcs];
   }
-  return {.integral = Carried ? gap - t * rise : gap, .angle_slope = std::tan(t) * slope};
+  return {.integral = Carried ? gap - t * rise : gap, .angle_slope = sin_t / cos_t * slope};
 }
 
 }  // namespace
