@@ -95,8 +95,10 @@ constexpr PowerSeries sin_squared_series() {
 /// int_{-d}^{d} (cos(phi) - 1)^i sin^l(phi) dphi for even l, as d^(2 lead + 1) times a series
 /// in d^2. The integrands are sums of cos(m phi), m <= 3, so each term is below its predecessor
 /// by about 9 d^2 / ((2n + 1)(2n + 2)): 6 terms are exact to rounding up to d = 0.15 (the arcs'
-/// half-widths), 4 below d = 0.02 (most arcs; both checked against 40-digit quadrature), with
-/// none of the cancellation the closed forms (sin d - d, ...) have at small d.
+/// half-widths; checked against 40-digit quadrature), with none of the cancellation the closed
+/// forms (sin d - d, ...) have at small d. All 6 are summed however narrow the arc: a loop over
+/// arcs with no branch in it is taken two arcs at a time (16-byte vectors), cheaper than the 4
+/// terms that narrow arcs (d < 0.02) would need.
 constexpr std::size_t kArcTerms = 6;
 struct ArcSeries {
   std::size_t lead;
@@ -115,35 +117,25 @@ constexpr ArcSeries arc_series(int cos_power, int sin_power) {
   return s;
 }
 
-template <std::size_t Terms>
 double arc_moment(const ArcSeries& s, double d, double d2) {
-  static_assert(Terms <= kArcTerms);
   double sum = 0.0;
-  for (std::size_t n = Terms; n-- > 0;) sum = sum * d2 + s.terms[n];
+  for (std::size_t n = kArcTerms; n-- > 0;) sum = sum * d2 + s.terms[n];
   double power = d;
   for (std::size_t n = 0; n < s.lead; ++n) power *= d2;
   return power * sum;
 }
 
 /// The even moments over [-d, d] that a cubic in x = c cos(psi) needs about the arc's middle:
-/// (cos - 1)^i sin^l with i + l <= 3 (the odd powers of sin vanish). Three series; the two with
-/// sin^2 = -(cos - 1)^2 - 2 (cos - 1) follow from them, each a difference whose smaller term is
-/// below d^2/5 of the larger (no cancellation).
+/// (cos - 1)^i sin^l with i + l <= 3 (the odd powers of sin vanish). Three series (kMoment*);
+/// the two with sin^2 = -(cos - 1)^2 - 2 (cos - 1) follow from them, each a difference whose
+/// smaller term is below d^2/5 of the larger (no cancellation).
 struct ArcMoments {
   double c1, c2, c3;
   double s2() const { return -c2 - 2.0 * c1; }
   double c1s2() const { return -c3 - 2.0 * c2; }
 };
-template <std::size_t Terms>
-ArcMoments arc_moments_to(double d) {
-  static constexpr ArcSeries kC1 = arc_series(1, 0), kC2 = arc_series(2, 0), kC3 = arc_series(3, 0);
-  const double d2 = d * d;
-  return {arc_moment<Terms>(kC1, d, d2), arc_moment<Terms>(kC2, d, d2),
-          arc_moment<Terms>(kC3, d, d2)};
-}
-ArcMoments arc_moments(double d) {
-  return d < 0.02 ? arc_moments_to<4>(d) : arc_moments_to<kArcTerms>(d);
-}
+constexpr ArcSeries kMomentC1 = arc_series(1, 0), kMomentC2 = arc_series(2, 0),
+                    kMomentC3 = arc_series(3, 0);
 
 /// Whether r f'(r) never falls on the cubic pieces of f: (r f')' = f' + r f'' is a quadratic
 /// in r on each piece, whose least value on the piece is at an end or at its vertex.
@@ -390,10 +382,10 @@ DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, 
       mid_y[i] = c * (sine[i] + sine[i + 1]) * to_mid;
     }
     for (std::size_t i = 0; i < arcs; ++i) {
-      const ArcMoments e = arc_moments(half[i]);
-      moment_c1[i] = e.c1;
-      moment_c2[i] = e.c2;
-      moment_c3[i] = e.c3;
+      const double d = half[i], d2 = d * d;
+      moment_c1[i] = arc_moment(kMomentC1, d, d2);
+      moment_c2[i] = arc_moment(kMomentC2, d, d2);
+      moment_c3[i] = arc_moment(kMomentC3, d, d2);
     }
     for (std::size_t i = 0; i < arcs; ++i) {
       const double xm = mid_x[i], ym = mid_y[i];
@@ -435,7 +427,7 @@ DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, 
 // in cos(psi). J and dJ/dt's x g'(x) are integrated in closed form on each arc [psi_m - d,
 // psi_m + d] of a piece: with the cubic expanded about x_m = c cos(psi_m), u = x - x_m =
 // x_m (cos phi - 1) - y_m sin phi (y_m = c sin(psi_m)), and the powers of u integrated over phi
-// in [-d, d] are sums of the five even moments arc_moments gives (three series, two sums of
+// in [-d, d] are sums of the five even moments ArcMoments holds (three series, two sums of
 // them), of one sign in each power: no cancellation however much the piece bends, a few dozen
 // operations an arc. Where the zone is thin (t < 0.3) the difference g(x) - g(a), which would
 // cancel there, is never formed: the rise r(x) = g(x) - g(c) is carried down from c, arc by arc, by
