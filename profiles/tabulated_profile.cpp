@@ -97,8 +97,8 @@ constexpr PowerSeries sin_squared_series() {
 /// by about 9 d^2 / ((2n + 1)(2n + 2)): 6 terms are exact to rounding up to d = 0.15 (the arcs'
 /// half-widths; checked against 40-digit quadrature), with none of the cancellation the closed
 /// forms (sin d - d, ...) have at small d. All 6 are summed however narrow the arc: a loop over
-/// arcs with no branch in it is taken two arcs at a time (16-byte vectors), cheaper than the 4
-/// terms that narrow arcs (d < 0.02) would need.
+/// arcs with no branch in it is taken two arcs at a time (16-byte vectors), which costs less
+/// than choosing 4 terms for each narrow arc (d < 0.02, where 4 suffice) one arc at a time.
 constexpr std::size_t kArcTerms = 6;
 struct ArcSeries {
   std::size_t lead;
@@ -309,9 +309,9 @@ namespace {
 /// `Carried` where the zone is thin. The arcs are taken in blocks: the block's knot angles first
 /// (one arccos and one square root a knot, each shared by the two arcs that meet there), then
 /// each arc's middle, then its moments, then the sums, each a loop of its own with no call
-/// inside, so that the processor overlaps the arcs where one loop over arcs waited on each in
-/// turn (its knot's arccos, its half-angle's series, the division to its middle, its moments'
-/// series).
+/// inside: the processor overlaps the arcs' long chains (a knot's arccos, the half-angle's
+/// series, the division to the middle, the moments' series), which one loop doing all of an
+/// arc before the next would wait on in turn.
 template <bool Carried>
 DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, double t) {
   const std::vector<double>& knots = image.knots();
