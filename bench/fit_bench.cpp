@@ -195,6 +195,7 @@ void BM_MaugisFit(benchmark::State& state, bool real) {
   state.counters["points"] = static_cast<double>(segment.force.size());
   state.counters["lambda"] = lambda;
 }
+
 /// A lever's recorded segment with 1 % noise of its largest force, as the Maugis tests build
 /// it (the noise seeded by `seed`).
 mdrsim::fit::PreparedSegment with_lever_noise(const mdrsim::maugis_reference::LeverCurve& curve,
