@@ -16,15 +16,15 @@ constexpr double kRipplePi = std::numbers::pi;
 /// Below this zone angle f'(a) is taken out of the integrand (wavy_ripple_gap).
 constexpr double kSubtractBelow = 0.3;
 
-/// The 10-point Gauss-Legendre rule on [-1, 1]: its positive abscissae and their weights (the
-/// angle's panels).
+/// Gauss-Legendre rules in the angle psi (add_layer): on the layer's panel, on those doubling
+/// from it, and on the ripple's first half wave below a where the layer is wider than it.
+using LayerRule = boost::math::quadrature::gauss<double, 12>;
 using AngleRule = boost::math::quadrature::gauss<double, 10>;
-const auto& kAngleNodes = AngleRule::abscissa();
-const auto& kAngleWeights = AngleRule::weights();
-/// The 12-point rule (the radius's panels, one wavelength each).
-using RippleWaveRule = boost::math::quadrature::gauss<double, 12>;
-const auto& kWaveNodes = RippleWaveRule::abscissa();
-const auto& kWaveWeights = RippleWaveRule::weights();
+using WholeRule = boost::math::quadrature::gauss<double, 14>;
+/// In the radius: 12 points on up to one wavelength, 16 on up to two (the sine's integral over
+/// them to 1e-15).
+using OneWaveRule = boost::math::quadrature::gauss<double, 12>;
+using TwoWaveRule = boost::math::quadrature::gauss<double, 16>;
 
 /// G(x) = 1 - arctan(x)/x = sum_(n>=1) (-1)^(n+1) x^(2n)/(2n+1), by the series up to x = 1/2
 /// (the difference would keep only the digits of x^2/3).
@@ -99,52 +99,70 @@ struct RippleSums {
   double slope = 0.0;
 };
 
-/// int (f'(a cos psi) - f'(a)) (B, dB/dt) dpsi over [lo, hi] by the 10-point rule, with f' =
+/// int (f'(a cos psi) - f'(a)) (B, dB/dt) dpsi over [lo, hi] by the rule, with f' =
 /// sin(k r) and sin(ka cos psi) - sin(ka) = -2 cos(ka (1 + cos psi)/2) sin(ka sin^2(psi)/(2 (1 +
 /// cos psi))), exact where psi is small (in the layer it is O(psi^2) and B O(1)).
+template <class Rule>
 void add_angle_panel(const ZoneAngle& z, double ka, double lo, double hi, RippleSums& sums) {
+  const auto& nodes = Rule::abscissa();
+  const auto& weights = Rule::weights();
   const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
-  for (std::size_t i = 0; i < kAngleNodes.size(); ++i) {
-    for (const double psi : {mid - half * kAngleNodes[i], mid + half * kAngleNodes[i]}) {
-      const double s = std::sin(psi), p = std::cos(psi);
+  const double sin_mid = std::sin(mid), cos_mid = std::cos(mid);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    // sin and cos at mid -+ u from theirs at mid and u: six sincos a panel instead of ten; on
+    // the panel from 0 directly (there sin(mid - u) << sin(mid) would lose digits).
+    const double u = half * nodes[i];
+    const double sin_u = std::sin(u), cos_u = std::cos(u);
+    for (const double side : {-1.0, 1.0}) {
+      const double s =
+          lo > 0.0 ? sin_mid * cos_u + side * cos_mid * sin_u : std::sin(mid + side * u);
+      const double p =
+          lo > 0.0 ? cos_mid * cos_u - side * sin_mid * sin_u : std::cos(mid + side * u);
       const double ripple = z.less_edge_slope ? -2.0 * std::cos(0.5 * ka * (1.0 + p)) *
                                                     std::sin(0.5 * ka * s * s / (1.0 + p))
                                               : std::sin(ka * p);
       const ZoneWeight w = zone_weight(z, s, p);
-      sums.value += half * kAngleWeights[i] * ripple * w.value;
-      sums.slope += half * kAngleWeights[i] * ripple * w.slope;
+      sums.value += half * weights[i] * ripple * w.value;
+      sums.slope += half * weights[i] * ripple * w.slope;
     }
   }
 }
 
-/// The same over psi in [0, end]: panels doubling from min(T, end)/2, so that the weight's layer
-/// at psi = 0 (its singularities at sin(psi) = +-i T) is resolved at its own scale, and that no
-/// panel spans the ripple's whole half wave (its growth off the real axis, exp(ka sin(psi)
-/// sinh(y)), held one panel over [0, end] to 1e-12).
+/// The same over psi in [0, end]. The weight's singularities lie at sin(psi) = +-i T (its layer
+/// at psi = 0): where T < end, a panel [0, asinh T] reaches them at its own scale, and panels
+/// doubling from it stay as far from them (Bernstein ellipses of rho >= 4.6 and 5.8). Where T
+/// >= end one panel of 14 points: one of 10 over the ripple's half wave met its growth off the
+/// real axis (exp(ka sin(psi) sinh(y))) with an error of 1e-12 at ka = 5.
 void add_layer(const ZoneAngle& z, double ka, double end, RippleSums& sums) {
-  const double first = 0.5 * std::min(z.tangent, end);
-  add_angle_panel(z, ka, 0.0, first, sums);
+  if (z.tangent >= end) {
+    add_angle_panel<WholeRule>(z, ka, 0.0, end, sums);
+    return;
+  }
+  const double first = std::asinh(z.tangent);
+  add_angle_panel<LayerRule>(z, ka, 0.0, first, sums);
   for (double lo = first; lo < end;) {
     const double hi = std::min(end, 2.0 * lo);
-    add_angle_panel(z, ka, lo, hi, sums);
+    add_angle_panel<AngleRule>(z, ka, lo, hi, sums);
     lo = hi;
   }
 }
 
 /// In r = a cos(psi) over [lo, hi] (below a - pi/k): a f'(r) (B, dB/dt) dpsi = f'(r) (B, dB/dt)
-/// dr / q with q = sin(psi) = sqrt(1 - (r/a)^2); ripple(i, side) gives sin(k r) - sin(k a) at
-/// the nodes.
-template <class Ripple>
+/// dr / q with q = sin(psi) = sqrt(1 - (r/a)^2); ripple(i, side, r) gives f'(r) (less f'(a)
+/// below kSubtractBelow) / (A k) at node i's side (0: below mid, 1: above) at r.
+template <class WaveRule, class Ripple>
 void add_radius_panel(const ZoneAngle& z, double a, double lo, double hi, Ripple ripple,
                       RippleSums& sums) {
+  const auto& nodes = WaveRule::abscissa();
+  const auto& weights = WaveRule::weights();
   const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
-  for (std::size_t i = 0; i < kWaveNodes.size(); ++i) {
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
     for (int side = 0; side < 2; ++side) {
-      const double r = side == 0 ? mid - half * kWaveNodes[i] : mid + half * kWaveNodes[i];
+      const double r = side == 0 ? mid - half * nodes[i] : mid + half * nodes[i];
       const double p = r / a;
       const double q = std::sqrt((1.0 - p) * (1.0 + p));
       const ZoneWeight w = zone_weight(z, q, p);
-      const double f = ripple(i, side) * half * kWaveWeights[i] / (q * a);
+      const double f = ripple(i, side, r) * half * weights[i] / (q * a);
       sums.value += f * w.value;
       sums.slope += f * w.slope;
     }
@@ -203,34 +221,35 @@ DugdaleGap wavy_ripple_gap(double amplitude, double wavenumber, double a, double
   } else {
     // r in [a - pi/k, a]: psi in [0, arccos(1 - pi/(k a))], with the layer.
     add_layer(z, ka, 2.0 * std::asin(std::sqrt(0.5 * kRipplePi / ka)), angle_sums);
-    // Whole waves [a - (m+2) pi/k, a - m pi/k], m = 1, 3, 5, ...: k r = k a - (m + 1) pi + pi x,
-    // sin(k r) = sin(k a + pi x) at the rule's nodes x.
+    // Below a - pi/k, two waves a panel, each panel's ends from a (not summed panel by panel),
+    // so that its nodes' phases are those of the sines kept: with w = 2 pi/k, on [a - (m + 2.5)
+    // w, a - (m + 0.5) w], m = 0, 2, 4, ..., k r = k a - (2 m + 3) pi + 2 pi x at the rule's
+    // nodes x, and sin(k r) = -sin(k a + 2 pi x).
     const double wave = 2.0 * kRipplePi / k;
-    std::array<std::array<double, 2>, 6> sines{};  // sin(k a -+ pi node)
-    for (std::size_t i = 0; i < kWaveNodes.size(); ++i) {
-      const double u = kRipplePi * kWaveNodes[i];
-      const double cu = std::cos(u), su = std::sin(u);
-      sines[i][0] = sin_ka * cu - cos_ka * su - offset;
-      sines[i][1] = sin_ka * cu + cos_ka * su - offset;
+    int done = 0;  // waves below a - w/2
+    if (a - 2.5 * wave > 0.0) {
+      const auto& nodes = TwoWaveRule::abscissa();
+      std::array<std::array<double, 2>, 8> sines{};  // at x = -+ node, less the offset
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const double u = 2.0 * kRipplePi * nodes[i];
+        const double cu = std::cos(u), su = std::sin(u);
+        sines[i][0] = -(sin_ka * cu - cos_ka * su) - offset;
+        sines[i][1] = -(sin_ka * cu + cos_ka * su) - offset;
+      }
+      for (; a - (done + 2.5) * wave > 0.0; done += 2) {
+        add_radius_panel<TwoWaveRule>(
+            z, a, a - (done + 2.5) * wave, a - (done + 0.5) * wave,
+            [&](std::size_t i, int side, double /*r*/) { return sines[i][side]; }, radius_sums);
+      }
     }
-    // Each panel's ends from a (not summed wave by wave): their nodes' phases are the sines'.
-    int waves = 0;
-    while (a - (waves + 1.5) * wave > 0.0) {
-      const double hi = a - (waves + 0.5) * wave;
-      add_radius_panel(
-          z, a, hi - wave, hi, [&](std::size_t i, int side) { return sines[i][side]; },
-          radius_sums);
-      ++waves;
-    }
-    const double rest = a - (waves + 0.5) * wave;  // less than a wave, down to the axis
+    const double rest = a - (done + 0.5) * wave;  // less than two waves, down to the axis
     if (rest > 0.0) {
-      add_radius_panel(
-          z, a, 0.0, rest,
-          [&](std::size_t i, int side) {
-            const double r = 0.5 * rest + (side == 0 ? -1.0 : 1.0) * 0.5 * rest * kWaveNodes[i];
-            return std::sin(k * r) - offset;
-          },
-          radius_sums);
+      const auto direct = [&](std::size_t, int, double r) { return std::sin(k * r) - offset; };
+      if (rest <= wave) {
+        add_radius_panel<OneWaveRule>(z, a, 0.0, rest, direct, radius_sums);
+      } else {
+        add_radius_panel<TwoWaveRule>(z, a, 0.0, rest, direct, radius_sums);
+      }
     }
   }
   const double scale = amplitude * k * a;
