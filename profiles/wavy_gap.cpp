@@ -5,7 +5,10 @@
 #include <array>
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "engine/base/angle_series.hpp"
 
@@ -63,10 +66,9 @@ struct ZoneWeight {
 
 /// The angle t's parts the weights share.
 struct ZoneAngle {
-  double angle;          ///< t
-  double tangent;        ///< T = tan t
-  double deficit;        ///< G(T), where T <= 1/2
-  bool less_edge_slope;  ///< whether the integrand is f'(a cos psi) - f'(a), or f'(a cos psi)
+  double angle;    ///< t
+  double tangent;  ///< T = tan t
+  double deficit;  ///< G(T), where T <= 1/2
 };
 
 /// B = T (F(X) - F(T)) with F(x) = arctan(x)/x and X = T/s >= T: where X <= 1/2 the difference
@@ -93,66 +95,68 @@ ZoneWeight zone_weight(const ZoneAngle& z, double s, double p) {
   return {s * std::atan(x) - z.angle, slope};
 }
 
-/// Sums of the integrand's value and slope.
-struct RippleSums {
-  double value = 0.0;
-  double slope = 0.0;
+/// A node of the rules over (0, a): sin(psi) and cos(psi) there, and its weight times f'(a cos
+/// psi) / (A k) (less f'(a) below kSubtractBelow), times 1/(a sin psi) on the radius's panels
+/// (a dpsi = dr / sin psi).
+struct RippleNode {
+  double s;
+  double p;
+  double factor;
 };
 
-/// int (f'(a cos psi) - f'(a)) (B, dB/dt) dpsi over [lo, hi] by the rule, with f' =
-/// sin(k r) and sin(ka cos psi) - sin(ka) = -2 cos(ka (1 + cos psi)/2) sin(ka sin^2(psi)/(2 (1 +
-/// cos psi))), exact where psi is small (in the layer it is O(psi^2) and B O(1)).
+/// The nodes of the rule over [lo, hi] in psi, with sin(ka cos psi) - sin(ka) = -2 cos(ka (1 +
+/// cos psi)/2) sin(ka sin^2(psi)/(2 (1 + cos psi))), exact where psi is small (in the layer it
+/// is O(psi^2) and B O(1)).
 template <class Rule>
-void add_angle_panel(const ZoneAngle& z, double ka, double lo, double hi, RippleSums& sums) {
+void add_angle_nodes(double ka, bool less_edge_slope, double lo, double hi,
+                     std::vector<RippleNode>& out) {
   const auto& nodes = Rule::abscissa();
   const auto& weights = Rule::weights();
   const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
   const double sin_mid = std::sin(mid), cos_mid = std::cos(mid);
   for (std::size_t i = 0; i < nodes.size(); ++i) {
-    // sin and cos at mid -+ u from theirs at mid and u: six sincos a panel instead of ten; on
-    // the panel from 0 directly (there sin(mid - u) << sin(mid) would lose digits).
+    // sin and cos at mid -+ u from theirs at mid and u: one sincos a pair of nodes. Near psi =
+    // 0 sin(psi) keeps eps mid absolute, not relative, which moves B by (pi/2) eps mid at most.
     const double u = half * nodes[i];
     const double sin_u = std::sin(u), cos_u = std::cos(u);
     for (const double side : {-1.0, 1.0}) {
-      const double s =
-          lo > 0.0 ? sin_mid * cos_u + side * cos_mid * sin_u : std::sin(mid + side * u);
-      const double p =
-          lo > 0.0 ? cos_mid * cos_u - side * sin_mid * sin_u : std::cos(mid + side * u);
-      const double ripple = z.less_edge_slope ? -2.0 * std::cos(0.5 * ka * (1.0 + p)) *
-                                                    std::sin(0.5 * ka * s * s / (1.0 + p))
-                                              : std::sin(ka * p);
-      const ZoneWeight w = zone_weight(z, s, p);
-      sums.value += half * weights[i] * ripple * w.value;
-      sums.slope += half * weights[i] * ripple * w.slope;
+      const double s = sin_mid * cos_u + side * cos_mid * sin_u;
+      const double p = cos_mid * cos_u - side * sin_mid * sin_u;
+      const double ripple = less_edge_slope ? -2.0 * std::cos(0.5 * ka * (1.0 + p)) *
+                                                  std::sin(0.5 * ka * s * s / (1.0 + p))
+                                            : std::sin(ka * p);
+      out.push_back({.s = s, .p = p, .factor = half * weights[i] * ripple});
     }
   }
 }
 
 /// The same over psi in [0, end]. The weight's singularities lie at sin(psi) = +-i T (its layer
-/// at psi = 0): where T < end, a panel [0, asinh T] reaches them at its own scale, and panels
-/// doubling from it stay as far from them (Bernstein ellipses of rho >= 4.6 and 5.8). Where T
-/// >= end one panel of 14 points: one of 10 over the ripple's half wave met its growth off the
-/// real axis (exp(ka sin(psi) sinh(y))) with an error of 1e-12 at ka = 5.
-void add_layer(const ZoneAngle& z, double ka, double end, RippleSums& sums) {
-  if (z.tangent >= end) {
-    add_angle_panel<WholeRule>(z, ka, 0.0, end, sums);
+/// at psi = 0): where T < end (first = asinh T), a panel [0, first] reaches them at its own
+/// scale, and panels doubling from it stay as far from them (Bernstein ellipses of rho >= 4.6
+/// and 5.8). Where T >= end (first < 0) one panel of 14 points: one of 10 over the ripple's
+/// half wave met its growth off the real axis (exp(ka sin(psi) sinh(y))) with an error of 1e-12
+/// at ka = 5.
+void add_layer_nodes(double ka, bool less_edge_slope, double first, double end,
+                     std::vector<RippleNode>& out) {
+  if (!(first > 0.0)) {
+    add_angle_nodes<WholeRule>(ka, less_edge_slope, 0.0, end, out);
     return;
   }
-  const double first = std::asinh(z.tangent);
-  add_angle_panel<LayerRule>(z, ka, 0.0, first, sums);
+  add_angle_nodes<LayerRule>(ka, less_edge_slope, 0.0, first, out);
   for (double lo = first; lo < end;) {
     const double hi = std::min(end, 2.0 * lo);
-    add_angle_panel<AngleRule>(z, ka, lo, hi, sums);
+    add_angle_nodes<AngleRule>(ka, less_edge_slope, lo, hi, out);
     lo = hi;
   }
 }
 
-/// In r = a cos(psi) over [lo, hi] (below a - pi/k): a f'(r) (B, dB/dt) dpsi = f'(r) (B, dB/dt)
-/// dr / q with q = sin(psi) = sqrt(1 - (r/a)^2); ripple(i, side, r) gives f'(r) (less f'(a)
-/// below kSubtractBelow) / (A k) at node i's side (0: below mid, 1: above) at r.
-template <class WaveRule, class Ripple>
-void add_radius_panel(const ZoneAngle& z, double a, double lo, double hi, Ripple ripple,
-                      RippleSums& sums) {
+/// The nodes of the rule over [lo, hi] in r = a cos(psi) (below a - pi/k), with ripple[i][side]
+/// f'(r) / (A k) (less f'(a) below kSubtractBelow) at node i's side (0: below the middle, 1:
+/// above).
+template <class WaveRule>
+void add_radius_nodes(double a, double lo, double hi,
+                      const std::array<std::array<double, 2>, 8>& ripple,
+                      std::vector<RippleNode>& out) {
   const auto& nodes = WaveRule::abscissa();
   const auto& weights = WaveRule::weights();
   const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
@@ -161,12 +165,89 @@ void add_radius_panel(const ZoneAngle& z, double a, double lo, double hi, Ripple
       const double r = side == 0 ? mid - half * nodes[i] : mid + half * nodes[i];
       const double p = r / a;
       const double q = std::sqrt((1.0 - p) * (1.0 + p));
-      const ZoneWeight w = zone_weight(z, q, p);
-      const double f = ripple(i, side, r) * half * weights[i] / (q * a);
-      sums.value += f * w.value;
-      sums.slope += f * w.slope;
+      out.push_back({.s = q, .p = p, .factor = ripple[i][side] * half * weights[i] / (q * a)});
     }
   }
+}
+
+/// All nodes over (0, a) for k a and a, f'(a) taken out or not, and the layer's first panel
+/// (first < 0: none).
+void build_ripple_nodes(double k, double a, bool less_edge_slope, double first,
+                        std::vector<RippleNode>& out) {
+  out.clear();
+  const double ka = k * a;
+  if (ka <= kRipplePi) {
+    add_layer_nodes(ka, less_edge_slope, first, 0.5 * kRipplePi, out);
+    return;
+  }
+  // r in [a - pi/k, a]: psi in [0, arccos(1 - pi/(k a))], with the layer.
+  add_layer_nodes(ka, less_edge_slope, first, 2.0 * std::asin(std::sqrt(0.5 * kRipplePi / ka)),
+                  out);
+  // Below a - pi/k, two waves a panel, each panel's ends from a (not summed panel by panel), so
+  // that its nodes' phases are those of the sines kept: with w = 2 pi/k, on [a - (m + 2.5) w, a -
+  // (m + 0.5) w], m = 0, 2, 4, ..., k r = k a - (2 m + 3) pi + 2 pi x at the rule's nodes x, and
+  // sin(k r) = -sin(k a + 2 pi x).
+  const double wave = 2.0 * kRipplePi / k;
+  const double sin_ka = std::sin(ka), cos_ka = std::cos(ka);
+  const double offset = less_edge_slope ? sin_ka : 0.0;
+  // sin(k r) - offset at a panel's nodes mid -+ half x_i from sin and cos of k mid: one sincos a
+  // pair of nodes.
+  const auto node_sines = [offset](const auto& nodes, double sin_mid, double cos_mid,
+                                   double k_half) {
+    std::array<std::array<double, 2>, 8> sines{};  // [i][0] at x = -node, [i][1] at +node
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const double u = k_half * nodes[i];
+      const double cu = std::cos(u), su = std::sin(u);
+      sines[i][0] = sin_mid * cu - cos_mid * su - offset;
+      sines[i][1] = sin_mid * cu + cos_mid * su - offset;
+    }
+    return sines;
+  };
+  int done = 0;  // waves below a - w/2
+  if (a - 2.5 * wave > 0.0) {
+    const auto sines = node_sines(TwoWaveRule::abscissa(), -sin_ka, -cos_ka, 2.0 * kRipplePi);
+    for (; a - (done + 2.5) * wave > 0.0; done += 2) {
+      add_radius_nodes<TwoWaveRule>(a, a - (done + 2.5) * wave, a - (done + 0.5) * wave, sines,
+                                    out);
+    }
+  }
+  const double rest = a - (done + 0.5) * wave;  // less than two waves, down to the axis
+  if (rest > 0.0) {
+    const double k_half = 0.5 * k * rest;
+    const double sin_mid = std::sin(k_half), cos_mid = std::cos(k_half);
+    if (rest <= wave) {
+      add_radius_nodes<OneWaveRule>(
+          a, 0.0, rest, node_sines(OneWaveRule::abscissa(), sin_mid, cos_mid, k_half), out);
+    } else {
+      add_radius_nodes<TwoWaveRule>(
+          a, 0.0, rest, node_sines(TwoWaveRule::abscissa(), sin_mid, cos_mid, k_half), out);
+    }
+  }
+}
+
+/// The nodes of the last (k, a, form, layer) asked on this thread: a zone's Newton steps ask J
+/// at one contact radius for several angles, and the nodes depend on the angle only through the
+/// form and the layer's panel, which a wide layer (tan t past the first half wave) leaves out.
+const std::vector<RippleNode>& ripple_nodes(double k, double a, bool less_edge_slope,
+                                            double first) {
+  struct Kept {
+    double k = std::numeric_limits<double>::quiet_NaN();
+    double a = 0.0;
+    bool less_edge_slope = false;
+    double first = 0.0;
+    std::vector<RippleNode> nodes;
+  };
+  thread_local Kept kept;
+  if (!(k == kept.k && a == kept.a && less_edge_slope == kept.less_edge_slope &&
+        first == kept.first)) {
+    build_ripple_nodes(k, a, less_edge_slope, first, kept.nodes);
+    kept = {.k = k,
+            .a = a,
+            .less_edge_slope = less_edge_slope,
+            .first = first,
+            .nodes = std::move(kept.nodes)};
+  }
+  return kept.nodes;
 }
 
 }  // namespace
@@ -208,53 +289,21 @@ DugdaleGap wavy_ripple_gap(double amplitude, double wavenumber, double a, double
       less_edge_slope ? 0.5 * kRipplePi * amplitude * k * c * tangent *
                             (2.0 * std::cos(0.5 * (ka + kc)) * half_delta + sin_ka * std::sin(t))
                       : 0.5 * kRipplePi * amplitude * k * c * tangent * std::sin(kc);
-  const double offset = less_edge_slope ? sin_ka : 0.0;
 
-  const ZoneAngle z{.angle = t,
-                    .tangent = tangent,
-                    .deficit = tangent <= 0.5 ? arctan_deficit(tangent) : 0.0,
-                    .less_edge_slope = less_edge_slope};
-  RippleSums angle_sums;   // d psi
-  RippleSums radius_sums;  // d r / a
-  if (ka <= kRipplePi) {
-    add_layer(z, ka, 0.5 * kRipplePi, angle_sums);
-  } else {
-    // r in [a - pi/k, a]: psi in [0, arccos(1 - pi/(k a))], with the layer.
-    add_layer(z, ka, 2.0 * std::asin(std::sqrt(0.5 * kRipplePi / ka)), angle_sums);
-    // Below a - pi/k, two waves a panel, each panel's ends from a (not summed panel by panel),
-    // so that its nodes' phases are those of the sines kept: with w = 2 pi/k, on [a - (m + 2.5)
-    // w, a - (m + 0.5) w], m = 0, 2, 4, ..., k r = k a - (2 m + 3) pi + 2 pi x at the rule's
-    // nodes x, and sin(k r) = -sin(k a + 2 pi x).
-    const double wave = 2.0 * kRipplePi / k;
-    int done = 0;  // waves below a - w/2
-    if (a - 2.5 * wave > 0.0) {
-      const auto& nodes = TwoWaveRule::abscissa();
-      std::array<std::array<double, 2>, 8> sines{};  // at x = -+ node, less the offset
-      for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const double u = 2.0 * kRipplePi * nodes[i];
-        const double cu = std::cos(u), su = std::sin(u);
-        sines[i][0] = -(sin_ka * cu - cos_ka * su) - offset;
-        sines[i][1] = -(sin_ka * cu + cos_ka * su) - offset;
-      }
-      for (; a - (done + 2.5) * wave > 0.0; done += 2) {
-        add_radius_panel<TwoWaveRule>(
-            z, a, a - (done + 2.5) * wave, a - (done + 0.5) * wave,
-            [&](std::size_t i, int side, double /*r*/) { return sines[i][side]; }, radius_sums);
-      }
-    }
-    const double rest = a - (done + 0.5) * wave;  // less than two waves, down to the axis
-    if (rest > 0.0) {
-      const auto direct = [&](std::size_t, int, double r) { return std::sin(k * r) - offset; };
-      if (rest <= wave) {
-        add_radius_panel<OneWaveRule>(z, a, 0.0, rest, direct, radius_sums);
-      } else {
-        add_radius_panel<TwoWaveRule>(z, a, 0.0, rest, direct, radius_sums);
-      }
-    }
+  const ZoneAngle z{
+      .angle = t, .tangent = tangent, .deficit = tangent <= 0.5 ? arctan_deficit(tangent) : 0.0};
+  // The layer's first panel, where tan t is below the first half wave's angle.
+  const double end =
+      ka <= kRipplePi ? 0.5 * kRipplePi : 2.0 * std::asin(std::sqrt(0.5 * kRipplePi / ka));
+  const double first = tangent < end ? std::asinh(tangent) : -1.0;
+  double value = 0.0, slope = 0.0;
+  for (const RippleNode& node : ripple_nodes(k, a, less_edge_slope, first)) {
+    const ZoneWeight w = zone_weight(z, node.s, node.p);
+    value += node.factor * w.value;
+    slope += node.factor * w.slope;
   }
   const double scale = amplitude * k * a;
-  return {.integral = edge + scale * (angle_sums.value + radius_sums.value),
-          .angle_slope = edge_slope + scale * (angle_sums.slope + radius_sums.slope)};
+  return {.integral = edge + scale * value, .angle_slope = edge_slope + scale * slope};
 }
 
 }  // namespace mdrsim
