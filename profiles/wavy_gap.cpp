@@ -1,4 +1,4 @@
-// The wavy ripple's Dugdale gap integral: an elementary weight on half-wave Gauss panels.
+// The wavy ripple's Dugdale gap integral: an elementary weight on fixed Gauss rules over (0, a).
 #include "profiles/wavy_gap.hpp"
 
 #include <algorithm>
@@ -19,7 +19,7 @@ constexpr double kRipplePi = std::numbers::pi;
 /// Below this zone angle f'(a) is taken out of the integrand (wavy_ripple_gap).
 constexpr double kSubtractBelow = 0.3;
 
-/// Gauss-Legendre rules in the angle psi (add_layer): on the layer's panel, on those doubling
+/// Gauss-Legendre rules in the angle psi (add_layer_nodes): on the layer's panel, those doubling
 /// from it, and on the ripple's first half wave below a where the layer is wider than it.
 using LayerRule = boost::math::quadrature::gauss<double, 12>;
 using AngleRule = boost::math::quadrature::gauss<double, 10>;
