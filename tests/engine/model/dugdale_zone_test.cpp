@@ -384,13 +384,16 @@ TEST(DugdaleZone, TheConesFreeBranchIsStraight) {
 }
 
 /// The wavy profile with the generic quadrature's non-adhesive force (Gauss-Kronrod, the slow
-/// path its states took before the closed form).
+/// path its states took before the closed form); its zone's gap integral is the profile's own.
 class WavyByQuadrature final : public Profile {
  public:
   explicit WavyByQuadrature(const WavyProfile& wavy) : wavy_(wavy) {}
   double shape(double r) const override { return wavy_.shape(r); }
   double mdr_image(double x) const override { return wavy_.mdr_image(x); }
   double mdr_image_slope(double x) const override { return wavy_.mdr_image_slope(x); }
+  DugdaleGap dugdale_gap(double a, double c, double t) const override {
+    return wavy_.dugdale_gap(a, c, t);
+  }
 
  private:
   const WavyProfile& wavy_;
