@@ -263,11 +263,11 @@ BENCHMARK_CAPTURE(BM_MaugisFit, jpk_retract, true)->Unit(benchmark::kMillisecond
 BENCHMARK_CAPTURE(BM_MaugisBothFit, lambda_0_12, 0.12)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_MaugisBothFit, lambda_1, 1.0)->Unit(benchmark::kMillisecond);
 
-/// A 64 x 64 map of JKR retracts (4096 curves of 2000 points, the synthetic retract above with
-/// each curve's own extra noise), in memory as a reader would give it, fitted through the map
-/// runner on 2 threads. Target: <= 30 s for the map.
-void BM_JkrMap64On2Threads(benchmark::State& state) {
-  const mdrsim::fit::PreparedSegment base = synthetic_retract(mdrsim::fit::AdhesionModel::jkr);
+/// A 64 x 64 map of retracts (4096 curves of 2000 points, the synthetic retract `base` with each
+/// curve's own extra noise), in memory as a reader would give it, fitted by `model` through the
+/// map runner on 2 threads.
+void fit_map64_on_2_threads(benchmark::State& state, const mdrsim::fit::PreparedSegment& base,
+                            mdrsim::fit::FitModel model) {
   const double spread = 0.1 * (*std::max_element(base.force.begin(), base.force.end())) / 6;
   std::vector<mdrsim::measured::MeasuredFile> files(1);
   files[0].path = "synthetic-64x64";
@@ -288,7 +288,7 @@ void BM_JkrMap64On2Threads(benchmark::State& state) {
     files[0].curves.push_back(std::move(curve));
   }
   mdrsim::fit::CurveFitOptions options;
-  options.model = mdrsim::fit::FitModel::jkr;
+  options.model = model;
   options.tip = mdrsim::fit::parse_tip("parabolic:radius=5e-6");
   mdrsim::fit::MapRun run;
   run.threads = 2;
@@ -313,7 +313,19 @@ void BM_JkrMap64On2Threads(benchmark::State& state) {
       static_cast<double>(curves.size()) * 1e-3,
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
+
+/// JKR's map. Target: <= 30 s.
+void BM_JkrMap64On2Threads(benchmark::State& state) {
+  fit_map64_on_2_threads(state, synthetic_retract(mdrsim::fit::AdhesionModel::jkr),
+                         mdrsim::fit::FitModel::jkr);
+}
 BENCHMARK(BM_JkrMap64On2Threads)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+/// Maugis' map (lambda fitted), of the Maugis retract above. Target: <= 3 min.
+void BM_MaugisMap64On2Threads(benchmark::State& state) {
+  fit_map64_on_2_threads(state, maugis_retract(), mdrsim::fit::FitModel::maugis);
+}
+BENCHMARK(BM_MaugisMap64On2Threads)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 /// The real force map (3 curves of 10000 + 4000 points): read, prepared and Hertz fitted to
 /// the approaches on 2 threads, per curve. Target: <= 5 ms per curve, reading included.
