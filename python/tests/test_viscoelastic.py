@@ -3,6 +3,8 @@ dicts and overrides, their Work's dissipations per stage and in total, and `time
 stage ends and the trajectory (docs/viscoelastic.md, docs/rate_law.md)."""
 
 import copy
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -186,3 +188,25 @@ def test_a_relaxation_without_a_clock_raises_scene_error():
         "loading.stage.2: has neither duration nor speed, which loading.stage.1 gives: a timed "
         "program gives every stage one")
 
+
+def test_a_rate_sweep_gives_the_command_csv_and_its_dissipation(cli):
+    speeds = "1e-9:1e-6:4:log"
+    command = subprocess.run([cli, "sweep", RATE_LAW, "--vary", f"loading.stage.2.speed={speeds}",
+                              "--csv", "-", "--log-level", "off"],
+                             check=True, capture_output=True, text=True).stdout
+    swept = mdrsim.sweep(mdrsim.Scene.from_file(RATE_LAW),
+                         {"loading.stage.2.speed": speeds})
+    assert swept.to_csv() == command
+    assert [row["loading.stage.2.speed"] for row in swept.rows] == [1e-9, 1e-8, 1e-7, 1e-6]
+    # Each row is the run's: its peak tension and what the front dissipated.
+    for row in swept.rows:
+        run = mdrsim.run(mdrsim.Scene.from_file(RATE_LAW).set("loading.stage.2.speed",
+                                                              row["loading.stage.2.speed"]))
+        assert row["peak_normal_force"] == run.peak.normal_force
+        assert row["dissipated_at_front"] == run.work.dissipated_at_front
+    # Faster retraction: a deeper peak and more dissipated at the front.
+    peaks = [row["peak_normal_force"] for row in swept.rows]
+    fronts = [row["dissipated_at_front"] for row in swept.rows]
+    assert peaks == sorted(peaks, reverse=True) and fronts == sorted(fronts)
+    assert "dissipated_by_bulk" not in swept.columns
+    assert {row["status"] for row in swept.rows} == {"instability"}
