@@ -157,11 +157,9 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   double held = 0.0;
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
-    if (adhesive) {
-      // The glue's changes settle in a few events per spring and stage; a stage that takes more
-      // than solver.max_events_per_spring stops, as an elastic program's does.
-      drive.limit_events(drive.counts().events() + scene.solver.max_events_per_spring * n);
-    }
+    // A row's changes settle in a few events per spring and stage; a stage that takes more than
+    // solver.max_events_per_spring stops, as an elastic program's does.
+    drive.limit_events(drive.counts().events() + scene.solver.max_events_per_spring * n);
     const ViscoelasticStageDrive sd = stage_drive(stage, held);
     const double rate = sd.rate();
     if (!stage.until_separation) {
