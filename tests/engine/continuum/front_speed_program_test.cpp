@@ -114,6 +114,24 @@ TEST(FrontSpeedProgram, LooseRtolStaysFiniteAtTheAxis) {
   }
 }
 
+// A fast retraction (beta 1e7 and 1e8) walks to the axis in radius, where a trial stage of a
+// long step can see the stretch of a grip position the front never meets with G < dgamma: that
+// stage is taken again shorter, not an error (it ended "the front stopped on its way to the
+// axis" with exit 1). The peak against the independent solution, as at slower speeds.
+TEST(FrontSpeedProgram, FastRetractionReachesTheAxis) {
+  const test::RateLawScales sc = test::rate_law_scales(kModulus, kRadius, kWork, kFrontSpeed);
+  for (const double n : {1.0, 0.5}) {
+    for (const double beta : {1e7, 1e8}) {
+      const test::RateLawRetraction ref = test::rate_law_retraction(beta, n, 1e-10);
+      const RunResult r = run_scene(test::build_scene_text(rate_law_scene(beta, n)), {});
+      EXPECT_EQ(r.status, RunStatus::instability) << beta << " " << n;
+      ASSERT_TRUE(r.peak) << beta << " " << n;
+      EXPECT_NEAR(r.peak->normal_force / (ref.peak.force * sc.force), 1.0, 1e-8)
+          << beta << " " << n;
+    }
+  }
+}
+
 // The rate law dissipates where the quasi-static front does not: the same scene without the
 // key reaches JKR's fixed-grips peak -F0, and with it the peak is beyond it.
 TEST(FrontSpeedProgram, SlowRetractionNearsJkr) {
