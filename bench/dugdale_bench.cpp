@@ -55,7 +55,7 @@ std::unique_ptr<mdrsim::Profile> profile_of(const std::string& name) {
   if (name == "power_law") return std::make_unique<mdrsim::PowerLawProfile>(3e3, 2.5);
   if (name == "sphere") return std::make_unique<mdrsim::SphereProfile>(kRadius);
   // A ripple of 10 nm at 100 um on the parabola (A k^2 R = 0.4: g still rises), whose gap
-  // integral is the generic quadrature's.
+  // integral is a fixed Gauss rule over (0, a) (wavy_gap.hpp).
   if (name == "wavy") return std::make_unique<mdrsim::WavyProfile>(kRadius, 1e-8, 1e-4);
   return tabulated_sphere();
 }

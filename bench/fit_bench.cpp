@@ -1,7 +1,8 @@
 // Google Benchmark: Hertz fitted to the real 2000-point JPK approach (nanite takes 3.2 ms for
 // the fit alone on this machine), alone and with the file's reading and preprocessing; JKR and
 // DMT fitted to a synthetic 2000-point retract and to the real JPK retract; Maugis to a synthetic
-// 2000-point retract (lambda = 1) and to the real JPK retract; whole maps through the map runner
+// 2000-point retract (lambda = 1) and to the real JPK retract, and to a synthetic approach and
+// retract together (lambda 0.12 and 1); whole maps through the map runner
 // on 2 threads: a synthetic 64 x 64 JKR map, and the real force map with reading.
 #include <benchmark/benchmark.h>
 
@@ -20,6 +21,7 @@
 #include "engine/fit/maugis_fit.hpp"
 #include "engine/fit/prepared_curve.hpp"
 #include "engine/measured/read_force_curves.hpp"
+#include "engine/reference/maugis_lever.hpp"
 
 namespace {
 
@@ -193,6 +195,45 @@ void BM_MaugisFit(benchmark::State& state, bool real) {
   state.counters["points"] = static_cast<double>(segment.force.size());
   state.counters["lambda"] = lambda;
 }
+
+/// A lever's recorded segment with 1 % noise of its largest force, as the Maugis tests build
+/// it (the noise seeded by `seed`).
+mdrsim::fit::PreparedSegment with_lever_noise(const mdrsim::maugis_reference::LeverCurve& curve,
+                                              unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> noise(0.0, 0.01 * curve.peak);
+  mdrsim::fit::PreparedSegment segment;
+  segment.tip_position = curve.z;
+  for (const double f : curve.force) segment.force.push_back(f + noise(random));
+  segment.height_channel = "tip_position";
+  segment.spring_constant = curve.kappa_si;
+  return segment;
+}
+
+/// Approach and retract fitted together (fit_maugis_both, `--segment both`): Maugis' own path
+/// through a lever of the contact's stiffness (kappa = 1, spring constant known), 2000 samples
+/// each pressed to six pull-off forces, 1 % noise, the test's first seed (its sampling phases
+/// and noise seeds). Target: <= 30 ms.
+void BM_MaugisBothFit(benchmark::State& state, double lambda) {
+  namespace ref = mdrsim::maugis_reference;
+  const ref::MaugisScales scales{5e-6, 1e6 / 0.75, 0.02};
+  const auto approach = with_lever_noise(ref::lever_curve(scales, lambda, true, 1.0, 6, 0.15), 1);
+  const auto retract =
+      with_lever_noise(ref::lever_curve(scales, lambda, false, 1.0, 6, 0.52), 1001);
+  mdrsim::fit::MaugisFitOptions fit_options;
+  fit_options.tip = mdrsim::fit::parse_tip("parabolic:radius=5e-6");
+  long evaluations = 0;
+  double fitted_lambda = 0.0;
+  for (auto _ : state) {
+    const auto fit = mdrsim::fit::fit_maugis_both(approach, retract, fit_options);
+    evaluations = fit.evaluations;
+    fitted_lambda = fit.maugis_parameter.value;
+    benchmark::DoNotOptimize(fit.work_of_adhesion.value);
+  }
+  state.counters["evaluations"] = static_cast<double>(evaluations);
+  state.counters["lambda"] = fitted_lambda;
+}
+
 /// One evaluation of the Maugis model's parts at lambda = 1: the path sampled (the branch's
 /// states), and 2000 depths placed on it.
 void BM_MaugisBranch(benchmark::State& state, bool place) {
@@ -219,12 +260,14 @@ BENCHMARK_CAPTURE(BM_MaugisBranch, build, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_MaugisBranch, place_2000, true)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_MaugisFit, synthetic_retract, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_MaugisFit, jpk_retract, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MaugisBothFit, lambda_0_12, 0.12)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MaugisBothFit, lambda_1, 1.0)->Unit(benchmark::kMillisecond);
 
-/// A 64 x 64 map of JKR retracts (4096 curves of 2000 points, the synthetic retract above with
-/// each curve's own extra noise), in memory as a reader would give it, fitted through the map
-/// runner on 2 threads. Target: <= 30 s for the map.
-void BM_JkrMap64On2Threads(benchmark::State& state) {
-  const mdrsim::fit::PreparedSegment base = synthetic_retract(mdrsim::fit::AdhesionModel::jkr);
+/// A 64 x 64 map of retracts (4096 curves of 2000 points, the synthetic retract `base` with each
+/// curve's own extra noise), in memory as a reader would give it, fitted by `model` through the
+/// map runner on 2 threads.
+void fit_map64_on_2_threads(benchmark::State& state, const mdrsim::fit::PreparedSegment& base,
+                            mdrsim::fit::FitModel model) {
   const double spread = 0.1 * (*std::max_element(base.force.begin(), base.force.end())) / 6;
   std::vector<mdrsim::measured::MeasuredFile> files(1);
   files[0].path = "synthetic-64x64";
@@ -245,7 +288,7 @@ void BM_JkrMap64On2Threads(benchmark::State& state) {
     files[0].curves.push_back(std::move(curve));
   }
   mdrsim::fit::CurveFitOptions options;
-  options.model = mdrsim::fit::FitModel::jkr;
+  options.model = model;
   options.tip = mdrsim::fit::parse_tip("parabolic:radius=5e-6");
   mdrsim::fit::MapRun run;
   run.threads = 2;
@@ -270,7 +313,19 @@ void BM_JkrMap64On2Threads(benchmark::State& state) {
       static_cast<double>(curves.size()) * 1e-3,
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
+
+/// JKR's map. Target: <= 30 s.
+void BM_JkrMap64On2Threads(benchmark::State& state) {
+  fit_map64_on_2_threads(state, synthetic_retract(mdrsim::fit::AdhesionModel::jkr),
+                         mdrsim::fit::FitModel::jkr);
+}
 BENCHMARK(BM_JkrMap64On2Threads)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+/// Maugis' map (lambda fitted), of the Maugis retract above. Target: <= 3 min.
+void BM_MaugisMap64On2Threads(benchmark::State& state) {
+  fit_map64_on_2_threads(state, maugis_retract(), mdrsim::fit::FitModel::maugis);
+}
+BENCHMARK(BM_MaugisMap64On2Threads)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 /// The real force map (3 curves of 10000 + 4000 points): read, prepared and Hertz fitted to
 /// the approaches on 2 threads, per curve. Target: <= 5 ms per curve, reading included.

@@ -60,11 +60,6 @@ CosSin small_cos_sin(double d) {
   return {c, s};
 }
 
-/// An angle with its cosine and sine.
-struct Angle {
-  double angle, cos, sin;
-};
-
 /// Power series in phi^2, lowest power first.
 constexpr std::size_t kSeriesLength = 16;
 using PowerSeries = std::array<double, kSeriesLength>;
@@ -100,8 +95,10 @@ constexpr PowerSeries sin_squared_series() {
 /// int_{-d}^{d} (cos(phi) - 1)^i sin^l(phi) dphi for even l, as d^(2 lead + 1) times a series
 /// in d^2. The integrands are sums of cos(m phi), m <= 3, so each term is below its predecessor
 /// by about 9 d^2 / ((2n + 1)(2n + 2)): 6 terms are exact to rounding up to d = 0.15 (the arcs'
-/// half-widths), 4 below d = 0.02 (most arcs; both checked against 40-digit quadrature), with
-/// none of the cancellation the closed forms (sin d - d, ...) have at small d.
+/// half-widths; checked against 40-digit quadrature), with none of the cancellation the closed
+/// forms (sin d - d, ...) have at small d. All 6 are summed however narrow the arc: a loop over
+/// arcs with no branch in it is taken two arcs at a time (16-byte vectors), which costs less
+/// than choosing 4 terms for each narrow arc (d < 0.02, where 4 suffice) one arc at a time.
 constexpr std::size_t kArcTerms = 6;
 struct ArcSeries {
   std::size_t lead;
@@ -120,33 +117,25 @@ constexpr ArcSeries arc_series(int cos_power, int sin_power) {
   return s;
 }
 
-template <std::size_t Terms>
 double arc_moment(const ArcSeries& s, double d, double d2) {
-  static_assert(Terms <= kArcTerms);
   double sum = 0.0;
-  for (std::size_t n = Terms; n-- > 0;) sum = sum * d2 + s.terms[n];
+  for (std::size_t n = kArcTerms; n-- > 0;) sum = sum * d2 + s.terms[n];
   double power = d;
   for (std::size_t n = 0; n < s.lead; ++n) power *= d2;
   return power * sum;
 }
 
 /// The even moments over [-d, d] that a cubic in x = c cos(psi) needs about the arc's middle:
-/// (cos - 1)^i sin^l with i + l <= 3 (the odd powers of sin vanish).
+/// (cos - 1)^i sin^l with i + l <= 3 (the odd powers of sin vanish). Three series (kMoment*);
+/// the two with sin^2 = -(cos - 1)^2 - 2 (cos - 1) follow from them, each a difference whose
+/// smaller term is below d^2/5 of the larger (no cancellation).
 struct ArcMoments {
-  double c1, c2, c3, s2, c1s2;
+  double c1, c2, c3;
+  double s2() const { return -c2 - 2.0 * c1; }
+  double c1s2() const { return -c3 - 2.0 * c2; }
 };
-template <std::size_t Terms>
-ArcMoments arc_moments_to(double d) {
-  static constexpr ArcSeries kC1 = arc_series(1, 0), kC2 = arc_series(2, 0), kC3 = arc_series(3, 0),
-                             kS2 = arc_series(0, 2), kC1S2 = arc_series(1, 2);
-  const double d2 = d * d;
-  return {arc_moment<Terms>(kC1, d, d2), arc_moment<Terms>(kC2, d, d2),
-          arc_moment<Terms>(kC3, d, d2), arc_moment<Terms>(kS2, d, d2),
-          arc_moment<Terms>(kC1S2, d, d2)};
-}
-ArcMoments arc_moments(double d) {
-  return d < 0.02 ? arc_moments_to<4>(d) : arc_moments_to<kArcTerms>(d);
-}
+constexpr ArcSeries kMomentC1 = arc_series(1, 0), kMomentC2 = arc_series(2, 0),
+                    kMomentC3 = arc_series(3, 0);
 
 /// Whether r f'(r) never falls on the cubic pieces of f: (r f')' = f' + r f'' is a quadratic
 /// in r on each piece, whose least value on the piece is at an end or at its vertex.
@@ -314,16 +303,136 @@ double TabulatedProfile::nonadhesive_force_per_modulus(double a) const {
   return 2.0 * (a * image_.value(a) - image_.integral(a));
 }
 
+namespace {
+
+/// A Dugdale zone's J and dJ/dt on the image's Hermite pieces (TabulatedProfile::dugdale_gap),
+/// `Carried` where the zone is thin. The arcs are taken in blocks: the block's knot angles first
+/// (one arccos and one square root a knot, each shared by the two arcs that meet there), then
+/// each arc's middle, then its moments, then the sums, each a loop of its own with no call
+/// inside: the processor overlaps the arcs' long chains (a knot's arccos, the half-angle's
+/// series, the division to the middle, the moments' series), which one loop doing all of an
+/// arc before the next would wait on in turn.
+template <bool Carried>
+DugdaleGap gap_on_pieces(const ShapePreservingCubic& image, double a, double c, double t) {
+  const std::vector<double>& knots = image.knots();
+  const std::size_t first = image.piece(a);
+  const double image_at_contact = Carried ? 0.0 : image.value_on(first, a);
+  constexpr double kWidest = 0.3;  // wider arcs are split
+  constexpr std::size_t kBlock = 32;
+  // A zone spans at most pi/2, so that its splits add at most ceil((pi/2)/kWidest) - 1 arcs.
+  constexpr std::size_t kMostArcs = kBlock + 6;
+  std::array<double, kMostArcs + 1> angle, cosine, sine;  // the arcs' ends, from the cohesive edge
+  std::array<std::size_t, kMostArcs> piece_of;
+  std::array<double, kMostArcs> half, cos_half_minus_one, sin_half, mid_x, mid_y;
+  std::array<double, kMostArcs> moment_c1, moment_c2, moment_c3;
+  std::array<double, kBlock> knot_angle, knot_cos, knot_sin;
+  const double to_unit = 1.0 / c;
+  const double cos_t = std::cos(t), sin_t = std::sin(t);
+  double rise = 0.0;  // r at the upper end of the next arc (x nearer c)
+  double gap = 0.0, slope = 0.0;
+  std::size_t k = image.piece(c);
+  angle[0] = 0.0;
+  cosine[0] = 1.0;
+  sine[0] = 0.0;
+  for (;;) {
+    // The block's knots k, k - 1, ... above the contact's piece; where it reaches that piece,
+    // its last arc ends at t.
+    const std::size_t inner = k > first ? std::min(k - first, kBlock) : 0;
+    const bool closes = inner < kBlock;
+    // Each knot's angle with its cosine x_k/c and sine sqrt((c - x_k)(c + x_k))/c, exact where
+    // the angle is small (1 - (x_k/c)^2 would cancel there).
+    for (std::size_t j = 0; j < inner; ++j) {
+      const double x = knots[k - j];
+      knot_cos[j] = x * to_unit;
+      knot_angle[j] = std::acos(knot_cos[j]);
+      knot_sin[j] = std::sqrt((c - x) * (c + x)) * to_unit;
+    }
+    std::size_t arcs = 0;
+    const auto add_end = [&](double psi, double cos_psi, double sin_psi, std::size_t piece) {
+      const double width = psi - angle[arcs];
+      const int parts = width > kWidest ? static_cast<int>(std::ceil(width / kWidest)) : 1;
+      const double from = angle[arcs];
+      for (int p = 1; p < parts; ++p) {
+        const double split = from + width * p / parts;
+        piece_of[arcs++] = piece;
+        angle[arcs] = split;
+        cosine[arcs] = std::cos(split);
+        sine[arcs] = std::sin(split);
+      }
+      piece_of[arcs++] = piece;
+      angle[arcs] = psi;
+      cosine[arcs] = cos_psi;
+      sine[arcs] = sin_psi;
+    };
+    for (std::size_t j = 0; j < inner; ++j) {  // a knot whose angle rounds past t ends at t
+      if (knot_angle[j] > t) {
+        add_end(t, cos_t, sin_t, k - j);
+      } else {
+        add_end(knot_angle[j], knot_cos[j], knot_sin[j], k - j);
+      }
+    }
+    if (closes) add_end(t, cos_t, sin_t, k - inner);
+    for (std::size_t i = 0; i < arcs; ++i) {
+      half[i] = 0.5 * (angle[i + 1] - angle[i]);
+      const CosSin h = small_cos_sin(half[i]);
+      cos_half_minus_one[i] = h.cos_minus_one;
+      if constexpr (Carried) sin_half[i] = h.sin;
+      const double to_mid = 0.5 / (1.0 + h.cos_minus_one);
+      mid_x[i] = c * (cosine[i] + cosine[i + 1]) * to_mid;
+      mid_y[i] = c * (sine[i] + sine[i + 1]) * to_mid;
+    }
+    for (std::size_t i = 0; i < arcs; ++i) {
+      const double d = half[i], d2 = d * d;
+      moment_c1[i] = arc_moment(kMomentC1, d, d2);
+      moment_c2[i] = arc_moment(kMomentC2, d, d2);
+      moment_c3[i] = arc_moment(kMomentC3, d, d2);
+    }
+    for (std::size_t i = 0; i < arcs; ++i) {
+      const double xm = mid_x[i], ym = mid_y[i];
+      const ShapePreservingCubic::Taylor p = image.taylor_on(piece_of[i], xm);
+      const ArcMoments e{moment_c1[i], moment_c2[i], moment_c3[i]};
+      // The integrand's constant term about x_m: g(x_m) - g(a), or the carried rise r(x_m).
+      double level = p.value - image_at_contact;
+      if constexpr (Carried) {
+        // The arc's ends about its middle: u = x_m (cos d - 1) +- y_m sin d (+ at psi_m - d).
+        const double bend = xm * cos_half_minus_one[i], turn = ym * sin_half[i];
+        const double top = bend + turn, bottom = bend - turn;
+        // r(x_m) = r(top) - (g(top) - g(x_m)); the increment across the arc, g(bottom) - g(top),
+        // as (bottom - top) (g'_m + h_m (bottom + top) + s_m (bottom^2 + bottom top + top^2)).
+        level = rise - top * (p.slope + top * (p.half_curvature + top * p.sixth_third));
+        rise += -2.0 * turn *
+                (p.slope + p.half_curvature * 2.0 * bend +
+                 p.sixth_third * (bottom * bottom + bottom * top + top * top));
+      }
+      // int u^j dphi over the arc.
+      const double u0 = 2.0 * half[i], u1 = xm * e.c1, u2 = xm * xm * e.c2 + ym * ym * e.s2(),
+                   u3 = xm * (xm * xm * e.c3 + 3.0 * ym * ym * e.c1s2());
+      gap += level * u0 + p.slope * u1 + p.half_curvature * u2 + p.sixth_third * u3;
+      // x g'(x) = (x_m + u) (g'_m + 2 h_m u + 3 s_m u^2) in powers of u.
+      slope += xm * p.slope * u0 + (p.slope + 2.0 * p.half_curvature * xm) * u1 +
+               (2.0 * p.half_curvature + 3.0 * p.sixth_third * xm) * u2 + 3.0 * p.sixth_third * u3;
+    }
+    if (closes) break;
+    k -= inner;
+    angle[0] = angle[arcs];
+    cosine[0] = cosine[arcs];
+    sine[0] = sine[arcs];
+  }
+  return {.integral = Carried ? gap - t * rise : gap, .angle_slope = sin_t / cos_t * slope};
+}
+
+}  // namespace
+
 // In x = c cos(psi) the image's pieces meet at psi_k = arccos(x_k/c), and on each g is a cubic
 // in cos(psi). J and dJ/dt's x g'(x) are integrated in closed form on each arc [psi_m - d,
 // psi_m + d] of a piece: with the cubic expanded about x_m = c cos(psi_m), u = x - x_m =
 // x_m (cos phi - 1) - y_m sin phi (y_m = c sin(psi_m)), and the powers of u integrated over phi
-// in [-d, d] are sums of the five even moments arc_moments gives from their series, of one sign
-// in each power: no cancellation however much the piece bends, a few dozen operations an arc.
-// Where the zone is thin (t < 0.3) the difference g(x) - g(a), which would cancel there, is
-// never formed: the rise r(x) = g(x) - g(c) is carried down from c, arc by arc, by the cubic's
-// increments across it (each the arc's chord times a mean slope), and J = int_0^t r dpsi -
-// t r(a), whose two terms are about g'(c) c t^3 / 6 and g'(c) c t^3 / 2 (under 2 bits lost);
+// in [-d, d] are sums of the five even moments ArcMoments holds (three series, two sums of
+// them), of one sign in each power: no cancellation however much the piece bends, a few dozen
+// operations an arc. Where the zone is thin (t < 0.3) the difference g(x) - g(a), which would
+// cancel there, is never formed: the rise r(x) = g(x) - g(c) is carried down from c, arc by arc, by
+// the cubic's increments across it (each the arc's chord times a mean slope), and J = int_0^t r
+// dpsi - t r(a), whose two terms are about g'(c) c t^3 / 6 and g'(c) c t^3 / 2 (under 2 bits lost);
 // above, g(x) - g(a) is taken as it is (a carried rise would pile up the rounding of a rough
 // image's ups and downs). Arcs are at most 0.3 wide (wider pieces are split). The adaptive rule
 // would halve its panels at every kink of g'' instead, some 30 panels of 21 nodes a zone.
@@ -332,72 +441,7 @@ DugdaleGap TabulatedProfile::dugdale_gap(double a, double c, double t) const {
   if (!(c <= outer_radius()) || !(a > 0.0) || !(t > 0.0)) {
     return dugdale_gap_quadrature(*this, a, c, t);
   }
-  const std::vector<double>& knots = image_.knots();
-  const bool carried = t < 0.3;
-  const double image_at_contact = carried ? 0.0 : image_.value(a);
-  double rise = 0.0;  // r at the arc's upper end (x nearer c)
-  double gap = 0.0, slope = 0.0;
-  std::size_t k = image_.piece(c);
-  const std::size_t first = image_.piece(a);
-  const auto add_arc = [&](const Angle& lo, const Angle& hi) {
-    const double half = 0.5 * (hi.angle - lo.angle);
-    const auto [cos_half_minus_one, sin_half] = small_cos_sin(half);
-    const double to_mid = 0.5 / (1.0 + cos_half_minus_one);
-    const double xm = c * (lo.cos + hi.cos) * to_mid, ym = c * (lo.sin + hi.sin) * to_mid;
-    const ShapePreservingCubic::Taylor p = image_.taylor_on(k, xm);
-    const ArcMoments e = arc_moments(half);
-    // The integrand's constant term about x_m: g(x_m) - g(a), or the carried rise r(x_m).
-    double level = p.value - image_at_contact;
-    if (carried) {
-      // The arc's ends about its middle: u = x_m (cos d - 1) +- y_m sin d (+ at psi_m - d).
-      const double bend = xm * cos_half_minus_one, turn = ym * sin_half;
-      const double top = bend + turn, bottom = bend - turn;
-      // r(x_m) = r(top) - (g(top) - g(x_m)); the increment across the arc, g(bottom) - g(top),
-      // as (bottom - top) (g'_m + h_m (bottom + top) + s_m (bottom^2 + bottom top + top^2)).
-      level = rise - top * (p.slope + top * (p.half_curvature + top * p.sixth_third));
-      rise += -2.0 * turn *
-              (p.slope + p.half_curvature * 2.0 * bend +
-               p.sixth_third * (bottom * bottom + bottom * top + top * top));
-    }
-    // int u^j dphi over the arc.
-    const double u0 = 2.0 * half, u1 = xm * e.c1, u2 = xm * xm * e.c2 + ym * ym * e.s2,
-                 u3 = xm * (xm * xm * e.c3 + 3.0 * ym * ym * e.c1s2);
-    gap += level * u0 + p.slope * u1 + p.half_curvature * u2 + p.sixth_third * u3;
-    // x g'(x) = (x_m + u) (g'_m + 2 h_m u + 3 s_m u^2) in powers of u.
-    slope += xm * p.slope * u0 + (p.slope + 2.0 * p.half_curvature * xm) * u1 +
-             (2.0 * p.half_curvature + 3.0 * p.sixth_third * xm) * u2 + 3.0 * p.sixth_third * u3;
-  };
-  constexpr double kWidest = 0.3;
-  // Each knot's angle with its cosine x_k/c and sine sqrt((c - x_k)(c + x_k))/c, exact where
-  // the angle is small (1 - (x_k/c)^2 would cancel there).
-  const double to_unit = 1.0 / c;
-  const auto at_knot = [&](double x) {
-    const double cos_psi = x * to_unit;
-    return Angle{std::acos(cos_psi), cos_psi, std::sqrt((c - x) * (c + x)) * to_unit};
-  };
-  const Angle end{t, std::cos(t), std::sin(t)};
-  Angle lo{0.0, 1.0, 0.0};
-  for (;; --k) {
-    const bool last = k <= first;
-    Angle hi = last ? end : at_knot(knots[k]);
-    if (hi.angle > t) hi = end;
-    const double width = hi.angle - lo.angle;
-    if (width <= kWidest) {
-      add_arc(lo, hi);
-    } else {
-      const int parts = static_cast<int>(std::ceil(width / kWidest));
-      Angle from = lo;
-      for (int p = 1; p <= parts; ++p) {
-        const double psi = lo.angle + width * p / parts;
-        const Angle to = p == parts ? hi : Angle{psi, std::cos(psi), std::sin(psi)};
-        add_arc(from, to);
-        from = to;
-      }
-    }
-    if (last) break;
-    lo = hi;
-  }
-  return {.integral = carried ? gap - t * rise : gap, .angle_slope = std::tan(t) * slope};
+  return t < 0.3 ? gap_on_pieces<true>(image_, a, c, t) : gap_on_pieces<false>(image_, a, c, t);
 }
 
 std::optional<ExactIntegral> TabulatedProfile::squared_gap_integral(double a, double d) const {

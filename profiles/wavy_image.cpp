@@ -4,6 +4,7 @@
 #include <math.h>  // y0, y1 (POSIX)
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace mdrsim {
@@ -110,8 +111,14 @@ RippleIntegrals asymptotic(double z) {
 }  // namespace
 
 RippleIntegrals ripple_integrals(double z) {
-  if (z < kSeriesBelow) return by_series(z);
-  return z < kAsymptoticFrom ? by_bessel_sums(z) : asymptotic(z);
+  // A contact state asks g(a), g'(a) and the force at one a, each the ripple integrals at one z
+  // (a Bessel sum of up to 130 steps): the last z's are kept, per thread.
+  thread_local double last_z = std::numeric_limits<double>::quiet_NaN();
+  thread_local RippleIntegrals last{};
+  if (z == last_z) return last;
+  last = z < kSeriesBelow ? by_series(z) : z < kAsymptoticFrom ? by_bessel_sums(z) : asymptotic(z);
+  last_z = z;
+  return last;
 }
 
 }  // namespace mdrsim

@@ -18,7 +18,8 @@ struct RippleIntegrals {
 ///   I(z) = 2 sum_j J_{2j+1}(z) / (2j+1),   I'(z) = J_0(z) + 2 sum_{j>=1} J_{2j}(z) / (1 - 4 j^2),
 /// with every J_n(z) from Miller's backward recurrence, normalized by J_0 + 2 sum J_{2j} = 1,
 /// up to z = 100; from there the Struve functions' asymptotic series over Y_0 and Y_1, in O(1).
-/// About 1e-15 relative to the scale of I (which is at most about 1.4).
+/// About 1e-15 relative to the scale of I (which is at most about 1.4). The last z's integrals
+/// are kept per thread: a contact state asks them at one z for g, g' and the force.
 RippleIntegrals ripple_integrals(double z);
 
 }  // namespace mdrsim

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/base/angle_series.hpp"
+#include "profiles/wavy_gap.hpp"
 #include "profiles/wavy_image.hpp"
 
 namespace mdrsim {
@@ -41,6 +43,18 @@ double WavyProfile::nonadhesive_force_per_modulus(double contact_radius) const {
   const RippleIntegrals ripple = ripple_integrals(z);
   const double ripple_part = amplitude_ * a * (z * ripple.value - ripple.slope_deficit);
   return 2.0 * (2.0 * a * a * a / (3.0 * radius_) + ripple_part);
+}
+
+DugdaleGap WavyProfile::dugdale_gap(double a, double c, double t) const {
+  if (wavenumber_ * a > std::numbers::pi * kMaxWavyGapHalfWaves) {
+    return dugdale_gap_quadrature(*this, a, c, t);
+  }
+  // The parabola's part as ParabolicProfile::dugdale_gap has it.
+  const double sin_t = std::sin(t), cos_t = std::cos(t);
+  const double s = c * sin_t;
+  const DugdaleGap ripple = wavy_ripple_gap(amplitude_, wavenumber_, a, c, t);
+  return {.integral = (a * a * tan_minus_angle(t) + t * s * s) / (2.0 * radius_) + ripple.integral,
+          .angle_slope = std::tan(t) * c * c * (t + sin_t * cos_t) / radius_ + ripple.angle_slope};
 }
 
 }  // namespace mdrsim

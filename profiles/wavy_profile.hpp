@@ -28,6 +28,11 @@ class WavyProfile final : public Profile {
   /// In closed form: 2 int_0^a (g(a) - g(x)) dx = 2 [2 a^3/(3R) + (A/k) Z (Z I(Z) - (1 - I'(Z)))]
   /// with Z = k a, as int_0^Z z I(z) dz = (pi/2) Z H_1(Z) = Z (1 - I'(Z)) (d(z H_1)/dz = z H_0).
   double nonadhesive_force_per_modulus(double contact_radius) const override;
+  /// The parabola's J in closed form (ParabolicProfile::dugdale_gap) and the ripple's by
+  /// wavy_ripple_gap (wavy_gap.hpp), about 1e-14 of J; dugdale_gap_quadrature where the contact
+  /// holds more than kMaxWavyGapHalfWaves half wavelengths of the ripple.
+  DugdaleGap dugdale_gap(double contact_radius, double cohesive_radius,
+                         double angle) const override;
   std::optional<double> jkr_scale_radius() const override { return radius_; }
   bool folds_at_every_crest() const override { return true; }
 

@@ -210,6 +210,13 @@ echo
 echo "== viscoelastic springs: Lee-Radok and Ting" >&2
 "$py" scripts/plot_viscoelastic.py --results "$results" --mdrsim "$mdrsim"
 
+# The rate law of the edge (docs/rate_law.md): the peak tension of a parabola retracted from
+# JKR's zero-force state against beta, n = 1 and 1/2, two sweeps of the continuum route beside
+# the front's ODE solved in the script (solve_ivp, rtol 1e-10), JKR's slow limit and the fast
+# asymptote; an engine point beyond 1e-6 of the ODE fails the job.
+echo "== rate law of the edge: peak tension against speed" >&2
+"$py" scripts/plot_rate_law_speed.py --results "$results" --mdrsim "$mdrsim"
+
 echo "== comparison with the paper's closed forms" >&2
 "$py" scripts/comparison_table.py --results "$results" --scenes scenes
 

@@ -387,38 +387,31 @@ RegimeChoice choose_regime(double lambda) {
 
 namespace {
 
-/// fit_maugis, and with `approach` (the segment then being the retract) both segments on one
-/// path: the approach's samples from its jump in on it, the rest on the baseline, its jump in
-/// the one more residual.
-AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitOptions& options,
-                                const PreparedSegment* approach) {
-  AdhesiveFit fit;
-  const std::vector<double>& z = segment.tip_position;
-  const std::vector<double>& f = segment.force;
-  const std::size_t n = f.size();
-  fit.points = n;
-  if (options.tip.kind == TipKind::cone || !(options.tip.radius > 0.0)) {
-    fit.status = FitStatus::not_converged;
-    fit.message = "the Maugis parameter needs a tip radius (parabolic or sphere)";
-    return fit;
-  }
-  // The DMT and JKR fits find the contact branch's samples and give the starts.
+/// The JKR and DMT fits a Maugis fit starts from; the JKR fit also finds the path's samples.
+struct AdhesiveStarts {
+  AdhesiveFit jkr, dmt;
+};
+
+/// The starts on `segment`: its JKR and DMT fits, and where the JKR fit finds no contact, on the
+/// samples past the 50 before the jump in `found` (an approach fitted alone), or a retract
+/// without its last tenth.
+AdhesiveStarts adhesive_starts(const PreparedSegment& segment, const MaugisFitOptions& options,
+                               std::size_t found, bool alone) {
   AdhesiveFitOptions adhesive;
   adhesive.tip = options.tip;
   adhesive.poisson_ratio = options.poisson_ratio;
   adhesive.fixed = options.fixed;
   adhesive.retract = options.retract;
   adhesive.model = AdhesionModel::jkr;
-  AdhesiveFit jkr = fit_adhesive(segment, adhesive);
+  AdhesiveStarts starts;
+  AdhesiveFit& jkr = starts.jkr;
+  jkr = fit_adhesive(segment, adhesive);
+  const std::size_t n = segment.force.size();
   // An approach whose jump in is lost in the noise for adhesive_fit's single largest fall:
   // the starts from the samples past the 50 before the jump approach_jump finds.
-  const JumpIn jump_in_found = approach          ? approach_jump(approach->force)
-                               : options.retract ? JumpIn{}
-                                                 : approach_jump(f);
-  const std::size_t found = jump_in_found.index;
   PreparedSegment near;
   const PreparedSegment* start_segment = &segment;
-  if (!approach && jkr.status == FitStatus::no_contact && found > 50) {
+  if (alone && jkr.status == FitStatus::no_contact && found > 50) {
     near = segment;
     const auto cut = static_cast<std::ptrdiff_t>(found - 50);
     near.tip_position.erase(near.tip_position.begin(), near.tip_position.begin() + cut);
@@ -437,12 +430,40 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
     jkr = fit_adhesive(near, adhesive);
   }
   adhesive.model = AdhesionModel::dmt;
-  AdhesiveFit dmt;  // a start only: none where DMT's sphere is pressed past its reach
   try {
-    dmt = fit_adhesive(*start_segment, adhesive);
+    starts.dmt = fit_adhesive(*start_segment, adhesive);
   } catch (const std::domain_error&) {
-    dmt.status = FitStatus::not_converged;
+    // A start only: none where DMT's sphere is pressed past its reach.
+    starts.dmt.status = FitStatus::not_converged;
   }
+  return starts;
+}
+
+/// fit_maugis, and with `approach` (the segment then being the retract) both segments on one
+/// path: the approach's samples from its jump in on it, the rest on the baseline, its jump in
+/// the one more residual. `known`: the segment's adhesive_starts, where already fitted.
+AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitOptions& options,
+                                const PreparedSegment* approach,
+                                const AdhesiveStarts* known = nullptr) {
+  AdhesiveFit fit;
+  const std::vector<double>& z = segment.tip_position;
+  const std::vector<double>& f = segment.force;
+  const std::size_t n = f.size();
+  fit.points = n;
+  if (options.tip.kind == TipKind::cone || !(options.tip.radius > 0.0)) {
+    fit.status = FitStatus::not_converged;
+    fit.message = "the Maugis parameter needs a tip radius (parabolic or sphere)";
+    return fit;
+  }
+  const JumpIn jump_in_found = approach          ? approach_jump(approach->force)
+                               : options.retract ? JumpIn{}
+                                                 : approach_jump(f);
+  const std::size_t found = jump_in_found.index;
+  // The DMT and JKR fits find the contact branch's samples and give the starts.
+  const AdhesiveStarts adhesive =
+      known ? *known : adhesive_starts(segment, options, found, approach == nullptr);
+  const AdhesiveFit& jkr = adhesive.jkr;
+  const AdhesiveFit& dmt = adhesive.dmt;
   if (jkr.status == FitStatus::no_contact || jkr.contact_samples == 0) {
     fit.status = jkr.status;
     fit.message = jkr.message;
@@ -854,7 +875,7 @@ AdhesiveFit fit_maugis_segments(const PreparedSegment& segment, const MaugisFitO
   // times the truth). The retract alone places the jump in too, where the tip reaches -h0 of
   // its fit: the joint fit from there, kept where its samples' sum of squares is lower.
   if (approach && jump_row) {
-    const AdhesiveFit alone = fit_maugis_segments(segment, options, nullptr);
+    const AdhesiveFit alone = fit_maugis_segments(segment, options, nullptr, &adhesive);
     Parameters q = {alone.youngs_modulus.value,   alone.work_of_adhesion.value,
                     alone.maugis_parameter.value, alone.contact_point.value,
                     alone.baseline_offset.value,  alone.baseline_slope.value};

@@ -225,15 +225,20 @@ std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const D
                                                  std::span<const double> contact_radii) {
   std::vector<DugdaleState> states;
   states.reserve(contact_radii.size());
-  // The half-chords of the last four zones: a guess that, on a curve of close radii, lies inside
-  // Newton's 1e-9, so that one step ends most solves.
+  // The half-chords of the last zones with their slopes ds/da, read at each solve's last iterate
+  // (its gap integral already taken): the cubic Hermite through the last two, a guess that, on
+  // a curve of close radii, lies inside Newton's 1e-9, so that one step ends most solves.
   ContinuedGuess chords;
   for (const double a : contact_radii) {
     double first = chords.at(a);
     if (!(first > 0.0)) first = first_half_chord(profile, law, a);
-    const DugdaleState state = contact_state_from(profile, law, a, first);
-    states.push_back(state);
-    chords.add(a, state.cohesive_radius * std::sin(state.angle));
+    DugdaleSlopedState sloped;
+    sloped.offset = std::numeric_limits<double>::infinity();
+    contact_state_from(profile, law, a, first, &sloped);
+    states.push_back(sloped.state);
+    chords.add(a, sloped.half_chord,
+               std::isfinite(sloped.offset) ? sloped.slopes.half_chord
+                                            : std::numeric_limits<double>::quiet_NaN());
   }
   return states;
 }

@@ -117,10 +117,10 @@ class ContinuedGuess {
 };
 
 /// The contact branch at each of `contact_radii` (a > 0 [m]), in their order: each solve
-/// starts from the zones of the four before (their cubic), so that a force curve of close radii
-/// costs one Newton step a point where it is smooth instead of five. The same states as
-/// dugdale_contact_state, to its convergence (the last steps agree to 1e-9 of the half-chord, the
-/// root to its rounding).
+/// starts from the two zones before with their slopes ds/da (their cubic Hermite), so that a
+/// force curve of close radii costs one Newton step a point where it is smooth instead of five. The
+/// same states as dugdale_contact_state, to its convergence (the last steps agree to 1e-9 of the
+/// half-chord, the root to its rounding).
 std::vector<DugdaleState> dugdale_contact_states(const Profile& profile, const DugdaleLaw& law,
                                                  std::span<const double> contact_radii);
 

@@ -1,6 +1,8 @@
 // The monotone pieces of an exponential sum and the first that reaches a level.
 #include "engine/model/prony_root.hpp"
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,10 +11,16 @@
 namespace mdrsim {
 namespace {
 
+// A run's events each locate a root: its few terms (and the pieces' ends) stay off the heap,
+// which took most of an event's time.
+constexpr std::size_t kInlineTerms = 8;
+template <class T>
+using InlineVector = boost::container::small_vector<T, kInlineTerms>;
+
 // p(s) = constant + sum_j amplitude_j exp(-rate_j s), rates >= 0 and distinct after merging.
 struct ConstantPlusDecays {
   double constant = 0.0;
-  std::vector<std::pair<double, double>> terms;  // amplitude, rate [1/s]
+  InlineVector<std::pair<double, double>> terms;  // amplitude, rate [1/s]
 
   double at(double s) const {
     double sum = constant;
@@ -38,32 +46,40 @@ ConstantPlusDecays merged_decays(ConstantPlusDecays p) {
       out.terms.emplace_back(amplitude, rate);
     }
   }
-  std::erase_if(out.terms, [](const auto& term) { return term.first == 0.0; });
+  out.terms.erase(std::remove_if(out.terms.begin(), out.terms.end(),
+                                 [](const auto& term) { return term.first == 0.0; }),
+                  out.terms.end());
   return out;
 }
 
-// The sign changes of fn over [points[i], points[i+1]] where fn is monotone on each piece.
+// Appends to `roots` the sign changes of fn strictly inside (points.front(), points.back()),
+// fn monotone on each [points[i], points[i+1]]. (Appended in place: a small vector returned by
+// value trips GCC's -Wstringop-overread inside Boost.Container.)
 template <class Fn>
-std::vector<double> sign_changes_on_monotone_pieces(Fn fn, const std::vector<double>& points) {
-  std::vector<double> roots;
+void append_sign_changes(Fn fn, const InlineVector<double>& points, InlineVector<double>& roots) {
+  const double first = points.front(), last = points.back();
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const double lo = points[i], hi = points[i + 1];
     const double f_lo = fn(lo), f_hi = fn(hi);
+    double root = 0.0;
     if (f_hi == 0.0) {
-      roots.push_back(hi);
+      root = hi;
     } else if (f_lo != 0.0 && (f_lo < 0.0) != (f_hi < 0.0)) {
-      roots.push_back(bracketed_root(fn, lo, hi));
+      root = bracketed_root(fn, lo, hi);
+    } else {
+      continue;
     }
+    if (root > first && root < last) roots.push_back(root);
   }
-  return roots;
 }
 
-// The zeros of p in (lo, hi): p' = exp(-r_1 s) q(s) with q = -a_1 r_1 - sum_{j >= 2} a_j r_j
-// exp(-(r_j - r_1) s), one decay fewer; p is monotone between q's zeros.
-std::vector<double> decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi) {
+// Appends to `zeros` the zeros of p in (lo, hi): p' = exp(-r_1 s) q(s) with q = -a_1 r_1 -
+// sum_{j >= 2} a_j r_j exp(-(r_j - r_1) s), one decay fewer; p is monotone between q's zeros.
+void append_decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi,
+                            InlineVector<double>& zeros) {
   const ConstantPlusDecays p = merged_decays(raw);
   if (p.terms.empty()) {
-    return {};
+    return;
   }
   const double slowest = p.terms.front().second;
   ConstantPlusDecays derivative{-p.terms.front().first * slowest, {}};
@@ -71,15 +87,10 @@ std::vector<double> decay_sum_zeros(const ConstantPlusDecays& raw, double lo, do
     const auto& [amplitude, rate] = p.terms[j];
     derivative.terms.emplace_back(-amplitude * rate, rate - slowest);
   }
-  std::vector<double> points{lo};
-  for (const double s : decay_sum_zeros(derivative, lo, hi)) {
-    points.push_back(s);
-  }
+  InlineVector<double> points{lo};
+  append_decay_sum_zeros(derivative, lo, hi, points);
   points.push_back(hi);
-  std::vector<double> zeros =
-      sign_changes_on_monotone_pieces([&](double s) { return p.at(s); }, points);
-  std::erase_if(zeros, [&](double s) { return s <= lo || s >= hi; });
-  return zeros;
+  append_sign_changes([&](double s) { return p.at(s); }, points, zeros);
 }
 
 }  // namespace
@@ -109,10 +120,8 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
   for (const ExponentialDecay& decay : f.decays) {
     derivative.terms.emplace_back(-decay.amplitude / decay.time, 1.0 / decay.time);
   }
-  std::vector<double> points{0.0};
-  for (const double s : decay_sum_zeros(derivative, 0.0, span)) {
-    points.push_back(s);
-  }
+  InlineVector<double> points{0.0};
+  append_decay_sum_zeros(derivative, 0.0, span, points);
   points.push_back(span);
   // The side: g at 0, or where g starts at the level, g at the end of the first piece (g moves
   // monotonically away from the level there).

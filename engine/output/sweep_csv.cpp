@@ -77,6 +77,9 @@ std::string csv_header(const SweepGrid& grid, SweepColumns columns) {
   // A program's total work per axis (the JSON's `work`), last so that the columns before keep
   // their places.
   if (columns.work) out += ",work_normal,work_tangential";
+  // What the dashpots and the rate law's front dissipated over the run (the JSON's `work`).
+  if (columns.bulk) out += ",dissipated_by_bulk";
+  if (columns.front) out += ",dissipated_at_front";
   return out + "\n";
 }
 
@@ -140,6 +143,16 @@ std::string csv_row(const std::vector<VaryValue>& values, const Scene& scene, co
     // A run without work (a scene without a program in a varied grid) leaves them empty.
     append_field(out, r.work ? std::optional<double>(r.work->normal) : std::nullopt);
     append_field(out, r.work ? std::optional<double>(r.work->tangential) : std::nullopt);
+  }
+  // A row whose scene lacks the key (a varied grid of scenes with and without it) leaves its
+  // column empty, as a row without work does.
+  if (columns.bulk) {
+    const bool relaxes = scene.material.relaxes() && r.work;
+    append_field(out, relaxes ? std::optional<double>(r.work->bulk) : std::nullopt);
+  }
+  if (columns.front) {
+    const bool law = scene.front_speed_law.has_value() && r.work;
+    append_field(out, law ? std::optional<double>(r.work->front) : std::nullopt);
   }
   out.push_back('\n');
   return fmt::to_string(out);

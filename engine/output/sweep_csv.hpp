@@ -33,11 +33,15 @@ std::optional<SweepIdentity> parse_identity_line(std::string_view line);
 std::uint64_t scene_hash(std::string_view scene_bytes, const std::vector<std::string>& sets);
 
 /// The columns a sweep adds where some row has them: dimensionless (the rows' JKR scales)
-/// friction, and a program's total work (docs/sweeps.md "Rows").
+/// friction, a program's total work, and the dissipations of time: a relaxing bulk's
+/// (material.relaxation) and the rate law's front's (detachment.front_speed_law)
+/// (docs/sweeps.md "Rows").
 struct SweepColumns {
   bool dimensionless = false;
   bool friction = false;
   bool work = false;
+  bool bulk = false;
+  bool front = false;
 };
 
 /// The header line, with its newline: status, stop_reason, the varied keys, the run's fields.

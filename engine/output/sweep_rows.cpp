@@ -75,6 +75,8 @@ SweepColumns check_values(const SceneDocument& base, const SweepGrid& grid,
     columns.dimensionless = columns.dimensionless || dimensionless_scales(scene).has_value();
     columns.friction = columns.friction || scene.friction.has_value();
     columns.work = columns.work || scene.program.has_value();
+    columns.bulk = columns.bulk || scene.material.relaxes();
+    columns.front = columns.front || scene.front_speed_law.has_value();
   }
   return columns;
 }

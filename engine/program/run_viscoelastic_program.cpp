@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "engine/model/viscoelastic_edge.hpp"
 #include "engine/program/run_program.hpp"
 #include "engine/program/stage_motion.hpp"
+#include "engine/program/viscoelastic_jumps.hpp"
 #include "engine/program/viscoelastic_row.hpp"
 
 namespace mdrsim {
@@ -51,17 +53,64 @@ double machine_spring_energy(const AffineConstraint& control, double force) {
   return 0.5 * force * force * control.force_coefficient / control.displacement_coefficient;
 }
 
-ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s,
-                                      const AffineConstraint& control) {
-  ContactSnapshot c;
+/// The row's state as a snapshot whose held value is `control`'s.
+ContactSnapshot held_snapshot(const ViscoelasticRowSample& s, const AffineConstraint& control) {
+  ContactSnapshot c = viscoelastic_snapshot(s);
   c.normal_control = held_value(control, s);
-  c.indentation = s.depth;
-  c.normal_force = row_force(s);
-  c.contact_radius = s.contact_radius;
-  c.springs_in_contact = s.pressed;
-  c.glued_radius = 0.0;  // nothing glues
-  c.time = s.time;
   return c;
+}
+
+EventKind viscoelastic_event_kind(ViscoelasticRowChange change) {
+  switch (change) {
+    case ViscoelasticRowChange::touch:
+      return EventKind::spring_touched;
+    case ViscoelasticRowChange::release:
+      return EventKind::spring_lifted;
+    case ViscoelasticRowChange::glue:
+      return EventKind::spring_glued;
+    case ViscoelasticRowChange::let_go:
+      break;
+  }
+  return EventKind::spring_detached;
+}
+
+/// The row's N springs: x_i = i a_max / N, spring N at the frame's image.
+ViscoelasticRowSprings viscoelastic_springs(const Scene& scene, const ProgramRowSpec& spec,
+                                            std::int64_t n) {
+  ViscoelasticRowSprings springs{scene.material.effective_modulus,
+                                 scene.material.relaxation,
+                                 spec.reference_radius / static_cast<double>(n),
+                                 {}};
+  springs.images.reserve(static_cast<std::size_t>(n));
+  for (std::int64_t i = 1; i < n; ++i) {
+    springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
+  }
+  springs.images.push_back(spec.reference_image);
+  return springs;
+}
+
+/// A stage's record: its end, its work and energy balance from the row's energies at its start
+/// and end, each term summed apart; a machine spring's change of F^2 / (2k) is stored energy.
+StageRecord viscoelastic_stage_record(const std::string& name, const ViscoelasticRowSample& end,
+                                      const AffineConstraint& control,
+                                      const ViscoelasticRowEnergy& before,
+                                      const ViscoelasticRowEnergy& now,
+                                      double machine_spring_change) {
+  StageRecord record;
+  record.name = name;
+  record.end = held_snapshot(end, control);
+  record.work.normal = now.machine_work - before.machine_work;
+  record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
+  EnergyBalance e;
+  e.machine_work = record.work.normal;
+  e.stored_change = now.stored - before.stored + machine_spring_change;
+  e.dissipated_by_bulk = record.work.bulk;
+  e.surface_change = now.surface - before.surface;
+  e.jump_losses = now.jump_losses - before.jump_losses;
+  e.residual =
+      e.machine_work - e.stored_change - e.surface_change - e.dissipated_by_bulk - e.jump_losses;
+  record.energy = e;
+  return record;
 }
 
 /// A stage until separation runs in pieces of its parameter's unit until the contact is lost;
@@ -101,7 +150,8 @@ HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
   }
   if (drive.sample().pressed == 0) return {held, false};
   bool separated = false;
-  for (int piece = 0; piece < kMostSeparationPieces && !separated && rate < 0.0; ++piece) {
+  for (int piece = 0; piece < kMostSeparationPieces && !separated && rate < 0.0 && !drive.limited();
+       ++piece) {
     const double start = drive.sample().time;
     separated = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}}, true,
                           {}, no_samples, on_change);
@@ -119,20 +169,21 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   result.springs = n;
   result.accuracy.rows = {n};
 
-  // The row: spring N where g reaches the deepest held depth, as an elastic program's frame
-  // puts it (program_row_frame) for a fixed-grips program without adhesion.
+  // The row: spring N where the front reaches at the deepest held depth, as an elastic
+  // program's frame puts it (program_row_frame) for a fixed-grips program.
   const ProgramRowFrame frame = program_row_frame(scene);
-  const ProgramRowSpec spec = program_row(scene, frame, n);
-  result.accuracy.outer_radius = spec.reference_radius;
-  ViscoelasticRowSprings springs{scene.material.effective_modulus,
-                                 scene.material.relaxation,
-                                 spec.reference_radius / static_cast<double>(n),
-                                 {}};
-  springs.images.reserve(static_cast<std::size_t>(n));
-  for (std::int64_t i = 1; i < n; ++i) {
-    springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
+  ProgramRowSpec spec = program_row(scene, frame, n);
+  if (!scene.material.glues_on_touch()) {
+    // The front glues at the glassy gap: spring N where it glues at the deepest depth (the zero
+    // scale stays the relaxed material's).
+    Scene glassy = scene;
+    glassy.material = glassy_material(scene.material);
+    const ProgramRowFrame at_glassy_gap = program_row_frame(glassy);
+    spec.reference_radius = at_glassy_gap.radius;
+    spec.reference_image = at_glassy_gap.image;
   }
-  springs.images.push_back(spec.reference_image);
+  result.accuracy.outer_radius = spec.reference_radius;
+  ViscoelasticRowSprings springs = viscoelastic_springs(scene, spec, n);
   if (holds_other_than_depth(program)) {
     const double outer = scene.profile->outer_radius();
     for (std::int64_t i = n + 1; i <= 2 * n + kHeldReachSprings; ++i) {
@@ -146,17 +197,39 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   const bool extended = springs.images.size() > static_cast<std::size_t>(n);
   const double row_end = springs.spacing * static_cast<double>(springs.images.size());
   bool reached_row_end = false;
+  // The adhesive edge: the scene's criterion is built on the glassy material (a let-go is
+  // instantaneous), docs/viscoelastic.md.
+  const bool adhesive = scene.material.adhesive();
+  std::optional<ViscoelasticEdge> edge;
+  if (adhesive) {
+    edge = viscoelastic_edge(*scene.criterion, scene.material, springs.spacing,
+                             springs.images.size(), program.rebinding);
+    springs.edge = &*edge;
+  }
 
   ViscoelasticRowDrive drive(springs);
+  ViscoelasticJumps jumps;
   std::string_view stage_name;
   // The normal axis's controller and held value; a program starts under fixed grips at 0.
   AffineConstraint control{1.0, 0.0};
+  const auto report_jump = [&](std::optional<JumpRecord> jump) {
+    if (!jump) return;
+    observers.emit({.kind = EventKind::jump, .state = jump->after, .stage = jump->stage});
+    result.jumps.push_back(std::move(*jump));
+  };
   const auto on_change = [&](ViscoelasticRowChange change, const ViscoelasticRowSample& s) {
     if (extended && s.contact_radius >= row_end * (1.0 - 1e-12)) reached_row_end = true;
-    observers.emit({.kind = change == ViscoelasticRowChange::touch ? EventKind::spring_touched
-                                                                   : EventKind::spring_lifted,
-                    .state = viscoelastic_snapshot(s, control),
-                    .stage = stage_name});
+    if (adhesive) {
+      report_jump(jumps.change(change, stage_name, drive.before_last_change(), drive.sample()));
+    }
+    Event event{.kind = viscoelastic_event_kind(change),
+                .state = held_snapshot(s, control),
+                .stage = stage_name};
+    if (change == ViscoelasticRowChange::let_go) {
+      event.spring = s.glued;
+      event.in_cascade = jumps.cascading();
+    }
+    observers.emit(event);
   };
   std::vector<ViscoelasticRowSample> no_samples;
   ViscoelasticRowEnergy before = drive.energy();
@@ -167,6 +240,9 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   double held = 0.0;
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
+    // A row's changes settle in a few events per spring and stage; a stage that takes more than
+    // solver.max_events_per_spring stops, as an elastic program's does.
+    drive.limit_events(drive.counts().events() + scene.solver.max_events_per_spring * n);
     if (stage.normal) {
       const AffineConstraint c = stage.normal->controller->constraint();
       if (c.displacement_coefficient != control.displacement_coefficient ||
@@ -183,7 +259,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       const bool in_contact = drive.sample().pressed > 0;
       const HeldStageEnd held_end = run_held_stage(drive, stage, control, held, on_change);
       held = held_end.held;
-      if (stage.until_separation && in_contact && !held_end.separated) {
+      if (stage.until_separation && in_contact && !held_end.separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
         result.warnings.push_back(fmt::format(
             "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
@@ -196,12 +272,13 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
       if (rate < 0.0) {
-        for (int piece = 0; piece < kMostSeparationPieces && !separated; ++piece) {
+        for (int piece = 0; piece < kMostSeparationPieces && !separated && !drive.limited();
+             ++piece) {
           separated = drive.run({sd.seconds, rate}, true, {}, no_samples, on_change);
         }
       }
       held = drive.sample().depth;
-      if (!separated) {
+      if (!separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
         result.warnings.push_back(fmt::format(
             "stage '{}' runs until separation, but nothing on its path can part the contact ({} "
@@ -209,23 +286,25 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
             stage.name, drive.sample().pressed));
       }
     }
+    if (drive.limited()) {
+      stop_at_limit(result, StopReason::max_events_per_spring);
+      result.warnings.push_back(fmt::format(
+          "stage '{}' took more than {} events per spring (solver.max_events_per_spring): the "
+          "program stops here",
+          stage.name, scene.solver.max_events_per_spring));
+    }
     const ViscoelasticRowSample end = drive.sample();
-    ever_in_contact = ever_in_contact || drive.counts().touches > 0;
+    if (adhesive) {
+      report_jump(jumps.close());
+      jumps.observe(end);
+    }
+    ever_in_contact = ever_in_contact || drive.counts().touches + drive.counts().glues > 0;
     const ViscoelasticRowEnergy now = drive.energy();
-    StageRecord record;
-    record.name = stage.name;
-    record.end = viscoelastic_snapshot(end, control);
-    record.work.normal = now.machine_work - before.machine_work;
-    record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
-    EnergyBalance e;
-    e.machine_work = record.work.normal;
-    e.stored_change = now.stored - before.stored + machine_spring_energy(control, row_force(end)) -
-                      spring_energy_before;
-    e.dissipated_by_bulk = record.work.bulk;
-    e.residual = e.machine_work - e.stored_change - e.dissipated_by_bulk;
-    record.energy = e;
+    const StageRecord record = viscoelastic_stage_record(
+        stage.name, end, control, before, now,
+        machine_spring_energy(control, row_force(end)) - spring_energy_before);
     total += record.work;
-    total_energy += e;
+    total_energy += *record.energy;
     before = now;
     result.stages.push_back(record);
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
@@ -240,11 +319,18 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   }
   result.work = total;
   result.energy = total_energy;
-  result.counts.events = drive.counts().touches + drive.counts().releases;
+  result.counts.events = drive.counts().events();
   if (!result.stop_reason) {
     // Without glue the contact is lost at zero force: no critical point (docs/programs.md
-    // "How a program ends").
+    // "How a program ends"); a contact lost after its glue ends as the cascade that lost the
+    // glue decides.
     result.status = lost ? RunStatus::no_instability : RunStatus::completed;
+    if (lost && jumps.glue_loss()) {
+      ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
+    }
+  }
+  if (const auto& peak = jumps.most_tensile(); peak && peak->force < -spec.zero.force) {
+    result.peak = viscoelastic_snapshot(*peak);
   }
   return result;
 }

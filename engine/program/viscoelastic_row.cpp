@@ -1,9 +1,11 @@
-// The viscoelastic row's event loop: each spring's next touch or release, queued or indexed.
+// The viscoelastic row's event loop: each spring's next touch, release, glue or let-go, queued
+// (or, in a held segment, indexed).
 #include "engine/program/viscoelastic_row.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <queue>
 #include <set>
@@ -13,18 +15,21 @@
 #include "engine/model/prony_creep.hpp"
 #include "engine/model/prony_load_drive.hpp"
 #include "engine/model/prony_shared_drive.hpp"
+#include "engine/model/viscoelastic_edge.hpp"
 
 namespace mdrsim {
 namespace {
 
-enum class ViscoelasticSpringPhase { untouched, pressed, free };
+/// pressed: in contact, pushing only; glued: in contact, holding tension too.
+enum class ViscoelasticSpringPhase { untouched, pressed, glued, free };
 
 struct ViscoelasticSpringState {
   ViscoelasticSpringPhase phase = ViscoelasticSpringPhase::untouched;
-  SharedDriveMember member;              ///< while pressed
+  SharedDriveMember member;              ///< while pressed or glued
   std::optional<FreeSpringCreep> creep;  ///< while free
   double released_at = 0.0;              ///< [s]
-  /// The energy summed up to `counted_at` [s]: while pressed, the stretch [m] and arm stresses
+  double glued_at = -1.0;                ///< [s] the last glue; < 0: never glued
+  /// The energy summed up to `counted_at` [s]: while in contact, the stretch [m] and arm stresses
   /// [N/m] then; while free, the energy it stored then [J/m].
   double counted_at = 0.0;
   double counted_stretch = 0.0;
@@ -52,6 +57,9 @@ struct HeldKeyExpiresLater {
     return a.valid_until > b.valid_until;
   }
 };
+/// The share of a let-go load within which a boundary spring's load is on it (a load summed
+/// from E* w and the arms rounds at a few eps of its terms).
+constexpr double kEdgeRounding = 64.0 * std::numeric_limits<double>::epsilon();
 
 struct ViscoelasticRowEvent {
   double time;
@@ -133,9 +141,10 @@ class ViscoelasticRowDrive::Row {
     depth_ = t == end_ ? end_depth_ : segment_depth_ + rate_ * (t - segment_start_);
   }
 
-  /// The queued event of spring k at the present time: a touch or a release.
+  /// The queued event of spring k at the present time: a touch, a release, a glue or a let-go.
   ViscoelasticRowChange apply(std::size_t k, ViscoelasticRowRun& run) {
     if (!held_) queue_.pop();
+    if (springs_.edge) return apply_at_edge(k, run);
     ViscoelasticSpringState& s = state_[k];
     const bool release = s.phase == ViscoelasticSpringPhase::pressed;
     if (release) {
@@ -180,11 +189,12 @@ class ViscoelasticRowDrive::Row {
   /// The energy up to now, per unit x of one half [J/m].
   ViscoelasticRowEnergy energy() {
     count_all();
-    ViscoelasticRowEnergy e{machine_work_.value(), 0.0, dissipated_.value()};
+    ViscoelasticRowEnergy e{machine_work_.value(), 0.0, dissipated_.value(), surface_.value(),
+                            jump_losses_.value()};
     CompensatedSum stored;
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
-      if (s.phase == ViscoelasticSpringPhase::pressed) {
+      if (in_contact(s)) {
         stored.add(stored_of(s.counted_stretch, s.counted_stresses));
       } else if (s.phase == ViscoelasticSpringPhase::free) {
         stored.add(s.counted_stored);
@@ -200,11 +210,152 @@ class ViscoelasticRowDrive::Row {
         springs_.relaxed_modulus * (n * depth_ - pressed_images_.value()) + arms_.arm_force();
     const double radius =
         pressed_.empty() ? 0.0 : springs_.spacing * static_cast<double>(*pressed_.rbegin() + 1);
-    return {time_, depth_, 2.0 * springs_.spacing * line_loads, radius,
-            static_cast<std::int64_t>(pressed_.size())};
+    const double glued_radius =
+        glued_.empty() ? 0.0 : springs_.spacing * static_cast<double>(*glued_.rbegin() + 1);
+    return {time_,
+            depth_,
+            2.0 * springs_.spacing * line_loads,
+            radius,
+            static_cast<std::int64_t>(pressed_.size()),
+            static_cast<std::int64_t>(glued_.size()),
+            glued_radius};
   }
 
  private:
+  static bool in_contact(const ViscoelasticSpringState& s) {
+    return s.phase == ViscoelasticSpringPhase::pressed || s.phase == ViscoelasticSpringPhase::glued;
+  }
+
+  /// The outermost glued spring, the one that may let go; none without glue.
+  std::optional<std::size_t> boundary() const {
+    if (glued_.empty()) return std::nullopt;
+    return *glued_.rbegin();
+  }
+  /// The spring just outside the contact (the outermost spring in contact, glued or pressed),
+  /// the one the advancing front may glue; none beyond the row.
+  std::optional<std::size_t> outside() const {
+    const std::size_t k = pressed_.empty() ? 0 : *pressed_.rbegin() + 1;
+    if (k >= state_.size()) return std::nullopt;
+    return k;
+  }
+  /// Whether spring k glues when the advancing front reaches it (else it is pressed on touch):
+  /// it is the spring outside the contact, and fresh or free with rebinding.
+  bool glues(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    const bool may = s.phase == ViscoelasticSpringPhase::untouched ||
+                     (s.phase == ViscoelasticSpringPhase::free && springs_.edge->rebinding);
+    return may && outside() == k;
+  }
+  /// The gap [m] at which spring k glues: the edge's, but touch for the very first spring.
+  double glue_gap(std::size_t k) const {
+    return pressed_.empty() ? 0.0 : springs_.edge->glue_gaps[k];
+  }
+
+  /// apply() with an adhesive edge: the spring's change, the energy of its step, and the
+  /// springs whose role it changed (the boundary, the spring outside) scheduled again.
+  ViscoelasticRowChange apply_at_edge(std::size_t k, ViscoelasticRowRun& run) {
+    const auto boundary_before = boundary();
+    const auto outside_before = outside();
+    ViscoelasticSpringState& s = state_[k];
+    ViscoelasticRowChange change = ViscoelasticRowChange::touch;
+    if (s.phase == ViscoelasticSpringPhase::glued) {
+      change = ViscoelasticRowChange::let_go;
+      let_go(k, run);
+    } else if (s.phase == ViscoelasticSpringPhase::pressed) {
+      change = ViscoelasticRowChange::release;
+      leave_contact(k, run);
+    } else if (glues(k)) {
+      change = ViscoelasticRowChange::glue;
+      enter_contact(k, run, glue_gap(k));
+    } else {
+      enter_contact(k, run, std::nullopt);
+    }
+    for (const auto j :
+         {std::optional<std::size_t>(k), boundary_before, outside_before, boundary(), outside()}) {
+      if (!j) continue;
+      ++state_[*j].version;
+      schedule(*j);
+    }
+    return change;
+  }
+
+  /// The boundary spring k lets go: its stretch steps by -q / E_0 to zero load.
+  void let_go(std::size_t k, ViscoelasticRowRun& run) {
+    ViscoelasticSpringState& s = state_[k];
+    count_pressed(s, springs_.images[k]);
+    std::vector<double> stresses = arms_.leave(s.member);
+    const double stretch = depth_ - springs_.images[k];
+    const double load = springs_.relaxed_modulus * stretch + sum_of(stresses);
+    const double before = stored_of(stretch, stresses);
+    glassy_step(stresses, springs_.terms, -load / springs_.edge->glassy_modulus);
+    const double after = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
+    const double surface = springs_.edge->surface_energies[k];
+    surface_.add(surface);
+    jump_losses_.add(before - after - surface);
+    s.counted_stored = after;
+    s.counted_at = time_;
+    s.creep.emplace(modes_, stresses);
+    s.released_at = time_;
+    s.phase = ViscoelasticSpringPhase::free;
+    pressed_.erase(k);
+    glued_.erase(k);
+    pressed_images_.add(-springs_.images[k]);
+    ++run.let_gos;
+    if (pressed_.empty()) run.separation_time = time_;
+  }
+
+  /// A pressed spring k leaves at zero load.
+  void leave_contact(std::size_t k, ViscoelasticRowRun& run) {
+    ViscoelasticSpringState& s = state_[k];
+    count_pressed(s, springs_.images[k]);
+    const std::vector<double> stresses = arms_.leave(s.member);
+    s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
+    s.counted_at = time_;
+    s.creep.emplace(modes_, stresses);
+    s.released_at = time_;
+    s.phase = ViscoelasticSpringPhase::free;
+    pressed_.erase(k);
+    pressed_images_.add(-springs_.images[k]);
+    ++run.releases;
+    if (pressed_.empty()) run.separation_time = time_;
+  }
+
+  /// Spring k enters the contact: pressed on touch (`glue_gap` unset), or glued, its stretch
+  /// stepping from its free surface's to the indenter's.
+  void enter_contact(std::size_t k, ViscoelasticRowRun& run, std::optional<double> glue_gap) {
+    ViscoelasticSpringState& s = state_[k];
+    const bool free = s.phase == ViscoelasticSpringPhase::free;
+    std::vector<double> stresses = free ? s.creep->stresses(time_ - s.released_at)
+                                        : std::vector<double>(springs_.terms.size(), 0.0);
+    double before = 0.0;
+    double free_stretch = 0.0;
+    if (free) {
+      count_free(s);
+      before = s.counted_stored;
+      free_stretch = s.creep->stretch(time_ - s.released_at);
+    }
+    const double stretch = depth_ - springs_.images[k];
+    if (glue_gap) {
+      glassy_step(stresses, springs_.terms, stretch - free_stretch);
+      const double surface = springs_.edge->surface_energies[k];
+      surface_.add(-surface);
+      jump_losses_.add(surface - (stored_of(stretch, stresses) - before));
+      glued_.insert(k);
+      s.glued_at = time_;
+      ++run.glues;
+    } else {
+      ++run.touches;
+    }
+    s.member = arms_.enter(stresses, 1.0);
+    s.counted_at = time_;
+    s.counted_stretch = stretch;
+    s.counted_stresses = stresses;
+    s.creep.reset();
+    s.phase = glue_gap ? ViscoelasticSpringPhase::glued : ViscoelasticSpringPhase::pressed;
+    pressed_.insert(k);
+    pressed_images_.add(springs_.images[k]);
+    run.separation_time.reset();
+  }
   static double sum_of(const std::vector<double>& values) {
     double sum = 0.0;
     for (const double v : values) sum += v;
@@ -275,6 +426,7 @@ class ViscoelasticRowDrive::Row {
   }
 
   std::optional<double> next_event_delay(std::size_t k) const {
+    if (springs_.edge) return next_event_delay_at_edge(k);
     const ViscoelasticSpringState& s = state_[k];
     const double span = end_ - time_;
     const double stretch = depth_ - springs_.images[k];
@@ -645,11 +797,73 @@ class ViscoelasticRowDrive::Row {
     return ViscoelasticRowEvent{time_ + *best, best_k, state_[best_k].version};
   }
 
+  /// next_event_delay() with an adhesive edge: a glued spring lets go only as the boundary, at
+  /// its load -let_go_loads; the spring outside the contact glues at its glue gap where it
+  /// glues(), any other spring out of contact is pressed on touch; a pressed one leaves at zero
+  /// load.
+  std::optional<double> next_event_delay_at_edge(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    const double span = end_ - time_;
+    const double stretch = depth_ - springs_.images[k];
+    if (s.phase == ViscoelasticSpringPhase::glued) {
+      if (boundary() != k) return std::nullopt;
+      ExponentialSum load = load_over(s, stretch);
+      const double level = -springs_.edge->let_go_loads[k];
+      // Beyond the threshold it goes now (a cascade), on it only if the tension grows. A spring
+      // that glued just now sits on it (at dgamma_a = dgamma, up to the rounding of loads summed
+      // from stresses far larger than it): it starts on it.
+      const double slack = load.at(0.0) - level;
+      const double slope = load.slope_at(0.0);
+      const bool on_it = s.glued_at == time_ || -slack <= kEdgeRounding * std::abs(level);
+      if (slack <= 0.0 && (slope < 0.0 || !on_it)) return 0.0;
+      // Within rounding below the level: the level is taken where the load stands, so that the
+      // crossing is the one back down, after the load has risen.
+      return first_crossing(load, slack < 0.0 ? load.at(0.0) : level, span);
+    }
+    if (s.phase == ViscoelasticSpringPhase::pressed) {
+      ExponentialSum load = load_over(s, stretch);
+      const double now = load.at(0.0);
+      if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
+      if (now < 0.0) load.constant -= now;
+      return first_crossing(load, 0.0, span);
+    }
+    // Out of contact: the indenter's stretch moved by the gap at which it takes the spring.
+    const double gap = glues(k) ? glue_gap(k) : 0.0;
+    const double reach = stretch + gap;
+    if (s.phase == ViscoelasticSpringPhase::untouched) {
+      if (reach >= 0.0) return 0.0;
+      if (rate_ <= 0.0) return std::nullopt;
+      const double delay = -reach / rate_;
+      return delay <= span ? std::optional<double>(delay) : std::nullopt;
+    }
+    // Within rounding of its free surface (of d and g, far larger than it) the indenter stands
+    // on it (with dgamma_a = dgamma a spring that let go stands at its glue gap), and takes it
+    // only as the motion leads on; a spring that glued and let go at this time is not taken
+    // back at it.
+    const ExponentialSum free_surface = s.creep->stretch_from(time_ - s.released_at);
+    const double surface = free_surface.at(0.0);
+    const double overlap = reach - surface;
+    const double rounding =
+        kEdgeRounding * (std::abs(depth_) + std::abs(springs_.images[k]) + std::abs(surface) + gap);
+    const bool approaching = rate_ - free_surface.slope_at(0.0) > 0.0;
+    const bool again_now = s.glued_at == time_;
+    if (!again_now && (overlap > rounding || (overlap >= -rounding && approaching))) return 0.0;
+    return reach_time(*s.creep, time_ - s.released_at, reach, rate_, span, overlap >= -rounding);
+  }
+
+  /// Spring s's line load from now over the segment's motion (its stretch `stretch` now).
+  ExponentialSum load_over(const ViscoelasticSpringState& s, double stretch) const {
+    std::vector<double> stresses(springs_.terms.size());
+    for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(s.member, j);
+    return line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
+  }
+
   const ViscoelasticRowSprings& springs_;
   SharedDriveArms arms_;
   std::shared_ptr<const RetardationModes> modes_;
   std::vector<ViscoelasticSpringState> state_;
-  std::set<std::size_t> pressed_;
+  std::set<std::size_t> pressed_;  ///< in contact: pressed or glued
+  std::set<std::size_t> glued_;
   CompensatedSum pressed_images_;
   std::priority_queue<ViscoelasticRowEvent, std::vector<ViscoelasticRowEvent>, std::greater<>>
       queue_;
@@ -670,6 +884,8 @@ class ViscoelasticRowDrive::Row {
   ExponentialSum motion_;            ///< the depth from now in a held segment [m]
   CompensatedSum machine_work_;      ///< [J/m]
   CompensatedSum dissipated_;        ///< [J/m]
+  CompensatedSum surface_;           ///< [J/m]
+  CompensatedSum jump_losses_;       ///< [J/m]
 };
 
 ViscoelasticRowDrive::ViscoelasticRowDrive(const ViscoelasticRowSprings& springs)
@@ -695,15 +911,18 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
     }
     if (!event) break;
     row.advance_to(event->time);
-    // A release is reported as the spring leaves (the state before it is removed, as an elastic
-    // program's lift), a touch with the spring pressed.
+    // A release or a let-go is reported as the spring leaves (the state before it is removed,
+    // as an elastic program's lift), a touch or a glue with the spring in contact.
     const ViscoelasticRowSample before = row.sample();
+    before_last_change_ = before;
     const ViscoelasticRowChange change = row.apply(event->spring, counts_);
-    if (on_change) {
-      on_change(change, change == ViscoelasticRowChange::release ? before : row.sample());
-    }
-    if (stop_at_separation && change == ViscoelasticRowChange::release && !row.in_contact()) {
-      return true;
+    const bool leaves =
+        change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
+    if (on_change) on_change(change, leaves ? before : row.sample());
+    if (stop_at_separation && leaves && !row.in_contact()) return true;
+    if (counts_.events() >= event_limit_) {
+      limited_ = true;
+      return false;
     }
   }
   row.advance_to(row.end());
@@ -716,7 +935,8 @@ ViscoelasticRowEnergy ViscoelasticRowDrive::energy() {
   ViscoelasticRowEnergy e = row_->energy();
   // Both halves: each spring of the row stands for 2 dx of the foundation.
   const double both_halves = 2.0 * row_->spacing();
-  return {e.machine_work * both_halves, e.stored * both_halves, e.dissipated_by_bulk * both_halves};
+  return {e.machine_work * both_halves, e.stored * both_halves, e.dissipated_by_bulk * both_halves,
+          e.surface * both_halves, e.jump_losses * both_halves};
 }
 
 ViscoelasticRowRun run_viscoelastic_row(const ViscoelasticRowSprings& springs,

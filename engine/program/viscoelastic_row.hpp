@@ -1,11 +1,13 @@
-// A program's row of viscoelastic springs without adhesion: the indentation moves linearly in
-// time stage by stage, or follows a held force or machine end, a spring is pressed from the
-// moment the indenter reaches it until its load falls to zero (Ting), and a free spring creeps
-// back and may be met again (docs/viscoelastic.md).
+// A program's row of viscoelastic springs: the indentation moves linearly in time stage by
+// stage, or follows a held force or machine end, a spring is pressed from the moment the
+// indenter reaches it until its load falls to zero (Ting), and a free spring creeps back and may
+// be met again; with an adhesive edge (normal fixed grips) the spring outside the contact glues
+// and the boundary spring lets go by the glassy criterion (docs/viscoelastic.md).
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -13,6 +15,7 @@
 
 #include "controllers/controller.hpp"
 #include "engine/base/material.hpp"
+#include "engine/model/viscoelastic_edge.hpp"
 
 namespace mdrsim {
 
@@ -23,6 +26,8 @@ struct ViscoelasticRowSprings {
   std::vector<PronyTerm> terms;  ///< the Prony terms, plane strain
   double spacing;                ///< dx [m]
   std::vector<double> images;    ///< g(x_i) [m], i = 1..N
+  /// The adhesive edge (null: no adhesion, every spring only pushes); must outlive the row.
+  const ViscoelasticEdge* edge = nullptr;
 };
 
 /// What a segment holds instead of the depth: the constraint a_u d + a_F F = h (fixed load,
@@ -46,11 +51,13 @@ struct DriveSegment {
 
 /// The row's state at one time.
 struct ViscoelasticRowSample {
-  double time;            ///< [s]
-  double depth;           ///< d [m]
-  double force;           ///< F [N], positive pressing
-  double contact_radius;  ///< the outermost pressed spring's x [m]; 0 without contact
-  std::int64_t pressed;   ///< springs pressed
+  double time;                ///< [s]
+  double depth;               ///< d [m]
+  double force;               ///< F [N], positive pressing
+  double contact_radius;      ///< the outermost pressed spring's x [m]; 0 without contact
+  std::int64_t pressed;       ///< springs in contact (glued or pressed)
+  std::int64_t glued = 0;     ///< springs glued
+  double glued_radius = 0.0;  ///< the outermost glued spring's x [m]; 0 without glue
 };
 
 struct ViscoelasticRowRun {
@@ -61,6 +68,9 @@ struct ViscoelasticRowRun {
   std::optional<double> separation_time;
   std::int64_t touches = 0;   ///< springs met by the indenter (fresh or free)
   std::int64_t releases = 0;  ///< springs whose load fell to zero
+  std::int64_t glues = 0;     ///< springs glued by the advancing front
+  std::int64_t let_gos = 0;   ///< boundary springs let go
+  std::int64_t events() const { return touches + releases + glues + let_gos; }
 };
 
 /// The row's energy since it started (d = 0, t = 0, every spring at rest), both halves [J]:
@@ -70,14 +80,25 @@ struct ViscoelasticRowRun {
 /// changes of rate, apart from the others, so that machine_work = stored + dissipated_by_bulk
 /// closes to rounding. A free spring carries no load, so no work reaches it: what its dashpots
 /// dissipate while it creeps is the energy it stores less.
+///
+/// With an adhesive edge a glue or a let-go is a step of the spring's stretch at one time (the
+/// arms' springs take it, the dashpots do not move) with no work of the machine: a let-go of a
+/// line load q releases the glassy energy q^2 / (2 E_0), a glue at gap delta costs E_0 delta^2
+/// / 2. `surface` is the ring energy pi x dgamma created (let-gos) less destroyed (glues), and
+/// `jump_losses` the rest of each step's stored energy change: machine_work = stored + surface +
+/// dissipated_by_bulk + jump_losses.
 struct ViscoelasticRowEnergy {
   double machine_work = 0.0;
   double stored = 0.0;
   double dissipated_by_bulk = 0.0;
+  double surface = 0.0;
+  double jump_losses = 0.0;
 };
 
-/// A touch (a spring met by the indenter) or a release (a pressed spring's load fell to zero).
-enum class ViscoelasticRowChange { touch, release };
+/// A touch (a spring met by the indenter and pressed, pushing only), a release (a pressed
+/// spring's load fell to zero), a glue (the spring outside the contact glued) or a let-go (the
+/// boundary glued spring let go).
+enum class ViscoelasticRowChange { touch, release, glue, let_go };
 
 /// The row run segment by segment, for a caller that reports between them (a program's stages).
 class ViscoelasticRowDrive {
@@ -89,15 +110,21 @@ class ViscoelasticRowDrive {
   ViscoelasticRowDrive& operator=(const ViscoelasticRowDrive&) = delete;
 
   using OnChange = std::function<void(ViscoelasticRowChange, const ViscoelasticRowSample&)>;
-  /// Runs `segment` from the present state: `on_change` at each event (a touch's state after
-  /// it, a release's as the spring leaves, before it is removed),
+  /// Runs `segment` from the present state: `on_change` at each event (a touch's or a glue's
+  /// state after it, a release's or a let-go's as the spring leaves, before it is removed),
   /// a sample at each of `sample_times` (ascending, within the segment) into `samples`. With
-  /// `stop_at_separation` the segment ends where the last pressed spring lets go; whether it
+  /// `stop_at_separation` the segment ends where the last spring in contact leaves; whether it
   /// did is returned.
   bool run(const DriveSegment& segment, bool stop_at_separation,
            std::span<const double> sample_times, std::vector<ViscoelasticRowSample>& samples,
            const OnChange& on_change = {});
   ViscoelasticRowSample sample() const;
+  /// Stops run() once the row has taken `most` events in all (a guard against changes that
+  /// never settle); whether it did.
+  void limit_events(std::int64_t most) { event_limit_ = most; }
+  bool limited() const { return limited_; }
+  /// The state just before the last change (an on_change may ask for it).
+  const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }
   /// The energy so far (a pass over the springs).
   ViscoelasticRowEnergy energy();
   /// As ViscoelasticRowRun's.
@@ -107,6 +134,9 @@ class ViscoelasticRowDrive {
   class Row;
   std::unique_ptr<Row> row_;
   ViscoelasticRowRun counts_;
+  ViscoelasticRowSample before_last_change_{};
+  std::int64_t event_limit_ = std::numeric_limits<std::int64_t>::max();
+  bool limited_ = false;
 };
 
 /// Under a held force or machine end the springs are coupled through the depth: each event

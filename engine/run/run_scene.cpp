@@ -11,6 +11,7 @@
 #include "engine/accuracy/adaptive_resolution.hpp"
 #include "engine/accuracy/dugdale_rows.hpp"
 #include "engine/accuracy/program_resolution.hpp"
+#include "engine/accuracy/rate_law_rows.hpp"
 #include "engine/accuracy/resolution_warning.hpp"
 #include "engine/accuracy/row_refinement.hpp"
 #include "engine/accuracy/row_sequence.hpp"
@@ -23,6 +24,7 @@
 #include "engine/continuum/run_dugdale_continuum.hpp"
 #include "engine/events/cascade_buffer.hpp"
 #include "engine/model/criterion_contract.hpp"
+#include "engine/program/rate_law_row.hpp"
 #include "engine/program/run_program.hpp"
 #include "engine/program/run_viscoelastic_program.hpp"
 #include "engine/pull_off/pull_off.hpp"
@@ -114,10 +116,17 @@ void drop_peak_that_never_pulls(const Scene& scene, RunResult& result) {
 void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
   const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
-                        "discretization.rtol refines the row until it is resolved"};
+                        scene.material.relaxes()
+                            ? "more discretization.springs resolve it (rtol is not yet taken "
+                              "with material.relaxation)"
+                            : "discretization.rtol refines the row until it is resolved"};
   const bool adhesive = scene.material.adhesive();
-  for (auto w : {never_in_contact(result, row), unresolved_critical(result, row),
-                 unresolved_smooth_peel(result, row, adhesive)}) {
+  // The rate law's front loses the contact at the axis, where the last spring lets go: a
+  // critical point of no springs that no row resolves better.
+  const bool at_axis = scene.front_speed_law.has_value();
+  for (auto w :
+       {never_in_contact(result, row), at_axis ? std::nullopt : unresolved_critical(result, row),
+        unresolved_smooth_peel(result, row, adhesive)}) {
     if (w) result.warnings.push_back(std::move(*w));
   }
   if (!status_resolved(result)) result.warnings.push_back(cannot_tell_status(result));
@@ -168,6 +177,17 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
 RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
   // One row of viscoelastic springs (the relaxation reader refuses rtol and Richardson).
   if (scene.material.relaxes()) return run_viscoelastic_program(scene, observers);
+  if (scene.front_speed_law) {
+    switch (scene.plan.driver) {
+      case RouteDriver::rtol:
+        return run_rate_law_rtol(scene, *scene.discretization.rtol, observers);
+      case RouteDriver::richardson:
+        return run_rate_law_richardson(scene, observers);
+      case RouteDriver::one_row:
+        break;
+    }
+    return run_rate_law_row(scene, observers);
+  }
   RunResult result;
   switch (scene.plan.driver) {
     case RouteDriver::rtol:

@@ -18,7 +18,8 @@ namespace mdrsim {
 std::optional<FrontSpeedLaw> read_front_speed_law(TomlReader& t, const Scene& scene,
                                                   std::string& at);
 
-/// The built scene against the rate law's scope, failing at `at`: the continuum route only,
+/// The built scene against the rate law's scope, failing at `at`: the continuum route, or the
+/// event method's rows with an elastic bulk (a press after a possible let-go with rebinding);
 /// normal fixed-grips stages only, a constant positive work of adhesion, and not yet with
 /// finite-range adhesion, grading or [friction]. A no-op without the law.
 void refuse_outside_front_speed_scope(const Scene& scene, const std::string& at);

@@ -17,6 +17,21 @@ std::string not_yet_with_relaxation(const std::string& what) {
   return what + " is not yet taken with material.relaxation" + kRelaxationScope;
 }
 
+/// The adhesive edge under a relaxing bulk runs under normal fixed grips only: a stage under
+/// another normal control with work_of_adhesion > 0 is refused, one line.
+void refuse_adhesion_outside_fixed_grips(const TomlReader& loading, const Scene& scene) {
+  if (!scene.material.adhesive()) return;
+  for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
+    const Stage& stage = scene.program->stages[i];
+    if (stage.normal && stage.normal->control != "fixed-grips") {
+      loading.fail_at("stage", not_yet_with_relaxation(
+                                   fmt::format("loading.stage.{}.normal.control = \"{}\" with "
+                                               "work_of_adhesion > 0",
+                                               i + 1, stage.normal->control)));
+    }
+  }
+}
+
 }  // namespace
 
 std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plane_strain) {
@@ -59,12 +74,7 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
   if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
-  if (scene.material.adhesive() || scene.material.approach_work_of_adhesion > 0.0 ||
-      scene.material.approach_work_of_adhesion_by_radius) {
-    material.fail_at("work_of_adhesion",
-                     not_yet_with_relaxation(
-                         "adhesion (the edge under a relaxing bulk), work_of_adhesion > 0,"));
-  }
+  refuse_adhesion_outside_fixed_grips(loading, scene);
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
     if (stage.tangential && (stage.tangential->control != "fixed-grips" ||

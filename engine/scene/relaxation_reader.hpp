@@ -21,9 +21,10 @@ std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plan
 
 /// The scene's other keys against a relaxing bulk (SPEC "Time and viscoelastic media", "Scope",
 /// and what the program row carries so far): the shorthand, a program without a clock,
-/// [friction], adhesion, a tangential stage, a fixed-load stage until separation or lowered to
-/// or below zero force, and a method other than event are refused, before the routes those keys
-/// choose. A no-op without the key.
+/// [friction], a tangential stage, a fixed-load stage until separation or lowered to or below
+/// zero force, adhesion with other than fixed-grips normal stages (one line of its own) and a
+/// method other than event are refused, before the routes those keys choose. A no-op without
+/// the key.
 void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& loading,
                                      const TomlReader& material, const RouteKeys& route_keys,
                                      const Scene& scene);

@@ -12,6 +12,7 @@
 
 #include "engine/model/dimensionless_scales.hpp"
 #include "engine/model/preload.hpp"
+#include "engine/model/viscoelastic_edge.hpp"
 #include "engine/scene/adhesion_reader.hpp"
 #include "engine/scene/dugdale_reader.hpp"
 #include "engine/scene/embedded_table.hpp"
@@ -365,7 +366,10 @@ void read_profile(TomlReader& root, const Registries& registries, nlohmann::json
 /// law of the edge, whose key's place goes to `front_speed_at`.
 void read_criterion(TomlReader& root, const Registries& registries, Scene& scene,
                     std::string& front_speed_at) {
-  const InterfaceProperties interface = scene.material.interface_properties();
+  // A relaxing bulk lets go instantaneously, on its glassy modulus (docs/viscoelastic.md).
+  const InterfaceProperties interface = scene.material.relaxes()
+                                            ? glassy_material(scene.material)
+                                            : scene.material.interface_properties();
   scene.criterion_name = "mode-mixed";
   if (auto detachment = root.optional_table("detachment")) {
     scene.criterion_name =

@@ -154,6 +154,7 @@ const std::vector<ExclusiveKeys>& exclusive_keys() {
       {"loading.tangential", {{"displacement"}, {"force"}}},
       {"loading.stage.N.normal", {{"to"}, {"by"}}},
       {"loading.stage.N.tangential", {{"to"}, {"by"}}},
+      {"loading.stage.N", {{"duration"}, {"speed"}}},
       {"discretization", {{"springs"}, {"rtol"}}},
   };
   return table;

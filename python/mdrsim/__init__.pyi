@@ -88,16 +88,21 @@ class State:
     springs_sliding: int | None
     stick_radius: float | None
     cohesive_radius: float | None
+    time: float | None  # [s] in a timed program (every stage has duration or speed), else None
 
 class Work:
     normal: float
     tangential: float
-    dissipated_by_friction: float | None
+    dissipated_by_friction: float | None  # with [friction], else None
+    dissipated_at_front: float | None  # with detachment.front_speed_law, else None
+    dissipated_by_bulk: float | None  # with material.relaxation, else None
 
 class StageEnd:
     name: str
     end: State
     work: Work
+    start_time: float | None  # [s] in a timed program, else None
+    end_time: float | None
 
 class Jump:
     stage: str
@@ -120,6 +125,7 @@ class Trajectory(TypedDict):
     springs_in_contact: npt.NDArray[np.int64]
     normal_control: npt.NDArray[np.float64]
     sliding: NotRequired[npt.NDArray[np.int64]]  # with [friction] only, as the CSV's column
+    time: NotRequired[npt.NDArray[np.float64]]  # in a timed program only [s]
 
 class Result:
     @property
@@ -150,6 +156,10 @@ class Result:
     def sliding(self) -> bool: ...
     @property
     def dissipated_by_friction(self) -> float | None: ...
+    @property
+    def dissipated_at_front(self) -> float | None: ...
+    @property
+    def dissipated_by_bulk(self) -> float | None: ...
     @property
     def warnings(self) -> list[str]: ...
     @property

@@ -50,12 +50,18 @@ class State:
 
 @dataclass(frozen=True)
 class Work:
-    """Work done by the machine on each axis [J]; with [friction], `dissipated_by_friction`
-    (the slip limit times each slip distance, summed: part of `tangential`), else None."""
+    """Work done by the machine on each axis [J] and the parts of it dissipated, each where the
+    scene has its cause (as the JSON's `work` names it), else None: with [friction],
+    `dissipated_by_friction` (the slip limit times each slip distance, summed: part of
+    `tangential`); with detachment.front_speed_law, `dissipated_at_front` (int (G - dgamma) 2 pi
+    a |da|, docs/rate_law.md); with material.relaxation, `dissipated_by_bulk` (what the
+    dashpots dissipated, docs/viscoelastic.md)."""
 
     normal: float
     tangential: float
     dissipated_by_friction: float = None
+    dissipated_at_front: float = None
+    dissipated_by_bulk: float = None
 
 
 @dataclass(frozen=True)
@@ -215,6 +221,22 @@ class Result:
         where the run did not follow the whole path."""
         w = self.work
         return None if w is None else w.dissipated_by_friction
+
+    @property
+    def dissipated_at_front(self):
+        """The work the rate law's receding front dissipated over the whole run [J]
+        (work.dissipated_at_front; each stage's is stages[i].work.dissipated_at_front); None
+        without detachment.front_speed_law or where the run did not follow the whole path."""
+        w = self.work
+        return None if w is None else w.dissipated_at_front
+
+    @property
+    def dissipated_by_bulk(self):
+        """The work a relaxing bulk's dashpots dissipated over the whole run [J]
+        (work.dissipated_by_bulk; each stage's is stages[i].work.dissipated_by_bulk); None
+        without material.relaxation or where the run did not follow the whole path."""
+        w = self.work
+        return None if w is None else w.dissipated_by_bulk
 
     @cached_property
     def warnings(self):

@@ -119,7 +119,8 @@ def _grid_flags(grid, where, design, samples, seed):
 
 class _Job:
     """What a task needs to run rows in any process: the scene's text and overrides, the
-    grid's flags (_grid_flags) and the CSV's optional columns (dimensionless, friction, work).
+    grid's flags (_grid_flags) and the CSV's optional columns (dimensionless, friction, work,
+    bulk, front).
     Pickled without its plan, which each process makes once (_plan_for)."""
 
     __slots__ = ("token", "scene", "vary", "columns", "plan")
@@ -282,7 +283,8 @@ def sweep(scene, grid, executor=None, batch_seconds=0.1, method=None, *, where=N
     flags = _grid_flags(grid, where, design, samples, seed)
     state = scene._state()
     plan = _core.SweepPlan(*state, *flags)  # every value checked, as the command does
-    job = _Job(uuid.uuid4().hex, state, flags, (plan.dimensionless, plan.friction, plan.work),
+    job = _Job(uuid.uuid4().hex, state, flags, (plan.dimensionless, plan.friction, plan.work, plan.bulk,
+                                      plan.front),
                plan)
 
     started = time.perf_counter()

@@ -167,16 +167,31 @@ py::object optional_snapshot(const std::optional<ContactSnapshot>& s, const PySt
   return s ? py::object(snapshot(*s, keys)) : py::object(py::none());
 }
 
-/// With friction the work says what of it friction dissipated, as the JSON's does.
-py::dict work(const AxisWork& w, bool friction) {
+/// Which parts of the work a result names, as the JSON's `work` does: friction's, the rate
+/// law's front's and a relaxing bulk's dashpots' dissipation.
+struct PyWorkKeys {
+  bool friction = false;
+  bool front = false;  ///< detachment.front_speed_law (docs/rate_law.md)
+  bool bulk = false;   ///< material.relaxation (docs/viscoelastic.md)
+};
+
+/// The work on each axis and the dissipations the scene has, keyed as the JSON's `work`.
+py::dict work(const AxisWork& w, PyWorkKeys keys) {
   py::dict d;
   d["normal"] = w.normal;
   d["tangential"] = w.tangential;
-  if (friction) d["dissipated_by_friction"] = w.friction;
+  if (keys.friction) d["dissipated_by_friction"] = w.friction;
+  if (keys.front) d["dissipated_at_front"] = w.front;
+  if (keys.bulk) d["dissipated_by_bulk"] = w.bulk;
   return d;
 }
 
 bool has_friction(const ResultHandle& r) { return r.scene->friction.has_value(); }
+PyWorkKeys work_keys(const ResultHandle& r) {
+  return {.friction = has_friction(r),
+          .front = r.scene->front_speed_law.has_value(),
+          .bulk = r.scene->material.relaxes()};
+}
 bool has_zone(const ResultHandle& r) { return r.scene->material.finite_range(); }
 PyStateKeys state_keys(const ResultHandle& r) {
   return {.friction = has_friction(r),
@@ -229,14 +244,12 @@ void bind_results(py::module_& m) {
                                return to_string(*r.result.stop_reason);
                              })
       .def_property_readonly("title", [](const ResultHandle& r) { return r.scene->title; })
-      .def_property_readonly("critical",
-                             [](const ResultHandle& r) {
-                               return optional_snapshot(r.result.critical, state_keys(r));
-                             })
-      .def_property_readonly("peak",
-                             [](const ResultHandle& r) {
-                               return optional_snapshot(r.result.peak, state_keys(r));
-                             })
+      .def_property_readonly(
+          "critical",
+          [](const ResultHandle& r) { return optional_snapshot(r.result.critical, state_keys(r)); })
+      .def_property_readonly(
+          "peak",
+          [](const ResultHandle& r) { return optional_snapshot(r.result.peak, state_keys(r)); })
       .def_property_readonly("sliding", [](const ResultHandle& r) { return r.result.sliding; })
       .def_property_readonly("tangential_strength",
                              [](const ResultHandle& r) { return r.result.tangential_strength; })
@@ -254,40 +267,39 @@ void bind_results(py::module_& m) {
                                    start = s.end.time;
                                  }
                                  d["end"] = snapshot(s.end, keys);
-                                 d["work"] = work(s.work, has_friction(r));
+                                 d["work"] = work(s.work, work_keys(r));
                                  out.append(d);
                                }
                                return out;
                              })
-      .def_property_readonly(
-          "jumps",
-          [](const ResultHandle& r) {
-            py::list out;
-            for (const JumpRecord& j : r.result.jumps) {
-              py::dict d;
-              d["stage"] = j.stage;
-              d["kind"] = j.inward ? "in" : "out";
-              const PyStateKeys keys = state_keys(r);
-              d["critical"] = snapshot(j.critical, keys);
-              // A flight (docs/programs.md "A fixed load that loses the
-              // contact") has no state after it; a jump takes no time.
-              ContactSnapshot after = j.after;
-              after.time = j.critical.time;
-              d["after"] = j.end == JumpEnd::state ? py::object(snapshot(after, keys))
-                                                   : py::object(py::none());
-              d["end"] = to_string(j.end);
-              d["springs"] = j.springs;
-              d["glued_springs"] = j.glued_springs;
-              d["by_shear"] = j.by_shear;
-              out.append(d);
-            }
-            return out;
-          })
+      .def_property_readonly("jumps",
+                             [](const ResultHandle& r) {
+                               py::list out;
+                               for (const JumpRecord& j : r.result.jumps) {
+                                 py::dict d;
+                                 d["stage"] = j.stage;
+                                 d["kind"] = j.inward ? "in" : "out";
+                                 const PyStateKeys keys = state_keys(r);
+                                 d["critical"] = snapshot(j.critical, keys);
+                                 // A flight (docs/programs.md "A fixed load that loses the
+                                 // contact") has no state after it; a jump takes no time.
+                                 ContactSnapshot after = j.after;
+                                 after.time = j.critical.time;
+                                 d["after"] = j.end == JumpEnd::state
+                                                  ? py::object(snapshot(after, keys))
+                                                  : py::object(py::none());
+                                 d["end"] = to_string(j.end);
+                                 d["springs"] = j.springs;
+                                 d["glued_springs"] = j.glued_springs;
+                                 d["by_shear"] = j.by_shear;
+                                 out.append(d);
+                               }
+                               return out;
+                             })
       .def_property_readonly("work",
                              [](const ResultHandle& r) {
-                               return r.result.work
-                                          ? py::object(work(*r.result.work, has_friction(r)))
-                                          : py::object(py::none());
+                               return r.result.work ? py::object(work(*r.result.work, work_keys(r)))
+                                                    : py::object(py::none());
                              })
       .def_property_readonly("warnings", [](const ResultHandle& r) { return r.result.warnings; })
       .def_property_readonly("disk_valid",

@@ -68,13 +68,14 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 
 /// A sweep of one scene (its text and with_values overrides, as mdrsim.Scene keeps them) over
 /// the --vary texts. Made once by the caller, which checks the values, and again wherever
-/// rows run (a Dask worker), told the columns (dimensionless, friction, work) so that it checks
-/// nothing.
+/// rows run (a Dask worker), told the columns (dimensionless, friction, work, bulk, front) so
+/// that it checks nothing.
 class SweepPlan {
  public:
   SweepPlan(const std::string& text, const std::string& source_name, const std::string& base_dir,
             const Overrides& overrides, const GridFlags& flags, std::optional<bool> dimensionless,
-            std::optional<bool> friction, std::optional<bool> work)
+            std::optional<bool> friction, std::optional<bool> work, std::optional<bool> bulk,
+            std::optional<bool> front)
       : grid_(parse_grid(flags)), registries_(current_registries()) {
     std::vector<std::string> sets;
     for (const auto& [key, value] : overrides) sets.push_back(key + "=" + value);
@@ -82,8 +83,8 @@ class SweepPlan {
     py::gil_scoped_release release;  // Python parts take the GIL back in their factories
     base_.emplace(SceneDocument::from_scene_text(text, source_name, base_dir));
     for (const auto& [key, value] : overrides) base_->set_value(key, value);
-    if (dimensionless && friction && work) {
-      columns_ = {*dimensionless, *friction, *work};
+    if (dimensionless && friction && work && bulk && front) {
+      columns_ = {*dimensionless, *friction, *work, *bulk, *front};
     } else {
       columns_ = check_values(*base_, grid_, *registries_);
     }
@@ -93,6 +94,8 @@ class SweepPlan {
   bool dimensionless() const { return columns_.dimensionless; }
   bool friction() const { return columns_.friction; }
   bool work() const { return columns_.work; }
+  bool bulk() const { return columns_.bulk; }
+  bool front() const { return columns_.front; }
   std::string header() const { return cli::csv_header(grid_, columns_); }
   std::string identity() const {
     return cli::identity_line({scene_hash_, grid_.hash(), grid_.rows(), cli::Shard{}});
@@ -155,20 +158,24 @@ void bind_sweep(py::module_& m) {
                        const std::vector<std::string>& where, const std::string& design,
                        const std::string& samples, const std::string& seed,
                        std::optional<bool> dimensionless, std::optional<bool> friction,
-                       std::optional<bool> work) {
+                       std::optional<bool> work, std::optional<bool> bulk,
+                       std::optional<bool> front) {
              return SweepPlan(text, source_name, base_dir, overrides,
                               {vary, linked, where, design, samples, seed}, dimensionless, friction,
-                              work);
+                              work, bulk, front);
            }),
            py::arg("text"), py::arg("source_name"), py::arg("base_dir"), py::arg("overrides"),
            py::arg("vary"), py::arg("linked") = std::vector<bool>{},
            py::arg("where") = std::vector<std::string>{}, py::arg("design") = "",
            py::arg("samples") = "", py::arg("seed") = "", py::arg("dimensionless") = py::none(),
-           py::arg("friction") = py::none(), py::arg("work") = py::none())
+           py::arg("friction") = py::none(), py::arg("work") = py::none(),
+           py::arg("bulk") = py::none(), py::arg("front") = py::none())
       .def_property_readonly("rows", &SweepPlan::rows)
       .def_property_readonly("dimensionless", &SweepPlan::dimensionless)
       .def_property_readonly("friction", &SweepPlan::friction)
       .def_property_readonly("work", &SweepPlan::work)
+      .def_property_readonly("bulk", &SweepPlan::bulk)
+      .def_property_readonly("front", &SweepPlan::front)
       .def_property_readonly("header", &SweepPlan::header)
       .def_property_readonly("identity", &SweepPlan::identity)
       .def("values", &SweepPlan::values)

@@ -144,3 +144,25 @@ def test_paper_figures_draw_a_cone_without_the_parabolas_closed_forms(cli, tmp_p
     assert len(drawn(fig.axes[0], "simulation")[0].get_xdata()) > 100
     assert "Cone of 10 degrees" in fig.axes[0].get_title()
     plt.close(fig)
+
+
+def test_rate_law_speed_reference_and_fast_asymptote():
+    pytest.importorskip("scipy")
+    import plot_rate_law_speed as speed
+
+    # docs/rate_law.md's table (the C++ reference, tests/support/rate_law_front), 8 digits.
+    assert speed.reference_peak(1.0, 0.5) == pytest.approx(-1.6207648, abs=1e-7)
+    assert speed.reference_peak(100.0, 1.0) == pytest.approx(-8.1499919, abs=1e-7)
+    assert speed.reference_peak(1e-4, 1.0) == pytest.approx(-1.0000492, abs=1e-7)
+    # The fast asymptote's power: the ODE's ratio to it tends to 1 as 1 - C beta^(-n/(n+2)),
+    # C below the script's bound and settling (n = 1: C -> 4/3).
+    for n in (1.0, 0.5):
+        ratios = [speed.reference_peak(beta, n) / speed.fast_asymptote(beta, n)
+                  for beta in (1e6, 1e8, 1e10)]
+        assert ratios == sorted(ratios) and ratios[-1] < 1.0
+        coefficients = [(1.0 - r) * beta ** (n / (n + 2.0))
+                        for r, beta in zip(ratios, (1e6, 1e8, 1e10))]
+        assert all(c < speed.ASYMPTOTE_BOUND for c in coefficients)
+        assert abs(coefficients[2] - coefficients[1]) < abs(coefficients[1] - coefficients[0])
+    assert (1.0 - speed.reference_peak(1e10, 1.0) / speed.fast_asymptote(1e10, 1.0)) * 1e10 ** (
+        1.0 / 3.0) == pytest.approx(4.0 / 3.0, abs=0.01)

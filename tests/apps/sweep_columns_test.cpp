@@ -183,6 +183,45 @@ TEST(SweepColumns, WorkColumnsAreTheRunsJsonWork) {
   EXPECT_EQ(plain.out.find("work_normal"), std::string::npos);
 }
 
+TEST(SweepColumns, TimesDissipationsAreTheRunsJsonWork) {
+  // A rate sweep of the rate law (continuum route) and a relaxing bulk's press and withdrawal
+  // at two relaxation times: each row's dissipation is the JSON's `work` of the same run, to
+  // the bit, in the last column; the work columns before it.
+  struct Sweep {
+    std::string scene, vary, set, column;
+  };
+  for (const Sweep& s :
+       {Sweep{"scenes/viscoelastic/rate_law_parabola.toml", "loading.stage.2.speed=1e-9:1e-6:4:log",
+              "", "dissipated_at_front"},
+        Sweep{"scenes/viscoelastic/lee_radok_parabola.toml", "material.relaxation.1.time=0.1,1.0",
+              "discretization.springs=100", "dissipated_by_bulk"}}) {
+    const std::string sets = s.set.empty() ? "" : " --set " + s.set;
+    const auto r =
+        run_mdrsim(fmt::format("sweep {} --vary {}{} --log-level off", s.scene, s.vary, sets));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto header = fields_of(lines_of(r.out).at(1));
+    ASSERT_GE(header.size(), 3u);
+    EXPECT_EQ(header[header.size() - 3], "work_normal");
+    EXPECT_EQ(header.back(), s.column);
+    const std::string other =
+        s.column == "dissipated_by_bulk" ? "dissipated_at_front" : "dissipated_by_bulk";
+    EXPECT_EQ(r.out.find(other), std::string::npos) << s.scene;
+    const std::string key = s.vary.substr(0, s.vary.find('='));
+    const auto rows = csv_rows(r.out);
+    ASSERT_FALSE(rows.empty());
+    double last = 0.0;
+    for (const auto& row : rows) {
+      const std::string set = key + "=" + row.at(key) + sets;
+      const auto work = run_json(s.scene, set).at("work");
+      EXPECT_EQ(number(row.at(s.column)), work.at(s.column).get<double>()) << set;
+      EXPECT_EQ(number(row.at("work_normal")), work.at("normal").get<double>()) << set;
+      EXPECT_GT(number(row.at(s.column)), 0.0) << set;
+      EXPECT_NE(number(row.at(s.column)), last) << set;
+      last = number(row.at(s.column));
+    }
+  }
+}
+
 TEST(SweepLogs, WarningsNameTheirRowAndAreCounted) {
   // 20 springs do not resolve the critical point: every row warns once, at debug in a sweep.
   const auto r = run_mdrsim(

@@ -17,6 +17,8 @@
 #include "profiles/profile.hpp"
 #include "profiles/sphere_profile.hpp"
 #include "profiles/tabulated_profile.hpp"
+#include "profiles/wavy_gap.hpp"
+#include "profiles/wavy_profile.hpp"
 
 namespace mdrsim {
 namespace {
@@ -249,6 +251,66 @@ TEST(DugdaleGap, RoughTableMatchesAFineQuadratureOnEveryPiece) {
       expect_gap(at, tabulated.dugdale_gap(a, c, t), fine_table_gap(tabulated, a, t), 1e-13);
     }
   }
+}
+
+// The wavy profile's J and dJ/dt (the parabola's closed form and wavy_ripple_gap: the order of
+// the MDR transform's double integral exchanged, on fixed Gauss rules) against the adaptive
+// quadrature of its image's slope (dugdale_gap_quadrature, which the ripple integrals'
+// Bessel sums feed), over ripples from a gentle one to one whose image falls between crests
+// (A k^2 R from 0.004 to 440), contacts from a small part of a wavelength to 40 of them, and
+// zones from t = 1e-8 (J ~ t^3, where the rule's parts of order t^2 would cancel) to 14 times
+// the contact. Where the ripple outweighs the curvature J changes sign along the zone and
+// the parts of its integral are far larger than J itself: the tolerance, 2e-14, is relative to
+// the J of the parabolas r^2/(2R) and A k^2 r^2/2 together, the size of the two curvatures'
+// shares (the worst seen: 7e-15, at t = 0.1 and 0.3, where the rule switches its form).
+TEST(DugdaleGap, WavyGapMatchesTheAdaptiveQuadrature) {
+  const double radius = 0.01;
+  const ParabolicProfile parabola(radius);
+  for (const double amplitude : {1e-8, 1e-7, 1e-6}) {
+    for (const double wavelength : {1e-3, 1e-4, 3e-5}) {
+      const WavyProfile wavy(radius, amplitude, wavelength);
+      const double k = 2.0 * std::numbers::pi / wavelength;
+      const ParabolicProfile ripple_curvature(1.0 / (amplitude * k * k));
+      for (const double a : {1e-7, 3e-6, 2.4e-5, 1e-4, 2.05e-4, 5e-4, 1.3e-3}) {
+        for (const double t :
+             {1e-8, 1e-6, 1e-4, 1e-2, 0.07, 0.1, 0.2, 0.29, 0.31, 0.45, 0.55, 0.7, 1.0, 1.3, 1.5}) {
+          const double c = a / std::cos(t);
+          const std::string at = "A = " + std::to_string(amplitude) +
+                                 " lambda = " + std::to_string(wavelength) +
+                                 " a = " + std::to_string(a) + " t = " + std::to_string(t);
+          const DugdaleGap gap = wavy.dugdale_gap(a, c, t);
+          const DugdaleGap reference = dugdale_gap_quadrature(wavy, a, c, t);
+          const DugdaleGap scale_r = parabola.dugdale_gap(a, c, t);
+          const DugdaleGap scale_k = ripple_curvature.dugdale_gap(a, c, t);
+          EXPECT_NEAR(gap.integral, reference.integral,
+                      2e-14 * (scale_r.integral + scale_k.integral))
+              << at;
+          EXPECT_NEAR(gap.angle_slope, reference.angle_slope,
+                      2e-14 * (scale_r.angle_slope + scale_k.angle_slope))
+              << at;
+        }
+      }
+    }
+  }
+}
+
+// A zone around a contact of radius 0 is the ripple's (pi/2) f(c), dJ/dt = (pi/2) f'(c) c tan t;
+// beyond kMaxWavyGapHalfWaves half wavelengths in the contact the profile takes the quadrature.
+TEST(DugdaleGap, WavyGapAtTheAxisAndBeyondItsRule) {
+  const double radius = 0.01, amplitude = 1e-7, wavelength = 1e-4;
+  const WavyProfile wavy(radius, amplitude, wavelength);
+  const double k = 2.0 * std::numbers::pi / wavelength;
+  const double c = 3.3e-4, t = 0.5 * std::numbers::pi;
+  const DugdaleGap ripple = wavy_ripple_gap(amplitude, k, 0.0, c, t);
+  const double half_pi = 0.5 * std::numbers::pi;
+  EXPECT_NEAR(ripple.integral, half_pi * amplitude * (1.0 - std::cos(k * c)), 1e-15 * amplitude);
+  EXPECT_NEAR(ripple.angle_slope, half_pi * amplitude * k * std::sin(k * c) * c * std::tan(t),
+              1e-15 * amplitude * k * c * std::tan(t));
+  const double a = 1.01 * kMaxWavyGapHalfWaves * wavelength / 2.0, t_far = 0.4;
+  const DugdaleGap far = wavy.dugdale_gap(a, a / std::cos(t_far), t_far);
+  const DugdaleGap quadrature = dugdale_gap_quadrature(wavy, a, a / std::cos(t_far), t_far);
+  EXPECT_EQ(far.integral, quadrature.integral);
+  EXPECT_EQ(far.angle_slope, quadrature.angle_slope);
 }
 
 }  // namespace

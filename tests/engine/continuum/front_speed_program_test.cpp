@@ -114,6 +114,24 @@ TEST(FrontSpeedProgram, LooseRtolStaysFiniteAtTheAxis) {
   }
 }
 
+// A fast retraction (beta 1e7 and 1e8) walks to the axis in radius, where a trial stage of a
+// long step can see the stretch of a grip position the front never meets with G < dgamma: that
+// stage is taken again shorter, not an error (it ended "the front stopped on its way to the
+// axis" with exit 1). The peak against the independent solution, as at slower speeds.
+TEST(FrontSpeedProgram, FastRetractionReachesTheAxis) {
+  const test::RateLawScales sc = test::rate_law_scales(kModulus, kRadius, kWork, kFrontSpeed);
+  for (const double n : {1.0, 0.5}) {
+    for (const double beta : {1e7, 1e8}) {
+      const test::RateLawRetraction ref = test::rate_law_retraction(beta, n, 1e-10);
+      const RunResult r = run_scene(test::build_scene_text(rate_law_scene(beta, n)), {});
+      EXPECT_EQ(r.status, RunStatus::instability) << beta << " " << n;
+      ASSERT_TRUE(r.peak) << beta << " " << n;
+      EXPECT_NEAR(r.peak->normal_force / (ref.peak.force * sc.force), 1.0, 1e-8)
+          << beta << " " << n;
+    }
+  }
+}
+
 // The rate law dissipates where the quasi-static front does not: the same scene without the
 // key reaches JKR's fixed-grips peak -F0, and with it the peak is beyond it.
 TEST(FrontSpeedProgram, SlowRetractionNearsJkr) {
@@ -180,14 +198,13 @@ TEST(FrontSpeedReader, RefusesWhatItDoesNotTakeYet) {
                    std::string(kRateLawAt) +
                        "a program whose every stage has duration or speed is needed with "
                        "detachment.front_speed_law");
-  // The spring rows.
+  // The spring rows take the event method only (tests/engine/program/rate_law_row_test.cpp).
   EXPECT_THROW_MSG(
-      test::build_scene_text(rate_law_scene(
-          1.0, 1.0, "[solver]\nmethod = \"event\"\n[discretization]\nsprings = 100\n")),
+      test::build_scene_text(rate_law_scene(1.0, 1.0, "[solver]\nmethod = \"stepping\"\n")),
       SceneError,
       std::string(kRateLawAt) +
-          "runs on the continuum route only so far: give solver.method = \"continuum\" or "
-          "discretization.rtol" +
+          "runs on the row with solver.method = \"event\" (or on the continuum route: "
+          "solver.method = \"continuum\")" +
           scope);
   // Friction (on its own the scene would take the row; the law's scope is checked first).
   EXPECT_THROW_MSG(

@@ -108,9 +108,12 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
        "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      {"Adhesion", replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
-       "v.toml:4:20: material.work_of_adhesion: adhesion (the edge under a relaxing bulk), "
-       "work_of_adhesion > 0, is not yet taken with material.relaxation (docs/viscoelastic.md "
+      // The adhesive edge runs under normal fixed grips only.
+      {"AdhesionUnderFixedLoad",
+       replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                "normal = { by = -1.0e-4 }", "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
+       "v.toml:9:1: loading.stage: loading.stage.2.normal.control = \"fixed-load\" with "
+       "work_of_adhesion > 0 is not yet taken with material.relaxation (docs/viscoelastic.md "
        "\"What it refuses\")"},
       {"Tangential",
        replaced(kViscous, "until = \"separation\"\n",
@@ -153,6 +156,10 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
   EXPECT_NO_THROW(
       build(replaced(kViscous, "normal = { by = -1.0e-4 }",
                      "normal = { control = \"compliant\", stiffness = 1e3, by = -1e-4 }")));
+  // Adhesion under fixed grips is within it: the criterion then sees the glassy modulus.
+  const Scene adhesive =
+      build(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"));
+  EXPECT_EQ(adhesive.material.work_of_adhesion, 0.05);
 }
 
 }  // namespace

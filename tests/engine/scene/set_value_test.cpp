@@ -104,6 +104,19 @@ TEST(SetExclusiveKeys, StageByReplacesTo) {
   EXPECT_EQ(scene.program->stages[0].normal->value, 3e-5);
 }
 
+TEST(SetExclusiveKeys, StageDurationAndSpeedReplaceEachOther) {
+  // A rate sweep varies either key of a stage that gives the other.
+  SceneDocument d = document(kProgram);
+  d.set_value("loading.stage.1.speed", "1e-6");
+  d.set_value("loading.stage.2.speed", "1e-6");
+  d.set_value("loading.stage.1.duration", "2.0");
+  const Scene scene = build(d);
+  EXPECT_EQ(scene.program->stages[0].duration, 2.0);
+  EXPECT_FALSE(scene.program->stages[0].speed.has_value());
+  EXPECT_EQ(scene.program->stages[1].speed, 1e-6);
+  EXPECT_FALSE(scene.program->stages[1].duration.has_value());
+}
+
 TEST(SetExclusiveKeys, ProfileArraysReplaceAFile) {
   SceneDocument d = document();
   d.set_value("profile", R"({ type = "tabulated", file = "nowhere.csv" })");
