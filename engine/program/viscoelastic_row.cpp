@@ -440,11 +440,18 @@ class ViscoelasticRowDrive::Row {
     // acts at once only when the sign says so and the motion leads on (no back-and-forth at
     // one time), and a spring within rounding of the level on the wrong side starts on it.
     if (s.phase == ViscoelasticSpringPhase::free) {
-      const ExponentialSum free_surface = s.creep->stretch_from(time_ - s.released_at);
-      const double overlap = stretch - free_surface.at(0.0);
-      if (overlap >= 0.0 && rate_ - free_surface.slope_at(0.0) > 0.0) return 0.0;
-      return touch_time(*s.creep, time_ - s.released_at,
-                        overlap > 0.0 ? stretch - overlap : stretch, rate_, span);
+      // The indenter's stretch less the free surface's, negative while apart. A spring released
+      // at this time is not met again at it: where its load touched zero with zero slope the
+      // release's test and this one disagree by rounding, and the two would alternate forever.
+      // Within rounding of the surface the level is taken where the overlap stands (shifting
+      // the sum by its value at 0 need not make it 0 there), so that the crossing is a later one.
+      ExponentialSum overlap = s.creep->stretch_from(time_ - s.released_at);
+      for (ExponentialDecay& decay : overlap.decays) decay.amplitude = -decay.amplitude;
+      overlap.constant = stretch - overlap.constant;
+      overlap.slope = rate_;
+      const double now = overlap.at(0.0);
+      if (now >= 0.0 && overlap.slope_at(0.0) > 0.0 && time_ > s.released_at) return 0.0;
+      return first_crossing(overlap, std::max(now, 0.0), span);
     }
     std::vector<double> stresses(springs_.terms.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(s.member, j);

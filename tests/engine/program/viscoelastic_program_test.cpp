@@ -167,6 +167,29 @@ TEST(ViscoelasticProgram, EveryStageBalancesItsEnergy) {
   EXPECT_GT(r.energy->stored_change, 0.0);  // the free springs have not crept back yet
 }
 
+// Two Prony terms of distinct times (4.5 MPa at 0.1 s and 0.03 s) on 100 springs: in the
+// withdrawal one spring's load touches zero with zero slope (the indenter and its free surface at
+// one speed), where the release's test and the free spring's touch test disagreed by rounding:
+// it was released and touched at one instant until the stage's event limit stopped the program
+// (step-limit). Each spring is now touched and lifted once, the contact lost, and every stage
+// balances its energy (1e-12 of its work, as above).
+TEST(ViscoelasticProgram, TwoTermsWithdrawWithoutLoopingAtATangency) {
+  std::string text = replaced_in_scene(
+      scene_file_text(), "relaxation = [ { modulus = 9.0e6, time = 0.1 } ]",
+      "relaxation = [ { modulus = 4.5e6, time = 0.1 }, { modulus = 4.5e6, time = 0.03 } ]");
+  text = replaced_in_scene(text, "springs = 400", "springs = 100");
+  const SceneRun run = run_text(text);
+  const RunResult& r = run.result;
+  EXPECT_FALSE(r.stop_reason.has_value());
+  EXPECT_EQ(r.status, RunStatus::no_instability);
+  EXPECT_EQ(r.counts.events, 200);
+  ASSERT_EQ(r.stages.size(), 2u);
+  for (const StageRecord& stage : r.stages) {
+    ASSERT_TRUE(stage.energy.has_value());
+    EXPECT_NEAR(stage.energy->residual, 0.0, 1e-12 * std::abs(stage.work.normal)) << stage.name;
+  }
+}
+
 // A hold between press and withdrawal: under fixed grips every pressed spring keeps its stretch
 // and its arm decays, so the force's arm part, F(t_m) less Hertz's force of E*_inf at V t_m, falls
 // by exp(-T / tau) (Lee-Radok's arm part at t_m from the reference). Tolerance 2 / N of F(t_m),
