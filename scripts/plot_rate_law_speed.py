@@ -1,7 +1,9 @@
-"""The rate law of the edge: the peak tension of an elastic parabola retracted under fixed grips
-from JKR's zero-force state (scenes/viscoelastic/rate_law_parabola.toml, continuum route)
-against beta = (V / v*) (E* R / dgamma)^(1/3), for n = 1 and 1/2, from `mdrsim sweep` over the
-retraction's speed, beside an independent solution of the front's ODE (scipy's solve_ivp at rtol
+"""The speed figure: the rate law's peak tension and a Prony solid's pull-off against speed.
+
+The rate law of the edge (first panel): the peak tension of an elastic parabola retracted under
+fixed grips from JKR's zero-force state (scenes/viscoelastic/rate_law_parabola.toml, continuum
+route) against beta = (V / v*) (E* R / dgamma)^(1/3), for n = 1 and 1/2, from `mdrsim sweep` over
+the retraction's speed, beside an independent solution of the front's ODE (scipy's solve_ivp at rtol
 1e-10; no number of the engine), the slow limit (JKR's fixed-grips pull-off, -F0) and the fast
 asymptote derived below. Draws RESULTS/rate_law_speed.png and exits 1 where an engine point is
 further than 1e-6 (relative) from the reference, or a point at beta >= 100 further from the fast
@@ -26,6 +28,17 @@ so F_peak / F0 -> -(4 / (3 pi)) alpha* sigma* beta^(n/(n+2)) (F0 = 3 pi dgamma R
 for n = 1, beta^(1/5) for n = 1/2. What was dropped (delta0 and alpha^2 beside beta tau, alpha^3/3
 in f, the 1 in G - 1) is of relative order beta^(-n/(n+2)): the points at beta >= 100 must lie
 within ASYMPTOTE_BOUND beta^(-n/(n+2)) of it, relative.
+
+The Prony solid (second panel): a parabola pressed to d0 into an adhesive standard linear solid
+and withdrawn at once at the same speed V until the contact is lost
+(scenes/viscoelastic/prony_speed_pull_off.toml, the program row), swept over V tau / d0 from 1e-4
+to 1e4 with both stages' speed linked. V tau / d0 is tau against the press's time d0 / V: much
+slower, the arms relax as they go and carry one stress, and the pull-off is JKR's with (E_inf,
+dgamma E_0 / E_inf); much faster, they stay glassy and it is JKR's with (E_0, dgamma)
+(docs/viscoelastic.md "The adhesive edge", tests/engine/program/viscoelastic_adhesion_test.cpp).
+The row's pull-off carries O(1/N): 0.75 / K* in those tests, K* = N a* / a_max the spring where
+JKR's pull-off radius a* sits. The job fails where the slowest point is further than 1 / K* from
+the slow limit, the fastest further than 1 / K* from the fast one, or |pull-off| rises with V.
 """
 
 import argparse
@@ -52,6 +65,8 @@ EXPONENTS = (1.0, 0.5)
 # axis") at n = 1 from beta = 1e7.
 BETAS = "1e-4:1e6:21:log"
 POWER_TEXT = {1.0: "1/3", 0.5: "1/5"}  # n / (n + 2)
+# The Prony panel's V tau / d0: eight decades around the press lasting tau, three points a decade.
+PRONY_SPEEDS = "1e-4:1e4:25:log"
 ALPHA0 = (4.5 * math.pi) ** (1.0 / 3.0)  # JKR's zero-force state
 F0 = 1.5 * math.pi  # in units of dgamma R
 
@@ -127,20 +142,122 @@ def engine_sweep(mdrsim, scene, parabola, n, betas, results):
     return list(csv.DictReader(io.StringIO(text)))
 
 
+class PronySolid:
+    """The Prony scene's scales and limits: one Prony term on E*_inf, pressed to d0 and withdrawn
+    at one speed (scenes/viscoelastic/prony_speed_pull_off.toml)."""
+
+    def __init__(self, scene):
+        material = scene["material"]
+        relaxed = material.get("effective_modulus")
+        if relaxed is None:
+            relaxed = material["youngs_modulus"] / (1.0 - material.get("poisson_ratio", 0.0) ** 2)
+            arms = [t["modulus"] / (1.0 - material.get("poisson_ratio", 0.0) ** 2)
+                    for t in material["relaxation"]]
+        else:
+            arms = [t["modulus"] for t in material["relaxation"]]
+        if len(arms) != 1:
+            raise SystemExit(f"the Prony panel takes one Prony term, not {len(arms)}")
+        self.tau = material["relaxation"][0]["time"]
+        self.radius = scene["profile"]["radius"]
+        self.dgamma = material["work_of_adhesion"]
+        self.depth = scene["loading"]["stage"][0]["normal"]["to"]
+        self.springs = scene["discretization"]["springs"]
+        glassy = relaxed + arms[0]
+        self.ratio = glassy / relaxed
+        # JKR's pull-off -(3/2) pi R dgamma_eff and where it is reached, a* = (9 pi R^2
+        # dgamma_eff / (8 E))^(1/3): slow (E_inf, dgamma E_0 / E_inf), fast (E_0, dgamma).
+        self.limits = {}
+        for name, modulus, dgamma in (("slow", relaxed, self.dgamma * glassy / relaxed),
+                                      ("fast", glassy, self.dgamma)):
+            radius = (9.0 * math.pi * self.radius**2 * dgamma / (8.0 * modulus)) ** (1.0 / 3.0)
+            self.limits[name] = (-1.5 * math.pi * self.radius * dgamma, radius)
+        # The row's springs span the largest contact radius (every spring glues on touch).
+        self.contact = math.sqrt(self.radius * self.depth)
+
+    def speed_scale(self):
+        """d0 / tau: the press lasts d0 / V, so V tau / d0 is tau against the press's time."""
+        return self.depth / self.tau
+
+    def bound(self, name):
+        """The row's O(1/N) bound on a limit's pull-off: 1 / K*, K* = N a* / a_max the spring
+        where JKR's pull-off sits. The tests measured 0.75 / K* (1.01e-2 and 2.51e-3 at K* = 75
+        and 299, 9.38e-3 and 2.33e-3 at K* = 79 and 317)."""
+        return self.contact / (self.springs * self.limits[name][1])
+
+
 def prony_pull_off(args):
-    """The second panel's points: a Prony solid's pull-off against the retraction's speed, from
-    a sweep of the adhesive edge under a relaxing bulk (docs/viscoelastic.md). None while the
-    engine refuses that scene (work_of_adhesion > 0 with relaxation): the figure then has the
-    rate law's panel alone."""
-    del args
-    return None
+    """The second panel's points: the Prony solid's pull-off (`peak_normal_force`) against both
+    stages' speed V, swept over V tau / d0 = args.prony_speeds (RESULTS/prony_speed_pull_off.csv),
+    printed against JKR's slow and fast limits, with the failures: the slowest point beyond the
+    row's bound of the slow limit, the fastest beyond it of the fast limit, or |pull-off| rising
+    with the speed (beyond 1e-12 of itself: the slow points agree to rounding)."""
+    with open(args.prony_scene, "rb") as handle:
+        solid = PronySolid(tomllib.load(handle))
+    low, high, count, spacing = args.prony_speeds.split(":")
+    scale = solid.speed_scale()
+    speeds = f"{float(low) * scale!r}:{float(high) * scale!r}:{count}:{spacing}"
+    path = os.path.join(args.results, "prony_speed_pull_off.csv")
+    subprocess.run([args.mdrsim, "sweep", args.prony_scene, "--vary",
+                    f"loading.stage.1.speed={speeds}", "--link", f"loading.stage.2.speed={speeds}",
+                    "--csv", path, "--force", "--log-level", "error"], check=True)
+    with open(path, newline="") as handle:
+        text = "".join(line for line in handle if not line.startswith("#"))
+    rows, failed = [], []
+    for r in csv.DictReader(io.StringIO(text)):
+        if not r["peak_normal_force"]:
+            failed.append(f"Prony solid, V = {r['loading.stage.2.speed']} m/s: no pull-off "
+                          f"(status {r['status']}, {r['stop_reason']})")
+            continue
+        rows.append({"speed": float(r["loading.stage.2.speed"]),
+                     "pull_off": float(r["peak_normal_force"]), "status": r["status"]})
+    rows.sort(key=lambda r: r["speed"])
+    slow, fast = solid.limits["slow"][0], solid.limits["fast"][0]
+    print(f"Prony solid, pull-off against V tau / d0 (d0 = {solid.depth:g} m, tau = "
+          f"{solid.tau:g} s, {solid.springs} springs): slow limit {slow:.8e} N (bound "
+          f"{solid.bound('slow'):.1e}), fast limit {fast:.8e} N (bound {solid.bound('fast'):.1e})")
+    print(f"  {'V [m/s]':>10} {'V tau/d0':>10} {'pull-off [N]':>17} {'vs slow':>9} {'vs fast':>9}"
+          f"  status")
+    for r in rows:
+        r["scaled"] = r["speed"] / scale
+        print(f"  {r['speed']:10.3e} {r['scaled']:10.3e} {r['pull_off']:17.10e} "
+              f"{abs(r['pull_off'] / slow - 1.0):9.2e} {abs(r['pull_off'] / fast - 1.0):9.2e}  "
+              f"{r['status']}")
+    for name, row, limit in (("slow", rows[0], slow), ("fast", rows[-1], fast)):
+        error = abs(row["pull_off"] / limit - 1.0)
+        bound = solid.bound(name)
+        if not error <= bound:
+            failed.append(f"Prony solid, the {name}est point (V = {row['speed']:.3e} m/s): "
+                          f"pull-off {row['pull_off']!r} is {error:.2e} from its limit {limit!r} "
+                          f"(> the row's bound {bound:.2e})")
+    for before, after in zip(rows, rows[1:]):
+        if not abs(after["pull_off"]) <= abs(before["pull_off"]) * (1.0 + 1e-12):
+            failed.append(f"Prony solid: |pull-off| rises from {before['pull_off']!r} at V = "
+                          f"{before['speed']:.3e} m/s to {after['pull_off']!r} at "
+                          f"{after['speed']:.3e} m/s")
+    return {"solid": solid, "rows": rows, "failed": failed}
 
 
 def draw_prony_pull_off(axes, pull_off):
-    """The second panel: the Prony solid's pull-off against speed (`pull_off`, from
+    """The second panel: the Prony solid's pull-off against V tau / d0 (`pull_off`, from
     prony_pull_off), with its slow limit (JKR with E_inf and dgamma E_0 / E_inf) and its fast
     limit (JKR with E_0) drawn."""
-    raise NotImplementedError("the Prony solid's pull-off against speed is not drawn yet")
+    solid, rows = pull_off["solid"], pull_off["rows"]
+    scaled = [r["scaled"] for r in rows]
+    (slow, _), (fast, _) = solid.limits["slow"], solid.limits["fast"]
+    axes.axhline(-slow, color="C2", lw=0.8, ls="--",
+                 label=f"slow limit: JKR (E_inf, dgamma E_0/E_inf), {-slow:.4e} N")
+    axes.axhline(-fast, color="C3", lw=0.8, ls="--",
+                 label=f"fast limit: JKR (E_0, dgamma), {-fast:.4e} N")
+    axes.axvline(1.0, color="k", lw=0.6, ls=":", label="V = d0 / tau")
+    axes.plot(scaled, [-r["pull_off"] for r in rows], "o", mfc="none", color="C0", ms=5,
+              label=f"mdrsim, program row, {solid.springs} springs (O(1/N) <= "
+                    f"{max(solid.bound('slow'), solid.bound('fast')):.0e})")
+    axes.set_xscale("log")
+    axes.set_yscale("log")
+    axes.set_xlabel("V tau / d0 (press and withdrawal at V; d0 the press's depth)")
+    axes.set_ylabel("pull-off -F_min [N]")
+    axes.set_title(f"Standard linear solid (E_0 / E_inf = {solid.ratio:g}): pull-off against speed")
+    axes.legend(fontsize=7)
 
 
 def draw_rate_law(axes, points):
@@ -172,11 +289,9 @@ def draw(points, pull_off, results):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    panels = 1 if pull_off is None else 2
-    fig, axes = plt.subplots(1, panels, figsize=(6.4 * panels, 4.8), squeeze=False)
+    fig, axes = plt.subplots(1, 2, figsize=(12.8, 4.8), squeeze=False)
     draw_rate_law(axes[0][0], points)
-    if pull_off is not None:
-        draw_prony_pull_off(axes[0][1], pull_off)
+    draw_prony_pull_off(axes[0][1], pull_off)
     fig.tight_layout()
     for ext in ("png", "svg"):
         fig.savefig(os.path.join(results, f"rate_law_speed.{ext}"))
@@ -190,6 +305,9 @@ def main():
     parser.add_argument("--mdrsim", default="build/apps/mdrsim")
     parser.add_argument("--scene", default="scenes/viscoelastic/rate_law_parabola.toml")
     parser.add_argument("--betas", default=BETAS, help="FROM:TO:COUNT:log (default %(default)s)")
+    parser.add_argument("--prony-scene", default="scenes/viscoelastic/prony_speed_pull_off.toml")
+    parser.add_argument("--prony-speeds", default=PRONY_SPEEDS,
+                        help="V tau / d0 as FROM:TO:COUNT:log (default %(default)s)")
     args = parser.parse_args()
     with open(args.scene, "rb") as handle:
         scene = tomllib.load(handle)
@@ -223,7 +341,9 @@ def main():
         slope = math.log(last["engine"] / before["engine"]) / math.log(last["beta"] / before["beta"])
         print(f"  n = {n:g}: the engine's d ln|F| / d ln beta over its last decade {slope:.4f}, "
               f"the asymptote's n/(n+2) = {n / (n + 2.0):.4f}")
-    draw(points, prony_pull_off(args), args.results)
+    pull_off = prony_pull_off(args)
+    failed += pull_off["failed"]
+    draw(points, pull_off, args.results)
     for line in failed:
         print(f"FAIL {line}")
     return 1 if failed else 0
