@@ -210,11 +210,14 @@ echo
 echo "== viscoelastic springs: Lee-Radok and Ting" >&2
 "$py" scripts/plot_viscoelastic.py --results "$results" --mdrsim "$mdrsim"
 
-# The rate law of the edge (docs/rate_law.md): the peak tension of a parabola retracted from
-# JKR's zero-force state against beta, n = 1 and 1/2, two sweeps of the continuum route beside
-# the front's ODE solved in the script (solve_ivp, rtol 1e-10), JKR's slow limit and the fast
-# asymptote; an engine point beyond 1e-6 of the ODE fails the job.
-echo "== rate law of the edge: peak tension against speed" >&2
+# Pull-off against speed (docs/rate_law.md, docs/viscoelastic.md): the rate law of the edge, the
+# peak tension of a parabola retracted from JKR's zero-force state against beta, n = 1 and 1/2,
+# two sweeps of the continuum route beside the front's ODE solved in the script (solve_ivp, rtol
+# 1e-10), JKR's slow limit and the fast asymptote (an engine point beyond 1e-6 of the ODE fails
+# the job); and a Prony solid's pull-off against the press-and-withdraw speed on the row, between
+# its slow (JKR of E_inf, dgamma E_0 / E_inf) and fast (JKR of E_0) limits (beyond the row's
+# O(1/N) bound of either, or not monotone, fails the job).
+echo "== pull-off against speed: the rate law of the edge and a Prony solid" >&2
 "$py" scripts/plot_rate_law_speed.py --results "$results" --mdrsim "$mdrsim"
 
 echo "== comparison with the paper's closed forms" >&2
