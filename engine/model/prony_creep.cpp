@@ -48,12 +48,12 @@ RetardationModes::RetardationModes(double relaxed_modulus, std::span<const Prony
   }
 }
 
-std::vector<double> RetardationModes::amplitudes(std::span<const double> group_stresses) const {
+FewValues<double> RetardationModes::amplitudes(std::span<const double> group_stresses) const {
   // alpha_k = <v_k, y0> / <v_k, v_k>, <u, v> = sum_g E_g u_g v_g + (sum E_g u_g)(sum E_g v_g) / E*,
   // with y0_g = sigma_g / E_g: E_g y0_g = sigma_g.
   double stress_sum = 0.0;
   for (const double sigma : group_stresses) stress_sum += sigma;
-  std::vector<double> alpha(rates_.size());
+  FewValues<double> alpha(rates_.size());
   for (std::size_t k = 0; k < rates_.size(); ++k) {
     double diagonal = 0.0, weighted = 0.0;
     for (std::size_t g = 0; g < groups_.size(); ++g) {
@@ -69,7 +69,7 @@ FreeSpringCreep::FreeSpringCreep(std::shared_ptr<const RetardationModes> modes,
                                  std::span<const double> stresses)
     : modes_(std::move(modes)) {
   const std::span<const PronyTerm> terms = modes_->terms();
-  std::vector<double> group_stresses(modes_->groups().size(), 0.0);
+  FewValues<double> group_stresses(modes_->groups().size(), 0.0);
   for (std::size_t j = 0; j < terms.size(); ++j) group_stresses[modes_->group_of(j)] += stresses[j];
   amplitudes_ = modes_->amplitudes(group_stresses);
   residuals_.resize(terms.size());
@@ -84,9 +84,9 @@ FreeSpringCreep::FreeSpringCreep(double relaxed_modulus, std::span<const PronyTe
                                  std::span<const double> stresses)
     : FreeSpringCreep(std::make_shared<const RetardationModes>(relaxed_modulus, terms), stresses) {}
 
-std::vector<double> FreeSpringCreep::stresses(double t) const {
+FewValues<double> FreeSpringCreep::stresses(double t) const {
   const std::span<const PronyTerm> groups = modes_->groups();
-  std::vector<double> group_stress(groups.size(), 0.0);
+  FewValues<double> group_stress(groups.size(), 0.0);
   for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
     const double decay = amplitudes_[k] * std::exp(-modes_->rates()[k] * t);
     for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -94,7 +94,7 @@ std::vector<double> FreeSpringCreep::stresses(double t) const {
     }
   }
   const std::span<const PronyTerm> terms = modes_->terms();
-  std::vector<double> out(terms.size());
+  FewValues<double> out(terms.size());
   for (std::size_t j = 0; j < terms.size(); ++j) {
     const std::size_t g = modes_->group_of(j);
     out[j] = terms[j].modulus / groups[g].modulus * group_stress[g] +

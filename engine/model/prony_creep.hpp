@@ -34,7 +34,7 @@ class RetardationModes {
   /// v_kg = 1 / (1/tau_g - mu_k), the strain of group g in mode k.
   double mode(std::size_t k, std::size_t g) const { return modes_[k][g]; }
   /// alpha_k of group stresses sigma_g [N/m]: y = sum_k alpha_k v_k at the release.
-  std::vector<double> amplitudes(std::span<const double> group_stresses) const;
+  FewValues<double> amplitudes(std::span<const double> group_stresses) const;
 
  private:
   double relaxed_modulus_;
@@ -60,7 +60,7 @@ class FreeSpringCreep {
   /// The stretch w(t) [m] at t [s] after the release.
   double stretch(double t) const;
   /// The arm stresses sigma_j(t) [N/m].
-  std::vector<double> stresses(double t) const;
+  FewValues<double> stresses(double t) const;
   /// w(t0 + s) as an exponential sum in s [s].
   ExponentialSum stretch_from(double t0) const;
   /// The retardation rates mu_k [1/s], ascending.
@@ -68,8 +68,8 @@ class FreeSpringCreep {
 
  private:
   std::shared_ptr<const RetardationModes> modes_;
-  std::vector<double> amplitudes_;  ///< alpha_k
-  std::vector<double> residuals_;   ///< sigma_j - (E_j / E_group) sigma_group at 0 [N/m]
+  FewValues<double> amplitudes_;  ///< alpha_k
+  FewValues<double> residuals_;   ///< sigma_j - (E_j / E_group) sigma_group at 0 [N/m]
 };
 
 /// The first s in (0, span] [s] at which the indenter, whose surface at the spring stands at

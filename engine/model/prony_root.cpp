@@ -52,6 +52,17 @@ ConstantPlusDecays merged_decays(ConstantPlusDecays p) {
   return out;
 }
 
+// Whether p is nonzero and of one sign everywhere: a nonzero constant and decays of its sign.
+// Then p has no zeros to look for (a sum of terms of one sign rounds to that sign, and with a
+// nonzero constant never to zero).
+bool one_signed(const ConstantPlusDecays& p) {
+  if (p.constant == 0.0) return false;
+  const bool positive = p.constant > 0.0;
+  return std::all_of(p.terms.begin(), p.terms.end(), [&](const auto& term) {
+    return positive ? term.first >= 0.0 : term.first <= 0.0;
+  });
+}
+
 // Appends to `roots` the sign changes of fn strictly inside (points.front(), points.back()),
 // fn monotone on each [points[i], points[i+1]]. (Appended in place: a small vector returned by
 // value trips GCC's -Wstringop-overread inside Boost.Container.)
@@ -88,7 +99,7 @@ void append_decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi,
     derivative.terms.emplace_back(-amplitude * rate, rate - slowest);
   }
   InlineVector<double> points{lo};
-  append_decay_sum_zeros(derivative, lo, hi, points);
+  if (!one_signed(derivative)) append_decay_sum_zeros(derivative, lo, hi, points);
   points.push_back(hi);
   append_sign_changes([&](double s) { return p.at(s); }, points, zeros);
 }
@@ -121,7 +132,7 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     derivative.terms.emplace_back(-decay.amplitude / decay.time, 1.0 / decay.time);
   }
   InlineVector<double> points{0.0};
-  append_decay_sum_zeros(derivative, 0.0, span, points);
+  if (!one_signed(derivative)) append_decay_sum_zeros(derivative, 0.0, span, points);
   points.push_back(span);
   // The side: g at 0, or where g starts at the level, g at the end of the first piece (g moves
   // monotonically away from the level there).

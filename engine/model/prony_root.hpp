@@ -2,7 +2,10 @@
 // and the first time it reaches a level (a let-go, a lift, a touch), located exactly.
 #pragma once
 
+#include <boost/container/small_vector.hpp>
+
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace mdrsim {
@@ -11,6 +14,16 @@ namespace mdrsim {
 struct ExponentialDecay {
   double amplitude;  ///< c [the sum's unit]
   double time;       ///< tau [s] > 0
+};
+
+/// A few values, one per Prony term or decay: a row's events build them at every step, so they
+/// stay off the heap up to four. They pass as spans.
+template <class T>
+class FewValues : public boost::container::small_vector<T, 4> {
+ public:
+  using boost::container::small_vector<T, 4>::small_vector;
+  operator std::span<const T>() const { return {this->data(), this->size()}; }
+  operator std::span<T>() { return {this->data(), this->size()}; }
 };
 
 /// f(s) = constant + slope s + sum_j amplitude_j exp(-s / time_j), s [s] from the motion's start.

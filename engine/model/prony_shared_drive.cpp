@@ -29,7 +29,7 @@ void SharedDriveArms::advance_along(const ExponentialSum& motion, double duratio
 }
 
 SharedDriveMember SharedDriveArms::enter(std::span<const double> stresses, double weight) {
-  SharedDriveMember member{time_, std::vector<double>(terms_.size()), weight};
+  SharedDriveMember member{time_, FewValues<double>(terms_.size()), weight};
   for (std::size_t j = 0; j < terms_.size(); ++j) {
     member.offsets[j] = stresses[j] - history_[j];
     decaying_[j] += weight * member.offsets[j];
@@ -43,8 +43,8 @@ double SharedDriveArms::stress(const SharedDriveMember& member, std::size_t j) c
   return history_[j] + member.offsets[j] * std::exp(-(time_ - member.entry_time) / terms_[j].time);
 }
 
-std::vector<double> SharedDriveArms::leave(const SharedDriveMember& member) {
-  std::vector<double> stresses(terms_.size());
+FewValues<double> SharedDriveArms::leave(const SharedDriveMember& member) {
+  FewValues<double> stresses(terms_.size());
   for (std::size_t j = 0; j < terms_.size(); ++j) {
     stresses[j] = stress(member, j);
     decaying_[j] -= member.weight * (stresses[j] - history_[j]);

@@ -14,9 +14,9 @@ namespace mdrsim {
 /// What a member keeps: its arm stress per term is sigma_j(t) = H_j(t) + offset_j
 /// exp(-(t - entry_time) / tau_j), H_j the drive's history below. O(1) per term.
 struct SharedDriveMember {
-  double entry_time = 0.0;      ///< [s] on the set's clock
-  std::vector<double> offsets;  ///< [N/m] per term
-  double weight = 0.0;          ///< dx [m]: the member's share of the sums
+  double entry_time = 0.0;    ///< [s] on the set's clock
+  FewValues<double> offsets;  ///< [N/m] per term
+  double weight = 0.0;        ///< dx [m]: the member's share of the sums
 };
 
 /// Every member's stretch moves at the same rate, so each arm obeys d sigma_j/dt = E_j w' -
@@ -36,7 +36,7 @@ class SharedDriveArms {
   /// A spring joins now with arm stresses `stresses` [N/m] (zero for a fresh one) and weight dx.
   SharedDriveMember enter(std::span<const double> stresses, double weight);
   /// A member leaves now; its arm stresses then [N/m] are returned.
-  std::vector<double> leave(const SharedDriveMember& member);
+  FewValues<double> leave(const SharedDriveMember& member);
   /// A member's arm stress of term j now [N/m].
   double stress(const SharedDriveMember& member, std::size_t j) const;
 

@@ -3,6 +3,7 @@
 #include "engine/program/viscoelastic_row.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -33,7 +34,7 @@ struct ViscoelasticSpringState {
   /// [N/m] then; while free, the energy it stored then [J/m].
   double counted_at = 0.0;
   double counted_stretch = 0.0;
-  std::vector<double> counted_stresses;
+  FewValues<double> counted_stresses;
   double counted_stored = 0.0;
   std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
 };
@@ -60,6 +61,44 @@ struct HeldKeyExpiresLater {
 /// The share of a let-go load within which a boundary spring's load is on it (a load summed
 /// from E* w and the arms rounds at a few eps of its terms).
 constexpr double kEdgeRounding = 64.0 * std::numeric_limits<double>::epsilon();
+
+/// A set of springs by index (those in contact, those glued): a flag per spring, their count and
+/// the outermost. Springs mostly leave from the outside in, so the next outermost is found by a
+/// short scan of the flags' words below the one that left.
+class RowSpringSet {
+ public:
+  explicit RowSpringSet(std::size_t springs) : words_((springs + 63) / 64, 0) {}
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  /// The largest index in the set; the set must not be empty.
+  std::size_t outermost() const { return outermost_; }
+  void insert(std::size_t k) {
+    std::uint64_t& word = words_[k / 64];
+    const std::uint64_t bit = std::uint64_t{1} << (k % 64);
+    if (word & bit) return;
+    word |= bit;
+    outermost_ = size_ == 0 ? k : std::max(outermost_, k);
+    ++size_;
+  }
+  void erase(std::size_t k) {
+    std::uint64_t& word = words_[k / 64];
+    const std::uint64_t bit = std::uint64_t{1} << (k % 64);
+    if (!(word & bit)) return;
+    word &= ~bit;
+    if (--size_ == 0) {
+      outermost_ = 0;
+    } else if (k == outermost_) {
+      std::size_t w = k / 64;
+      while (words_[w] == 0) --w;  // a member remains below k
+      outermost_ = 64 * w + static_cast<std::size_t>(std::bit_width(words_[w])) - 1;
+    }
+  }
+
+ private:
+  std::vector<std::uint64_t> words_;
+  std::size_t size_ = 0;
+  std::size_t outermost_ = 0;
+};
 
 struct ViscoelasticRowEvent {
   double time;
@@ -94,7 +133,9 @@ class ViscoelasticRowDrive::Row {
       : springs_(springs),
         arms_(springs.terms),
         modes_(std::make_shared<const RetardationModes>(springs.relaxed_modulus, springs.terms)),
-        state_(springs.images.size()) {}
+        state_(springs.images.size()),
+        pressed_(springs.images.size()),
+        glued_(springs.images.size()) {}
 
   /// A new segment from the present time: every spring's next event within it is queued (the
   /// energy summed up to now, the rate changing).
@@ -149,7 +190,7 @@ class ViscoelasticRowDrive::Row {
     const bool release = s.phase == ViscoelasticSpringPhase::pressed;
     if (release) {
       count_pressed(s, springs_.images[k]);
-      const std::vector<double> stresses = arms_.leave(s.member);
+      const FewValues<double> stresses = arms_.leave(s.member);
       s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
       s.creep.emplace(modes_, stresses);
       s.released_at = time_;
@@ -159,9 +200,9 @@ class ViscoelasticRowDrive::Row {
       ++run.releases;
       if (pressed_.empty()) run.separation_time = time_;
     } else {
-      const std::vector<double> stresses = s.phase == ViscoelasticSpringPhase::free
-                                               ? s.creep->stresses(time_ - s.released_at)
-                                               : std::vector<double>(springs_.terms.size(), 0.0);
+      const FewValues<double> stresses = s.phase == ViscoelasticSpringPhase::free
+                                             ? s.creep->stresses(time_ - s.released_at)
+                                             : FewValues<double>(springs_.terms.size(), 0.0);
       if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
       s.member = arms_.enter(stresses, 1.0);
       s.counted_at = time_;
@@ -209,9 +250,9 @@ class ViscoelasticRowDrive::Row {
     const double line_loads =
         springs_.relaxed_modulus * (n * depth_ - pressed_images_.value()) + arms_.arm_force();
     const double radius =
-        pressed_.empty() ? 0.0 : springs_.spacing * static_cast<double>(*pressed_.rbegin() + 1);
+        pressed_.empty() ? 0.0 : springs_.spacing * static_cast<double>(pressed_.outermost() + 1);
     const double glued_radius =
-        glued_.empty() ? 0.0 : springs_.spacing * static_cast<double>(*glued_.rbegin() + 1);
+        glued_.empty() ? 0.0 : springs_.spacing * static_cast<double>(glued_.outermost() + 1);
     return {time_,
             depth_,
             2.0 * springs_.spacing * line_loads,
@@ -229,12 +270,12 @@ class ViscoelasticRowDrive::Row {
   /// The outermost glued spring, the one that may let go; none without glue.
   std::optional<std::size_t> boundary() const {
     if (glued_.empty()) return std::nullopt;
-    return *glued_.rbegin();
+    return glued_.outermost();
   }
   /// The spring just outside the contact (the outermost spring in contact, glued or pressed),
   /// the one the advancing front may glue; none beyond the row.
   std::optional<std::size_t> outside() const {
-    const std::size_t k = pressed_.empty() ? 0 : *pressed_.rbegin() + 1;
+    const std::size_t k = pressed_.empty() ? 0 : pressed_.outermost() + 1;
     if (k >= state_.size()) return std::nullopt;
     return k;
   }
@@ -283,7 +324,7 @@ class ViscoelasticRowDrive::Row {
   void let_go(std::size_t k, ViscoelasticRowRun& run) {
     ViscoelasticSpringState& s = state_[k];
     count_pressed(s, springs_.images[k]);
-    std::vector<double> stresses = arms_.leave(s.member);
+    FewValues<double> stresses = arms_.leave(s.member);
     const double stretch = depth_ - springs_.images[k];
     const double load = springs_.relaxed_modulus * stretch + sum_of(stresses);
     const double before = stored_of(stretch, stresses);
@@ -308,7 +349,7 @@ class ViscoelasticRowDrive::Row {
   void leave_contact(std::size_t k, ViscoelasticRowRun& run) {
     ViscoelasticSpringState& s = state_[k];
     count_pressed(s, springs_.images[k]);
-    const std::vector<double> stresses = arms_.leave(s.member);
+    const FewValues<double> stresses = arms_.leave(s.member);
     s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
     s.counted_at = time_;
     s.creep.emplace(modes_, stresses);
@@ -325,8 +366,8 @@ class ViscoelasticRowDrive::Row {
   void enter_contact(std::size_t k, ViscoelasticRowRun& run, std::optional<double> glue_gap) {
     ViscoelasticSpringState& s = state_[k];
     const bool free = s.phase == ViscoelasticSpringPhase::free;
-    std::vector<double> stresses = free ? s.creep->stresses(time_ - s.released_at)
-                                        : std::vector<double>(springs_.terms.size(), 0.0);
+    FewValues<double> stresses = free ? s.creep->stresses(time_ - s.released_at)
+                                      : FewValues<double>(springs_.terms.size(), 0.0);
     double before = 0.0;
     double free_stretch = 0.0;
     if (free) {
@@ -356,7 +397,7 @@ class ViscoelasticRowDrive::Row {
     pressed_images_.add(springs_.images[k]);
     run.separation_time.reset();
   }
-  static double sum_of(const std::vector<double>& values) {
+  static double sum_of(std::span<const double> values) {
     double sum = 0.0;
     for (const double v : values) sum += v;
     return sum;
@@ -364,7 +405,7 @@ class ViscoelasticRowDrive::Row {
 
   /// What a spring of stretch w and arm stresses sigma_j stores [J/m]: E* w^2 / 2 +
   /// sum_j sigma_j^2 / (2 E_j).
-  double stored_of(double stretch, const std::vector<double>& stresses) const {
+  double stored_of(double stretch, std::span<const double> stresses) const {
     double e = 0.5 * springs_.relaxed_modulus * stretch * stretch;
     for (std::size_t j = 0; j < stresses.size(); ++j) {
       e += 0.5 * stresses[j] * stresses[j] / springs_.terms[j].modulus;
@@ -412,7 +453,10 @@ class ViscoelasticRowDrive::Row {
   }
 
   void count_all() {
-    for (const std::size_t k : pressed_) count_pressed(state_[k], springs_.images[k]);
+    // The springs in contact in ascending order, then the free ones.
+    for (std::size_t k = 0; k < state_.size(); ++k) {
+      if (in_contact(state_[k])) count_pressed(state_[k], springs_.images[k]);
+    }
     for (ViscoelasticSpringState& s : state_) {
       if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
     }
@@ -453,7 +497,7 @@ class ViscoelasticRowDrive::Row {
       if (now >= 0.0 && overlap.slope_at(0.0) > 0.0 && time_ > s.released_at) return 0.0;
       return first_crossing(overlap, std::max(now, 0.0), span);
     }
-    std::vector<double> stresses(springs_.terms.size());
+    FewValues<double> stresses(springs_.terms.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(s.member, j);
     ExponentialSum load =
         line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
@@ -760,7 +804,7 @@ class ViscoelasticRowDrive::Row {
       }
     };
     if (!pressed_.empty()) {
-      const std::size_t edge = *pressed_.rbegin();
+      const std::size_t edge = pressed_.outermost();
       for (const std::size_t k : {edge, edge + 1, edge + 2}) {
         if (k < state_.size()) offer(k);
       }
@@ -860,7 +904,7 @@ class ViscoelasticRowDrive::Row {
 
   /// Spring s's line load from now over the segment's motion (its stretch `stretch` now).
   ExponentialSum load_over(const ViscoelasticSpringState& s, double stretch) const {
-    std::vector<double> stresses(springs_.terms.size());
+    FewValues<double> stresses(springs_.terms.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(s.member, j);
     return line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
   }
@@ -869,8 +913,8 @@ class ViscoelasticRowDrive::Row {
   SharedDriveArms arms_;
   std::shared_ptr<const RetardationModes> modes_;
   std::vector<ViscoelasticSpringState> state_;
-  std::set<std::size_t> pressed_;  ///< in contact: pressed or glued
-  std::set<std::size_t> glued_;
+  RowSpringSet pressed_;  ///< in contact: pressed or glued
+  RowSpringSet glued_;
   CompensatedSum pressed_images_;
   std::priority_queue<ViscoelasticRowEvent, std::vector<ViscoelasticRowEvent>, std::greater<>>
       queue_;

@@ -58,7 +58,7 @@ TEST(PronyCreep, SeveralTermsAgainstTheirEquations) {
         odeint::make_controlled(1e-14, 1e-14, odeint::runge_kutta_fehlberg78<State>()), rhs, state,
         t, until, 1e-4);
     t = until;
-    const std::vector<double> stresses = creep.stresses(t);
+    const auto stresses = creep.stresses(t);
     double load = kRelaxed * creep.stretch(t);
     for (std::size_t j = 0; j < 3; ++j) {
       EXPECT_NEAR(stresses[j], state[j], 1e-11 * 25.0) << t << " " << j;
