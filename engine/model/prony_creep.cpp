@@ -45,6 +45,9 @@ RetardationModes::RetardationModes(double relaxed_modulus, std::span<const Prony
       weighted += groups_[g].modulus * modes_[k][g];
     }
     mode_norms_.push_back(diagonal + weighted * weighted / relaxed_modulus_);
+    double amplitude = 0.0;
+    for (std::size_t g = 0; g < count; ++g) amplitude -= groups_[g].modulus * modes_[k][g];
+    stretch_amplitudes_.push_back(amplitude);
   }
 }
 
@@ -105,22 +108,25 @@ FewValues<double> FreeSpringCreep::stresses(double t) const {
 
 ExponentialSum FreeSpringCreep::stretch_from(double t0) const {
   // w = -sum_g sigma_g / E* (the residuals of a group sum to zero).
-  const std::span<const PronyTerm> groups = modes_->groups();
   ExponentialSum w;
+  w.decays.reserve(amplitudes_.size());
   for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
-    double amplitude = 0.0;
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-      amplitude -= groups[g].modulus * modes_->mode(k, g);
-    }
-    const double rate = modes_->rates()[k];
-    w.decays.push_back(
-        {amplitude * amplitudes_[k] / modes_->relaxed_modulus() * std::exp(-rate * t0),
-         1.0 / rate});
+    w.decays.push_back({mode_stretch(k, t0), 1.0 / modes_->rates()[k]});
   }
   return w;
 }
 
-double FreeSpringCreep::stretch(double t) const { return stretch_from(t).at(0.0); }
+double FreeSpringCreep::mode_stretch(std::size_t k, double t) const {
+  return modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus() *
+         std::exp(-modes_->rates()[k] * t);
+}
+
+double FreeSpringCreep::stretch(double t) const {
+  // stretch_from(t) at 0, summed as ExponentialSum::at sums it (each decay times exp(0) = 1).
+  double w = 0.0;
+  for (std::size_t k = 0; k < amplitudes_.size(); ++k) w += mode_stretch(k, t);
+  return w;
+}
 
 std::optional<double> touch_time(const FreeSpringCreep& creep, double t0, double indenter_stretch,
                                  double rate, double span) {

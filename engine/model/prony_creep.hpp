@@ -33,6 +33,8 @@ class RetardationModes {
   std::size_t group_of(std::size_t j) const { return group_of_[j]; }
   /// v_kg = 1 / (1/tau_g - mu_k), the strain of group g in mode k.
   double mode(std::size_t k, std::size_t g) const { return modes_[k][g]; }
+  /// -sum_g E_g v_kg: E* times the stretch of mode k at unit amplitude.
+  double stretch_amplitude(std::size_t k) const { return stretch_amplitudes_[k]; }
   /// alpha_k of group stresses sigma_g [N/m]: y = sum_k alpha_k v_k at the release.
   FewValues<double> amplitudes(std::span<const double> group_stresses) const;
 
@@ -43,6 +45,7 @@ class RetardationModes {
   std::vector<PronyTerm> groups_;
   std::vector<double> rates_;
   std::vector<std::vector<double>> modes_;
+  std::vector<double> stretch_amplitudes_;
   std::vector<double> mode_norms_;  ///< <v_k, v_k> in the pencil's inner product
 };
 
@@ -67,6 +70,9 @@ class FreeSpringCreep {
   std::span<const double> rates() const { return modes_->rates(); }
 
  private:
+  /// Mode k's part of the stretch at t [m].
+  double mode_stretch(std::size_t k, double t) const;
+
   std::shared_ptr<const RetardationModes> modes_;
   FewValues<double> amplitudes_;  ///< alpha_k
   FewValues<double> residuals_;   ///< sigma_j - (E_j / E_group) sigma_group at 0 [N/m]

@@ -52,6 +52,13 @@ ConstantPlusDecays merged_decays(ConstantPlusDecays p) {
   return out;
 }
 
+// bracketed_root with fn's values at the ends known: TOMS 748 takes the same steps from them.
+template <class Fn>
+double bracketed_root_from(Fn fn, double lo, double hi, double fn_lo, double fn_hi) {
+  const RootBracket b = bracket_root(fn, lo, hi, fn_lo, fn_hi);
+  return 0.5 * (b.lo + b.hi);
+}
+
 // Whether p is nonzero and of one sign everywhere: a nonzero constant and decays of its sign.
 // Then p has no zeros to look for (a sum of terms of one sign rounds to that sign, and with a
 // nonzero constant never to zero).
@@ -76,7 +83,7 @@ void append_sign_changes(Fn fn, const InlineVector<double>& points, InlineVector
     if (f_hi == 0.0) {
       root = hi;
     } else if (f_lo != 0.0 && (f_lo < 0.0) != (f_hi < 0.0)) {
-      root = bracketed_root(fn, lo, hi);
+      root = bracketed_root_from(fn, lo, hi, f_lo, f_hi);
     } else {
       continue;
     }
@@ -144,12 +151,14 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     }
     points.erase(points.begin());
   }
+  double g_lo = side;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const double lo = points[i], hi = points[i + 1];
     const double g_hi = g(hi);
     if (g_hi == 0.0 || (g_hi < 0.0) != (side < 0.0)) {
-      return g_hi == 0.0 ? hi : bracketed_root(g, lo, hi);
+      return g_hi == 0.0 ? hi : bracketed_root_from(g, lo, hi, g_lo, g_hi);
     }
+    g_lo = g_hi;
   }
   return std::nullopt;
 }
