@@ -20,13 +20,21 @@ void advance_arms(std::span<double> stresses, std::span<const PronyTerm> terms, 
 
 ExponentialSum line_load_over(double relaxed_modulus, std::span<const PronyTerm> terms,
                               double stretch, std::span<const double> stresses, double rate) {
-  ExponentialSum load{relaxed_modulus * stretch, relaxed_modulus * rate, {}};
+  ExponentialSum load;
+  line_load_over(load, relaxed_modulus, terms, stretch, stresses, rate);
+  return load;
+}
+
+void line_load_over(ExponentialSum& load, double relaxed_modulus, std::span<const PronyTerm> terms,
+                    double stretch, std::span<const double> stresses, double rate) {
+  load.constant = relaxed_modulus * stretch;
+  load.slope = relaxed_modulus * rate;
+  load.decays.clear();
   for (std::size_t j = 0; j < terms.size(); ++j) {
     const double steady = terms[j].modulus * rate * terms[j].time;
     load.constant += steady;
     load.decays.push_back({stresses[j] - steady, terms[j].time});
   }
-  return load;
 }
 
 }  // namespace mdrsim

@@ -26,5 +26,8 @@ void advance_arms(std::span<double> stresses, std::span<const PronyTerm> terms, 
 ///   tau_j).
 ExponentialSum line_load_over(double relaxed_modulus, std::span<const PronyTerm> terms,
                               double stretch, std::span<const double> stresses, double rate);
+/// The same into `load` (its decays' storage reused: a row builds one at every event).
+void line_load_over(ExponentialSum& load, double relaxed_modulus, std::span<const PronyTerm> terms,
+                    double stretch, std::span<const double> stresses, double rate);
 
 }  // namespace mdrsim

@@ -109,11 +109,17 @@ FewValues<double> FreeSpringCreep::stresses(double t) const {
 ExponentialSum FreeSpringCreep::stretch_from(double t0) const {
   // w = -sum_g sigma_g / E* (the residuals of a group sum to zero).
   ExponentialSum w;
-  w.decays.reserve(amplitudes_.size());
+  stretch_from(t0, w);
+  return w;
+}
+
+void FreeSpringCreep::stretch_from(double t0, ExponentialSum& w) const {
+  w.constant = 0.0;
+  w.slope = 0.0;
+  w.decays.clear();
   for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
     w.decays.push_back({mode_stretch(k, t0), 1.0 / modes_->rates()[k]});
   }
-  return w;
 }
 
 double FreeSpringCreep::mode_stretch(std::size_t k, double t) const {

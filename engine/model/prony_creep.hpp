@@ -66,6 +66,8 @@ class FreeSpringCreep {
   FewValues<double> stresses(double t) const;
   /// w(t0 + s) as an exponential sum in s [s].
   ExponentialSum stretch_from(double t0) const;
+  /// The same into `w` (its decays' storage reused).
+  void stretch_from(double t0, ExponentialSum& w) const;
   /// The retardation rates mu_k [1/s], ascending.
   std::span<const double> rates() const { return modes_->rates(); }
 

@@ -489,7 +489,8 @@ class ViscoelasticRowDrive::Row {
       // release's test and this one disagree by rounding, and the two would alternate forever.
       // Within rounding of the surface the level is taken where the overlap stands (shifting
       // the sum by its value at 0 need not make it 0 there), so that the crossing is a later one.
-      ExponentialSum overlap = s.creep->stretch_from(time_ - s.released_at);
+      ExponentialSum& overlap = scratch_;
+      s.creep->stretch_from(time_ - s.released_at, overlap);
       for (ExponentialDecay& decay : overlap.decays) decay.amplitude = -decay.amplitude;
       overlap.constant = stretch - overlap.constant;
       overlap.slope = rate_;
@@ -499,8 +500,8 @@ class ViscoelasticRowDrive::Row {
     }
     FewValues<double> stresses(springs_.terms.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(s.member, j);
-    ExponentialSum load =
-        line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
+    ExponentialSum& load = scratch_;
+    line_load_over(load, springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
     const double now = load.at(0.0);
     // A spring at zero load that stays there (met at the turn of a hold) stays pressed, as an
     // elastic row counts a spring whose image the depth reaches.
@@ -933,10 +934,12 @@ class ViscoelasticRowDrive::Row {
   std::vector<std::uint32_t> free_generation_;
   std::vector<double> own_squares_;  ///< sum_i delta_ij^2 over the pressed springs [N^2/m^2]
   ExponentialSum motion_;            ///< the depth from now in a held segment [m]
-  CompensatedSum machine_work_;      ///< [J/m]
-  CompensatedSum dissipated_;        ///< [J/m]
-  CompensatedSum surface_;           ///< [J/m]
-  CompensatedSum jump_losses_;       ///< [J/m]
+  /// A sum next_event_delay builds, its storage kept from event to event.
+  mutable ExponentialSum scratch_;
+  CompensatedSum machine_work_;  ///< [J/m]
+  CompensatedSum dissipated_;    ///< [J/m]
+  CompensatedSum surface_;       ///< [J/m]
+  CompensatedSum jump_losses_;   ///< [J/m]
 };
 
 ViscoelasticRowDrive::ViscoelasticRowDrive(const ViscoelasticRowSprings& springs)
