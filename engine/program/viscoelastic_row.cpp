@@ -147,6 +147,8 @@ class ViscoelasticRowDrive::Row {
     end_ = time_ + segment.duration;
     end_depth_ = segment.end_depth.value_or(depth_ + rate_ * segment.duration);
     queue_ = {};
+    first_events_.clear();
+    next_first_event_ = 0;
     held_.reset();
     if (segment.held) {
       // Per unit length of one half: kappa d + q_total = phi (prony_load_drive.hpp).
@@ -158,7 +160,13 @@ class ViscoelasticRowDrive::Row {
       rebuild_motion();
       return;
     }
-    for (std::size_t k = 0; k < state_.size(); ++k) schedule(k);
+    for (std::size_t k = 0; k < state_.size(); ++k) {
+      if (const auto delay = next_event_delay(k)) {
+        first_events_.push_back({time_ + *delay, k, state_[k].version});
+      }
+    }
+    std::sort(first_events_.begin(), first_events_.end(),
+              [](const ViscoelasticRowEvent& a, const ViscoelasticRowEvent& b) { return b > a; });
   }
 
   double end() const { return end_; }
@@ -168,8 +176,16 @@ class ViscoelasticRowDrive::Row {
     while (!queue_.empty() && queue_.top().version != state_[queue_.top().spring].version) {
       queue_.pop();
     }
-    if (queue_.empty()) return std::nullopt;
-    return queue_.top();
+    while (next_first_event_ < first_events_.size() &&
+           first_events_[next_first_event_].version !=
+               state_[first_events_[next_first_event_].spring].version) {
+      ++next_first_event_;
+    }
+    const bool queued = !queue_.empty();
+    const bool first = next_first_event_ < first_events_.size();
+    if (!queued && !first) return std::nullopt;
+    next_is_first_ = first && (!queued || queue_.top() > first_events_[next_first_event_]);
+    return next_is_first_ ? first_events_[next_first_event_] : queue_.top();
   }
 
   void advance_to(double t) {
@@ -184,7 +200,13 @@ class ViscoelasticRowDrive::Row {
 
   /// The queued event of spring k at the present time: a touch, a release, a glue or a let-go.
   ViscoelasticRowChange apply(std::size_t k, ViscoelasticRowRun& run) {
-    if (!held_) queue_.pop();
+    if (!held_) {
+      if (next_is_first_) {
+        ++next_first_event_;
+      } else {
+        queue_.pop();
+      }
+    }
     if (springs_.edge) return apply_at_edge(k, run);
     ViscoelasticSpringState& s = state_[k];
     const bool release = s.phase == ViscoelasticSpringPhase::pressed;
@@ -917,6 +939,12 @@ class ViscoelasticRowDrive::Row {
   RowSpringSet pressed_;  ///< in contact: pressed or glued
   RowSpringSet glued_;
   CompensatedSum pressed_images_;
+  /// The events found as a segment begins (each spring's first in it: most of its events), in
+  /// their order, read in turn; the events found later are queued. The next is the earlier head
+  /// (a spring's stale entries skipped in both), as one queue of all would give it.
+  std::vector<ViscoelasticRowEvent> first_events_;
+  std::size_t next_first_event_ = 0;
+  bool next_is_first_ = false;  ///< whether next_event() took first_events_'s head
   std::priority_queue<ViscoelasticRowEvent, std::vector<ViscoelasticRowEvent>, std::greater<>>
       queue_;
   double time_ = 0.0;
