@@ -25,6 +25,8 @@ ViscoelasticEdge viscoelastic_edge(const DetachmentCriterion& glassy_criterion,
   ViscoelasticEdge edge;
   edge.glassy_modulus = material.glassy_modulus();
   edge.rebinding = rebinding;
+  edge.glassy_shear_modulus = glassy_material(material).effective_shear_modulus;
+  edge.criterion = &glassy_criterion;
   edge.let_go_loads.reserve(springs);
   edge.glue_gaps.reserve(springs);
   edge.surface_energies.reserve(springs);

@@ -31,6 +31,11 @@ struct ViscoelasticEdge {
   std::vector<double> surface_energies;
   /// Whether a spring that let go glues again like a fresh one (loading.rebinding).
   bool rebinding = false;
+  /// G_0* = G* E_0* / E* [Pa]: a let-go steps the tangential stretch by -q_x / G_0.
+  double glassy_shear_modulus = 0.0;
+  /// The glassy criterion, for a boundary spring that carries a tangential load: its margin at
+  /// elongation -q_z / E_0 and u_x = q_x / G_0 (null: let_go_loads alone); must outlive the edge.
+  const DetachmentCriterion* criterion = nullptr;
 };
 
 /// The material a criterion of the edge sees: E* and G* replaced by their glassy values

@@ -26,7 +26,7 @@ struct ViscoelasticStageDrive {
   double rate() const { return seconds > 0.0 ? change / seconds : 0.0; }
 };
 
-ViscoelasticStageDrive stage_drive(const Stage& stage, double held) {
+ViscoelasticStageDrive stage_drive(const Stage& stage, double held, double tangential_change) {
   ViscoelasticStageDrive drive{.end = held};
   if (stage.normal && stage.normal->motion == StageAxis::Motion::to) {
     drive.change = stage.normal->value - held;
@@ -35,7 +35,9 @@ ViscoelasticStageDrive stage_drive(const Stage& stage, double held) {
     drive.change = stage.normal->value;
     drive.end = held + drive.change;
   }
-  drive.seconds = seconds_per_parameter(stage, drive.change);
+  // The reader leaves a stage with a speed one moving axis.
+  drive.seconds =
+      seconds_per_parameter(stage, drive.change != 0.0 ? drive.change : tangential_change);
   return drive;
 }
 
@@ -81,6 +83,7 @@ ViscoelasticRowSprings viscoelastic_springs(const Scene& scene, const ProgramRow
                                  scene.material.relaxation,
                                  spec.reference_radius / static_cast<double>(n),
                                  {}};
+  springs.shear_ratio = scene.material.effective_shear_modulus / scene.material.effective_modulus;
   springs.images.reserve(static_cast<std::size_t>(n));
   for (std::int64_t i = 1; i < n; ++i) {
     springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
@@ -100,9 +103,10 @@ StageRecord viscoelastic_stage_record(const std::string& name, const Viscoelasti
   record.name = name;
   record.end = held_snapshot(end, control);
   record.work.normal = now.machine_work - before.machine_work;
+  record.work.tangential = now.tangential_work - before.tangential_work;
   record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
   EnergyBalance e;
-  e.machine_work = record.work.normal;
+  e.machine_work = record.work.normal + record.work.tangential;
   e.stored_change = now.stored - before.stored + machine_spring_change;
   e.dissipated_by_bulk = record.work.bulk;
   e.surface_change = now.surface - before.surface;
@@ -220,7 +224,9 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   const auto on_change = [&](ViscoelasticRowChange change, const ViscoelasticRowSample& s) {
     if (extended && s.contact_radius >= row_end * (1.0 - 1e-12)) reached_row_end = true;
     if (adhesive) {
-      report_jump(jumps.change(change, stage_name, drive.before_last_change(), drive.sample()));
+      const bool by_shear = change == ViscoelasticRowChange::let_go && drive.last_let_go_by_shear();
+      report_jump(
+          jumps.change(change, stage_name, drive.before_last_change(), drive.sample(), by_shear));
     }
     Event event{.kind = viscoelastic_event_kind(change),
                 .state = held_snapshot(s, control),
@@ -238,6 +244,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   bool ever_in_contact = false;
   bool lost = false;
   double held = 0.0;
+  double held_tangential = 0.0;  ///< u_x [m]
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
     // A row's changes settle in a few events per spring and stage; a stage that takes more than
@@ -253,8 +260,11 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       }
     }
     const double spring_energy_before = machine_spring_energy(control, row_force(drive.sample()));
-    const ViscoelasticStageDrive sd = stage_drive(stage, held);
+    const AxisMotion tangential = axis_motion(stage.tangential, held_tangential);
+    const ViscoelasticStageDrive sd = stage_drive(stage, held, tangential.rate);
     const double rate = sd.rate();
+    // u_x moves linearly over the stage (normal fixed grips: the reader refuses the rest).
+    const double tangential_rate = sd.seconds > 0.0 ? tangential.rate / sd.seconds : 0.0;
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
       const HeldStageEnd held_end = run_held_stage(drive, stage, control, held, on_change);
@@ -267,14 +277,17 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
             stage.name, drive.sample().pressed));
       }
     } else if (!stage.until_separation) {
-      drive.run({sd.seconds, rate, sd.end}, false, {}, no_samples, on_change);
+      drive.run(
+          {sd.seconds, rate, sd.end, std::nullopt, tangential_rate, tangential.at(1.0, false)},
+          false, {}, no_samples, on_change);
       held = sd.end;
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
       if (rate < 0.0) {
         for (int piece = 0; piece < kMostSeparationPieces && !separated && !drive.limited();
              ++piece) {
-          separated = drive.run({sd.seconds, rate}, true, {}, no_samples, on_change);
+          separated = drive.run({sd.seconds, rate, std::nullopt, std::nullopt, tangential_rate},
+                                true, {}, no_samples, on_change);
         }
       }
       held = drive.sample().depth;
@@ -294,6 +307,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
           stage.name, scene.solver.max_events_per_spring));
     }
     const ViscoelasticRowSample end = drive.sample();
+    held_tangential = end.tangential_displacement;
     if (adhesive) {
       report_jump(jumps.close());
       jumps.observe(end);

@@ -14,6 +14,8 @@ ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s) {
   c.contact_radius = s.contact_radius;
   c.springs_in_contact = s.pressed;
   c.glued_radius = s.glued_radius;
+  c.tangential_displacement = s.tangential_displacement;
+  c.tangential_force = s.tangential_force;
   c.time = s.time;
   return c;
 }
@@ -21,19 +23,22 @@ ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s) {
 std::optional<JumpRecord> ViscoelasticJumps::change(ViscoelasticRowChange change,
                                                     std::string_view stage,
                                                     const ViscoelasticRowSample& before,
-                                                    const ViscoelasticRowSample& after) {
+                                                    const ViscoelasticRowSample& after,
+                                                    bool by_shear) {
   const bool edge =
       change == ViscoelasticRowChange::glue || change == ViscoelasticRowChange::let_go;
   const bool inward = change == ViscoelasticRowChange::glue;
   if (change == ViscoelasticRowChange::let_go) observe(before);
   if (edge && open_ && open_->time == after.time && open_->inward == inward &&
       open_->stage == stage) {
-    ++open_->changes;
+    if (++open_->changes == 2) open_->second_by_shear = by_shear;
     open_->after = after;
     return std::nullopt;
   }
   std::optional<JumpRecord> jump = close();
-  if (edge) open_ = ViscoelasticCascade{std::string(stage), after.time, inward, 1, before, after};
+  if (edge) {
+    open_ = ViscoelasticCascade{std::string(stage), after.time, inward, 1, before, after, by_shear};
+  }
   return jump;
 }
 
@@ -61,9 +66,12 @@ void ViscoelasticJumps::decide(const ViscoelasticCascade& loss, double force_sca
   const LossCascade cascade{.changes = loss.changes,
                             .springs_before = loss.before.pressed,
                             .force_before = loss.before.force,
-                            .force_scale = force_scale};
+                            .force_scale = force_scale,
+                            .first_by_shear = loss.first_by_shear,
+                            .second_by_shear = loss.second_by_shear};
   r.status = loss_status(cascade);
-  if (r.status == RunStatus::instability) {
+  if (r.status == RunStatus::instability ||
+      (r.status == RunStatus::shear_off && loss.changes >= 2)) {
     r.critical = viscoelastic_snapshot(loss.before);
     r.critical_stage = loss.stage;
   }

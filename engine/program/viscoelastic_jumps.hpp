@@ -23,12 +23,15 @@ struct ViscoelasticCascade {
   std::int64_t changes = 0;
   ViscoelasticRowSample before;  ///< the last equilibrium before its first change
   ViscoelasticRowSample after;   ///< the state after its last change
+  bool first_by_shear = false;   ///< its first change broke a compressed spring
+  bool second_by_shear = false;  ///< its second did
 };
 
 /// The state a program reports for a sample of the viscoelastic row.
 ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s);
 
-/// Follows the edge's changes as they come: a glue or a let-go at the time of the previous one
+/// Follows the edge's changes as they come (`by_shear`: a let-go of a compressed spring, by its
+/// tangential load alone): a glue or a let-go at the time of the previous one
 /// of the same kind joins its cascade (SPEC "Jumps": a cascade at one value of the stage
 /// parameter, here the time, is a jump whose critical point is the last equilibrium before
 /// it); any other change, or a stage's end, closes it.
@@ -38,7 +41,7 @@ class ViscoelasticJumps {
   /// than one change is returned as a jump, to be reported before this change.
   std::optional<JumpRecord> change(ViscoelasticRowChange change, std::string_view stage,
                                    const ViscoelasticRowSample& before,
-                                   const ViscoelasticRowSample& after);
+                                   const ViscoelasticRowSample& after, bool by_shear = false);
   /// Closes the open cascade (a stage ends); its jump if it was one.
   std::optional<JumpRecord> close();
   /// A state the program reports (a stage's end): a candidate for the most tensile.

@@ -30,12 +30,22 @@ struct ViscoelasticSpringState {
   std::optional<FreeSpringCreep> creep;  ///< while free
   double released_at = 0.0;              ///< [s]
   double glued_at = -1.0;                ///< [s] the last glue; < 0: never glued
+  double lifted_at = -1.0;               ///< [s] the last release from pressed; < 0: never
   /// The energy summed up to `counted_at` [s]: while in contact, the stretch [m] and arm stresses
   /// [N/m] then; while free, the energy it stored then [J/m].
   double counted_at = 0.0;
   double counted_stretch = 0.0;
   FewValues<double> counted_stresses;
   double counted_stored = 0.0;
+  /// The tangential arms (a tangential drive only): while glued, the member and u_x where the
+  /// spring's tangential stretch is zero; otherwise the free creep of what a let-go left.
+  SharedDriveMember tangential_member;
+  double tangential_origin = 0.0;  ///< [m]
+  std::optional<FreeSpringCreep> tangential_creep;
+  double tangential_free_since = 0.0;  ///< [s]
+  double counted_tangential_stretch = 0.0;
+  FewValues<double> counted_tangential_stresses;
+  double counted_tangential_stored = 0.0;
   std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
 };
 
@@ -125,6 +135,13 @@ ArmStressIntegrals arm_stress_integrals(const PronyTerm& term, double sigma0, do
   return {c * h + a * once, c * c * h + 2.0 * c * a * once + a * a * twice};
 }
 
+/// The terms of the tangential arms: G_j = E_j G* / E*, the same tau_j.
+std::vector<PronyTerm> tangential_terms(std::span<const PronyTerm> terms, double shear_ratio) {
+  std::vector<PronyTerm> scaled(terms.begin(), terms.end());
+  for (PronyTerm& term : scaled) term.modulus *= shear_ratio;
+  return scaled;
+}
+
 }  // namespace
 
 class ViscoelasticRowDrive::Row {
@@ -133,6 +150,8 @@ class ViscoelasticRowDrive::Row {
       : springs_(springs),
         arms_(springs.terms),
         modes_(std::make_shared<const RetardationModes>(springs.relaxed_modulus, springs.terms)),
+        tangential_terms_(tangential_terms(springs.terms, springs.shear_ratio)),
+        tangential_arms_(tangential_terms_),
         state_(springs.images.size()),
         pressed_(springs.images.size()),
         glued_(springs.images.size()) {}
@@ -146,6 +165,13 @@ class ViscoelasticRowDrive::Row {
     rate_ = segment.rate;
     end_ = time_ + segment.duration;
     end_depth_ = segment.end_depth.value_or(depth_ + rate_ * segment.duration);
+    segment_tangential_ = tangential_;
+    tangential_rate_ = segment.tangential_rate;
+    end_tangential_ =
+        segment.end_tangential.value_or(tangential_ + tangential_rate_ * segment.duration);
+    if (tangential_rate_ != 0.0 && !tangential_on_ && springs_.edge && springs_.shear_ratio > 0.0) {
+      start_tangential();
+    }
     queue_ = {};
     first_events_.clear();
     next_first_event_ = 0;
@@ -194,8 +220,11 @@ class ViscoelasticRowDrive::Row {
       return;
     }
     arms_.advance(rate_, t - time_);
+    if (tangential_on_) tangential_arms_.advance(tangential_rate_, t - time_);
     time_ = t;
     depth_ = t == end_ ? end_depth_ : segment_depth_ + rate_ * (t - segment_start_);
+    tangential_ =
+        t == end_ ? end_tangential_ : segment_tangential_ + tangential_rate_ * (t - segment_start_);
   }
 
   /// The queued event of spring k at the present time: a touch, a release, a glue or a let-go.
@@ -248,12 +277,13 @@ class ViscoelasticRowDrive::Row {
   }
 
   bool in_contact() const { return !pressed_.empty(); }
+  bool last_let_go_by_shear() const { return last_let_go_by_shear_; }
 
   /// The energy up to now, per unit x of one half [J/m].
   ViscoelasticRowEnergy energy() {
     count_all();
-    ViscoelasticRowEnergy e{machine_work_.value(), 0.0, dissipated_.value(), surface_.value(),
-                            jump_losses_.value()};
+    ViscoelasticRowEnergy e{machine_work_.value(), tangential_work_.value(), 0.0,
+                            dissipated_.value(),   surface_.value(),         jump_losses_.value()};
     CompensatedSum stored;
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
@@ -261,6 +291,13 @@ class ViscoelasticRowDrive::Row {
         stored.add(stored_of(s.counted_stretch, s.counted_stresses));
       } else if (s.phase == ViscoelasticSpringPhase::free) {
         stored.add(s.counted_stored);
+      }
+      if (!tangential_on_) continue;
+      if (s.phase == ViscoelasticSpringPhase::glued) {
+        stored.add(
+            tangential_stored_of(s.counted_tangential_stretch, s.counted_tangential_stresses));
+      } else if (s.tangential_creep) {
+        stored.add(s.counted_tangential_stored);
       }
     }
     e.stored = stored.value();
@@ -275,13 +312,21 @@ class ViscoelasticRowDrive::Row {
         pressed_.empty() ? 0.0 : springs_.spacing * static_cast<double>(pressed_.outermost() + 1);
     const double glued_radius =
         glued_.empty() ? 0.0 : springs_.spacing * static_cast<double>(glued_.outermost() + 1);
+    double tangential_loads = 0.0;
+    if (tangential_on_) {
+      tangential_loads = tangential_relaxed() * (static_cast<double>(glued_.size()) * tangential_ -
+                                                 glued_origins_.value()) +
+                         tangential_arms_.arm_force();
+    }
     return {time_,
             depth_,
             2.0 * springs_.spacing * line_loads,
             radius,
             static_cast<std::int64_t>(pressed_.size()),
             static_cast<std::int64_t>(glued_.size()),
-            glued_radius};
+            glued_radius,
+            tangential_,
+            glued_.empty() ? 0.0 : 2.0 * springs_.spacing * tangential_loads};
   }
 
  private:
@@ -346,6 +391,11 @@ class ViscoelasticRowDrive::Row {
   void let_go(std::size_t k, ViscoelasticRowRun& run) {
     ViscoelasticSpringState& s = state_[k];
     count_pressed(s, springs_.images[k]);
+    last_let_go_by_shear_ = tangential_on_ && broken_at_rest(k);
+    if (tangential_on_ && load_now(s, depth_ - springs_.images[k]) >= 0.0) {
+      lose_glue_pressed(k, run);
+      return;
+    }
     FewValues<double> stresses = arms_.leave(s.member);
     const double stretch = depth_ - springs_.images[k];
     const double load = springs_.relaxed_modulus * stretch + sum_of(stresses);
@@ -355,6 +405,7 @@ class ViscoelasticRowDrive::Row {
     const double surface = springs_.edge->surface_energies[k];
     surface_.add(surface);
     jump_losses_.add(before - after - surface);
+    if (tangential_on_) let_go_tangentially(s);
     s.counted_stored = after;
     s.counted_at = time_;
     s.creep.emplace(modes_, stresses);
@@ -367,6 +418,41 @@ class ViscoelasticRowDrive::Row {
     if (pressed_.empty()) run.separation_time = time_;
   }
 
+  /// The boundary spring k, compressed, lets go by its tangential load alone: it loses its glue
+  /// and its tangential load (q_x^2 / (2 G_0) released) and stays pressed, pushing only.
+  void lose_glue_pressed(std::size_t k, ViscoelasticRowRun& run) {
+    ViscoelasticSpringState& s = state_[k];
+    let_go_tangentially(s);
+    const double surface = springs_.edge->surface_energies[k];
+    surface_.add(surface);
+    jump_losses_.add(-surface);
+    s.phase = ViscoelasticSpringPhase::pressed;
+    glued_.erase(k);
+    ++run.let_gos;
+  }
+
+  /// Whether glued spring k's tangential load alone breaks it: the glassy criterion's margin
+  /// at zero elongation and u_x = q_x / G_0 is <= 0 (a let-go "by shear", as an elastic
+  /// program's LetGo::Kind::now).
+  bool broken_at_rest(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    const ViscoelasticEdge& edge = *springs_.edge;
+    if (!edge.criterion) return false;
+    double load = tangential_relaxed() * (tangential_ - s.tangential_origin);
+    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+      load += tangential_arms_.stress(s.tangential_member, j);
+    }
+    const double x = springs_.spacing * static_cast<double>(k + 1);
+    return edge.criterion->margin({0.0, load / edge.glassy_shear_modulus, x}) <= 0.0;
+  }
+
+  /// Spring s's normal line load now [N/m] (in contact, its stretch `stretch`).
+  double load_now(const ViscoelasticSpringState& s, double stretch) const {
+    double load = springs_.relaxed_modulus * stretch;
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) load += arms_.stress(s.member, j);
+    return load;
+  }
+
   /// A pressed spring k leaves at zero load.
   void leave_contact(std::size_t k, ViscoelasticRowRun& run) {
     ViscoelasticSpringState& s = state_[k];
@@ -376,6 +462,7 @@ class ViscoelasticRowDrive::Row {
     s.counted_at = time_;
     s.creep.emplace(modes_, stresses);
     s.released_at = time_;
+    s.lifted_at = time_;
     s.phase = ViscoelasticSpringPhase::free;
     pressed_.erase(k);
     pressed_images_.add(-springs_.images[k]);
@@ -405,6 +492,7 @@ class ViscoelasticRowDrive::Row {
       jump_losses_.add(surface - (stored_of(stretch, stresses) - before));
       glued_.insert(k);
       s.glued_at = time_;
+      if (tangential_on_) glue_tangentially(s);
       ++run.glues;
     } else {
       ++run.touches;
@@ -461,8 +549,95 @@ class ViscoelasticRowDrive::Row {
     }
     machine_work_.add(rate_ * load_integral);
     dissipated_.add(dissipated);
+    if (tangential_on_ && s.phase == ViscoelasticSpringPhase::glued) count_tangential(s, h);
     s.counted_at = time_;
     s.counted_stretch = depth_ - image;
+  }
+
+  /// G_inf [Pa], the tangential arms' relaxed modulus.
+  double tangential_relaxed() const { return springs_.relaxed_modulus * springs_.shear_ratio; }
+
+  /// What a spring's tangential arms store at tangential stretch w and arm stresses s_j [J/m].
+  double tangential_stored_of(double stretch, std::span<const double> stresses) const {
+    double e = 0.5 * tangential_relaxed() * stretch * stretch;
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      e += 0.5 * stresses[j] * stresses[j] / tangential_terms_[j].modulus;
+    }
+    return e;
+  }
+
+  /// The tangential drive begins: the springs glued now join the tangential arms at rest, their
+  /// stretch zero at the present u_x.
+  void start_tangential() {
+    tangential_on_ = true;
+    tangential_modes_ =
+        std::make_shared<const RetardationModes>(tangential_relaxed(), tangential_terms_);
+    for (ViscoelasticSpringState& s : state_) {
+      if (s.phase == ViscoelasticSpringPhase::glued) glue_tangentially(s);
+    }
+  }
+
+  /// A spring glues with no tangential step: its stretch goes on from where its free creep
+  /// stands (zero for a fresh spring) as u_x moves.
+  void glue_tangentially(ViscoelasticSpringState& s) {
+    FewValues<double> stresses(tangential_terms_.size(), 0.0);
+    double stretch = 0.0;
+    if (s.tangential_creep) {
+      count_tangential_free(s);
+      const double t = time_ - s.tangential_free_since;
+      stresses = s.tangential_creep->stresses(t);
+      stretch = s.tangential_creep->stretch(t);
+      s.tangential_creep.reset();
+    }
+    s.tangential_origin = tangential_ - stretch;
+    s.tangential_member = tangential_arms_.enter(stresses, 1.0);
+    s.counted_tangential_stretch = stretch;
+    s.counted_tangential_stresses = stresses;
+    glued_origins_.add(s.tangential_origin);
+  }
+
+  /// The glued spring s lets go (counted up to now): its tangential stretch steps by -q_x / G_0
+  /// to zero load, releasing q_x^2 / (2 G_0), and it creeps free from there.
+  void let_go_tangentially(ViscoelasticSpringState& s) {
+    FewValues<double> stresses = tangential_arms_.leave(s.tangential_member);
+    const double stretch = tangential_ - s.tangential_origin;
+    const double load = tangential_relaxed() * stretch + sum_of(stresses);
+    const double before = tangential_stored_of(stretch, stresses);
+    glassy_step(stresses, tangential_terms_, -load / springs_.edge->glassy_shear_modulus);
+    const double after = tangential_stored_of(-sum_of(stresses) / tangential_relaxed(), stresses);
+    jump_losses_.add(before - after);
+    glued_origins_.add(-s.tangential_origin);
+    s.tangential_creep.emplace(tangential_modes_, stresses);
+    s.tangential_free_since = time_;
+    s.counted_tangential_stored = after;
+  }
+
+  /// A glued spring's tangential work and dissipation over the last `h` [s], u_x' unchanged.
+  void count_tangential(ViscoelasticSpringState& s, double h) {
+    const double w0 = s.counted_tangential_stretch;
+    const double rate = tangential_rate_;
+    double load_integral = tangential_relaxed() * (w0 * h + 0.5 * rate * h * h);
+    double dissipated = 0.0;
+    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+      const PronyTerm& term = tangential_terms_[j];
+      const ArmStressIntegrals i =
+          arm_stress_integrals(term, s.counted_tangential_stresses[j], rate, h);
+      load_integral += i.stress;
+      dissipated += i.square / (term.modulus * term.time);
+      s.counted_tangential_stresses[j] = tangential_arms_.stress(s.tangential_member, j);
+    }
+    tangential_work_.add(rate * load_integral);
+    dissipated_.add(dissipated);
+    s.counted_tangential_stretch = tangential_ - s.tangential_origin;
+  }
+
+  /// A free tangential creep's dissipation from its last count to now: what it stores less.
+  void count_tangential_free(ViscoelasticSpringState& s) {
+    const double t = time_ - s.tangential_free_since;
+    const double stored =
+        tangential_stored_of(s.tangential_creep->stretch(t), s.tangential_creep->stresses(t));
+    dissipated_.add(s.counted_tangential_stored - stored);
+    s.counted_tangential_stored = stored;
   }
 
   /// A free spring's dissipation from its last count to now: the energy it stores less.
@@ -481,6 +656,12 @@ class ViscoelasticRowDrive::Row {
     }
     for (ViscoelasticSpringState& s : state_) {
       if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
+    }
+    if (!tangential_on_) return;
+    for (ViscoelasticSpringState& s : state_) {
+      if (s.phase != ViscoelasticSpringPhase::glued && s.tangential_creep) {
+        count_tangential_free(s);
+      }
     }
   }
 
@@ -881,6 +1062,10 @@ class ViscoelasticRowDrive::Row {
     const double stretch = depth_ - springs_.images[k];
     if (s.phase == ViscoelasticSpringPhase::glued) {
       if (boundary() != k) return std::nullopt;
+      if (tangential_on_ && springs_.edge->criterion) {
+        const double limit = springs_.edge->let_go_loads[k];
+        if (limit > 0.0 && std::isfinite(limit)) return tangential_let_go_delay(k, stretch);
+      }
       ExponentialSum load = load_over(s, stretch);
       const double level = -springs_.edge->let_go_loads[k];
       // Beyond the threshold it goes now (a cascade), on it only if the tension grows. A spring
@@ -920,9 +1105,61 @@ class ViscoelasticRowDrive::Row {
     const double rounding =
         kEdgeRounding * (std::abs(depth_) + std::abs(springs_.images[k]) + std::abs(surface) + gap);
     const bool approaching = rate_ - free_surface.slope_at(0.0) > 0.0;
-    const bool again_now = s.glued_at == time_;
+    // Nor is a pressed spring lifted at this time: its load reached zero where the rounding of
+    // the time (of d' times an ulp of t) may leave it a hair into the indenter.
+    const bool again_now = s.glued_at == time_ || s.lifted_at == time_;
     if (!again_now && (overlap > rounding || (overlap >= -rounding && approaching))) return 0.0;
     return reach_time(*s.creep, time_ - s.released_at, reach, rate_, span, overlap >= -rounding);
+  }
+
+  /// The boundary spring k's let-go with a tangential load: the first s at which the glassy
+  /// criterion's margin at elongation -q_z(s) / E_0 and u_x = q_x(s) / G_0 is <= 0, q_z and q_x
+  /// exponential sums in s. The tangential load only shrinks the holding set of a built-in
+  /// criterion, so the let-go comes no later than the normal one (where q_z reaches
+  /// -let_go_loads): the margin is read on a grid up to it, and the first grid step where it
+  /// falls to <= 0 is bisected to the last bit. A dip of the margin below 0 and back within
+  /// one step of the grid is missed.
+  std::optional<double> tangential_let_go_delay(std::size_t k, double stretch) const {
+    const ViscoelasticSpringState& s = state_[k];
+    const double span = end_ - time_;
+    const ExponentialSum normal = load_over(s, stretch);
+    FewValues<double> stresses(tangential_terms_.size());
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      stresses[j] = tangential_arms_.stress(s.tangential_member, j);
+    }
+    const ExponentialSum tangential =
+        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.tangential_origin,
+                       stresses, tangential_rate_);
+    const ViscoelasticEdge& edge = *springs_.edge;
+    const double x = springs_.spacing * static_cast<double>(k + 1);
+    const auto lets_go = [&](double at) {
+      const BoundarySpring spring{std::max(-normal.at(at) / edge.glassy_modulus, 0.0),
+                                  tangential.at(at) / edge.glassy_shear_modulus, x};
+      return edge.criterion->margin(spring) <= 0.0;
+    };
+    if (lets_go(0.0) && s.glued_at != time_) return 0.0;
+    const double level = -edge.let_go_loads[k];
+    const double from = normal.at(0.0);
+    const auto normal_let_go = first_crossing(normal, from < level ? from : level, span);
+    const double reach = normal_let_go ? *normal_let_go : span;
+    constexpr int kGrid = 64;
+    double lo = 0.0;
+    for (int i = 1; i <= kGrid; ++i) {
+      const double hi = i == kGrid ? reach : reach * static_cast<double>(i) / kGrid;
+      if (!lets_go(hi)) {
+        lo = hi;
+        continue;
+      }
+      double below = lo;
+      double above = hi;
+      for (;;) {
+        const double mid = below + 0.5 * (above - below);
+        if (mid <= below || mid >= above) break;
+        (lets_go(mid) ? above : below) = mid;
+      }
+      return above;
+    }
+    return normal_let_go;
   }
 
   /// Spring s's line load from now over the segment's motion (its stretch `stretch` now).
@@ -935,6 +1172,17 @@ class ViscoelasticRowDrive::Row {
   const ViscoelasticRowSprings& springs_;
   SharedDriveArms arms_;
   std::shared_ptr<const RetardationModes> modes_;
+  std::vector<PronyTerm> tangential_terms_;
+  SharedDriveArms tangential_arms_;  ///< the glued springs' tangential arms
+  std::shared_ptr<const RetardationModes> tangential_modes_;
+  bool tangential_on_ = false;  ///< a tangential drive has moved u_x: the arms are followed
+  double tangential_ = 0.0;     ///< u_x [m]
+  double segment_tangential_ = 0.0;
+  double tangential_rate_ = 0.0;
+  double end_tangential_ = 0.0;
+  CompensatedSum glued_origins_;    ///< sum of the glued springs' tangential origins [m]
+  CompensatedSum tangential_work_;  ///< [J/m]
+  bool last_let_go_by_shear_ = false;
   std::vector<ViscoelasticSpringState> state_;
   RowSpringSet pressed_;  ///< in contact: pressed or glued
   RowSpringSet glued_;
@@ -1013,12 +1261,15 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
 
 ViscoelasticRowSample ViscoelasticRowDrive::sample() const { return row_->sample(); }
 
+bool ViscoelasticRowDrive::last_let_go_by_shear() const { return row_->last_let_go_by_shear(); }
+
 ViscoelasticRowEnergy ViscoelasticRowDrive::energy() {
   ViscoelasticRowEnergy e = row_->energy();
   // Both halves: each spring of the row stands for 2 dx of the foundation.
   const double both_halves = 2.0 * row_->spacing();
-  return {e.machine_work * both_halves, e.stored * both_halves, e.dissipated_by_bulk * both_halves,
-          e.surface * both_halves, e.jump_losses * both_halves};
+  return {e.machine_work * both_halves, e.tangential_work * both_halves,
+          e.stored * both_halves,       e.dissipated_by_bulk * both_halves,
+          e.surface * both_halves,      e.jump_losses * both_halves};
 }
 
 ViscoelasticRowRun run_viscoelastic_row(const ViscoelasticRowSprings& springs,

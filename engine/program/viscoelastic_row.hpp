@@ -28,6 +28,9 @@ struct ViscoelasticRowSprings {
   std::vector<double> images;    ///< g(x_i) [m], i = 1..N
   /// The adhesive edge (null: no adhesion, every spring only pushes); must outlive the row.
   const ViscoelasticEdge* edge = nullptr;
+  /// G* / E*: a glued spring's tangential arms are its normal arms scaled by it (G_inf dx in
+  /// parallel with Maxwell arms G_j = E_j G* / E*, the same tau_j); 0: no tangential arms.
+  double shear_ratio = 0.0;
 };
 
 /// What a segment holds instead of the depth: the constraint a_u d + a_F F = h (fixed load,
@@ -47,6 +50,11 @@ struct DriveSegment {
   /// spring whose image is that depth is met; else the start's plus rate times duration.
   std::optional<double> end_depth = std::nullopt;
   std::optional<HeldAxisMotion> held = std::nullopt;
+  /// u_x' [m/s], the indenter's tangential displacement moving linearly (normal fixed grips
+  /// only): a glued spring carries u_x less the indenter's u_x where it glued.
+  double tangential_rate = 0.0;
+  /// u_x at its end [m] where it is known exactly; else the start's plus rate times duration.
+  std::optional<double> end_tangential = std::nullopt;
 };
 
 /// The row's state at one time.
@@ -58,6 +66,8 @@ struct ViscoelasticRowSample {
   std::int64_t pressed;       ///< springs in contact (glued or pressed)
   std::int64_t glued = 0;     ///< springs glued
   double glued_radius = 0.0;  ///< the outermost glued spring's x [m]; 0 without glue
+  double tangential_displacement = 0.0;  ///< u_x [m]
+  double tangential_force = 0.0;         ///< F_x [N], the glued springs' (pressed ones carry none)
 };
 
 struct ViscoelasticRowRun {
@@ -87,8 +97,15 @@ struct ViscoelasticRowRun {
 /// / 2. `surface` is the ring energy pi x dgamma created (let-gos) less destroyed (glues), and
 /// `jump_losses` the rest of each step's stored energy change: machine_work = stored + surface +
 /// dissipated_by_bulk + jump_losses.
+///
+/// A tangential drive adds its work int F_x du_x (`tangential_work`), the glued springs'
+/// tangential arms their stored energy G_inf w_x^2 / 2 + sum_j s_j^2 / (2 G_j) and their
+/// dissipation; a let-go steps the tangential stretch to zero load too, releasing q_x^2 /
+/// (2 G_0) (in jump_losses): machine_work + tangential_work = stored + surface +
+/// dissipated_by_bulk + jump_losses.
 struct ViscoelasticRowEnergy {
   double machine_work = 0.0;
+  double tangential_work = 0.0;
   double stored = 0.0;
   double dissipated_by_bulk = 0.0;
   double surface = 0.0;
@@ -123,6 +140,9 @@ class ViscoelasticRowDrive {
   /// never settle); whether it did.
   void limit_events(std::int64_t most) { event_limit_ = most; }
   bool limited() const { return limited_; }
+  /// Whether the last let-go broke a compressed spring (its tangential load alone): it lost its
+  /// glue and stays pressed.
+  bool last_let_go_by_shear() const;
   /// The state just before the last change (an on_change may ask for it).
   const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }
   /// The energy so far (a pass over the springs).

@@ -75,12 +75,22 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
   }
   if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
   refuse_adhesion_outside_fixed_grips(loading, scene);
+  // The normal control a stage runs under: its own, or the one before it (fixed grips at first).
+  std::string normal_control = "fixed-grips";
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
-    if (stage.tangential && (stage.tangential->control != "fixed-grips" ||
-                             stage.tangential->motion != StageAxis::Motion::hold)) {
-      loading.fail_at("stage",
-                      not_yet_with_relaxation(fmt::format("loading.stage.{}.tangential", i + 1)));
+    if (stage.normal) normal_control = stage.normal->control;
+    if (stage.tangential && stage.tangential->control != "fixed-grips") {
+      loading.fail_at("stage", not_yet_with_relaxation(
+                                   fmt::format("loading.stage.{}.tangential.control = \"{}\"",
+                                               i + 1, stage.tangential->control)));
+    }
+    if (stage.tangential && stage.tangential->motion != StageAxis::Motion::hold &&
+        normal_control != "fixed-grips") {
+      loading.fail_at("stage", not_yet_with_relaxation(fmt::format(
+                                   "loading.stage.{}.tangential moving under normal.control = "
+                                   "\"{}\"",
+                                   i + 1, normal_control)));
     }
     if (stage.normal && stage.normal->controller->holds_force()) {
       // The row carries a held force while it presses: the contact lost under a load (the

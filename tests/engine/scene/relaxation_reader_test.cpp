@@ -115,11 +115,21 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
        "v.toml:9:1: loading.stage: loading.stage.2.normal.control = \"fixed-load\" with "
        "work_of_adhesion > 0 is not yet taken with material.relaxation (docs/viscoelastic.md "
        "\"What it refuses\")"},
-      {"Tangential",
+      // A tangential axis runs under fixed grips, and moves only under normal fixed grips.
+      {"TangentialHeldForce",
        replaced(kViscous, "until = \"separation\"\n",
-                "tangential = { control = \"fixed-grips\", by = 1e-6 }\nuntil = \"separation\"\n"),
-       "v.toml:9:1: loading.stage: loading.stage.2.tangential is not yet taken with "
-       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+                "tangential = { control = \"fixed-load\", by = 1e-3 }\nuntil = "
+                "\"separation\"\n"),
+       "v.toml:9:1: loading.stage: loading.stage.2.tangential.control = \"fixed-load\" is not "
+       "yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      {"TangentialUnderHeldForce",
+       replaced(replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
+                         "normal = { control = \"fixed-load\", to = 0.05 }"),
+                "normal = { by = -1.0e-4 }\nuntil = \"separation\"\n",
+                "tangential = { control = \"fixed-grips\", by = 1e-6 }\n"),
+       "v.toml:9:1: loading.stage: loading.stage.2.tangential moving under normal.control = "
+       "\"fixed-load\" is not yet taken with material.relaxation (docs/viscoelastic.md \"What "
+       "it refuses\")"},
       {"FixedLoad",
        replaced(kViscous, "normal = { by = -1.0e-4 }",
                 "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
@@ -148,6 +158,10 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
   }
   // Within the scope the scene is built, its terms in the material.
   EXPECT_EQ(build(kViscous).material.relaxation.size(), 1u);
+  // A tangential fixed-grips stage under normal fixed grips is within it.
+  EXPECT_NO_THROW(build(replaced(kViscous, "until = \"separation\"\n",
+                                 "tangential = { control = \"fixed-grips\", by = 1e-6 }\n"
+                                 "until = \"separation\"\n")));
   // A held force that stays pressing and a machine spring are within it.
   EXPECT_NO_THROW(build(replaced(
       replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
