@@ -135,6 +135,37 @@ ArmStressIntegrals arm_stress_integrals(const PronyTerm& term, double sigma0, do
   return {c * h + a * once, c * c * h + 2.0 * c * a * once + a * a * twice};
 }
 
+/// f'(s) as an exponential sum.
+ExponentialSum exponential_sum_slope(const ExponentialSum& f) {
+  ExponentialSum slope{f.slope, 0.0, {}};
+  for (const ExponentialDecay& d : f.decays)
+    slope.decays.push_back({-d.amplitude / d.time, d.time});
+  return slope;
+}
+
+/// The times in (0, span] [s] where f crosses zero, in order: each found by first_crossing from
+/// the last (an exponential sum with K decays has at most K + 1 zeros); none where f is zero
+/// throughout.
+void exponential_sum_zeros(const ExponentialSum& f, double span, std::vector<double>& zeros) {
+  const bool identically_zero =
+      f.constant == 0.0 && f.slope == 0.0 &&
+      std::all_of(f.decays.begin(), f.decays.end(),
+                  [](const ExponentialDecay& d) { return d.amplitude == 0.0; });
+  if (identically_zero) return;
+  double from = 0.0;
+  ExponentialSum shifted = f;
+  for (std::size_t found = 0; found <= f.decays.size() + 1 && from < span; ++found) {
+    const auto zero = first_crossing(shifted, 0.0, span - from);
+    if (!zero || !(*zero > 0.0)) return;
+    from += *zero;
+    zeros.push_back(from);
+    shifted.constant = f.constant + f.slope * from;
+    for (std::size_t j = 0; j < f.decays.size(); ++j) {
+      shifted.decays[j].amplitude = f.decays[j].amplitude * std::exp(-from / f.decays[j].time);
+    }
+  }
+}
+
 /// The terms of the tangential arms: G_j = E_j G* / E*, the same tau_j.
 std::vector<PronyTerm> tangential_terms(std::span<const PronyTerm> terms, double shear_ratio) {
   std::vector<PronyTerm> scaled(terms.begin(), terms.end());
@@ -1114,11 +1145,13 @@ class ViscoelasticRowDrive::Row {
 
   /// The boundary spring k's let-go with a tangential load: the first s at which the glassy
   /// criterion's margin at elongation -q_z(s) / E_0 and u_x = q_x(s) / G_0 is <= 0, q_z and q_x
-  /// exponential sums in s. The tangential load only shrinks the holding set of a built-in
-  /// criterion, so the let-go comes no later than the normal one (where q_z reaches
-  /// -let_go_loads): the margin is read on a grid up to it, and the first grid step where it
-  /// falls to <= 0 is bisected to the last bit. A dip of the margin below 0 and back within
-  /// one step of the grid is missed.
+  /// exponential sums in s. A built-in criterion's holding set is convex and symmetric in u_x,
+  /// so it only shrinks as |u_x| grows: the let-go comes no later than the normal one (q_z
+  /// reaching -let_go_loads), and the span up to it is cut where q_z, q_x or their slopes cross
+  /// zero. On a piece where the elongation and |q_x| both grow the margin falls, so its ends
+  /// bracket the let-go; where both shrink it rises and holds none; where they part the margin
+  /// is read on a grid, and a dip below 0 and back within one step of it is missed. The
+  /// bracket is bisected to the last bit.
   std::optional<double> tangential_let_go_delay(std::size_t k, double stretch) const {
     const ViscoelasticSpringState& s = state_[k];
     const double span = end_ - time_;
@@ -1142,22 +1175,42 @@ class ViscoelasticRowDrive::Row {
     const double from = normal.at(0.0);
     const auto normal_let_go = first_crossing(normal, from < level ? from : level, span);
     const double reach = normal_let_go ? *normal_let_go : span;
-    constexpr int kGrid = 64;
-    double lo = 0.0;
-    for (int i = 1; i <= kGrid; ++i) {
-      const double hi = i == kGrid ? reach : reach * static_cast<double>(i) / kGrid;
-      if (!lets_go(hi)) {
-        lo = hi;
-        continue;
-      }
-      double below = lo;
-      double above = hi;
+    const ExponentialSum normal_slope = exponential_sum_slope(normal);
+    const ExponentialSum tangential_slope = exponential_sum_slope(tangential);
+    std::vector<double> cuts{0.0, reach};
+    for (const ExponentialSum* f : {&normal, &tangential, &normal_slope, &tangential_slope}) {
+      exponential_sum_zeros(*f, reach, cuts);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    while (cuts.back() > reach) cuts.pop_back();
+    const auto bisect = [&](double below, double above) {
       for (;;) {
         const double mid = below + 0.5 * (above - below);
-        if (mid <= below || mid >= above) break;
+        if (mid <= below || mid >= above) return above;
         (lets_go(mid) ? above : below) = mid;
       }
-      return above;
+    };
+    constexpr int kGrid = 64;
+    for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
+      const double a = cuts[p];
+      const double b = cuts[p + 1];
+      if (lets_go(b)) return bisect(a, b);
+      // Within the piece no sum or slope changes sign: read them in its middle.
+      const double mid = a + 0.5 * (b - a);
+      const bool opening = normal.at(mid) >= 0.0 || normal_slope.at(mid) <= 0.0;
+      const bool closing = normal.at(mid) < 0.0 && normal_slope.at(mid) >= 0.0;
+      const double qx = tangential.at(mid);
+      const double qx_slope = tangential_slope.at(mid);
+      const bool shearing = qx * qx_slope >= 0.0;
+      const bool unshearing = qx * qx_slope <= 0.0;
+      if ((opening && shearing) || (closing && unshearing)) continue;
+      double lo = a;
+      for (int i = 1; i < kGrid; ++i) {
+        const double at = a + (b - a) * static_cast<double>(i) / kGrid;
+        if (lets_go(at)) return bisect(lo, at);
+        lo = at;
+      }
     }
     return normal_let_go;
   }

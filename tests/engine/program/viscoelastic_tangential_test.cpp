@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -149,6 +150,66 @@ TEST(ViscoelasticTangential, AHeldShearRelaxesAsTheTangentialModulus) {
     EXPECT_EQ(end.springs_in_contact, r.stages[1].end.springs_in_contact);
     if (i + 1 < r.stages.size()) held += holds[i - 1];
   }
+}
+
+/// The time of every let-go, in order.
+class LetGoTimes : public Observer {
+ public:
+  void on_event(const Event& e) override {
+    if (e.kind == EventKind::spring_detached) times.push_back(e.state.time);
+  }
+  std::vector<double> times;
+};
+
+TEST(ViscoelasticTangential, AShearBreaksTheRelaxedGlueWhenTheGlassyCriterionSaysSo) {
+  // Pressed glued on touch to d0 = 2.25e-4 m at 1e-3 m/s (0.225 s), rested 2 s (20 tau: the
+  // normal arms' e^-20 left, the outermost spring N at its image d0 compressed by it), then
+  // sheared at V = 1e-4 m/s. Every glued spring carries q_x(t) = G_inf V t + G_1 V tau (1 -
+  // exp(-t / tau)); spring N (x_N = sqrt(R d0), no elongation) lets go by the mode-mixed
+  // criterion when q_x^2 / G_0 = 2 pi x_N dgamma, and every spring inside it (smaller x, the
+  // same q_x) goes with it, at t* after the shear began (solved here by bisection).
+  const double press = 2.25e-4 / 1.0e-3;
+  const double rest = 2.0;
+  const double speed = 1.0e-4;
+  const double glassy = kShearRelaxed + kShearArm;  // G_0 = E_0 (G* = E*)
+  const double x_n = std::sqrt(kShearRadius * 2.25e-4);
+  const double threshold = std::sqrt(2.0 * std::numbers::pi * x_n * kShearDgamma * glassy);
+  const auto q_x = [&](double t) {
+    return kShearRelaxed * speed * t + kShearArm * speed * kShearTau * -std::expm1(-t / kShearTau);
+  };
+  double lo = 0.0, hi = 1.0;  // q_x(1 s) = 190 N/m > 68.6
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (q_x(mid) >= threshold ? hi : lo) = mid;
+  }
+  const std::string text = fmt::format(
+      "[material]\neffective_modulus = {}\nwork_of_adhesion = {}\n"
+      "relaxation = [ {{ modulus = {}, time = {} }} ]\n"
+      "[profile]\ntype = \"parabolic\"\nradius = {}\n"
+      "[[loading.stage]]\nname = \"press\"\nnormal = {{ control = \"fixed-grips\", to = 2.25e-4 "
+      "}}\nspeed = 1.0e-3\n"
+      "[[loading.stage]]\nname = \"rest\"\nduration = {}\n"
+      "[[loading.stage]]\nname = \"shear\"\ntangential = {{ control = \"fixed-grips\", to = 5.0e-5 "
+      "}}\nspeed = {}\n[discretization]\nsprings = 200\n[solver]\nmethod = \"event\"\n",
+      kShearRelaxed, kShearDgamma, kShearArm, kShearTau, kShearRadius, rest, speed);
+  LetGoTimes let_gos;
+  ObserverList observers;
+  observers.add(let_gos);
+  const RunResult r = run_scene(
+      SceneDocument::from_text(text, "shear_off.toml").build(Registries::builtin()), observers);
+  ASSERT_EQ(let_gos.times.size(), 200u);
+  const double t_star = hi;
+  const double found = let_gos.times.front() - press - rest;
+  std::printf("shear-off of the relaxed glue: t* = %.15e s (closed form %.15e, %.1e)\n", found,
+              t_star, std::abs(found / t_star - 1.0));
+  // The clock's rounding at t ~ 2.4 s is ~4e-16 s; the row's sums of q_x round at a few eps.
+  EXPECT_NEAR(found, t_star, 1e-12 * t_star);
+  EXPECT_EQ(let_gos.times.back(), let_gos.times.front());  // one cascade
+  // The springs lose their glue but stay pressed, pushing only: the contact is in place at the
+  // end, as the elastic program row's is after the same shear.
+  EXPECT_EQ(r.status, RunStatus::completed);
+  EXPECT_EQ(r.stages.back().end.springs_in_contact, 200);
+  EXPECT_EQ(r.stages.back().end.tangential_force, 0.0);
 }
 
 TEST(ViscoelasticTangential, EveryStageOfAShearThenPullOffBalances) {
