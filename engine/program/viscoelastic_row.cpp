@@ -1114,8 +1114,10 @@ class ViscoelasticRowDrive::Row {
       ExponentialSum load = load_over(s, stretch);
       const double now = load.at(0.0);
       if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
-      if (now < 0.0) load.constant -= now;
-      return first_crossing(load, 0.0, span);
+      // Within rounding below zero and rising: the level is taken where the load stands, to the
+      // bit, so that its side is read from where it goes (a constant shifted by it may leave
+      // f(0) a hair below and find a crossing at once).
+      return first_crossing(load, std::min(now, 0.0), span);
     }
     // Out of contact: the indenter's stretch moved by the gap at which it takes the spring.
     const double gap = glues(k) ? glue_gap(k) : 0.0;
@@ -1136,9 +1138,15 @@ class ViscoelasticRowDrive::Row {
     const double rounding =
         kEdgeRounding * (std::abs(depth_) + std::abs(springs_.images[k]) + std::abs(surface) + gap);
     const bool approaching = rate_ - free_surface.slope_at(0.0) > 0.0;
-    // Nor is a pressed spring lifted at this time: its load reached zero where the rounding of
-    // the time (of d' times an ulp of t) may leave it a hair into the indenter.
-    const bool again_now = s.glued_at == time_ || s.lifted_at == time_;
+    const bool again_now = s.glued_at == time_;
+    if (s.lifted_at == time_ && !again_now) {
+      // A pressed spring lifted at this time stands on the indenter whatever the overlap (its
+      // load reached zero where the rounding of the time, d' times an ulp of t, may leave it a
+      // hair inside): it is taken back now only where its load, pressed, would rise, read as the
+      // pressed spring's own release reads it, so the two cannot take turns at one time.
+      if (overlap >= -rounding && lifted_load_rises(s, stretch)) return 0.0;
+      return reach_time(*s.creep, time_ - s.released_at, reach, rate_, span, true);
+    }
     if (!again_now && (overlap > rounding || (overlap >= -rounding && approaching))) return 0.0;
     return reach_time(*s.creep, time_ - s.released_at, reach, rate_, span, overlap >= -rounding);
   }
@@ -1213,6 +1221,18 @@ class ViscoelasticRowDrive::Row {
       }
     }
     return normal_let_go;
+  }
+
+  /// Whether free spring s, pressed now at stretch `stretch`, would see its load rise: the
+  /// slope of load_over() with the arm stresses SharedDriveArms would give it on entering.
+  bool lifted_load_rises(const ViscoelasticSpringState& s, double stretch) const {
+    FewValues<double> stresses = s.creep->stresses(time_ - s.released_at);
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      const double history = arms_.history(j);
+      stresses[j] = history + (stresses[j] - history);
+    }
+    return line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_)
+               .slope_at(0.0) >= 0.0;
   }
 
   /// Spring s's line load from now over the segment's motion (its stretch `stretch` now).
