@@ -103,15 +103,4 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
   }
 }
 
-void refuse_unrun_relaxation(const RouteKeys& route_keys, const Scene& scene) {
-  if (!scene.material.relaxes()) return;
-  if (scene.discretization.rtol) {
-    throw SceneError(route_keys.rtol_at + not_yet_with_relaxation("rtol (give springs)"));
-  }
-  if (scene.discretization.richardson()) {
-    throw SceneError(route_keys.extrapolation_at +
-                     not_yet_with_relaxation("extrapolation = \"richardson\" (give springs)"));
-  }
-}
-
 }  // namespace mdrsim

@@ -135,13 +135,6 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
       {"Continuum", kViscous + "[solver]\nmethod = \"continuum\"\n",
        "v.toml:19:10: solver.method: a method other than \"event\" is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      {"Rtol", replaced(kViscous, "springs = 100", "rtol = 1e-3"),
-       "v.toml:17:8: discretization.rtol: rtol (give springs) is not yet taken with "
-       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      {"Richardson",
-       replaced(kViscous, "springs = 100", "springs = 100\nextrapolation = \"richardson\""),
-       "v.toml:18:17: discretization.extrapolation: extrapolation = \"richardson\" (give springs) "
-       "is not yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
   };
   for (const Refusal& r : refusals) {
     EXPECT_THROW_MSG(build(r.text), SceneError, r.message) << r.name;
@@ -160,6 +153,15 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
   const Scene adhesive =
       build(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"));
   EXPECT_EQ(adhesive.material.work_of_adhesion, 0.05);
+  // rtol alone and Richardson refine the viscoelastic row (the continuum route has no relaxing
+  // bulk, so rtol alone does not choose it).
+  const Scene by_rtol = build(replaced(kViscous, "springs = 100", "rtol = 1e-3"));
+  EXPECT_EQ(by_rtol.plan.engine, RouteEngine::program_row);
+  EXPECT_EQ(by_rtol.plan.driver, RouteDriver::rtol);
+  const Scene by_richardson =
+      build(replaced(kViscous, "springs = 100", "springs = 100\nextrapolation = \"richardson\""));
+  EXPECT_EQ(by_richardson.plan.engine, RouteEngine::program_row);
+  EXPECT_EQ(by_richardson.plan.driver, RouteDriver::richardson);
 }
 
 }  // namespace
