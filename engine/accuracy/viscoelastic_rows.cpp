@@ -118,7 +118,7 @@ class ViscoelasticCombination {
 
 /// Every term of a stage's energy balance combined as its work is, so that the combined
 /// balance closes as each row's does (the combination is linear); no estimates of their own.
-void combine_energy(ViscoelasticCombination& c, std::size_t k) {
+void combine_viscoelastic_energy(ViscoelasticCombination& c, std::size_t k) {
   if (!c.result().stages[k].energy) return;
   const auto term = [&](double EnergyBalance::*member) {
     c.combine(
@@ -184,7 +184,7 @@ ViscoelasticCombined combine_viscoelastic_rows(std::span<const RunResult, 4> row
     error.bulk = c.combine(
         [k](auto& q) -> auto& { return q.stages[k].work.bulk; }, work_scale);
     s.work_error_estimate = error;
-    combine_energy(c, k);
+    combine_viscoelastic_energy(c, k);
     total += s.work;
     total_error += error;
     if (s.energy) total_energy += *s.energy;
