@@ -222,7 +222,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     }
     if (accuracy.peak_error_estimate) a["peak_error_estimate"] = *accuracy.peak_error_estimate;
     if (accuracy.work_error_estimate) {
-      a["work_error_estimate"] = work_json(*accuracy.work_error_estimate, false, false, bulk);
+      a["work_error_estimate"] =
+          work_json(*accuracy.work_error_estimate, false, scene.front_speed_law.has_value(), bulk);
     }
     if (accuracy.critical_zoom) {
       a["critical_zoom"] = {{"outer_radius", accuracy.critical_zoom->outer_radius},
@@ -270,7 +271,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
         }
       }
       if (stage.work_error_estimate) {
-        record["work_error_estimate"] = work_json(*stage.work_error_estimate, false, false, bulk);
+        record["work_error_estimate"] =
+            work_json(*stage.work_error_estimate, false, scene.front_speed_law.has_value(), bulk);
       }
       if (stage.energy) record["energy"] = energy_json(*stage.energy, bulk);
       stages.push_back(record);
