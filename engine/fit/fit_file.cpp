@@ -2,9 +2,11 @@
 #include "engine/fit/fit_file.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <exception>
+#include <initializer_list>
 #include <string>
 #include <utility>
 
@@ -196,6 +198,27 @@ CombinedFit fit_both(const PreparedSegment& approach, const PreparedSegment& ret
   return fit;
 }
 
+/// The fit's warnings over the samples it was given: each segment inside the range as the
+/// fitted contact point chooses them (the choice the fit ended on).
+std::vector<std::string> warnings_of(const AdhesiveFit& fit, const CurveFitOptions& options,
+                                     std::initializer_list<const PreparedSegment*> segments) {
+  if (fit.status != FitStatus::fitted) return {};
+  std::vector<PreparedSegment> parts;
+  std::vector<const PreparedSegment*> fitted;
+  if (options.range) {
+    parts.reserve(segments.size());
+    for (const PreparedSegment* segment : segments) {
+      parts.push_back(within_range(*segment, fit.contact_point.value, *options.range));
+    }
+    for (const PreparedSegment& part : parts) fitted.push_back(&part);
+  } else {
+    fitted.assign(segments.begin(), segments.end());
+  }
+  const double reach =
+      fitted_reach(fit, options.tip, options.poisson_ratio, with_lambda(options.model));
+  return fit_warnings(fitted, fit, reach, options.model != FitModel::hertz);
+}
+
 /// The hysteresis of a curve that has both segments, less the approach's baseline; nullopt
 /// where it has not both.
 std::optional<double> curve_hysteresis(const measured::ForceCurve& curve,
@@ -251,12 +274,15 @@ CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
       const PreparedSegment retract = prepare_segment(curve, measured::SegmentKind::retract);
       out.height_channel = approach.height_channel;
       out.fit = fit_both(approach, retract, options);
+      mark_undetermined(out.fit, options);
+      out.warnings = warnings_of(out.fit, options, {&approach, &retract});
     } else {
       const PreparedSegment prepared = prepare_segment(curve, segment);
       out.height_channel = prepared.height_channel;
       static_cast<AdhesiveFit&>(out.fit) = fit_in_range(prepared, segment, options);
+      mark_undetermined(out.fit, options);
+      out.warnings = warnings_of(out.fit, options, {&prepared});
     }
-    mark_undetermined(out.fit, options);
     out.hysteresis_energy = curve_hysteresis(curve, options);
   } catch (const SceneError& e) {
     out.fit.message = curve.label.empty() ? e.what() : curve.label + ": " + e.what();
@@ -350,6 +376,7 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
       fit.hysteresis_energy ? nlohmann::ordered_json(*fit.hysteresis_energy) : nullptr;
   out["points"] = fit.fit.points;
   out["iterations"] = fit.fit.iterations;
+  out["warnings"] = fit.warnings;
   out["tip_position_from"] = fit.height_channel;
   out["calibration"] = {{"spring_constant", calibrated_json(fit.calibration.spring_constant)},
                         {"sensitivity", calibrated_json(fit.calibration.sensitivity)}};
@@ -363,7 +390,7 @@ std::string curve_fit_csv_header() {
          "model,"
          "work_of_adhesion,work_of_adhesion_error,adhesion_force_fitted,adhesion_force_measured,"
          "approach_work_of_adhesion,approach_work_of_adhesion_error,hysteresis_energy,"
-         "maugis_parameter,maugis_parameter_error,auto_model";
+         "maugis_parameter,maugis_parameter_error,auto_model,warnings";
 }
 
 std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_segments) {
@@ -408,6 +435,7 @@ std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_seg
       model == FitModel::automatic && f.status == FitStatus::fitted
           ? choose_regime(f.maugis_parameter.value).model
           : "");
+  row += "," + csv_text(fmt::format("{}", fmt::join(fit.warnings, "; ")));
   return row;
 }
 
@@ -443,6 +471,16 @@ std::string curve_fit_summary(const CurveFit& fit, FitModel model) {
   }
   if (!f.message.empty()) line += fmt::format(" ({})", f.message);
   return line;
+}
+
+std::string curve_fit_warning_lines(const CurveFit& fit) {
+  const std::string where =
+      fit.curve.empty() ? fit.file : fmt::format("{}[{}]", fit.file, fit.curve);
+  std::string lines;
+  for (const std::string& warning : fit.warnings) {
+    lines += fmt::format("{}: warning: {}\n", where, warning);
+  }
+  return lines;
 }
 
 }  // namespace mdrsim::fit

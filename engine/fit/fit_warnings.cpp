@@ -1,0 +1,94 @@
+// The warnings of a fitted curve: a baseline the record does not fix, a residual far above the
+// noise.
+#include "engine/fit/fit_warnings.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/fit/maugis_fit.hpp"
+
+namespace mdrsim::fit {
+namespace {
+
+double median_of(std::vector<double>& values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  if (values.size() % 2 == 1) return *middle;
+  return 0.5 * (*middle + *std::max_element(values.begin(), middle));
+}
+
+}  // namespace
+
+double fitted_reach(const AdhesiveFit& fit, const TipShape& tip, double poisson_ratio,
+                    bool maugis) {
+  const double work = fit.work_of_adhesion.value;
+  const double lambda = fit.maugis_parameter.value;
+  if (!maugis || !(work > 0.0) || !(lambda > 0.0) || !(tip.radius > 0.0)) return 0.0;
+  const double reduced = fit.youngs_modulus.value / (1.0 - poisson_ratio * poisson_ratio);
+  const double stress = maugis_adhesive_stress(lambda, reduced, work, tip.radius);
+  const double reach = work / stress;
+  return std::isfinite(reach) ? reach : 0.0;
+}
+
+BaselineReading read_baseline(std::span<const PreparedSegment* const> segments, const HertzFit& fit,
+                              double reach, std::size_t contact_samples) {
+  BaselineReading out;
+  const double contact = fit.contact_point.value;
+  std::vector<double> residuals;
+  for (const PreparedSegment* segment : segments) {
+    out.samples += segment->tip_position.size();
+    for (std::size_t i = 0; i < segment->tip_position.size(); ++i) {
+      const double z = segment->tip_position[i];
+      if (!(contact - z < -reach)) continue;
+      residuals.push_back(segment->force[i] - fit.baseline_offset.value -
+                          fit.baseline_slope.value * (z - contact));
+    }
+  }
+  // The samples the fitted model holds on the baseline (a retract's after its release, an
+  // approach's before its jump in) fix it too, where they outnumber those past the reach.
+  out.free_samples = std::max(residuals.size(), fit.points - std::min(fit.points, contact_samples));
+  if (residuals.size() < kNoiseSamples) return out;
+  const double centre = median_of(residuals);
+  for (double& r : residuals) r = std::abs(r - centre);
+  // 1.4826 MAD: the standard deviation of normal noise, unmoved by a few outliers or a tail of
+  // adhesion the baseline's fit left in.
+  out.noise = 1.4826 * median_of(residuals);
+  return out;
+}
+
+std::vector<std::string> fit_warnings(std::span<const PreparedSegment* const> segments,
+                                      const AdhesiveFit& fit, double reach, bool adhesive) {
+  std::vector<std::string> out;
+  if (fit.status != FitStatus::fitted) return out;
+  const BaselineReading baseline =
+      read_baseline(segments, fit, reach, adhesive ? fit.contact_samples : fit.points);
+  const double fewest = std::max(static_cast<double>(kFewestFreeSamples),
+                                 kLeastFreeFraction * static_cast<double>(baseline.samples));
+  if (!fit.baseline_offset.fixed && static_cast<double>(baseline.free_samples) < fewest) {
+    const std::string where =
+        reach > 0.0
+            ? fmt::format("beyond the fitted zone's reach (h0 = {:.3g} m ahead of contact)", reach)
+            : "before contact";
+    const std::string effect =
+        adhesive ? "dgamma, the contact force's offset from the baseline, is not told apart from "
+                   "the baseline's offset: its value and standard error may be far off (record "
+                   "the approach from farther out)"
+                 : "E and the contact point lean on a baseline the samples do not fix (record "
+                   "the approach from farther out)";
+    out.push_back(fmt::format(
+        "short baseline: {} of {} samples lie {}, fewer than {:.0f} to fix the baseline; {}",
+        baseline.free_samples, baseline.samples, where, std::ceil(fewest), effect));
+  }
+  if (baseline.noise > 0.0 && fit.residual_rms > kResidualOverNoise * baseline.noise) {
+    out.push_back(fmt::format(
+        "the model does not describe the curve: the residual rms ({:.3g} N) is {:.3g} times the "
+        "noise of the {} free samples about the fitted baseline ({:.3g} N)",
+        fit.residual_rms, fit.residual_rms / baseline.noise, baseline.free_samples,
+        baseline.noise));
+  }
+  return out;
+}
+
+}  // namespace mdrsim::fit
