@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <exception>
-#include <initializer_list>
 #include <string>
 #include <utility>
 
@@ -201,22 +200,23 @@ CombinedFit fit_both(const PreparedSegment& approach, const PreparedSegment& ret
 /// The fit's warnings over the samples it was given: each segment inside the range as the
 /// fitted contact point chooses them (the choice the fit ended on).
 std::vector<std::string> warnings_of(const AdhesiveFit& fit, const CurveFitOptions& options,
-                                     std::initializer_list<const PreparedSegment*> segments) {
+                                     const PreparedSegment* approach,
+                                     const PreparedSegment* retract) {
   if (fit.status != FitStatus::fitted) return {};
-  std::vector<PreparedSegment> parts;
-  std::vector<const PreparedSegment*> fitted;
+  std::optional<PreparedSegment> approach_part, retract_part;
   if (options.range) {
-    parts.reserve(segments.size());
-    for (const PreparedSegment* segment : segments) {
-      parts.push_back(within_range(*segment, fit.contact_point.value, *options.range));
+    if (approach) {
+      approach =
+          &approach_part.emplace(within_range(*approach, fit.contact_point.value, *options.range));
     }
-    for (const PreparedSegment& part : parts) fitted.push_back(&part);
-  } else {
-    fitted.assign(segments.begin(), segments.end());
+    if (retract) {
+      retract =
+          &retract_part.emplace(within_range(*retract, fit.contact_point.value, *options.range));
+    }
   }
   const double reach =
       fitted_reach(fit, options.tip, options.poisson_ratio, with_lambda(options.model));
-  return fit_warnings(fitted, fit, reach, options.model != FitModel::hertz);
+  return fit_warnings({approach, retract}, fit, reach, options.model != FitModel::hertz);
 }
 
 /// The hysteresis of a curve that has both segments, less the approach's baseline; nullopt
@@ -275,13 +275,15 @@ CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
       out.height_channel = approach.height_channel;
       out.fit = fit_both(approach, retract, options);
       mark_undetermined(out.fit, options);
-      out.warnings = warnings_of(out.fit, options, {&approach, &retract});
+      out.warnings = warnings_of(out.fit, options, &approach, &retract);
     } else {
       const PreparedSegment prepared = prepare_segment(curve, segment);
       out.height_channel = prepared.height_channel;
       static_cast<AdhesiveFit&>(out.fit) = fit_in_range(prepared, segment, options);
       mark_undetermined(out.fit, options);
-      out.warnings = warnings_of(out.fit, options, {&prepared});
+      const bool retract = segment == measured::SegmentKind::retract;
+      out.warnings = warnings_of(out.fit, options, retract ? nullptr : &prepared,
+                                 retract ? &prepared : nullptr);
     }
     out.hysteresis_energy = curve_hysteresis(curve, options);
   } catch (const SceneError& e) {

@@ -32,38 +32,52 @@ double fitted_reach(const AdhesiveFit& fit, const TipShape& tip, double poisson_
   return std::isfinite(reach) ? reach : 0.0;
 }
 
-BaselineReading read_baseline(std::span<const PreparedSegment* const> segments, const HertzFit& fit,
-                              double reach, std::size_t contact_samples) {
+BaselineReading read_baseline(const FittedSegments& segments, const AdhesiveFit& fit, double reach,
+                              bool adhesive) {
   BaselineReading out;
   const double contact = fit.contact_point.value;
   std::vector<double> residuals;
-  for (const PreparedSegment* segment : segments) {
-    out.samples += segment->tip_position.size();
-    for (std::size_t i = 0; i < segment->tip_position.size(); ++i) {
-      const double z = segment->tip_position[i];
-      if (!(contact - z < -reach)) continue;
-      residuals.push_back(segment->force[i] - fit.baseline_offset.value -
-                          fit.baseline_slope.value * (z - contact));
+  const auto take = [&](const PreparedSegment& segment, std::size_t i) {
+    residuals.push_back(segment.force[i] - fit.baseline_offset.value -
+                        fit.baseline_slope.value * (segment.tip_position[i] - contact));
+  };
+  std::size_t approach_held = 0;
+  if (const PreparedSegment* approach = segments.approach) {
+    out.samples += approach->tip_position.size();
+    for (std::size_t i = 0; i < approach->tip_position.size(); ++i) {
+      if (contact - approach->tip_position[i] < -reach) {
+        take(*approach, i);
+      } else {
+        ++approach_held;
+      }
     }
   }
-  // The samples the fitted model holds on the baseline (a retract's after its release, an
-  // approach's before its jump in) fix it too, where they outnumber those past the reach.
-  out.free_samples = std::max(residuals.size(), fit.points - std::min(fit.points, contact_samples));
+  if (const PreparedSegment* retract = segments.retract) {
+    out.samples += retract->tip_position.size();
+    // An adhesive model holds the retract's first samples (deepest first) on its path down to
+    // the release, out of contact too (JKR's neck, the Maugis zone's pull): the rest are the
+    // baseline's, wherever the tip has gone, so long as it is out of contact.
+    const std::size_t held =
+        adhesive ? fit.contact_samples - std::min(fit.contact_samples, approach_held) : 0;
+    for (std::size_t i = held; i < retract->tip_position.size(); ++i) {
+      const double depth = contact - retract->tip_position[i];
+      if (adhesive ? depth < 0.0 : depth < -reach) take(*retract, i);
+    }
+  }
+  out.free_samples = residuals.size();
   if (residuals.size() < kNoiseSamples) return out;
   const double centre = median_of(residuals);
   for (double& r : residuals) r = std::abs(r - centre);
-  // 1.4826 MAD: the standard deviation of normal noise, unmoved by a few outliers or a tail of
-  // adhesion the baseline's fit left in.
+  // 1.4826 MAD: the standard deviation of normal noise, unmoved by a few outliers.
   out.noise = 1.4826 * median_of(residuals);
   return out;
 }
 
-std::vector<std::string> fit_warnings(std::span<const PreparedSegment* const> segments,
-                                      const AdhesiveFit& fit, double reach, bool adhesive) {
+std::vector<std::string> fit_warnings(const FittedSegments& segments, const AdhesiveFit& fit,
+                                      double reach, bool adhesive) {
   std::vector<std::string> out;
   if (fit.status != FitStatus::fitted) return out;
-  const BaselineReading baseline =
-      read_baseline(segments, fit, reach, adhesive ? fit.contact_samples : fit.points);
+  const BaselineReading baseline = read_baseline(segments, fit, reach, adhesive);
   const double fewest = std::max(static_cast<double>(kFewestFreeSamples),
                                  kLeastFreeFraction * static_cast<double>(baseline.samples));
   if (!fit.baseline_offset.fixed && static_cast<double>(baseline.free_samples) < fewest) {

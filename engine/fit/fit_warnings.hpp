@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstddef>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -37,18 +36,26 @@ struct BaselineReading {
                                  ///< about the fitted baseline (0 with fewer than kNoiseSamples)
 };
 
-/// Counts the free samples of `segments`: those of indentation contact_point - z < -reach, or,
-/// where they are more, the fit's points less its `contact_samples` (those the fitted model
-/// holds on the baseline: a retract's after the lever let go); and the robust scatter of the
-/// former about the fitted baseline offset + slope (z - contact_point).
-BaselineReading read_baseline(std::span<const PreparedSegment* const> segments, const HertzFit& fit,
-                              double reach, std::size_t contact_samples);
+/// The samples a fit was given: an approach (far first) and a retract (deepest first), either
+/// absent.
+struct FittedSegments {
+  const PreparedSegment* approach = nullptr;
+  const PreparedSegment* retract = nullptr;
+};
+
+/// Counts the free samples: the approach's whose indentation contact_point - z < -reach, the
+/// retract's past those the fitted model holds on its path (for an adhesive model, its
+/// contact_samples less the approach's samples within the reach; JKR's neck, the zone's pull)
+/// and out of contact (for Hertz, past the reach as the approach's); and their robust scatter
+/// about the fitted baseline offset + slope (z - contact_point).
+BaselineReading read_baseline(const FittedSegments& segments, const AdhesiveFit& fit, double reach,
+                              bool adhesive);
 
 /// The warnings of a fitted curve (none for another status), each one line without the
 /// curve's name: free samples too few to fix the baseline (where its offset is fitted), and a
 /// residual rms above kResidualOverNoise times the free samples' noise. `adhesive`: the
 /// model fits a work of adhesion (the first warning says what the baseline does to it).
-std::vector<std::string> fit_warnings(std::span<const PreparedSegment* const> segments,
-                                      const AdhesiveFit& fit, double reach, bool adhesive);
+std::vector<std::string> fit_warnings(const FittedSegments& segments, const AdhesiveFit& fit,
+                                      double reach, bool adhesive);
 
 }  // namespace mdrsim::fit

@@ -266,8 +266,9 @@ TEST_P(AdhesiveFitSynthetic, RecoveryDesignsCarryNoWarning) {
     const Synthetic s = synthetic(c, seed);
     const AdhesiveFit fit = fit_adhesive(s.segment, options);
     ASSERT_EQ(fit.status, FitStatus::fitted) << c.tip << " seed " << seed << ": " << fit.message;
-    const std::vector<const PreparedSegment*> segments = {&s.segment};
-    const BaselineReading baseline = read_baseline(segments, fit, 0.0, fit.contact_samples);
+    const FittedSegments segments =
+        c.retract ? FittedSegments{nullptr, &s.segment} : FittedSegments{&s.segment, nullptr};
+    const BaselineReading baseline = read_baseline(segments, fit, 0.0, true);
     std::printf("warnings %s %s seed %u: free %zu of %zu, rms / noise %.3f\n",
                 adhesion_model_name(c.model), c.tip, seed, baseline.free_samples, baseline.samples,
                 fit.residual_rms / baseline.noise);

@@ -363,8 +363,8 @@ TEST(HertzFitWarnings, FireOnlyOnCurvesThatDeserveThem) {
     AdhesiveFit fit;
     static_cast<HertzFit&>(fit) = fit_hertz(segment, options);
     EXPECT_EQ(fit.status, FitStatus::fitted);
-    const std::vector<const PreparedSegment*> segments = {&segment};
-    const BaselineReading baseline = read_baseline(segments, fit, 0.0, fit.points);
+    const FittedSegments segments{&segment, nullptr};
+    const BaselineReading baseline = read_baseline(segments, fit, 0.0, false);
     std::printf("warnings hertz: free %zu of %zu, rms / noise %.3f\n", baseline.free_samples,
                 baseline.samples, fit.residual_rms / baseline.noise);
     return fit_warnings(segments, fit, 0.0, false);

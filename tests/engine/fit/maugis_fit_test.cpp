@@ -562,8 +562,8 @@ TEST_P(MaugisBothWarnings, ShortBaselineWarnsWhereTheRecordHasNone) {
     const AdhesiveFit fit = fit_maugis_both(approach, retract, parabola());
     ASSERT_EQ(fit.status, FitStatus::fitted) << "seed " << seed << ": " << fit.message;
     const double reach = fitted_reach(fit, parabola().tip, kPoisson, true);
-    const std::vector<const PreparedSegment*> segments = {&approach, &retract};
-    const BaselineReading baseline = read_baseline(segments, fit, reach, fit.contact_samples);
+    const FittedSegments segments{&approach, &retract};
+    const BaselineReading baseline = read_baseline(segments, fit, reach, true);
     const std::vector<std::string> warnings = fit_warnings(segments, fit, reach, true);
     std::printf(
         "warnings maugis both lambda %g, %g pull-offs, lead %g, seed %u: free %zu of %zu, "
@@ -596,10 +596,12 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(MaugisFitWarnings, RecoveryDesignsStaySilent) {
   const auto report = [](const char* what, double lambda, unsigned seed,
                          const PreparedSegment& segment, const AdhesiveFit& fit) {
+    const bool retract = what[0] == 'r';
     ASSERT_EQ(fit.status, FitStatus::fitted) << what << " seed " << seed << ": " << fit.message;
     const double reach = fitted_reach(fit, parabola().tip, kPoisson, true);
-    const std::vector<const PreparedSegment*> segments = {&segment};
-    const BaselineReading baseline = read_baseline(segments, fit, reach, fit.contact_samples);
+    const FittedSegments segments =
+        retract ? FittedSegments{nullptr, &segment} : FittedSegments{&segment, nullptr};
+    const BaselineReading baseline = read_baseline(segments, fit, reach, true);
     const std::vector<std::string> warnings = fit_warnings(segments, fit, reach, true);
     std::printf("warnings maugis %s lambda %g seed %u: free %zu of %zu, rms / noise %.3f%s%s\n",
                 what, lambda, seed, baseline.free_samples, baseline.samples,
