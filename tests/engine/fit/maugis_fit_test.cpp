@@ -532,8 +532,12 @@ INSTANTIATE_TEST_SUITE_P(Cases, MaugisBothSynthetic,
                            return "case_" + std::to_string(info.index);
                          });
 
-// The warnings of a fitted curve (fit_warnings.hpp) on the designs of docs/afm.md's table at
-// lambda = 0.12, both segments through the lever, 1 % noise, a few seeds each.
+// The short-baseline warning (fit_warnings.hpp) on the designs of docs/afm.md's table, both
+// segments through the lever, 1 % noise, four seeds each: silent where the record measures its
+// baseline (pressed to six pull-offs at every lambda, or with the record's lead at 0.12), on
+// every seed at 0.12 pressed to four or two pull-offs without the lead, and on two of four at
+// three: there the other two fits ran dgamma to 3 % of the truth, whose zone's reach, shrunk
+// with it, leaves 643 samples free (what the fitted parameters cannot tell; docs/afm.md).
 struct WarnedDesign {
   double lambda;
   double peak_pulls;
@@ -581,12 +585,12 @@ TEST_P(MaugisBothWarnings, ShortBaselineWarnsWhereTheRecordHasNone) {
 
 INSTANTIATE_TEST_SUITE_P(
     Designs, MaugisBothWarnings,
-    ::testing::Values(WarnedDesign{0.12, 6, 0, false}, WarnedDesign{0.12, 4, 0, true},
-                      WarnedDesign{0.12, 3, 0, true}, WarnedDesign{0.12, 2, 0, true},
-                      WarnedDesign{0.12, 6, 1, false}, WarnedDesign{0.12, 3, 1, false},
-                      WarnedDesign{0.12, 2, 1, false}, WarnedDesign{0.2, 6, 0, false},
-                      WarnedDesign{1.0, 6, 0, false}, WarnedDesign{3.0, 6, 0, false},
-                      WarnedDesign{4.5, 6, 0, false}),
+    ::testing::Values(WarnedDesign{0.12, 6, 0, -1}, WarnedDesign{0.12, 4, 0, 4},
+                      WarnedDesign{0.12, 3, 0, 2}, WarnedDesign{0.12, 2, 0, 4},
+                      WarnedDesign{0.12, 6, 1, -1}, WarnedDesign{0.12, 3, 1, -1},
+                      WarnedDesign{0.12, 2, 1, -1}, WarnedDesign{0.2, 6, 0, -1},
+                      WarnedDesign{1.0, 6, 0, -1}, WarnedDesign{3.0, 6, 0, -1},
+                      WarnedDesign{4.5, 6, 0, -1}),
     [](const ::testing::TestParamInfo<WarnedDesign>& info) {
       return "case_" + std::to_string(info.index);
     });
