@@ -82,9 +82,11 @@ std::vector<std::string> fit_warnings(const FittedSegments& segments, const Adhe
                                  kLeastFreeFraction * static_cast<double>(baseline.samples));
   if (!fit.baseline_offset.fixed && static_cast<double>(baseline.free_samples) < fewest) {
     const std::string where =
-        reach > 0.0
-            ? fmt::format("beyond the fitted zone's reach (h0 = {:.3g} m ahead of contact)", reach)
-            : "before contact";
+        reach > 0.0 ? fmt::format(
+                          "beyond the fitted zone's reach (h0 = {:.3g} m ahead of "
+                          "contact) or past the retract's release",
+                          reach)
+                    : "out of contact (the approach's before it, the retract's past its release)";
     const std::string effect =
         adhesive ? "dgamma, the contact force's offset from the baseline, is not told apart from "
                    "the baseline's offset: its value and standard error may be far off (record "

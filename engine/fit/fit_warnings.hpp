@@ -18,7 +18,7 @@ inline constexpr std::size_t kFewestFreeSamples = 50;
 inline constexpr double kLeastFreeFraction = 0.1;
 /// The residual rms over the fitted range may exceed the free samples' noise by this factor
 /// before the fit is said not to describe the curve (the synthetic 1 %-noise curves of every
-/// model stay below 1.3; docs/afm.md).
+/// model give 0.89-1.15; docs/afm.md).
 inline constexpr double kResidualOverNoise = 2.0;
 /// Fewer free samples than this give no noise to compare the residual with.
 inline constexpr std::size_t kNoiseSamples = 20;
@@ -31,7 +31,7 @@ double fitted_reach(const AdhesiveFit& fit, const TipShape& tip, double poisson_
 /// The samples the fit could read the baseline from and the noise about it.
 struct BaselineReading {
   std::size_t samples = 0;       ///< in every segment fitted
-  std::size_t free_samples = 0;  ///< the tip farther from the contact point than `reach`
+  std::size_t free_samples = 0;  ///< those the fitted model leaves on the baseline
   double noise = 0.0;            ///< [N] 1.4826 x the median absolute deviation of the free samples
                                  ///< about the fitted baseline (0 with fewer than kNoiseSamples)
 };
