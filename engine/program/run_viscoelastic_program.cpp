@@ -178,9 +178,11 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     // scale stays the relaxed material's).
     Scene glassy = scene;
     glassy.material = glassy_material(scene.material);
-    const ProgramRowFrame at_glassy_gap = program_row_frame(glassy);
-    spec.reference_radius = at_glassy_gap.radius;
-    spec.reference_image = at_glassy_gap.image;
+    // Where the deepest contact is held by a force or a machine end, the row's radius is the
+    // one reaching it, as program_row finds it for an elastic program.
+    const ProgramRowSpec at_glassy_gap = program_row(glassy, program_row_frame(glassy), n);
+    spec.reference_radius = at_glassy_gap.reference_radius;
+    spec.reference_image = at_glassy_gap.reference_image;
   }
   result.accuracy.outer_radius = spec.reference_radius;
   ViscoelasticRowSprings springs = viscoelastic_springs(scene, spec, n);

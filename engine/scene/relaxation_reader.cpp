@@ -17,13 +17,14 @@ std::string not_yet_with_relaxation(const std::string& what) {
   return what + " is not yet taken with material.relaxation" + kRelaxationScope;
 }
 
-/// The adhesive edge under a relaxing bulk runs under normal fixed grips only: a stage under
-/// another normal control with work_of_adhesion > 0 is refused, one line.
-void refuse_adhesion_outside_fixed_grips(const TomlReader& loading, const Scene& scene) {
+/// The adhesive edge under a relaxing bulk runs under normal fixed grips or a machine spring:
+/// a stage under a fixed load with work_of_adhesion > 0 (whose last let-go may send the
+/// indenter away) is refused, one line.
+void refuse_adhesion_under_fixed_load(const TomlReader& loading, const Scene& scene) {
   if (!scene.material.adhesive()) return;
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
-    if (stage.normal && stage.normal->control != "fixed-grips") {
+    if (stage.normal && stage.normal->control == "fixed-load") {
       loading.fail_at("stage", not_yet_with_relaxation(
                                    fmt::format("loading.stage.{}.normal.control = \"{}\" with "
                                                "work_of_adhesion > 0",
@@ -74,7 +75,7 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
   if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
-  refuse_adhesion_outside_fixed_grips(loading, scene);
+  refuse_adhesion_under_fixed_load(loading, scene);
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
     if (stage.tangential && (stage.tangential->control != "fixed-grips" ||
