@@ -322,6 +322,9 @@ class ViscoelasticRowDrive::Row {
     ViscoelasticSpringState& s = state_[k];
     // Under a held control the constraint is met before the change (the row's load then).
     const double held_load_before = held_ ? line_loads() : 0.0;
+    const double machine_before = machine_work_.value();
+    const double surface_before = surface_.value();
+    const double losses_before = jump_losses_.value();
     ViscoelasticRowChange change = ViscoelasticRowChange::touch;
     if (s.phase == ViscoelasticSpringPhase::glued) {
       change = ViscoelasticRowChange::let_go;
@@ -343,6 +346,7 @@ class ViscoelasticRowDrive::Row {
       index_change(k, left);
       held_glassy_step(held_load_before);
       rebuild_motion();
+      note_let_go_run(change, machine_before, surface_before, losses_before);
       return change;
     }
     for (const auto j :
@@ -352,6 +356,28 @@ class ViscoelasticRowDrive::Row {
       schedule(*j);
     }
     return change;
+  }
+
+ public:
+  /// What the let-gos at this time did since the last other change (their steps included),
+  /// per unit x of one half [J/m]: no time passes among them, so nothing is dissipated in the
+  /// bulk and what is stored changes by the work less the surface and the losses.
+  ViscoelasticRowEnergy let_go_run() const { return let_go_run_; }
+
+ private:
+  void note_let_go_run(ViscoelasticRowChange change, double machine_before, double surface_before,
+                       double losses_before) {
+    const bool joins = change == ViscoelasticRowChange::let_go && time_ == let_go_run_time_;
+    if (!joins) let_go_run_ = {};
+    let_go_run_time_ = change == ViscoelasticRowChange::let_go ? time_ : -HUGE_VAL;
+    if (change != ViscoelasticRowChange::let_go) return;
+    const double machine = machine_work_.value() - machine_before;
+    const double surface = surface_.value() - surface_before;
+    const double losses = jump_losses_.value() - losses_before;
+    let_go_run_.machine_work += machine;
+    let_go_run_.surface += surface;
+    let_go_run_.jump_losses += losses;
+    let_go_run_.stored += machine - surface - losses;
   }
 
   /// The springs' total line load per half [N/m]: E* (n d - sum g) + sum_j S_j.
@@ -1054,10 +1080,12 @@ class ViscoelasticRowDrive::Row {
   ExponentialSum motion_;            ///< the depth from now in a held segment [m]
   /// A sum next_event_delay builds, its storage kept from event to event.
   mutable ExponentialSum scratch_;
-  CompensatedSum machine_work_;  ///< [J/m]
-  CompensatedSum dissipated_;    ///< [J/m]
-  CompensatedSum surface_;       ///< [J/m]
-  CompensatedSum jump_losses_;   ///< [J/m]
+  CompensatedSum machine_work_;       ///< [J/m]
+  CompensatedSum dissipated_;         ///< [J/m]
+  CompensatedSum surface_;            ///< [J/m]
+  CompensatedSum jump_losses_;        ///< [J/m]
+  ViscoelasticRowEnergy let_go_run_;  ///< let_go_run()
+  double let_go_run_time_ = -HUGE_VAL;
 };
 
 ViscoelasticRowDrive::ViscoelasticRowDrive(const ViscoelasticRowSprings& springs)
@@ -1102,6 +1130,13 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
 }
 
 ViscoelasticRowSample ViscoelasticRowDrive::sample() const { return row_->sample(); }
+
+ViscoelasticRowEnergy ViscoelasticRowDrive::let_go_run() const {
+  const ViscoelasticRowEnergy e = row_->let_go_run();
+  const double both_halves = 2.0 * row_->spacing();
+  return {e.machine_work * both_halves, e.stored * both_halves, 0.0, e.surface * both_halves,
+          e.jump_losses * both_halves};
+}
 
 ViscoelasticRowEnergy ViscoelasticRowDrive::energy() {
   ViscoelasticRowEnergy e = row_->energy();

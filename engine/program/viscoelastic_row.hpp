@@ -127,6 +127,10 @@ class ViscoelasticRowDrive {
   const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }
   /// The energy so far (a pass over the springs).
   ViscoelasticRowEnergy energy();
+  /// Under a held control, what the let-gos at the present time did since the last other change
+  /// (the glassy steps included; nothing dissipated in the bulk): energy() less it is the energy
+  /// where they began, a fixed load's critical point when they lose the contact.
+  ViscoelasticRowEnergy let_go_run() const;
   /// As ViscoelasticRowRun's.
   const ViscoelasticRowRun& counts() const { return counts_; }
 

@@ -17,22 +17,6 @@ std::string not_yet_with_relaxation(const std::string& what) {
   return what + " is not yet taken with material.relaxation" + kRelaxationScope;
 }
 
-/// The adhesive edge under a relaxing bulk runs under normal fixed grips or a machine spring:
-/// a stage under a fixed load with work_of_adhesion > 0 (whose last let-go may send the
-/// indenter away) is refused, one line.
-void refuse_adhesion_under_fixed_load(const TomlReader& loading, const Scene& scene) {
-  if (!scene.material.adhesive()) return;
-  for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
-    const Stage& stage = scene.program->stages[i];
-    if (stage.normal && stage.normal->control == "fixed-load") {
-      loading.fail_at("stage", not_yet_with_relaxation(
-                                   fmt::format("loading.stage.{}.normal.control = \"{}\" with "
-                                               "work_of_adhesion > 0",
-                                               i + 1, stage.normal->control)));
-    }
-  }
-}
-
 }  // namespace
 
 std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plane_strain) {
@@ -75,7 +59,6 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
   if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
-  refuse_adhesion_under_fixed_load(loading, scene);
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
     if (stage.tangential && (stage.tangential->control != "fixed-grips" ||
@@ -83,9 +66,9 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
       loading.fail_at("stage",
                       not_yet_with_relaxation(fmt::format("loading.stage.{}.tangential", i + 1)));
     }
-    if (stage.normal && stage.normal->controller->holds_force()) {
-      // The row carries a held force while it presses: the contact lost under a load (the
-      // indenter's flight) is not carried.
+    if (stage.normal && stage.normal->controller->holds_force() && !scene.material.adhesive()) {
+      // A held force loses the contact in a flight only where the glue's last let-go loses it:
+      // without adhesion the contact lost under a load is not carried.
       const StageAxis& axis = *stage.normal;
       const bool falls = (axis.motion == StageAxis::Motion::to && !(axis.value > 0.0)) ||
                          (axis.motion == StageAxis::Motion::by && axis.value < 0.0);

@@ -108,13 +108,6 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
        "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      // The adhesive edge runs under normal fixed grips only.
-      {"AdhesionUnderFixedLoad",
-       replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
-                "normal = { by = -1.0e-4 }", "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
-       "v.toml:9:1: loading.stage: loading.stage.2.normal.control = \"fixed-load\" with "
-       "work_of_adhesion > 0 is not yet taken with material.relaxation (docs/viscoelastic.md "
-       "\"What it refuses\")"},
       {"Tangential",
        replaced(kViscous, "until = \"separation\"\n",
                 "tangential = { control = \"fixed-grips\", by = 1e-6 }\nuntil = \"separation\"\n"),
