@@ -1,8 +1,9 @@
 // A program's row of viscoelastic springs: the indentation moves linearly in time stage by
 // stage, or follows a held force or machine end, a spring is pressed from the moment the
 // indenter reaches it until its load falls to zero (Ting), and a free spring creeps back and may
-// be met again; with an adhesive edge (normal fixed grips) the spring outside the contact glues
-// and the boundary spring lets go by the glassy criterion (docs/viscoelastic.md).
+// be met again; with an adhesive edge the spring outside the contact glues and the boundary
+// spring lets go by the glassy criterion, under a held control with a glassy step of the depth
+// (docs/viscoelastic.md).
 #pragma once
 
 #include <cstdint>
