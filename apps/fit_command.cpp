@@ -463,7 +463,9 @@ int fit_command(const FitOptions& options) {
   }
   if (!json_file && options.csv.empty()) {
     for (const fit::CurveFit& one : fits) {
-      std::fputs((fit::curve_fit_summary(one, model) + "\n").c_str(), stdout);
+      std::fputs(
+          (fit::curve_fit_summary(one, model) + "\n" + fit::curve_fit_warning_lines(one)).c_str(),
+          stdout);
     }
   }
   if (!options.plot.empty()) {

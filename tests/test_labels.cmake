@@ -29,6 +29,8 @@ set(mdrsim_slow_tests
     "^RouteAgreement\\."  # 120 scenes on both routes, the row at rtol 1e-8: 5 s
     # 100 seeds of a Maugis fit of both segments a case: 3-20 s
     "^Cases/MaugisBothSynthetic\\."
+    # the short-baseline warning over the design table: 8 lever curves and 4 joint fits a case
+    "^Designs/MaugisBothWarnings\\."
     # the point-force kernel over a punch from 25 points outside it: 7.6 s
     "^GradedConstants\\.PunchOuterSurfaceMatchesTheKernelQuadrature$")
 

@@ -190,6 +190,7 @@ struct ProgramWalk {
   bool flying = false;     ///< a fixed load lost the contact: the indenter separated
   RunResult result;
   double work_error = 0.0;
+  double front_error = 0.0;  ///< of the rate law's dissipated_at_front [J]
   double critical_error = 0.0;
   double peak_error = 0.0;
   BranchState critical;      ///< result.critical's state
@@ -330,6 +331,7 @@ void recede_by_rate_law(ContinuumStage& st, ProgramWalk& w, const Stage& stage, 
   stage_work.normal += walk.machine_work;
   stage_work.front += walk.dissipated;
   w.work_error += walk.energy_error;
+  w.front_error += walk.energy_error;
   if (walk.peak) {
     note_state(w, *walk.peak);
     w.peak_error = std::max(w.peak_error, walk.peak_error);
@@ -693,7 +695,9 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
   AxisWork magnitude;  // of the stages' works, which the total rounds a few ulps of
   for (const StageRecord& stage : w.result.stages) {
     total += stage.work;
-    magnitude += AxisWork{std::abs(stage.work.normal), std::abs(stage.work.tangential)};
+    magnitude += AxisWork{.normal = std::abs(stage.work.normal),
+                          .tangential = std::abs(stage.work.tangential),
+                          .front = std::abs(stage.work.front)};
   }
   w.result.work = total;
   long long iterations = 0;
@@ -701,8 +705,9 @@ RunResult walk_program(const Scene& scene, double rtol, std::int64_t samples,
   w.result.counts.root_iterations = iterations;
   w.result.accuracy.outer_radius = largest_radius;
   w.result.accuracy.work_error_estimate =
-      AxisWork{with_rounding(w.work_error, magnitude.normal),
-               with_rounding(w.work_error, magnitude.tangential)};
+      AxisWork{.normal = with_rounding(w.work_error, magnitude.normal),
+               .tangential = with_rounding(w.work_error, magnitude.tangential),
+               .front = with_rounding(w.front_error, magnitude.front)};
   const double modulus = scene.material.effective_modulus;
   // |F| and its terms' magnitudes, on the graded springs where the half-space is graded.
   const auto magnitude_of = [&](const BranchState& s) {

@@ -2,6 +2,7 @@
 #include "engine/fit/fit_file.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <exception>
@@ -196,6 +197,28 @@ CombinedFit fit_both(const PreparedSegment& approach, const PreparedSegment& ret
   return fit;
 }
 
+/// The fit's warnings over the samples it was given: each segment inside the range as the
+/// fitted contact point chooses them (the choice the fit ended on).
+std::vector<std::string> warnings_of(const AdhesiveFit& fit, const CurveFitOptions& options,
+                                     const PreparedSegment* approach,
+                                     const PreparedSegment* retract) {
+  if (fit.status != FitStatus::fitted) return {};
+  std::optional<PreparedSegment> approach_part, retract_part;
+  if (options.range) {
+    if (approach) {
+      approach =
+          &approach_part.emplace(within_range(*approach, fit.contact_point.value, *options.range));
+    }
+    if (retract) {
+      retract =
+          &retract_part.emplace(within_range(*retract, fit.contact_point.value, *options.range));
+    }
+  }
+  const double reach =
+      fitted_reach(fit, options.tip, options.poisson_ratio, with_lambda(options.model));
+  return fit_warnings({approach, retract}, fit, reach, options.model != FitModel::hertz);
+}
+
 /// The hysteresis of a curve that has both segments, less the approach's baseline; nullopt
 /// where it has not both.
 std::optional<double> curve_hysteresis(const measured::ForceCurve& curve,
@@ -251,12 +274,17 @@ CurveFit fit_curve(const measured::MeasuredFile& file, std::size_t index,
       const PreparedSegment retract = prepare_segment(curve, measured::SegmentKind::retract);
       out.height_channel = approach.height_channel;
       out.fit = fit_both(approach, retract, options);
+      mark_undetermined(out.fit, options);
+      out.warnings = warnings_of(out.fit, options, &approach, &retract);
     } else {
       const PreparedSegment prepared = prepare_segment(curve, segment);
       out.height_channel = prepared.height_channel;
       static_cast<AdhesiveFit&>(out.fit) = fit_in_range(prepared, segment, options);
+      mark_undetermined(out.fit, options);
+      const bool retract = segment == measured::SegmentKind::retract;
+      out.warnings = warnings_of(out.fit, options, retract ? nullptr : &prepared,
+                                 retract ? &prepared : nullptr);
     }
-    mark_undetermined(out.fit, options);
     out.hysteresis_energy = curve_hysteresis(curve, options);
   } catch (const SceneError& e) {
     out.fit.message = curve.label.empty() ? e.what() : curve.label + ": " + e.what();
@@ -350,6 +378,7 @@ nlohmann::ordered_json curve_fit_json(const CurveFit& fit, const CurveFitOptions
       fit.hysteresis_energy ? nlohmann::ordered_json(*fit.hysteresis_energy) : nullptr;
   out["points"] = fit.fit.points;
   out["iterations"] = fit.fit.iterations;
+  out["warnings"] = fit.warnings;
   out["tip_position_from"] = fit.height_channel;
   out["calibration"] = {{"spring_constant", calibrated_json(fit.calibration.spring_constant)},
                         {"sensitivity", calibrated_json(fit.calibration.sensitivity)}};
@@ -363,7 +392,7 @@ std::string curve_fit_csv_header() {
          "model,"
          "work_of_adhesion,work_of_adhesion_error,adhesion_force_fitted,adhesion_force_measured,"
          "approach_work_of_adhesion,approach_work_of_adhesion_error,hysteresis_energy,"
-         "maugis_parameter,maugis_parameter_error,auto_model";
+         "maugis_parameter,maugis_parameter_error,auto_model,warnings";
 }
 
 std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_segments) {
@@ -408,6 +437,7 @@ std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_seg
       model == FitModel::automatic && f.status == FitStatus::fitted
           ? choose_regime(f.maugis_parameter.value).model
           : "");
+  row += "," + csv_text(fmt::format("{}", fmt::join(fit.warnings, "; ")));
   return row;
 }
 
@@ -443,6 +473,16 @@ std::string curve_fit_summary(const CurveFit& fit, FitModel model) {
   }
   if (!f.message.empty()) line += fmt::format(" ({})", f.message);
   return line;
+}
+
+std::string curve_fit_warning_lines(const CurveFit& fit) {
+  const std::string where =
+      fit.curve.empty() ? fit.file : fmt::format("{}[{}]", fit.file, fit.curve);
+  std::string lines;
+  for (const std::string& warning : fit.warnings) {
+    lines += fmt::format("{}: warning: {}\n", where, warning);
+  }
+  return lines;
 }
 
 }  // namespace mdrsim::fit

@@ -12,6 +12,7 @@
 #include "engine/fit/adhesive_fit.hpp"
 #include "engine/fit/combined_fit.hpp"
 #include "engine/fit/fit_range.hpp"
+#include "engine/fit/fit_warnings.hpp"
 #include "engine/fit/hertz_fit.hpp"
 #include "engine/fit/maugis_fit.hpp"
 #include "engine/measured/force_curve.hpp"
@@ -56,6 +57,10 @@ struct CurveFit {
                     ///< segment, approach_work_of_adhesion too
   /// [J] between approach and retract (combined_fit.hpp), where the curve has both.
   std::optional<double> hysteresis_energy;
+  /// What the fit cannot vouch for, one line each without the curve's name (fit_warnings.hpp):
+  /// a fitted curve whose baseline its record does not fix, or whose residual is far above its
+  /// noise.
+  std::vector<std::string> warnings;
 };
 
 /// Fits the first segment of `segment` kind of curve `index` of `file` (or its approach and
@@ -90,5 +95,9 @@ std::string curve_fit_csv_row(const CurveFit& fit, FitModel model, bool both_seg
 /// "FILE[curve]: fitted E = ... Pa +- ..., contact point ..., rms ... N" (and w, the adhesion
 /// forces for dmt, jkr and maugis; lambda for maugis; auto's pick and why for auto).
 std::string curve_fit_summary(const CurveFit& fit, FitModel model);
+
+/// "FILE[curve]: warning: ..." for each of the fit's warnings, each line ending in '\n' (""
+/// without warnings): what `mdrsim fit` prints after the fit's line.
+std::string curve_fit_warning_lines(const CurveFit& fit);
 
 }  // namespace mdrsim::fit

@@ -28,6 +28,10 @@ void SharedDriveArms::advance_along(const ExponentialSum& motion, double duratio
   time_ += duration;
 }
 
+void SharedDriveArms::glassy_step(double step) {
+  for (std::size_t j = 0; j < terms_.size(); ++j) history_[j] += terms_[j].modulus * step;
+}
+
 SharedDriveMember SharedDriveArms::enter(std::span<const double> stresses, double weight) {
   SharedDriveMember member{time_, FewValues<double>(terms_.size()), weight};
   for (std::size_t j = 0; j < terms_.size(); ++j) {

@@ -33,6 +33,9 @@ class SharedDriveArms {
   /// The drive follows `motion` (its stretch as a sum in s from now, prony_load_drive.hpp) for
   /// `duration` [s].
   void advance_along(const ExponentialSum& motion, double duration);
+  /// Every member's stretch steps by `step` [m] at once (a glassy response: the arms' springs
+  /// take it, the dashpots do not move): each member's sigma_j gains E_j step, all through H_j.
+  void glassy_step(double step);
   /// A spring joins now with arm stresses `stresses` [N/m] (zero for a fresh one) and weight dx.
   SharedDriveMember enter(std::span<const double> stresses, double weight);
   /// A member leaves now; its arm stresses then [N/m] are returned.

@@ -208,8 +208,9 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   if (accuracy.route == Accuracy::Route::richardson) {
     j["extrapolation"] = {{"method", "richardson"}, {"springs", accuracy.rows}};
   }
+  // A viscoelastic program's rows may estimate neither (no glue): their stages' estimates.
   if (scene.discretization.rtol || accuracy.critical_error_estimate ||
-      accuracy.peak_error_estimate) {
+      accuracy.peak_error_estimate || (bulk && accuracy.route == Accuracy::Route::richardson)) {
     ordered_json a;
     a["route"] = route_name(accuracy.route);
     if (!continuum) {
@@ -221,7 +222,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     }
     if (accuracy.peak_error_estimate) a["peak_error_estimate"] = *accuracy.peak_error_estimate;
     if (accuracy.work_error_estimate) {
-      a["work_error_estimate"] = work_json(*accuracy.work_error_estimate);
+      a["work_error_estimate"] =
+          work_json(*accuracy.work_error_estimate, false, scene.front_speed_law.has_value(), bulk);
     }
     if (accuracy.critical_zoom) {
       a["critical_zoom"] = {{"outer_radius", accuracy.critical_zoom->outer_radius},
@@ -264,9 +266,13 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
         record["end_error_estimate"] = {
             {"normal_force", *stage.normal_force_error_estimate},
             {"tangential_force", stage.tangential_force_error_estimate.value_or(0.0)}};
+        if (stage.time_error_estimate) {
+          record["end_error_estimate"]["time"] = *stage.time_error_estimate;
+        }
       }
       if (stage.work_error_estimate) {
-        record["work_error_estimate"] = work_json(*stage.work_error_estimate);
+        record["work_error_estimate"] =
+            work_json(*stage.work_error_estimate, false, scene.front_speed_law.has_value(), bulk);
       }
       if (stage.energy) record["energy"] = energy_json(*stage.energy, bulk);
       stages.push_back(record);

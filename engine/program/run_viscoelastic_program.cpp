@@ -141,15 +141,17 @@ struct HeldStageEnd {
 };
 
 HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
-                            const AffineConstraint& control, double held,
+                            const AffineConstraint& control, double held, bool stop_at_loss,
                             const ViscoelasticRowDrive::OnChange& on_change) {
   const AxisMotion m = axis_motion(stage.normal, held);
   const double seconds = seconds_per_parameter(stage, m.rate);
   const double rate = seconds > 0.0 ? m.rate / seconds : 0.0;
   std::vector<ViscoelasticRowSample> no_samples;
   if (!stage.until_separation) {
-    drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}}, false, {},
-              no_samples, on_change);
+    const double start = drive.sample().time;
+    const bool lost = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}},
+                                stop_at_loss, {}, no_samples, on_change);
+    if (lost) return {held + rate * (drive.sample().time - start), true};
     return {m.end.value_or(held + m.rate), false};
   }
   if (drive.sample().pressed == 0) return {held, false};
@@ -182,9 +184,11 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     // scale stays the relaxed material's).
     Scene glassy = scene;
     glassy.material = glassy_material(scene.material);
-    const ProgramRowFrame at_glassy_gap = program_row_frame(glassy);
-    spec.reference_radius = at_glassy_gap.radius;
-    spec.reference_image = at_glassy_gap.image;
+    // Where the deepest contact is held by a force or a machine end, the row's radius is the
+    // one reaching it, as program_row finds it for an elastic program.
+    const ProgramRowSpec at_glassy_gap = program_row(glassy, program_row_frame(glassy), n);
+    spec.reference_radius = at_glassy_gap.reference_radius;
+    spec.reference_image = at_glassy_gap.reference_image;
   }
   result.accuracy.outer_radius = spec.reference_radius;
   ViscoelasticRowSprings springs = viscoelastic_springs(scene, spec, n);
@@ -221,8 +225,21 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     observers.emit({.kind = EventKind::jump, .state = jump->after, .stage = jump->stage});
     result.jumps.push_back(std::move(*jump));
   };
+  // Under a fixed load with adhesion the let-gos at one time are held back until they are known
+  // to keep the contact: those that lose it are the flight, of which only the first is told
+  // (SPEC "A fixed load that loses the contact").
+  bool hold_let_gos = false;
+  std::vector<Event> held_let_gos;
+  const auto release_let_gos = [&] {
+    for (const Event& e : held_let_gos) observers.emit(e);
+    held_let_gos.clear();
+  };
   const auto on_change = [&](ViscoelasticRowChange change, const ViscoelasticRowSample& s) {
     if (extended && s.contact_radius >= row_end * (1.0 - 1e-12)) reached_row_end = true;
+    if (!held_let_gos.empty() &&
+        (change != ViscoelasticRowChange::let_go || held_let_gos.back().state.time != s.time)) {
+      release_let_gos();
+    }
     if (adhesive) {
       const bool by_shear = change == ViscoelasticRowChange::let_go && drive.last_let_go_by_shear();
       report_jump(
@@ -234,6 +251,10 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     if (change == ViscoelasticRowChange::let_go) {
       event.spring = s.glued;
       event.in_cascade = jumps.cascading();
+      if (hold_let_gos) {
+        held_let_gos.push_back(event);
+        return;
+      }
     }
     observers.emit(event);
   };
@@ -265,10 +286,21 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     const double rate = sd.rate();
     // u_x moves linearly over the stage (normal fixed grips: the reader refuses the rest).
     const double tangential_rate = sd.seconds > 0.0 ? tangential.rate / sd.seconds : 0.0;
+    std::optional<ViscoelasticCascade> flight;
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
-      const HeldStageEnd held_end = run_held_stage(drive, stage, control, held, on_change);
+      hold_let_gos = adhesive && !drives_through_spring(control);
+      const HeldStageEnd held_end =
+          run_held_stage(drive, stage, control, held, hold_let_gos, on_change);
       held = held_end.held;
+      if (hold_let_gos && held_end.separated) {
+        // The flight: the stage ends at the critical point, the first let-go told, the rest not.
+        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
+        held_let_gos.clear();
+        flight = jumps.open_cascade();
+      }
+      release_let_gos();
+      hold_let_gos = false;
       if (stage.until_separation && in_contact && !held_end.separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
         result.warnings.push_back(fmt::format(
@@ -306,14 +338,39 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
           "program stops here",
           stage.name, scene.solver.max_events_per_spring));
     }
-    const ViscoelasticRowSample end = drive.sample();
-    held_tangential = end.tangential_displacement;
-    if (adhesive) {
+    ViscoelasticRowSample end = drive.sample();
+    ViscoelasticRowEnergy now = drive.energy();
+    if (flight) {
+      // Up to the critical point: the let-gos' run (their glassy steps included) taken back.
+      end = flight->before;
+      const ViscoelasticRowEnergy run = drive.let_go_run();
+      now.machine_work -= run.machine_work;
+      now.stored -= run.stored;
+      now.surface -= run.surface;
+      now.jump_losses -= run.jump_losses;
+      if (auto jump = jumps.close()) {
+        jump->end = JumpEnd::separated;
+        jump->after = {};
+        observers.emit({.kind = EventKind::jump, .state = jump->critical, .stage = jump->stage});
+        result.jumps.push_back(std::move(*jump));
+      }
+      if (&stage != &program.stages.back()) {
+        std::string skipped;
+        for (auto it = program.stages.begin() + (&stage - program.stages.data()) + 1;
+             it != program.stages.end(); ++it) {
+          skipped += fmt::format("{}'{}'", skipped.empty() ? "" : ", ", it->name);
+        }
+        result.warnings.push_back(fmt::format(
+            "stage '{}': the normal fixed load (F = {:.6g} N) lost what held it and the indenter "
+            "separates: the program ends at its critical point; stages not run: {}",
+            stage.name, held, skipped));
+      }
+    } else if (adhesive) {
       report_jump(jumps.close());
-      jumps.observe(end);
     }
+    if (adhesive) jumps.observe(end);
+    held_tangential = end.tangential_displacement;
     ever_in_contact = ever_in_contact || drive.counts().touches + drive.counts().glues > 0;
-    const ViscoelasticRowEnergy now = drive.energy();
     const StageRecord record = viscoelastic_stage_record(
         stage.name, end, control, before, now,
         machine_spring_energy(control, row_force(end)) - spring_energy_before);
@@ -322,8 +379,8 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     before = now;
     result.stages.push_back(record);
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
-    lost = ever_in_contact && end.pressed == 0;
-    if (result.stop_reason) break;
+    lost = ever_in_contact && (end.pressed == 0 || flight);
+    if (result.stop_reason || flight) break;
   }
   if (reached_row_end) {
     result.warnings.push_back(fmt::format(

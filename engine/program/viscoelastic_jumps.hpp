@@ -44,6 +44,8 @@ class ViscoelasticJumps {
                                    const ViscoelasticRowSample& after, bool by_shear = false);
   /// Closes the open cascade (a stage ends); its jump if it was one.
   std::optional<JumpRecord> close();
+  /// The open cascade, if any.
+  const std::optional<ViscoelasticCascade>& open_cascade() const { return open_; }
   /// A state the program reports (a stage's end): a candidate for the most tensile.
   void observe(const ViscoelasticRowSample& s);
 

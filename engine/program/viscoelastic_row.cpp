@@ -396,6 +396,11 @@ class ViscoelasticRowDrive::Row {
     const auto boundary_before = boundary();
     const auto outside_before = outside();
     ViscoelasticSpringState& s = state_[k];
+    // Under a held control the constraint is met before the change (the row's load then).
+    const double held_load_before = held_ ? line_loads() : 0.0;
+    const double machine_before = machine_work_.value();
+    const double surface_before = surface_.value();
+    const double losses_before = jump_losses_.value();
     ViscoelasticRowChange change = ViscoelasticRowChange::touch;
     if (s.phase == ViscoelasticSpringPhase::glued) {
       change = ViscoelasticRowChange::let_go;
@@ -409,6 +414,17 @@ class ViscoelasticRowDrive::Row {
     } else {
       enter_contact(k, run, std::nullopt);
     }
+    if (held_) {
+      // The held search finds every spring's event afresh; only k's indexes change.
+      ++s.version;
+      const bool left =
+          change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
+      index_change(k, left);
+      held_glassy_step(held_load_before);
+      rebuild_motion();
+      note_let_go_run(change, machine_before, surface_before, losses_before);
+      return change;
+    }
     for (const auto j :
          {std::optional<std::size_t>(k), boundary_before, outside_before, boundary(), outside()}) {
       if (!j) continue;
@@ -416,6 +432,59 @@ class ViscoelasticRowDrive::Row {
       schedule(*j);
     }
     return change;
+  }
+
+ public:
+  /// What the let-gos at this time did since the last other change (their steps included),
+  /// per unit x of one half [J/m]: no time passes among them, so nothing is dissipated in the
+  /// bulk and what is stored changes by the work less the surface and the losses.
+  ViscoelasticRowEnergy let_go_run() const { return let_go_run_; }
+
+ private:
+  void note_let_go_run(ViscoelasticRowChange change, double machine_before, double surface_before,
+                       double losses_before) {
+    const bool joins = change == ViscoelasticRowChange::let_go && time_ == let_go_run_time_;
+    if (!joins) let_go_run_ = {};
+    let_go_run_time_ = change == ViscoelasticRowChange::let_go ? time_ : -HUGE_VAL;
+    if (change != ViscoelasticRowChange::let_go) return;
+    const double machine = machine_work_.value() - machine_before;
+    const double surface = surface_.value() - surface_before;
+    const double losses = jump_losses_.value() - losses_before;
+    let_go_run_.machine_work += machine;
+    let_go_run_.surface += surface;
+    let_go_run_.jump_losses += losses;
+    let_go_run_.stored += machine - surface - losses;
+  }
+
+  /// The springs' total line load per half [N/m]: E* (n d - sum g) + sum_j S_j.
+  double line_loads() const {
+    const auto n = static_cast<double>(pressed_.size());
+    return springs_.relaxed_modulus * (n * depth_ - pressed_images_.value()) + arms_.arm_force();
+  }
+
+  /// After a glue or a let-go under a held control, the constraint kappa d + q = phi is met
+  /// again at once: the dashpots do not move, so every spring in contact answers with E_0 and
+  /// (kappa + n E_0) Dd = phi - kappa d - q. `load_before` [N/m] is q before the change (the
+  /// constraint held there). The machine's end stays (a machine spring) or its force does (a
+  /// fixed load, the work phi Dd); the springs in contact store Dd q + n E_0 Dd^2 / 2 more, a
+  /// machine spring -Dd (q_before + q_after) / 2, and the rest is lost: Dd^2 (kappa + n E_0) / 2
+  /// (docs/viscoelastic.md). Under a fixed load with nothing left in contact the force is not
+  /// held (the contact is lost: the row stays where it is).
+  void held_glassy_step(double load_before) {
+    const RowHeldAxis axis = held_now();
+    const auto n = static_cast<double>(pressed_.size());
+    const double stiffness = axis.stiffness + n * springs_.edge->glassy_modulus;
+    if (!(stiffness > 0.0)) return;
+    const double load = line_loads();
+    const double step = (axis.held - axis.stiffness * depth_ - load) / stiffness;
+    const double load_after = load + n * springs_.edge->glassy_modulus * step;
+    const double stored = step * load + 0.5 * n * springs_.edge->glassy_modulus * step * step;
+    const bool fixed_load = axis.stiffness == 0.0;
+    const double machine = fixed_load ? axis.held * step : 0.5 * step * (load_before + load_after);
+    if (fixed_load) machine_work_.add(machine);
+    jump_losses_.add(machine - stored);
+    arms_.glassy_step(step);
+    depth_ += step;
   }
 
   /// The boundary spring k lets go: its stretch steps by -q / E_0 to zero load.
@@ -901,8 +970,11 @@ class ViscoelasticRowDrive::Row {
       const ViscoelasticSpringState& s = state_[k];
       if (s.phase == ViscoelasticSpringPhase::untouched) {
         untouched_by_image_.insert({springs_.images[k], k});
-      } else if (s.phase == ViscoelasticSpringPhase::pressed) {
-        pressed_keys_.push({pressed_key(k), k, s.version});
+      } else if (in_contact(s)) {
+        // A glued spring acts only as the boundary, which the search offers first.
+        if (s.phase == ViscoelasticSpringPhase::pressed) {
+          pressed_keys_.push({pressed_key(k), k, s.version});
+        }
         for (std::size_t j = 0; j < own_squares_.size(); ++j) {
           const double delta = arms_.stress(s.member, j) - arms_.history(j);
           own_squares_[j] += delta * delta;
@@ -913,7 +985,8 @@ class ViscoelasticRowDrive::Row {
     }
   }
 
-  /// Spring k was just touched or released (its stresses then in counted_stresses).
+  /// Spring k was just touched or glued, or released or let go (its stresses then in
+  /// counted_stresses).
   void index_change(std::size_t k, bool release) {
     const ViscoelasticSpringState& s = state_[k];
     for (std::size_t j = 0; j < own_squares_.size(); ++j) {
@@ -924,7 +997,9 @@ class ViscoelasticRowDrive::Row {
       push_free_key(k, free_key_horizon());
     } else {
       untouched_by_image_.erase({springs_.images[k], k});
-      pressed_keys_.push({pressed_key(k), k, s.version});
+      if (s.phase == ViscoelasticSpringPhase::pressed) {
+        pressed_keys_.push({pressed_key(k), k, s.version});
+      }
     }
   }
 
@@ -949,7 +1024,10 @@ class ViscoelasticRowDrive::Row {
   bool held_may_act(std::size_t k, double limit, const ExponentialSumBounds& depth,
                     const ExponentialSumBounds& shared) const {
     const ViscoelasticSpringState& s = state_[k];
-    const double g = springs_.images[k];
+    // With an adhesive edge the boundary may let go (looked at exactly), no other glued spring
+    // acts, and the spring outside the contact is reached at its glue gap.
+    if (s.phase == ViscoelasticSpringPhase::glued) return boundary() == k;
+    const double g = springs_.images[k] - held_glue_gap(k);
     if (s.phase == ViscoelasticSpringPhase::untouched) return depth.hi - g >= 0.0;
     if (s.phase == ViscoelasticSpringPhase::free) {
       const ExponentialSum w = s.creep->stretch_from(time_ - s.released_at);
@@ -968,7 +1046,9 @@ class ViscoelasticRowDrive::Row {
   std::optional<double> held_delay(std::size_t k, double limit,
                                    const ExponentialSum& shared) const {
     const ViscoelasticSpringState& s = state_[k];
-    const double g = springs_.images[k];
+    if (s.phase == ViscoelasticSpringPhase::glued) return held_let_go_delay(k, limit, shared);
+    // The indenter reaches a spring it glues at the glue gap.
+    const double g = springs_.images[k] - held_glue_gap(k);
     if (s.phase == ViscoelasticSpringPhase::untouched) {
       if (depth_ - g >= 0.0) return 0.0;
       ExponentialSum gap = motion_;
@@ -982,7 +1062,11 @@ class ViscoelasticRowDrive::Row {
         overlap.decays.push_back({-d.amplitude, d.time});
       }
       const double now = overlap.at(0.0);
-      if (now >= 0.0 && overlap.slope_at(0.0) > 0.0) return 0.0;
+      // A spring that let go at this time is not met again at it (with dgamma_a = dgamma it
+      // stands at its glue gap).
+      if (now >= 0.0 && overlap.slope_at(0.0) > 0.0 && (!springs_.edge || time_ > s.released_at)) {
+        return 0.0;
+      }
       return first_crossing(overlap, std::max(now, 0.0), limit);
     }
     ExponentialSum load = shared;
@@ -995,6 +1079,37 @@ class ViscoelasticRowDrive::Row {
     const double now = load.at(0.0);
     if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
     return first_crossing(load, std::min(now, 0.0), limit);
+  }
+
+  /// The gap [m] at which the indenter takes spring k in a held segment: its glue gap where it
+  /// glues, else 0 (pressed on touch).
+  double held_glue_gap(std::size_t k) const {
+    return springs_.edge && glues(k) ? glue_gap(k) : 0.0;
+  }
+
+  /// Spring k's line load from now under motion_: the pressed springs' shared part less E* g_k
+  /// plus its own arms' stresses decaying.
+  ExponentialSum held_load(std::size_t k, const ExponentialSum& shared) const {
+    ExponentialSum load = shared;
+    load.constant -= springs_.relaxed_modulus * springs_.images[k];
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      load.decays.push_back({arms_.stress(state_[k].member, j), springs_.terms[j].time});
+    }
+    return load;
+  }
+
+  /// The glued spring k's let-go within `limit` [s] under motion_, as the boundary: its load's
+  /// first crossing down to -let_go_loads (next_event_delay_at_edge's rule at the level).
+  std::optional<double> held_let_go_delay(std::size_t k, double limit,
+                                          const ExponentialSum& shared) const {
+    if (boundary() != k) return std::nullopt;
+    const ExponentialSum load = held_load(k, shared);
+    const double level = -springs_.edge->let_go_loads[k];
+    const double slack = load.at(0.0) - level;
+    const double slope = load.slope_at(0.0);
+    const bool on_it = state_[k].glued_at == time_ || -slack <= kEdgeRounding * std::abs(level);
+    if (slack <= 0.0 && (slope < 0.0 || !on_it)) return 0.0;
+    return first_crossing(load, slack < 0.0 ? load.at(0.0) : level, limit);
   }
 
   /// The first event of any spring from now within the segment: the springs at the contact's
@@ -1038,6 +1153,7 @@ class ViscoelasticRowDrive::Row {
         best_k = k;
       }
     };
+    if (const auto k = boundary()) offer(*k);
     if (!pressed_.empty()) {
       const std::size_t edge = pressed_.outermost();
       for (const std::size_t k : {edge, edge + 1, edge + 2}) {
@@ -1285,10 +1401,12 @@ class ViscoelasticRowDrive::Row {
   ExponentialSum motion_;            ///< the depth from now in a held segment [m]
   /// A sum next_event_delay builds, its storage kept from event to event.
   mutable ExponentialSum scratch_;
-  CompensatedSum machine_work_;  ///< [J/m]
-  CompensatedSum dissipated_;    ///< [J/m]
-  CompensatedSum surface_;       ///< [J/m]
-  CompensatedSum jump_losses_;   ///< [J/m]
+  CompensatedSum machine_work_;       ///< [J/m]
+  CompensatedSum dissipated_;         ///< [J/m]
+  CompensatedSum surface_;            ///< [J/m]
+  CompensatedSum jump_losses_;        ///< [J/m]
+  ViscoelasticRowEnergy let_go_run_;  ///< let_go_run()
+  double let_go_run_time_ = -HUGE_VAL;
 };
 
 ViscoelasticRowDrive::ViscoelasticRowDrive(const ViscoelasticRowSprings& springs)
@@ -1335,14 +1453,26 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
 ViscoelasticRowSample ViscoelasticRowDrive::sample() const { return row_->sample(); }
 
 bool ViscoelasticRowDrive::last_let_go_by_shear() const { return row_->last_let_go_by_shear(); }
+ViscoelasticRowEnergy ViscoelasticRowDrive::let_go_run() const {
+  const ViscoelasticRowEnergy e = row_->let_go_run();
+  const double both_halves = 2.0 * row_->spacing();
+  return {.machine_work = e.machine_work * both_halves,
+          .tangential_work = e.tangential_work * both_halves,
+          .stored = e.stored * both_halves,
+          .surface = e.surface * both_halves,
+          .jump_losses = e.jump_losses * both_halves};
+}
 
 ViscoelasticRowEnergy ViscoelasticRowDrive::energy() {
   ViscoelasticRowEnergy e = row_->energy();
   // Both halves: each spring of the row stands for 2 dx of the foundation.
   const double both_halves = 2.0 * row_->spacing();
-  return {e.machine_work * both_halves, e.tangential_work * both_halves,
-          e.stored * both_halves,       e.dissipated_by_bulk * both_halves,
-          e.surface * both_halves,      e.jump_losses * both_halves};
+  return {.machine_work = e.machine_work * both_halves,
+          .tangential_work = e.tangential_work * both_halves,
+          .stored = e.stored * both_halves,
+          .dissipated_by_bulk = e.dissipated_by_bulk * both_halves,
+          .surface = e.surface * both_halves,
+          .jump_losses = e.jump_losses * both_halves};
 }
 
 ViscoelasticRowRun run_viscoelastic_row(const ViscoelasticRowSprings& springs,

@@ -1,8 +1,9 @@
 // A program's row of viscoelastic springs: the indentation moves linearly in time stage by
 // stage, or follows a held force or machine end, a spring is pressed from the moment the
 // indenter reaches it until its load falls to zero (Ting), and a free spring creeps back and may
-// be met again; with an adhesive edge (normal fixed grips) the spring outside the contact glues
-// and the boundary spring lets go by the glassy criterion (docs/viscoelastic.md).
+// be met again; with an adhesive edge the spring outside the contact glues and the boundary
+// spring lets go by the glassy criterion, under a held control with a glassy step of the depth
+// (docs/viscoelastic.md).
 #pragma once
 
 #include <cstdint>
@@ -147,6 +148,10 @@ class ViscoelasticRowDrive {
   const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }
   /// The energy so far (a pass over the springs).
   ViscoelasticRowEnergy energy();
+  /// Under a held control, what the let-gos at the present time did since the last other change
+  /// (the glassy steps included; nothing dissipated in the bulk): energy() less it is the energy
+  /// where they began, a fixed load's critical point when they lose the contact.
+  ViscoelasticRowEnergy let_go_run() const;
   /// As ViscoelasticRowRun's.
   const ViscoelasticRowRun& counts() const { return counts_; }
 

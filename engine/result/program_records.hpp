@@ -72,6 +72,9 @@ struct StageRecord {
   /// With rtol: a posteriori bounds on |reported - continuum| of the end's forces [N].
   std::optional<double> normal_force_error_estimate;
   std::optional<double> tangential_force_error_estimate;
+  /// Timed programs whose stage ends with the contact (viscoelastic rows under Richardson or
+  /// rtol): the same for `end.time` [s].
+  std::optional<double> time_error_estimate;
   /// With rtol or Richardson: a posteriori bounds on |reported - continuum| of `work` [J].
   std::optional<AxisWork> work_error_estimate;
 };

@@ -16,6 +16,7 @@
 #include "engine/accuracy/row_refinement.hpp"
 #include "engine/accuracy/row_sequence.hpp"
 #include "engine/accuracy/shorthand_accuracy.hpp"
+#include "engine/accuracy/viscoelastic_rows.hpp"
 #include "engine/base/engine_logger.hpp"
 #include "engine/base/zero_scale.hpp"
 #include "engine/continuum/dugdale_program.hpp"
@@ -117,8 +118,8 @@ void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
   const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
                         scene.material.relaxes()
-                            ? "more discretization.springs resolve it (rtol is not yet taken "
-                              "with material.relaxation)"
+                            ? "more discretization.springs resolve it (rtol and Richardson do "
+                              "not estimate the viscoelastic row's critical point)"
                             : "discretization.rtol refines the row until it is resolved"};
   const bool adhesive = scene.material.adhesive();
   // The rate law's front loses the contact at the axis, where the last spring lets go: a
@@ -175,8 +176,17 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
 }
 
 RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
-  // One row of viscoelastic springs (the relaxation reader refuses rtol and Richardson).
-  if (scene.material.relaxes()) return run_viscoelastic_program(scene, observers);
+  if (scene.material.relaxes()) {
+    switch (scene.plan.driver) {
+      case RouteDriver::rtol:
+        return run_viscoelastic_rtol(scene, *scene.discretization.rtol, observers);
+      case RouteDriver::richardson:
+        return run_viscoelastic_richardson(scene, observers);
+      case RouteDriver::one_row:
+        break;
+    }
+    return run_viscoelastic_program(scene, observers);
+  }
   if (scene.front_speed_law) {
     switch (scene.plan.driver) {
       case RouteDriver::rtol:

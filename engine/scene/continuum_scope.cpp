@@ -56,6 +56,8 @@ bool jkr_branch_folds_once(const Scene& scene) {
 }  // namespace
 
 bool continuum_answers(const Scene& scene) {
+  // The continuum route has no relaxing bulk: rtol alone refines the viscoelastic row.
+  if (scene.material.relaxes()) return false;
   // dgamma(r) pins the front and lets it jump at every change: several folds.
   if (scene.material.adhesion_varies()) return false;
   // One fold on the branch: the shapes that are always one disk (convex classics). A table

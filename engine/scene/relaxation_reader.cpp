@@ -17,21 +17,6 @@ std::string not_yet_with_relaxation(const std::string& what) {
   return what + " is not yet taken with material.relaxation" + kRelaxationScope;
 }
 
-/// The adhesive edge under a relaxing bulk runs under normal fixed grips only: a stage under
-/// another normal control with work_of_adhesion > 0 is refused, one line.
-void refuse_adhesion_outside_fixed_grips(const TomlReader& loading, const Scene& scene) {
-  if (!scene.material.adhesive()) return;
-  for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
-    const Stage& stage = scene.program->stages[i];
-    if (stage.normal && stage.normal->control != "fixed-grips") {
-      loading.fail_at("stage", not_yet_with_relaxation(
-                                   fmt::format("loading.stage.{}.normal.control = \"{}\" with "
-                                               "work_of_adhesion > 0",
-                                               i + 1, stage.normal->control)));
-    }
-  }
-}
-
 }  // namespace
 
 std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plane_strain) {
@@ -74,9 +59,9 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
   if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
-  refuse_adhesion_outside_fixed_grips(loading, scene);
   // The normal control a stage runs under: its own, or the one before it (fixed grips at first).
   std::string normal_control = "fixed-grips";
+  bool sheared = false;  ///< a stage before moved the tangential axis
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
     if (stage.normal) normal_control = stage.normal->control;
@@ -92,9 +77,18 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
                                    "\"{}\"",
                                    i + 1, normal_control)));
     }
-    if (stage.normal && stage.normal->controller->holds_force()) {
-      // The row carries a held force while it presses: the contact lost under a load (the
-      // indenter's flight) is not carried.
+    if (sheared && normal_control != "fixed-grips") {
+      // The held drive moves the normal arms only: the glued springs' tangential arms would
+      // stand still.
+      loading.fail_at("stage", not_yet_with_relaxation(fmt::format(
+                                   "loading.stage.{}: normal.control = \"{}\" after a stage that "
+                                   "moved the tangential axis",
+                                   i + 1, normal_control)));
+    }
+    if (stage.tangential && stage.tangential->motion != StageAxis::Motion::hold) sheared = true;
+    if (stage.normal && stage.normal->controller->holds_force() && !scene.material.adhesive()) {
+      // A held force loses the contact in a flight only where the glue's last let-go loses it:
+      // without adhesion the contact lost under a load is not carried.
       const StageAxis& axis = *stage.normal;
       const bool falls = (axis.motion == StageAxis::Motion::to && !(axis.value > 0.0)) ||
                          (axis.motion == StageAxis::Motion::by && axis.value < 0.0);
@@ -110,17 +104,6 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
   if (route_keys.method_given && scene.solver.method != SolverMethod::event) {
     throw SceneError(route_keys.method_at +
                      not_yet_with_relaxation("a method other than \"event\""));
-  }
-}
-
-void refuse_unrun_relaxation(const RouteKeys& route_keys, const Scene& scene) {
-  if (!scene.material.relaxes()) return;
-  if (scene.discretization.rtol) {
-    throw SceneError(route_keys.rtol_at + not_yet_with_relaxation("rtol (give springs)"));
-  }
-  if (scene.discretization.richardson()) {
-    throw SceneError(route_keys.extrapolation_at +
-                     not_yet_with_relaxation("extrapolation = \"richardson\" (give springs)"));
   }
 }
 

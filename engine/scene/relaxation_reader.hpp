@@ -29,8 +29,4 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
                                      const TomlReader& material, const RouteKeys& route_keys,
                                      const Scene& scene);
 
-/// What is not yet run with a relaxing bulk, once the discretization is read: rtol and
-/// Richardson's extrapolation (the viscoelastic row runs one row of the given springs).
-void refuse_unrun_relaxation(const RouteKeys& route_keys, const Scene& scene);
-
 }  // namespace mdrsim

@@ -546,7 +546,6 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
   refuse_outside_grading_scope(root, loading, material, scene);
   use_graded_route(*resolved, route_keys, scene);
   read_discretization(root, route_keys, scene);
-  refuse_unrun_relaxation(route_keys, scene);
   read_friction_and_plan(root, registries, route_keys, *resolved, scene);
   refuse_outside_front_speed_scope(scene, front_speed_at);
   root.finish();

@@ -151,6 +151,8 @@ class Fit:
     object), and the data and fitted model as arrays for plotting.
 
     status: "fitted", "no-contact", "not-converged" or "unreadable"; message: why, or "".
+    warnings: what a fitted curve's fit cannot vouch for, one line each (a baseline its record
+    does not fix, a residual far above its noise; docs/afm.md "Warnings"), else [].
     tip_position [m], force [N]: the fitted segment as prepared (None without a fit);
     fitted_force [N]: the model at the fitted values at each tip position.
     """

@@ -78,6 +78,7 @@ class Fit:
     contact_samples: int
     points: int
     iterations: int
+    warnings: list[str]
     tip_position_from: str
     calibration: dict[str, dict[str, Any] | None]
     tip_position: Array | None

@@ -127,6 +127,17 @@ def test_the_fit_of_nanites_curve_and_its_plotting_arrays():
     np.testing.assert_allclose(fit.indentation, fit.contact_point.value - fit.tip_position)
 
 
+def test_a_fit_it_cannot_vouch_for_carries_the_commands_warnings(cli):
+    # The cell's retract under JKR: the tethers' pull taken as the contact branch leaves a short
+    # baseline and a residual above twice the noise; nanite's Hertz case has none.
+    assert afm.fit(afm.load(SPOT3)[0], tip=TIP).warnings == []
+    fit = afm.fit(afm.load(SPOT3)[0], model="jkr", tip=TIP, segment="retract")
+    [theirs] = cli_fit(cli, SPOT3, "--tip", TIP, "--model", "jkr", "--segment", "retract")
+    assert fit.warnings == theirs["warnings"]
+    assert [w.split(":")[0] for w in fit.warnings] == [
+        "short baseline", "the model does not describe the curve"]
+
+
 @pytest.mark.parametrize("model", ["dmt", "jkr"])
 def test_the_adhesive_fits_curve_follows_the_data(model):
     fit = afm.fit(afm.load(SPOT3)[0], model=model, tip=TIP, segment="retract")

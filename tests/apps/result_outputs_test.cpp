@@ -249,3 +249,30 @@ TEST_F(ResultOutputs, APlainRowSaysItsErrorIsNotEstimated) {
             std::string::npos)
       << extrapolated.out;
 }
+
+// The viscoelastic row the same: its plain row says its error is not estimated; its rows,
+// contact lost at zero force (no critical point, no peak) or with the glue, print the rows
+// they ran, and with a critical point that it is the finest row's, not estimated.
+TEST_F(ResultOutputs, TheViscoelasticRowSaysWhatItsRowsEstimate) {
+  const auto plain = run_mdrsim("run scenes/viscoelastic/lee_radok_parabola.toml --log-level off");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("accuracy: plain row of 400 springs; its discretization error (O(1/N)) "
+                           "is not estimated"),
+            std::string::npos)
+      << plain.out;
+  const auto extrapolated = run_mdrsim(
+      "run scenes/viscoelastic/lee_radok_parabola.toml --set "
+      "discretization.extrapolation=richardson --log-level off");
+  ASSERT_EQ(extrapolated.exit_code, 0) << extrapolated.err;
+  EXPECT_NE(extrapolated.out.find("accuracy: richardson over rows of 100, 200, 400, 800 springs"),
+            std::string::npos)
+      << extrapolated.out;
+  const auto adhesive = run_mdrsim(
+      "run scenes/viscoelastic/adhesive_relaxed_pull_off.toml --set "
+      "discretization.extrapolation=richardson --log-level off");
+  ASSERT_EQ(adhesive.exit_code, 0) << adhesive.err;
+  EXPECT_NE(adhesive.out.find("accuracy: richardson over rows of 50, 100, 200, 400 springs across "
+                              "0.0015 m; the critical point is the finest row's, not estimated"),
+            std::string::npos)
+      << adhesive.out;
+}

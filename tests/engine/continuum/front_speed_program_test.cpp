@@ -79,6 +79,11 @@ TEST(FrontSpeedProgram, RetractionAgreesWithTheReference) {
       const AxisWork& w = r.stages[1].work;
       EXPECT_NEAR(w.normal / (ref.lost.machine_work * sc.energy), 1.0, 1e-8) << beta << " " << n;
       EXPECT_NEAR(w.front / (ref.lost.dissipated * sc.energy), 1.0, 1e-8) << beta << " " << n;
+      // The front's dissipation carries the walk's estimate (it said 0 J, no error at all), within
+      // rtol 1e-10 of it.
+      ASSERT_TRUE(r.accuracy.work_error_estimate);
+      EXPECT_GT(r.accuracy.work_error_estimate->front, 0.0) << beta << " " << n;
+      EXPECT_LT(r.accuracy.work_error_estimate->front, 1e-10 * w.front) << beta << " " << n;
       // Machine work = stored change + adhesion energy change + dissipated_at_front: from
       // E* int_0^a0 (d0 - x^2 / R)^2 dx and -pi a0^2 dgamma to nothing.
       const double a0 = zero_force_radius();

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/fit/fit_warnings.hpp"
 #include "engine/fit/prepared_curve.hpp"
 #include "engine/fit/tip_shape.hpp"
 #include "engine/measured/read_force_curves.hpp"
@@ -252,6 +253,29 @@ INSTANTIATE_TEST_SUITE_P(
       return std::string(adhesion_model_name(info.param.model)) + "_" + tip + "_" +
              (info.param.retract ? "retract" : "approach");
     });
+
+// The warnings (fit_warnings.hpp) stay silent on the recovery designs above: 2000 samples of
+// which a third lie before contact, the residual at the noise; a few seeds each.
+TEST_P(AdhesiveFitSynthetic, RecoveryDesignsCarryNoWarning) {
+  const Case& c = GetParam();
+  AdhesiveFitOptions options;
+  options.model = c.model;
+  options.tip = parse_tip(c.tip);
+  options.retract = c.retract;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const Synthetic s = synthetic(c, seed);
+    const AdhesiveFit fit = fit_adhesive(s.segment, options);
+    ASSERT_EQ(fit.status, FitStatus::fitted) << c.tip << " seed " << seed << ": " << fit.message;
+    const FittedSegments segments =
+        c.retract ? FittedSegments{nullptr, &s.segment} : FittedSegments{&s.segment, nullptr};
+    const BaselineReading baseline = read_baseline(segments, fit, 0.0, true);
+    std::printf("warnings %s %s seed %u: free %zu of %zu, rms / noise %.3f\n",
+                adhesion_model_name(c.model), c.tip, seed, baseline.free_samples, baseline.samples,
+                fit.residual_rms / baseline.noise);
+    const std::vector<std::string> warnings = fit_warnings(segments, fit, 0.0, true);
+    EXPECT_TRUE(warnings.empty()) << c.tip << " seed " << seed << ": " << warnings.front();
+  }
+}
 
 // The real retract curves kept here have no reference values: the fit runs on each and gives
 // finite numbers with a status; what it gives is printed (docs/afm.md quotes it).

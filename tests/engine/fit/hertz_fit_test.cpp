@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/fit/adhesive_fit.hpp"
+#include "engine/fit/fit_warnings.hpp"
 #include "engine/fit/prepared_curve.hpp"
 #include "engine/fit/tip_shape.hpp"
 #include "engine/measured/read_force_curves.hpp"
@@ -344,6 +346,62 @@ INSTANTIATE_TEST_SUITE_P(
       const std::string tip = info.param.tip;
       return tip.substr(0, tip.find(':'));
     });
+
+// The warnings (fit_warnings.hpp): silent on the recovery designs above (750 free samples of
+// 1000, the residual at the noise), a short baseline where the record starts 20 samples before
+// contact, and a model that does not describe the curve where the force ripples in contact (a
+// cone's curve fitted as a paraboloid's, by contrast, leaves 1.2 times the noise: E and the
+// contact point absorb most of the shapes' difference, and the warning stays silent).
+TEST(HertzFitWarnings, FireOnlyOnCurvesThatDeserveThem) {
+  const fs::path folder =
+      fs::temp_directory_path() / ("mdrsim-hertz-warnings-" + std::to_string(getpid()));
+  fs::create_directories(folder);
+  const Truth designs[] = {{"parabolic:radius=1e-5", 15e3, 1.8e-5, 2e-10, 3e-4, 1e-6},
+                           {"sphere:radius=2e-6", 50e3, 5e-6, -1e-10, -2e-4, 1.5e-6},
+                           {"cone:half_angle_deg=35", 4e6, 1e-6, 0.0, 1e-3, 2e-7}};
+  const auto warnings_of = [](const PreparedSegment& segment, const HertzFitOptions& options) {
+    AdhesiveFit fit;
+    static_cast<HertzFit&>(fit) = fit_hertz(segment, options);
+    EXPECT_EQ(fit.status, FitStatus::fitted);
+    const FittedSegments segments{&segment, nullptr};
+    const BaselineReading baseline = read_baseline(segments, fit, 0.0, false);
+    std::printf("warnings hertz: free %zu of %zu, rms / noise %.3f\n", baseline.free_samples,
+                baseline.samples, fit.residual_rms / baseline.noise);
+    return fit_warnings(segments, fit, 0.0, false);
+  };
+  for (const Truth& truth : designs) {
+    HertzFitOptions options;
+    options.tip = parse_tip(truth.tip);
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const std::vector<std::string> warnings =
+          warnings_of(synthetic(truth, seed, folder), options);
+      EXPECT_TRUE(warnings.empty()) << truth.tip << " seed " << seed << ": " << warnings.front();
+    }
+  }
+  HertzFitOptions parabolic;
+  parabolic.tip = parse_tip("parabolic:radius=1e-5");
+  // A ripple in contact (ten waves of a tenth of the peak over the indentation, as a sample
+  // that buckles in turn), which no Hertz curve follows.
+  PreparedSegment rippled = synthetic(designs[0], 1, folder);
+  const double peak = *std::max_element(rippled.force.begin(), rippled.force.end());
+  for (std::size_t i = 0; i < rippled.force.size(); ++i) {
+    const double delta = designs[0].contact_point - rippled.tip_position[i];
+    if (delta > 0) {
+      rippled.force[i] += 0.1 * peak * std::sin(20 * std::numbers::pi * delta / designs[0].depth);
+    }
+  }
+  const std::vector<std::string> ripple = warnings_of(rippled, parabolic);
+  ASSERT_EQ(ripple.size(), 1u);
+  EXPECT_NE(ripple[0].find("does not describe the curve"), std::string::npos) << ripple[0];
+  // The record begun 20 samples before contact (750 of its 1000 lie before it).
+  PreparedSegment late = synthetic(designs[0], 1, folder);
+  late.tip_position.erase(late.tip_position.begin(), late.tip_position.begin() + 730);
+  late.force.erase(late.force.begin(), late.force.begin() + 730);
+  const std::vector<std::string> short_baseline = warnings_of(late, parabolic);
+  ASSERT_EQ(short_baseline.size(), 1u);
+  EXPECT_NE(short_baseline[0].find("short baseline"), std::string::npos) << short_baseline[0];
+  fs::remove_all(folder);
+}
 
 TEST(HertzFit, FlatCurveHasNoContact) {
   PreparedSegment segment;

@@ -108,13 +108,6 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
        "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      // The adhesive edge runs under normal fixed grips only.
-      {"AdhesionUnderFixedLoad",
-       replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
-                "normal = { by = -1.0e-4 }", "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
-       "v.toml:9:1: loading.stage: loading.stage.2.normal.control = \"fixed-load\" with "
-       "work_of_adhesion > 0 is not yet taken with material.relaxation (docs/viscoelastic.md "
-       "\"What it refuses\")"},
       // A tangential axis runs under fixed grips, and moves only under normal fixed grips.
       {"TangentialHeldForce",
        replaced(kViscous, "until = \"separation\"\n",
@@ -130,6 +123,17 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
        "v.toml:9:1: loading.stage: loading.stage.2.tangential moving under normal.control = "
        "\"fixed-load\" is not yet taken with material.relaxation (docs/viscoelastic.md \"What "
        "it refuses\")"},
+      // The held drive does not carry the glued springs' tangential arms: a held normal control
+      // after a shear is refused.
+      {"HeldNormalAfterShear",
+       replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                "normal = { by = -1.0e-4 }\nuntil = \"separation\"\nduration = 1.0\n",
+                "tangential = { control = \"fixed-grips\", by = 1e-6 }\nduration = 1.0\n"
+                "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
+                "until = \"separation\"\nduration = 1.0\n"),
+       "v.toml:9:1: loading.stage: loading.stage.3: normal.control = \"fixed-load\" after a stage "
+       "that moved the tangential axis is not yet taken with material.relaxation "
+       "(docs/viscoelastic.md \"What it refuses\")"},
       {"FixedLoad",
        replaced(kViscous, "normal = { by = -1.0e-4 }",
                 "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
@@ -145,13 +149,6 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
       {"Continuum", kViscous + "[solver]\nmethod = \"continuum\"\n",
        "v.toml:19:10: solver.method: a method other than \"event\" is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      {"Rtol", replaced(kViscous, "springs = 100", "rtol = 1e-3"),
-       "v.toml:17:8: discretization.rtol: rtol (give springs) is not yet taken with "
-       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      {"Richardson",
-       replaced(kViscous, "springs = 100", "springs = 100\nextrapolation = \"richardson\""),
-       "v.toml:18:17: discretization.extrapolation: extrapolation = \"richardson\" (give springs) "
-       "is not yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
   };
   for (const Refusal& r : refusals) {
     EXPECT_THROW_MSG(build(r.text), SceneError, r.message) << r.name;
@@ -174,6 +171,15 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
   const Scene adhesive =
       build(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"));
   EXPECT_EQ(adhesive.material.work_of_adhesion, 0.05);
+  // rtol alone and Richardson refine the viscoelastic row (the continuum route has no relaxing
+  // bulk, so rtol alone does not choose it).
+  const Scene by_rtol = build(replaced(kViscous, "springs = 100", "rtol = 1e-3"));
+  EXPECT_EQ(by_rtol.plan.engine, RouteEngine::program_row);
+  EXPECT_EQ(by_rtol.plan.driver, RouteDriver::rtol);
+  const Scene by_richardson =
+      build(replaced(kViscous, "springs = 100", "springs = 100\nextrapolation = \"richardson\""));
+  EXPECT_EQ(by_richardson.plan.engine, RouteEngine::program_row);
+  EXPECT_EQ(by_richardson.plan.driver, RouteDriver::richardson);
 }
 
 }  // namespace

@@ -1,0 +1,268 @@
+// Rows of the viscoelastic row combined: Richardson across N/4 ... 2N springs, and rtol by
+// doubling the springs until the estimates meet it.
+#include "engine/accuracy/viscoelastic_rows.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/program/run_viscoelastic_program.hpp"
+#include "engine/result/rtol_rule.hpp"
+
+namespace mdrsim {
+namespace {
+
+/// rtol's first row.
+constexpr std::int64_t kFirstViscoelasticSprings = 256;
+
+RunResult viscoelastic_row_of(const Scene& scene, std::int64_t springs,
+                              const ObserverList& observers) {
+  Scene row = scene;
+  row.springs = springs;
+  return run_viscoelastic_program(row, observers);
+}
+
+/// Whether the rows end alike (status, why a limit stopped them, stages, the critical point's
+/// presence and stage, a peak), so that their values are the same quantities.
+bool viscoelastic_rows_alike(std::span<const RunResult> rows) {
+  const RunResult& c = rows.back();
+  for (const RunResult* r = rows.data(); r != &c; ++r) {
+    if (r->status != c.status || r->stop_reason != c.stop_reason ||
+        r->stages.size() != c.stages.size() || r->critical.has_value() != c.critical.has_value() ||
+        r->critical_stage != c.critical_stage || r->peak.has_value() != c.peak.has_value()) {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// A value of the rows of N/4, N/2, N and 2N springs, whose error is c / N^p (the sum over the
+/// springs beside the integral, smooth in 1/N: p = 1; see event_time_order for p = 2) plus what
+/// is left of the edge's place between springs, which is not smooth: extrapolated,
+/// (2^p Q_2N - Q_N) / (2^p - 1) with twice the larger change of the last two extrapolations as
+/// its estimate (the last change alone can vanish by chance); plain, the finest row's own with
+/// the larger of |Q_2N - Q_N| and |Q_N - Q_N/2| / 2.
+struct ViscoelasticRowsValue {
+  double value = 0.0;
+  double error = 0.0;
+};
+ViscoelasticRowsValue viscoelastic_rows_value(double coarsest, double coarse, double middle,
+                                              double fine, bool extrapolate, int order) {
+  if (!extrapolate) {
+    return {fine, std::max(std::abs(fine - middle), 0.5 * std::abs(middle - coarse))};
+  }
+  const double factor = order == 2 ? 4.0 : 2.0;
+  const auto pair = [factor](double finer_row, double coarser_row) {
+    return (factor * finer_row - coarser_row) / (factor - 1.0);
+  };
+  const double finer = pair(fine, middle);
+  const double coarser = pair(middle, coarse);
+  const double coarsest_pair = pair(coarse, coarsest);
+  return {finer, 2.0 * std::max(std::abs(finer - coarser), std::abs(coarser - coarsest_pair))};
+}
+
+/// The order of an event time's error across the rows: 2 where its changes fall by 4 (within
+/// 10 %) at both doublings, else 1. A contact lost at zero force on a parabola is the first:
+/// its last spring, at x = a / N, leaves as the contact radius passes it, and the radius falls
+/// like the square root of the time left. Equal times (a stage of fixed duration) are exact
+/// either way.
+int event_time_order(double coarsest, double coarse, double middle, double fine) {
+  const double d1 = coarse - coarsest;
+  const double d2 = middle - coarse;
+  const double d3 = fine - middle;
+  if (d2 == 0.0 || d3 == 0.0) return 1;
+  const auto near_four = [](double ratio) { return std::abs(ratio - 4.0) <= 0.4; };
+  return near_four(d1 / d2) && near_four(d2 / d3) ? 2 : 1;
+}
+
+/// The finest of four rows with the values named in `covers` replaced by their values across
+/// the rows, and whether every estimate meets rtol.
+class ViscoelasticCombination {
+ public:
+  ViscoelasticCombination(std::span<const RunResult, 4> rows, bool extrapolate, double rtol)
+      : rows_(rows), extrapolate_(extrapolate), rtol_(rtol), result_(rows[3]) {}
+
+  /// The field `field(row)` of every row combined into the result's; its estimate, held to
+  /// rtol max(|value|, floor) where `floor` >= 0 (a negative floor: not held).
+  template <class Field>
+  double combine(Field field, double floor, int order = 1) {
+    const ViscoelasticRowsValue v = viscoelastic_rows_value(
+        field(rows_[0]), field(rows_[1]), field(rows_[2]), field(result_), extrapolate_, order);
+    field(result_) = v.value;
+    if (floor >= 0.0) met_ = met_ && meets_rtol(v.error, v.value, rtol_, floor);
+    return v.error;
+  }
+
+  /// The order of the error of the time `field` across the rows (event_time_order).
+  template <class Field>
+  int time_order(Field field) const {
+    return event_time_order(field(rows_[0]), field(rows_[1]), field(rows_[2]), field(result_));
+  }
+  RunResult& result() { return result_; }
+  bool met() const { return met_; }
+
+ private:
+  std::span<const RunResult, 4> rows_;
+  bool extrapolate_;
+  double rtol_;
+  RunResult result_;
+  bool met_ = true;
+};
+
+/// Every term of a stage's energy balance combined as its work is, so that the combined
+/// balance closes as each row's does (the combination is linear); no estimates of their own.
+void combine_viscoelastic_energy(ViscoelasticCombination& c, std::size_t k) {
+  if (!c.result().stages[k].energy) return;
+  const auto term = [&](double EnergyBalance::*member) {
+    c.combine(
+        [&](auto& r) -> auto& { return (*r.stages[k].energy).*member; }, -1.0);
+  };
+  for (double EnergyBalance::*member :
+       {&EnergyBalance::machine_work, &EnergyBalance::stored_change, &EnergyBalance::surface_change,
+        &EnergyBalance::dissipated_by_friction, &EnergyBalance::dissipated_by_bulk,
+        &EnergyBalance::jump_losses, &EnergyBalance::residual}) {
+    term(member);
+  }
+}
+
+struct ViscoelasticCombined {
+  RunResult result;
+  bool met = true;  ///< every estimate meets rtol (of the call)
+};
+
+/// The finest of four rows (N/4, N/2, N, 2N springs) with the stages' end forces, times and
+/// works, the peak tension and the totals replaced by their values across the rows, and their
+/// estimates. The critical point stays the finest row's: it sits on a spring, the same spring
+/// of every row of a doubling sequence, and the force still varies along the branch there, so
+/// the rows agree on a value O(1/N) off that their changes do not show; so do the stage end
+/// times of a run that has one (the glue's loss ends its stage at the critical point's time).
+ViscoelasticCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, bool extrapolate,
+                                               double rtol) {
+  ViscoelasticCombination c(rows, extrapolate, rtol);
+  RunResult& r = c.result();
+  double force_scale = r.peak ? std::abs(r.peak->normal_force) : 0.0;
+  double work_scale = 1e-300;
+  for (const StageRecord& s : r.stages) {
+    force_scale = std::max(force_scale, std::abs(s.end.normal_force));
+    work_scale += std::abs(s.work.normal) + std::abs(s.work.bulk);
+  }
+  // A stage's end force is held to rtol of the path's largest force (a stage may end at zero
+  // force, where its relative error has no meaning), a time to rtol of the program's duration.
+  const double force_floor = 1e-300 + force_scale;
+  const double time_floor = 1e-300 + (r.stages.empty() ? 0.0 : std::abs(r.stages.back().end.time));
+  if (r.peak) {
+    r.accuracy.peak_error_estimate = c.combine(
+        [](auto& q) -> auto& { return q.peak->normal_force; }, force_floor);
+  }
+  AxisWork total;
+  AxisWork total_error;
+  EnergyBalance total_energy;
+  for (std::size_t k = 0; k < r.stages.size(); ++k) {
+    StageRecord& s = r.stages[k];
+    s.normal_force_error_estimate = c.combine(
+        [k](auto& q) -> auto& { return q.stages[k].end.normal_force; }, force_floor);
+    if (!r.critical) {
+      // Under fixed grips the depth is the held depth at the end's time: it moves with it.
+      const auto time = [k](auto& q) -> auto& { return q.stages[k].end.time; };
+      const int order = c.time_order(time);
+      s.time_error_estimate = c.combine(time, time_floor, order);
+      c.combine(
+          [k](auto& q) -> auto& { return q.stages[k].end.indentation; }, -1.0, order);
+      c.combine(
+          [k](auto& q) -> auto& { return q.stages[k].end.normal_control; }, -1.0, order);
+    }
+    AxisWork error;
+    error.normal = c.combine(
+        [k](auto& q) -> auto& { return q.stages[k].work.normal; }, work_scale);
+    error.bulk = c.combine(
+        [k](auto& q) -> auto& { return q.stages[k].work.bulk; }, work_scale);
+    s.work_error_estimate = error;
+    combine_viscoelastic_energy(c, k);
+    total += s.work;
+    total_error += error;
+    if (s.energy) total_energy += *s.energy;
+  }
+  r.work = total;
+  if (r.energy) r.energy = total_energy;
+  r.accuracy.work_error_estimate = total_error;
+  r.accuracy.covers = {"stages.end.normal_force", "stages.work", "work"};
+  if (!r.critical) r.accuracy.covers.insert(r.accuracy.covers.begin() + 1, "stages.end_time");
+  if (r.peak) r.accuracy.covers.insert(r.accuracy.covers.begin(), "peak_adhesion.normal_force");
+  r.accuracy.rows = {rows[0].springs, rows[1].springs, rows[2].springs, r.springs};
+  const bool met = c.met();
+  return {std::move(r), met};
+}
+
+}  // namespace
+
+RunResult run_viscoelastic_richardson(const Scene& scene, const ObserverList& observers) {
+  const std::int64_t n = scene.springs;
+  const std::array<RunResult, 4> rows{
+      viscoelastic_row_of(scene, n / 4, {}), viscoelastic_row_of(scene, n / 2, {}),
+      viscoelastic_row_of(scene, n, {}), viscoelastic_row_of(scene, 2 * n, observers)};
+  RunResult result;
+  if (viscoelastic_rows_alike(rows)) {
+    result = combine_viscoelastic_rows(rows, true, 0.0).result;
+  } else {
+    result = rows.back();
+    result.accuracy.rows = {n / 4, n / 2, n, 2 * n};
+    result.warnings.push_back(fmt::format(
+        "richardson: the rows of {}, {}, {} and {} springs end differently; the finest row is "
+        "reported as it is",
+        n / 4, n / 2, n, 2 * n));
+  }
+  result.counts = RunCounts{};
+  for (const RunResult& row : rows) result.counts += row.counts;
+  result.accuracy.route = Accuracy::Route::richardson;
+  result.accuracy.rtol_met = true;
+  return result;
+}
+
+RunResult run_viscoelastic_rtol(const Scene& scene, double rtol, const ObserverList& observers) {
+  const bool extrapolate =
+      scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::none;
+  const std::int64_t cap = scene.discretization.max_row_springs;
+  std::vector<RunResult> rows;  // the last four
+  RunCounts counts;
+  std::int64_t springs = kFirstViscoelasticSprings;
+  RunResult result;
+  for (;;) {
+    rows.push_back(viscoelastic_row_of(scene, springs, {}));
+    counts += rows.back().counts;
+    if (rows.size() > 4) rows.erase(rows.begin());
+    std::optional<ViscoelasticCombined> combined;
+    if (rows.size() == 4 && viscoelastic_rows_alike(rows)) {
+      combined = combine_viscoelastic_rows(std::span<const RunResult, 4>(rows.data(), 4),
+                                           extrapolate, rtol);
+      if (combined->met) {
+        result = std::move(combined->result);
+        result.accuracy.rtol_met = true;
+        break;
+      }
+    }
+    if (2 * springs > cap) {
+      result = combined ? std::move(combined->result) : rows.back();
+      result.accuracy.rtol_met = false;
+      result.warnings.push_back(fmt::format(
+          "rtol: the rows reached {} springs without every estimate within rtol = {:.3g}; the "
+          "finest rows are reported",
+          springs, rtol));
+      break;
+    }
+    springs *= 2;
+  }
+  // The finest row once more for its events (the rows are deterministic).
+  if (!observers.empty()) viscoelastic_row_of(scene, result.springs, observers);
+  result.counts = counts;
+  result.accuracy.route = extrapolate ? Accuracy::Route::richardson : Accuracy::Route::row;
+  return result;
+}
+
+}  // namespace mdrsim
