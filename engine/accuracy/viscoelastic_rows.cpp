@@ -2,17 +2,13 @@
 // doubling the springs until the estimates meet it.
 #include "engine/accuracy/viscoelastic_rows.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
-#include <optional>
 #include <span>
 #include <string>
-#include <vector>
 
+#include "engine/accuracy/doubling_rows.hpp"
 #include "engine/program/run_viscoelastic_program.hpp"
 #include "engine/result/rtol_rule.hpp"
 
@@ -43,31 +39,6 @@ bool viscoelastic_rows_alike(std::span<const RunResult> rows) {
   return true;
 }
 
-/// A value of the rows of N/4, N/2, N and 2N springs, whose error is c / N^p (the sum over the
-/// springs beside the integral, smooth in 1/N: p = 1; see event_time_order for p = 2) plus what
-/// is left of the edge's place between springs, which is not smooth: extrapolated,
-/// (2^p Q_2N - Q_N) / (2^p - 1) with twice the larger change of the last two extrapolations as
-/// its estimate (the last change alone can vanish by chance); plain, the finest row's own with
-/// the larger of |Q_2N - Q_N| and |Q_N - Q_N/2| / 2.
-struct ViscoelasticRowsValue {
-  double value = 0.0;
-  double error = 0.0;
-};
-ViscoelasticRowsValue viscoelastic_rows_value(double coarsest, double coarse, double middle,
-                                              double fine, bool extrapolate, int order) {
-  if (!extrapolate) {
-    return {fine, std::max(std::abs(fine - middle), 0.5 * std::abs(middle - coarse))};
-  }
-  const double factor = order == 2 ? 4.0 : 2.0;
-  const auto pair = [factor](double finer_row, double coarser_row) {
-    return (factor * finer_row - coarser_row) / (factor - 1.0);
-  };
-  const double finer = pair(fine, middle);
-  const double coarser = pair(middle, coarse);
-  const double coarsest_pair = pair(coarse, coarsest);
-  return {finer, 2.0 * std::max(std::abs(finer - coarser), std::abs(coarser - coarsest_pair))};
-}
-
 /// The order of an event time's error across the rows: 2 where its changes fall by 4 (within
 /// 10 %) at both doublings, else 1. A contact lost at zero force on a parabola is the first:
 /// its last spring, at x = a / N, leaves as the contact radius passes it, and the radius falls
@@ -93,8 +64,8 @@ class ViscoelasticCombination {
   /// rtol max(|value|, floor) where `floor` >= 0 (a negative floor: not held).
   template <class Field>
   double combine(Field field, double floor, int order = 1) {
-    const ViscoelasticRowsValue v = viscoelastic_rows_value(
-        field(rows_[0]), field(rows_[1]), field(rows_[2]), field(result_), extrapolate_, order);
+    const DoublingValue v = doubling_value(field(rows_[0]), field(rows_[1]), field(rows_[2]),
+                                           field(result_), extrapolate_, order);
     field(result_) = v.value;
     if (floor >= 0.0) met_ = met_ && meets_rtol(v.error, v.value, rtol_, floor);
     return v.error;
@@ -132,19 +103,14 @@ void combine_viscoelastic_energy(ViscoelasticCombination& c, std::size_t k) {
   }
 }
 
-struct ViscoelasticCombined {
-  RunResult result;
-  bool met = true;  ///< every estimate meets rtol (of the call)
-};
-
 /// The finest of four rows (N/4, N/2, N, 2N springs) with the stages' end forces, times and
 /// works, the peak tension and the totals replaced by their values across the rows, and their
 /// estimates. The critical point stays the finest row's: it sits on a spring, the same spring
 /// of every row of a doubling sequence, and the force still varies along the branch there, so
 /// the rows agree on a value O(1/N) off that their changes do not show; so do the stage end
 /// times of a run that has one (the glue's loss ends its stage at the critical point's time).
-ViscoelasticCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, bool extrapolate,
-                                               double rtol) {
+DoublingCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, bool extrapolate,
+                                           double rtol) {
   ViscoelasticCombination c(rows, extrapolate, rtol);
   RunResult& r = c.result();
   double force_scale = r.peak ? std::abs(r.peak->normal_force) : 0.0;
@@ -200,69 +166,25 @@ ViscoelasticCombined combine_viscoelastic_rows(std::span<const RunResult, 4> row
   return {std::move(r), met};
 }
 
+DoublingRows viscoelastic_rows(const Scene& scene) {
+  return {[&scene](std::int64_t springs, const ObserverList& observers) {
+            return viscoelastic_row_of(scene, springs, observers);
+          },
+          viscoelastic_rows_alike, combine_viscoelastic_rows};
+}
+
 }  // namespace
 
 RunResult run_viscoelastic_richardson(const Scene& scene, const ObserverList& observers) {
-  const std::int64_t n = scene.springs;
-  const std::array<RunResult, 4> rows{
-      viscoelastic_row_of(scene, n / 4, {}), viscoelastic_row_of(scene, n / 2, {}),
-      viscoelastic_row_of(scene, n, {}), viscoelastic_row_of(scene, 2 * n, observers)};
-  RunResult result;
-  if (viscoelastic_rows_alike(rows)) {
-    result = combine_viscoelastic_rows(rows, true, 0.0).result;
-  } else {
-    result = rows.back();
-    result.accuracy.rows = {n / 4, n / 2, n, 2 * n};
-    result.warnings.push_back(fmt::format(
-        "richardson: the rows of {}, {}, {} and {} springs end differently; the finest row is "
-        "reported as it is",
-        n / 4, n / 2, n, 2 * n));
-  }
-  result.counts = RunCounts{};
-  for (const RunResult& row : rows) result.counts += row.counts;
-  result.accuracy.route = Accuracy::Route::richardson;
-  result.accuracy.rtol_met = true;
-  return result;
+  return run_doubling_richardson(scene.springs, observers, viscoelastic_rows(scene));
 }
 
 RunResult run_viscoelastic_rtol(const Scene& scene, double rtol, const ObserverList& observers) {
   const bool extrapolate =
       scene.discretization.extrapolation != DiscretizationOptions::Extrapolation::none;
-  const std::int64_t cap = scene.discretization.max_row_springs;
-  std::vector<RunResult> rows;  // the last four
-  RunCounts counts;
-  std::int64_t springs = kFirstViscoelasticSprings;
-  RunResult result;
-  for (;;) {
-    rows.push_back(viscoelastic_row_of(scene, springs, {}));
-    counts += rows.back().counts;
-    if (rows.size() > 4) rows.erase(rows.begin());
-    std::optional<ViscoelasticCombined> combined;
-    if (rows.size() == 4 && viscoelastic_rows_alike(rows)) {
-      combined = combine_viscoelastic_rows(std::span<const RunResult, 4>(rows.data(), 4),
-                                           extrapolate, rtol);
-      if (combined->met) {
-        result = std::move(combined->result);
-        result.accuracy.rtol_met = true;
-        break;
-      }
-    }
-    if (2 * springs > cap) {
-      result = combined ? std::move(combined->result) : rows.back();
-      result.accuracy.rtol_met = false;
-      result.warnings.push_back(fmt::format(
-          "rtol: the rows reached {} springs without every estimate within rtol = {:.3g}; the "
-          "finest rows are reported",
-          springs, rtol));
-      break;
-    }
-    springs *= 2;
-  }
-  // The finest row once more for its events (the rows are deterministic).
-  if (!observers.empty()) viscoelastic_row_of(scene, result.springs, observers);
-  result.counts = counts;
-  result.accuracy.route = extrapolate ? Accuracy::Route::richardson : Accuracy::Route::row;
-  return result;
+  return run_doubling_rtol(rtol, extrapolate, kFirstViscoelasticSprings,
+                           scene.discretization.max_row_springs, observers,
+                           viscoelastic_rows(scene));
 }
 
 }  // namespace mdrsim
