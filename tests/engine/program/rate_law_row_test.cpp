@@ -165,8 +165,9 @@ TEST(RateLawRow, EachLetGoIsAnEventWithItsTime) {
   LetGoEvents let_gos;
   ObserverList observers;
   observers.add(let_gos);
-  const RunResult r =
-      run_scene(test::build_scene_text(row_rate_law_scene(1.0, 0.5, row_of(1000))), observers);
+  // The scene outlives the run: an event's stage is a view of its stage's name.
+  const Scene scene = test::build_scene_text(row_rate_law_scene(1.0, 0.5, row_of(1000)));
+  const RunResult r = run_scene(scene, observers);
   ASSERT_TRUE(r.critical);
   ASSERT_EQ(let_gos.events.size(), 1000u);
   EXPECT_EQ(r.counts.events, 1000);
