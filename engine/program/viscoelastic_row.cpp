@@ -24,6 +24,19 @@ namespace {
 /// pressed: in contact, pushing only; glued: in contact, holding tension too.
 enum class ViscoelasticSpringPhase { untouched, pressed, glued, free };
 
+/// A spring's tangential arms: while glued, the member and u_x where the spring's tangential
+/// stretch is zero; otherwise the free creep of what a let-go left; the energy counted as the
+/// normal arms' is.
+struct ViscoelasticSpringShear {
+  SharedDriveMember member;
+  double origin = 0.0;  ///< [m]
+  std::optional<FreeSpringCreep> creep;
+  double free_since = 0.0;  ///< [s]
+  double counted_stretch = 0.0;
+  FewValues<double> counted_stresses;
+  double counted_stored = 0.0;
+};
+
 struct ViscoelasticSpringState {
   ViscoelasticSpringPhase phase = ViscoelasticSpringPhase::untouched;
   SharedDriveMember member;              ///< while pressed or glued
@@ -37,15 +50,9 @@ struct ViscoelasticSpringState {
   double counted_stretch = 0.0;
   FewValues<double> counted_stresses;
   double counted_stored = 0.0;
-  /// The tangential arms (a tangential drive only): while glued, the member and u_x where the
-  /// spring's tangential stretch is zero; otherwise the free creep of what a let-go left.
-  SharedDriveMember tangential_member;
-  double tangential_origin = 0.0;  ///< [m]
-  std::optional<FreeSpringCreep> tangential_creep;
-  double tangential_free_since = 0.0;  ///< [s]
-  double counted_tangential_stretch = 0.0;
-  FewValues<double> counted_tangential_stresses;
-  double counted_tangential_stored = 0.0;
+  /// The tangential arms, made when the spring first glues under a tangential drive (so that a
+  /// row without one carries none of them, O(1) numbers a spring).
+  std::unique_ptr<ViscoelasticSpringShear> shear;
   std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
 };
 
@@ -325,10 +332,9 @@ class ViscoelasticRowDrive::Row {
       }
       if (!tangential_on_) continue;
       if (s.phase == ViscoelasticSpringPhase::glued) {
-        stored.add(
-            tangential_stored_of(s.counted_tangential_stretch, s.counted_tangential_stresses));
-      } else if (s.tangential_creep) {
-        stored.add(s.counted_tangential_stored);
+        stored.add(tangential_stored_of(s.shear->counted_stretch, s.shear->counted_stresses));
+      } else if (s.shear && s.shear->creep) {
+        stored.add(s.shear->counted_stored);
       }
     }
     e.stored = stored.value();
@@ -538,9 +544,13 @@ class ViscoelasticRowDrive::Row {
     const ViscoelasticSpringState& s = state_[k];
     const ViscoelasticEdge& edge = *springs_.edge;
     if (!edge.criterion) return false;
-    double load = tangential_relaxed() * (tangential_ - s.tangential_origin);
-    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
-      load += tangential_arms_.stress(s.tangential_member, j);
+    // A spring without tangential arms (no tangential drive yet) carries no tangential load.
+    double load = 0.0;
+    if (s.shear) {
+      load = tangential_relaxed() * (tangential_ - s.shear->origin);
+      for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+        load += tangential_arms_.stress(s.shear->member, j);
+      }
     }
     const double x = springs_.spacing * static_cast<double>(k + 1);
     return edge.criterion->margin({0.0, load / edge.glassy_shear_modulus, x}) <= 0.0;
@@ -680,64 +690,65 @@ class ViscoelasticRowDrive::Row {
   /// A spring glues with no tangential step: its stretch goes on from where its free creep
   /// stands (zero for a fresh spring) as u_x moves.
   void glue_tangentially(ViscoelasticSpringState& s) {
+    if (!s.shear) s.shear = std::make_unique<ViscoelasticSpringShear>();
     FewValues<double> stresses(tangential_terms_.size(), 0.0);
     double stretch = 0.0;
-    if (s.tangential_creep) {
+    if (s.shear->creep) {
       count_tangential_free(s);
-      const double t = time_ - s.tangential_free_since;
-      stresses = s.tangential_creep->stresses(t);
-      stretch = s.tangential_creep->stretch(t);
-      s.tangential_creep.reset();
+      const double t = time_ - s.shear->free_since;
+      stresses = s.shear->creep->stresses(t);
+      stretch = s.shear->creep->stretch(t);
+      s.shear->creep.reset();
     }
-    s.tangential_origin = tangential_ - stretch;
-    s.tangential_member = tangential_arms_.enter(stresses, 1.0);
-    s.counted_tangential_stretch = stretch;
-    s.counted_tangential_stresses = stresses;
-    glued_origins_.add(s.tangential_origin);
+    s.shear->origin = tangential_ - stretch;
+    s.shear->member = tangential_arms_.enter(stresses, 1.0);
+    s.shear->counted_stretch = stretch;
+    s.shear->counted_stresses = stresses;
+    glued_origins_.add(s.shear->origin);
   }
 
   /// The glued spring s lets go (counted up to now): its tangential stretch steps by -q_x / G_0
   /// to zero load, releasing q_x^2 / (2 G_0), and it creeps free from there.
   void let_go_tangentially(ViscoelasticSpringState& s) {
-    FewValues<double> stresses = tangential_arms_.leave(s.tangential_member);
-    const double stretch = tangential_ - s.tangential_origin;
+    FewValues<double> stresses = tangential_arms_.leave(s.shear->member);
+    const double stretch = tangential_ - s.shear->origin;
     const double load = tangential_relaxed() * stretch + sum_of(stresses);
     const double before = tangential_stored_of(stretch, stresses);
     glassy_step(stresses, tangential_terms_, -load / springs_.edge->glassy_shear_modulus);
     const double after = tangential_stored_of(-sum_of(stresses) / tangential_relaxed(), stresses);
     jump_losses_.add(before - after);
-    glued_origins_.add(-s.tangential_origin);
-    s.tangential_creep.emplace(tangential_modes_, stresses);
-    s.tangential_free_since = time_;
-    s.counted_tangential_stored = after;
+    glued_origins_.add(-s.shear->origin);
+    s.shear->creep.emplace(tangential_modes_, stresses);
+    s.shear->free_since = time_;
+    s.shear->counted_stored = after;
   }
 
   /// A glued spring's tangential work and dissipation over the last `h` [s], u_x' unchanged.
   void count_tangential(ViscoelasticSpringState& s, double h) {
-    const double w0 = s.counted_tangential_stretch;
+    const double w0 = s.shear->counted_stretch;
     const double rate = tangential_rate_;
     double load_integral = tangential_relaxed() * (w0 * h + 0.5 * rate * h * h);
     double dissipated = 0.0;
     for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
       const PronyTerm& term = tangential_terms_[j];
       const ArmStressIntegrals i =
-          arm_stress_integrals(term, s.counted_tangential_stresses[j], rate, h);
+          arm_stress_integrals(term, s.shear->counted_stresses[j], rate, h);
       load_integral += i.stress;
       dissipated += i.square / (term.modulus * term.time);
-      s.counted_tangential_stresses[j] = tangential_arms_.stress(s.tangential_member, j);
+      s.shear->counted_stresses[j] = tangential_arms_.stress(s.shear->member, j);
     }
     tangential_work_.add(rate * load_integral);
     dissipated_.add(dissipated);
-    s.counted_tangential_stretch = tangential_ - s.tangential_origin;
+    s.shear->counted_stretch = tangential_ - s.shear->origin;
   }
 
   /// A free tangential creep's dissipation from its last count to now: what it stores less.
   void count_tangential_free(ViscoelasticSpringState& s) {
-    const double t = time_ - s.tangential_free_since;
+    const double t = time_ - s.shear->free_since;
     const double stored =
-        tangential_stored_of(s.tangential_creep->stretch(t), s.tangential_creep->stresses(t));
-    dissipated_.add(s.counted_tangential_stored - stored);
-    s.counted_tangential_stored = stored;
+        tangential_stored_of(s.shear->creep->stretch(t), s.shear->creep->stresses(t));
+    dissipated_.add(s.shear->counted_stored - stored);
+    s.shear->counted_stored = stored;
   }
 
   /// A free spring's dissipation from its last count to now: the energy it stores less.
@@ -759,7 +770,7 @@ class ViscoelasticRowDrive::Row {
     }
     if (!tangential_on_) return;
     for (ViscoelasticSpringState& s : state_) {
-      if (s.phase != ViscoelasticSpringPhase::glued && s.tangential_creep) {
+      if (s.phase != ViscoelasticSpringPhase::glued && s.shear && s.shear->creep) {
         count_tangential_free(s);
       }
     }
@@ -1282,10 +1293,10 @@ class ViscoelasticRowDrive::Row {
     const ExponentialSum normal = load_over(s, stretch);
     FewValues<double> stresses(tangential_terms_.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) {
-      stresses[j] = tangential_arms_.stress(s.tangential_member, j);
+      stresses[j] = tangential_arms_.stress(s.shear->member, j);
     }
     const ExponentialSum tangential =
-        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.tangential_origin,
+        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
                        stresses, tangential_rate_);
     const ViscoelasticEdge& edge = *springs_.edge;
     const double x = springs_.spacing * static_cast<double>(k + 1);
