@@ -133,7 +133,8 @@ bool holds_other_than_depth(const Program& program) {
 }
 
 /// A stage under a fixed load or a machine spring: its held value h moves linearly in time, the
-/// depth following the row (viscoelastic_row.hpp). Until separation it runs in pieces of the
+/// depth following the row (viscoelastic_row.hpp), and u_x moves by `tangential` (its motion
+/// over the stage parameter) as under fixed grips. Until separation it runs in pieces of the
 /// stage parameter's unit until the contact is lost; whether it was is returned with h there.
 struct HeldStageEnd {
   double held;
@@ -141,15 +142,19 @@ struct HeldStageEnd {
 };
 
 HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
-                            const AffineConstraint& control, double held, bool stop_at_loss,
+                            const AffineConstraint& control, double held,
+                            const AxisMotion& tangential, bool stop_at_loss,
                             const ViscoelasticRowDrive::OnChange& on_change) {
   const AxisMotion m = axis_motion(stage.normal, held);
-  const double seconds = seconds_per_parameter(stage, m.rate);
+  // The reader leaves a stage with a speed one moving axis.
+  const double seconds = seconds_per_parameter(stage, m.rate != 0.0 ? m.rate : tangential.rate);
   const double rate = seconds > 0.0 ? m.rate / seconds : 0.0;
+  const double tangential_rate = seconds > 0.0 ? tangential.rate / seconds : 0.0;
   std::vector<ViscoelasticRowSample> no_samples;
   if (!stage.until_separation) {
     const double start = drive.sample().time;
-    const bool lost = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}},
+    const bool lost = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate},
+                                 tangential_rate, tangential.at(1.0, false)},
                                 stop_at_loss, {}, no_samples, on_change);
     if (lost) return {held + rate * (drive.sample().time - start), true};
     return {m.end.value_or(held + m.rate), false};
@@ -159,8 +164,9 @@ HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
   for (int piece = 0; piece < kMostSeparationPieces && !separated && rate < 0.0 && !drive.limited();
        ++piece) {
     const double start = drive.sample().time;
-    separated = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}}, true,
-                          {}, no_samples, on_change);
+    separated = drive.run(
+        {seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}, tangential_rate}, true,
+        {}, no_samples, on_change);
     held += rate * (drive.sample().time - start);
   }
   return {held, separated};
@@ -284,14 +290,14 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     const AxisMotion tangential = axis_motion(stage.tangential, held_tangential);
     const ViscoelasticStageDrive sd = stage_drive(stage, held, tangential.rate);
     const double rate = sd.rate();
-    // u_x moves linearly over the stage (normal fixed grips: the reader refuses the rest).
+    // u_x moves linearly over the stage, under any normal control.
     const double tangential_rate = sd.seconds > 0.0 ? tangential.rate / sd.seconds : 0.0;
     std::optional<ViscoelasticCascade> flight;
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
       hold_let_gos = adhesive && !drives_through_spring(control);
       const HeldStageEnd held_end =
-          run_held_stage(drive, stage, control, held, hold_let_gos, on_change);
+          run_held_stage(drive, stage, control, held, tangential, hold_let_gos, on_change);
       held = held_end.held;
       if (hold_let_gos && held_end.separated) {
         // The flight: the stage ends at the critical point, the first let-go told, the rest not.

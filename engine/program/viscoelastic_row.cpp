@@ -16,6 +16,7 @@
 #include "engine/model/prony_creep.hpp"
 #include "engine/model/prony_load_drive.hpp"
 #include "engine/model/prony_shared_drive.hpp"
+#include "engine/model/prony_shared_energy.hpp"
 #include "engine/model/viscoelastic_edge.hpp"
 
 namespace mdrsim {
@@ -423,9 +424,14 @@ class ViscoelasticRowDrive::Row {
     if (held_) {
       // The held search finds every spring's event afresh; only k's indexes change.
       ++s.version;
-      const bool left =
-          change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
-      index_change(k, left);
+      if (change == ViscoelasticRowChange::let_go && s.phase == ViscoelasticSpringPhase::pressed) {
+        // Its glue broken by its tangential load alone, it stays pressed: its normal arms stay.
+        pressed_keys_.push({pressed_key(k), k, s.version});
+      } else {
+        const bool left =
+            change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
+        index_change(k, left);
+      }
       held_glassy_step(held_load_before);
       rebuild_motion();
       note_let_go_run(change, machine_before, surface_before, losses_before);
@@ -644,6 +650,7 @@ class ViscoelasticRowDrive::Row {
       }
       s.counted_at = time_;
       s.counted_stretch = depth_ - image;
+      if (tangential_on_ && s.phase == ViscoelasticSpringPhase::glued) note_tangential(s);
       return;
     }
     const double h = time_ - s.counted_at;
@@ -701,6 +708,7 @@ class ViscoelasticRowDrive::Row {
       s.shear->creep.reset();
     }
     s.shear->origin = tangential_ - stretch;
+    if (held_) tangential_own_squares_.change(tangential_arms_, stresses, 1.0);
     s.shear->member = tangential_arms_.enter(stresses, 1.0);
     s.shear->counted_stretch = stretch;
     s.shear->counted_stresses = stresses;
@@ -711,6 +719,7 @@ class ViscoelasticRowDrive::Row {
   /// to zero load, releasing q_x^2 / (2 G_0), and it creeps free from there.
   void let_go_tangentially(ViscoelasticSpringState& s) {
     FewValues<double> stresses = tangential_arms_.leave(s.shear->member);
+    if (held_) tangential_own_squares_.change(tangential_arms_, stresses, -1.0);
     const double stretch = tangential_ - s.shear->origin;
     const double load = tangential_relaxed() * stretch + sum_of(stresses);
     const double before = tangential_stored_of(stretch, stresses);
@@ -740,6 +749,29 @@ class ViscoelasticRowDrive::Row {
     tangential_work_.add(rate * load_integral);
     dissipated_.add(dissipated);
     s.shear->counted_stretch = tangential_ - s.shear->origin;
+  }
+
+  /// A glued spring's tangential arms where they stand now, in a held segment (which counts the
+  /// work and the dissipation of all glued springs together, count_held_tangential_piece).
+  void note_tangential(ViscoelasticSpringState& s) {
+    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+      s.shear->counted_stresses[j] = tangential_arms_.stress(s.shear->member, j);
+    }
+    s.shear->counted_stretch = tangential_ - s.shear->origin;
+  }
+
+  /// The glued springs' tangential work and dissipation over the next h [s] of a held segment,
+  /// all at once: u_x moves at its rate as under fixed grips, whatever the depth does.
+  void count_held_tangential_piece(double h) {
+    const double n = tangential_arms_.weight();
+    const double stretches = n * tangential_ - glued_origins_.value();
+    const SharedArmsPiece arms =
+        shared_arms_linear_piece(tangential_arms_, tangential_own_squares_, tangential_rate_, h);
+    const double load_integral =
+        tangential_relaxed() * (stretches * h + 0.5 * n * tangential_rate_ * h * h) +
+        arms.load_integral;
+    tangential_work_.add(tangential_rate_ * load_integral);
+    dissipated_.add(arms.dissipated);
   }
 
   /// A free tangential creep's dissipation from its last count to now: what it stores less.
@@ -877,8 +909,15 @@ class ViscoelasticRowDrive::Row {
       }
       depth_ = motion_.at(h);
       motion_ = shifted(motion_, h);
+      if (tangential_on_) {
+        count_held_tangential_piece(h);
+        tangential_arms_.advance(tangential_rate_, h);
+        tangential_own_squares_.advance(tangential_terms_, h);
+      }
     }
     time_ = t;
+    tangential_ =
+        t == end_ ? end_tangential_ : segment_tangential_ + tangential_rate_ * (t - segment_start_);
   }
 
   /// The machine's work and the pressed springs' dissipation over the next h [s] of motion_, all
@@ -977,6 +1016,7 @@ class ViscoelasticRowDrive::Row {
     free_expiry_ = {};
     free_generation_.resize(state_.size(), 0);
     own_squares_.assign(springs_.terms.size(), 0.0);
+    tangential_own_squares_.reset(tangential_terms_.size());
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
       if (s.phase == ViscoelasticSpringPhase::untouched) {
@@ -989,6 +1029,13 @@ class ViscoelasticRowDrive::Row {
         for (std::size_t j = 0; j < own_squares_.size(); ++j) {
           const double delta = arms_.stress(s.member, j) - arms_.history(j);
           own_squares_[j] += delta * delta;
+        }
+        if (tangential_on_ && s.phase == ViscoelasticSpringPhase::glued) {
+          FewValues<double> stresses(tangential_terms_.size());
+          for (std::size_t j = 0; j < stresses.size(); ++j) {
+            stresses[j] = tangential_arms_.stress(s.shear->member, j);
+          }
+          tangential_own_squares_.change(tangential_arms_, stresses, 1.0);
         }
       } else {
         push_free_key(k, free_key_horizon());
@@ -1115,6 +1162,13 @@ class ViscoelasticRowDrive::Row {
                                           const ExponentialSum& shared) const {
     if (boundary() != k) return std::nullopt;
     const ExponentialSum load = held_load(k, shared);
+    // A tangential load joins the criterion (u_x moves as under fixed grips, apart from d).
+    if (tangential_on_ && springs_.edge->criterion) {
+      const double limit_load = springs_.edge->let_go_loads[k];
+      if (limit_load > 0.0 && std::isfinite(limit_load)) {
+        return tangential_let_go_delay(k, load, limit);
+      }
+    }
     const double level = -springs_.edge->let_go_loads[k];
     const double slack = load.at(0.0) - level;
     const double slope = load.slope_at(0.0);
@@ -1222,7 +1276,9 @@ class ViscoelasticRowDrive::Row {
       if (boundary() != k) return std::nullopt;
       if (tangential_on_ && springs_.edge->criterion) {
         const double limit = springs_.edge->let_go_loads[k];
-        if (limit > 0.0 && std::isfinite(limit)) return tangential_let_go_delay(k, stretch);
+        if (limit > 0.0 && std::isfinite(limit)) {
+          return tangential_let_go_delay(k, load_over(s, stretch), span);
+        }
       }
       ExponentialSum load = load_over(s, stretch);
       const double level = -springs_.edge->let_go_loads[k];
@@ -1287,10 +1343,10 @@ class ViscoelasticRowDrive::Row {
   /// bracket the let-go; where both shrink it rises and holds none; where they part the margin
   /// is read on a grid, and a dip below 0 and back within one step of it is missed. The
   /// bracket is bisected to the last bit.
-  std::optional<double> tangential_let_go_delay(std::size_t k, double stretch) const {
+  /// `normal` is its normal line load from now, over the next `span` [s].
+  std::optional<double> tangential_let_go_delay(std::size_t k, const ExponentialSum& normal,
+                                                double span) const {
     const ViscoelasticSpringState& s = state_[k];
-    const double span = end_ - time_;
-    const ExponentialSum normal = load_over(s, stretch);
     FewValues<double> stresses(tangential_terms_.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) {
       stresses[j] = tangential_arms_.stress(s.shear->member, j);
@@ -1409,7 +1465,9 @@ class ViscoelasticRowDrive::Row {
   std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyExpiresLater> free_expiry_;
   std::vector<std::uint32_t> free_generation_;
   std::vector<double> own_squares_;  ///< sum_i delta_ij^2 over the pressed springs [N^2/m^2]
-  ExponentialSum motion_;            ///< the depth from now in a held segment [m]
+  /// The same of the glued springs' tangential arms, in a held segment.
+  SharedArmOwnSquares tangential_own_squares_;
+  ExponentialSum motion_;  ///< the depth from now in a held segment [m]
   /// A sum next_event_delay builds, its storage kept from event to event.
   mutable ExponentialSum scratch_;
   CompensatedSum machine_work_;       ///< [J/m]

@@ -59,33 +59,15 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
   if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
-  // The normal control a stage runs under: its own, or the one before it (fixed grips at first).
-  std::string normal_control = "fixed-grips";
-  bool sheared = false;  ///< a stage before moved the tangential axis
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
-    if (stage.normal) normal_control = stage.normal->control;
+    // u_x moves under fixed grips whatever the normal control; a held tangential force is not
+    // carried.
     if (stage.tangential && stage.tangential->control != "fixed-grips") {
       loading.fail_at("stage", not_yet_with_relaxation(
                                    fmt::format("loading.stage.{}.tangential.control = \"{}\"",
                                                i + 1, stage.tangential->control)));
     }
-    if (stage.tangential && stage.tangential->motion != StageAxis::Motion::hold &&
-        normal_control != "fixed-grips") {
-      loading.fail_at("stage", not_yet_with_relaxation(fmt::format(
-                                   "loading.stage.{}.tangential moving under normal.control = "
-                                   "\"{}\"",
-                                   i + 1, normal_control)));
-    }
-    if (sheared && normal_control != "fixed-grips") {
-      // The held drive moves the normal arms only: the glued springs' tangential arms would
-      // stand still.
-      loading.fail_at("stage", not_yet_with_relaxation(fmt::format(
-                                   "loading.stage.{}: normal.control = \"{}\" after a stage that "
-                                   "moved the tangential axis",
-                                   i + 1, normal_control)));
-    }
-    if (stage.tangential && stage.tangential->motion != StageAxis::Motion::hold) sheared = true;
     if (stage.normal && stage.normal->controller->holds_force() && !scene.material.adhesive()) {
       // A held force loses the contact in a flight only where the glue's last let-go loses it:
       // without adhesion the contact lost under a load is not carried.

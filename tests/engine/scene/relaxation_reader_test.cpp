@@ -108,32 +108,13 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
        "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      // A tangential axis runs under fixed grips, and moves only under normal fixed grips.
+      // A tangential axis runs under fixed grips.
       {"TangentialHeldForce",
        replaced(kViscous, "until = \"separation\"\n",
                 "tangential = { control = \"fixed-load\", by = 1e-3 }\nuntil = "
                 "\"separation\"\n"),
        "v.toml:9:1: loading.stage: loading.stage.2.tangential.control = \"fixed-load\" is not "
        "yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      {"TangentialUnderHeldForce",
-       replaced(replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
-                         "normal = { control = \"fixed-load\", to = 0.05 }"),
-                "normal = { by = -1.0e-4 }\nuntil = \"separation\"\n",
-                "tangential = { control = \"fixed-grips\", by = 1e-6 }\n"),
-       "v.toml:9:1: loading.stage: loading.stage.2.tangential moving under normal.control = "
-       "\"fixed-load\" is not yet taken with material.relaxation (docs/viscoelastic.md \"What "
-       "it refuses\")"},
-      // The held drive does not carry the glued springs' tangential arms: a held normal control
-      // after a shear is refused.
-      {"HeldNormalAfterShear",
-       replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
-                "normal = { by = -1.0e-4 }\nuntil = \"separation\"\nduration = 1.0\n",
-                "tangential = { control = \"fixed-grips\", by = 1e-6 }\nduration = 1.0\n"
-                "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
-                "until = \"separation\"\nduration = 1.0\n"),
-       "v.toml:9:1: loading.stage: loading.stage.3: normal.control = \"fixed-load\" after a stage "
-       "that moved the tangential axis is not yet taken with material.relaxation "
-       "(docs/viscoelastic.md \"What it refuses\")"},
       {"FixedLoad",
        replaced(kViscous, "normal = { by = -1.0e-4 }",
                 "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
@@ -155,10 +136,22 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
   }
   // Within the scope the scene is built, its terms in the material.
   EXPECT_EQ(build(kViscous).material.relaxation.size(), 1u);
-  // A tangential fixed-grips stage under normal fixed grips is within it.
+  // A tangential fixed-grips stage is within it under any normal control: under normal
+  // fixed grips, under a held force, and a held force after a shear.
   EXPECT_NO_THROW(build(replaced(kViscous, "until = \"separation\"\n",
                                  "tangential = { control = \"fixed-grips\", by = 1e-6 }\n"
                                  "until = \"separation\"\n")));
+  EXPECT_NO_THROW(
+      build(replaced(replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
+                              "normal = { control = \"fixed-load\", to = 0.05 }"),
+                     "normal = { by = -1.0e-4 }\nuntil = \"separation\"\n",
+                     "tangential = { control = \"fixed-grips\", by = 1e-6 }\n")));
+  EXPECT_NO_THROW(
+      build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                     "normal = { by = -1.0e-4 }\nuntil = \"separation\"\nduration = 1.0\n",
+                     "tangential = { control = \"fixed-grips\", by = 1e-6 }\nduration = 1.0\n"
+                     "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
+                     "until = \"separation\"\nduration = 1.0\n")));
   // A held force that stays pressing and a machine spring are within it.
   EXPECT_NO_THROW(build(replaced(
       replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
