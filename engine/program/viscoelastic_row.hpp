@@ -51,8 +51,9 @@ struct DriveSegment {
   /// spring whose image is that depth is met; else the start's plus rate times duration.
   std::optional<double> end_depth = std::nullopt;
   std::optional<HeldAxisMotion> held = std::nullopt;
-  /// u_x' [m/s], the indenter's tangential displacement moving linearly (normal fixed grips
-  /// only): a glued spring carries u_x less the indenter's u_x where it glued.
+  /// u_x' [m/s], the indenter's tangential displacement moving linearly (under any normal
+  /// control: the tangential arms do not enter the depth's equation): a glued spring carries u_x
+  /// less the indenter's u_x where it glued.
   double tangential_rate = 0.0;
   /// u_x at its end [m] where it is known exactly; else the start's plus rate times duration.
   std::optional<double> end_tangential = std::nullopt;
