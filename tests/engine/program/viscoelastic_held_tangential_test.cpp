@@ -63,7 +63,7 @@ RunResult run_held_tangential(const std::string& text) {
   return run_scene(SceneDocument::from_text(text, "ht.toml").build(Registries::builtin()), {});
 }
 
-std::string stage(const std::string& name, const std::string& body) {
+std::string held_stage(const std::string& name, const std::string& body) {
   return fmt::format("[[loading.stage]]\nname = \"{}\"\n{}", name, body);
 }
 
@@ -75,18 +75,18 @@ struct HeldProgram {
 };
 
 std::string held_shear(double ux) {
-  return stage("shear", fmt::format("tangential = {{ control = \"fixed-grips\", to = {} }}\n"
-                                    "duration = 0.5\n",
-                                    ux));
+  return held_stage("shear", fmt::format("tangential = {{ control = \"fixed-grips\", to = {} }}\n"
+                                         "duration = 0.5\n",
+                                         ux));
 }
 
 std::vector<HeldProgram> held_programs() {
   const std::string load_pull =
-      stage("pull",
-            "normal = { control = \"fixed-load\", by = -1.0 }\nuntil = \"separation\"\n"
-            "duration = 10.0\n");
+      held_stage("pull",
+                 "normal = { control = \"fixed-load\", by = -1.0 }\nuntil = \"separation\"\n"
+                 "duration = 10.0\n");
   const std::string load_press =
-      stage("press", "normal = { control = \"fixed-load\", to = 0.2 }\nduration = 0.5\n");
+      held_stage("press", "normal = { control = \"fixed-load\", to = 0.2 }\nduration = 0.5\n");
   std::vector<HeldProgram> programs;
   // The shears span a let-go in tension (3 um) to one near the glue's shear strength (8 um).
   for (const double ux : {3.0e-6, 8.0e-6}) {
@@ -94,16 +94,17 @@ std::vector<HeldProgram> held_programs() {
         {fmt::format("fixed load, u_x = {}", ux), load_press + held_shear(ux) + load_pull});
     programs.push_back(
         {fmt::format("machine spring, u_x = {}", ux),
-         stage("press",
-               "normal = { control = \"compliant\", stiffness = 2000.0, by = 3.0e-4 "
-               "}\nduration = 0.3\n") +
+         held_stage("press",
+                    "normal = { control = \"compliant\", stiffness = 2000.0, by = 3.0e-4 "
+                    "}\nduration = 0.3\n") +
              held_shear(ux) +
-             stage("pull",
-                   "normal = { control = \"compliant\", stiffness = 2000.0, by = -1.0 "
-                   "}\nuntil = \"separation\"\nduration = 1000.0\n")});
+             held_stage("pull",
+                        "normal = { control = \"compliant\", stiffness = 2000.0, by = -1.0 "
+                        "}\nuntil = \"separation\"\nduration = 1000.0\n")});
     programs.push_back(
         {fmt::format("fixed grips, then a fixed load, u_x = {}", ux),
-         stage("press", "normal = { control = \"fixed-grips\", to = 2.25e-4 }\nspeed = 1.0e-3\n") +
+         held_stage("press",
+                    "normal = { control = \"fixed-grips\", to = 2.25e-4 }\nspeed = 1.0e-3\n") +
              held_shear(ux) + load_pull,
          true});
   }
@@ -113,15 +114,15 @@ std::vector<HeldProgram> held_programs() {
     programs.push_back(
         {fmt::format("sheared off under {} N, u_x = {}", force, ux),
          load_press +
-             stage("lower", fmt::format("normal = {{ control = \"fixed-load\", to = {} }}\n"
-                                        "duration = 0.5\n",
-                                        force)) +
+             held_stage("lower", fmt::format("normal = {{ control = \"fixed-load\", to = {} }}\n"
+                                             "duration = 0.5\n",
+                                             force)) +
              held_shear(ux) + load_pull});
   }
   return programs;
 }
 
-double relative_gap(double a, double b, double scale) { return std::abs(a - b) / scale; }
+double held_relative_gap(double a, double b, double scale) { return std::abs(a - b) / scale; }
 
 TEST(ViscoelasticHeldTangential, AVanishingArmIsTheElasticProgramUnderAHeldControl) {
   // E_1 = 1e-9 E_inf: every load differs from the elastic row's by that share, so every state
@@ -144,8 +145,8 @@ TEST(ViscoelasticHeldTangential, AVanishingArmIsTheElasticProgramUnderAHeldContr
     const auto compare = [&](const ContactSnapshot& a, const ContactSnapshot& b,
                              const std::string& what, bool count = true) {
       SCOPED_TRACE(what);
-      gap = std::max({gap, relative_gap(a.normal_force, b.normal_force, scale),
-                      relative_gap(a.tangential_force, b.tangential_force, scale)});
+      gap = std::max({gap, held_relative_gap(a.normal_force, b.normal_force, scale),
+                      held_relative_gap(a.tangential_force, b.tangential_force, scale)});
       depth_gap = std::max(depth_gap, std::abs(a.indentation - b.indentation));
       EXPECT_NEAR(a.normal_force, b.normal_force, 1e-9 * scale);
       EXPECT_NEAR(a.tangential_force, b.tangential_force, 1e-9 * scale);
@@ -160,7 +161,7 @@ TEST(ViscoelasticHeldTangential, AVanishingArmIsTheElasticProgramUnderAHeldContr
       // Under a fixed load the pull-off is the held force at the let-go that loses the contact,
       // and every state of its cascade stands at it: the rows name different ones of them.
       EXPECT_NEAR(v.peak->normal_force, e.peak->normal_force, 1e-9 * scale);
-      gap = std::max(gap, relative_gap(v.peak->normal_force, e.peak->normal_force, scale));
+      gap = std::max(gap, held_relative_gap(v.peak->normal_force, e.peak->normal_force, scale));
     }
     for (std::size_t i = 0; i < v.stages.size(); ++i) {
       // A press under fixed grips ends at the row's spring N, whose image is its depth: the
@@ -201,15 +202,16 @@ TEST(ViscoelasticHeldTangential, AShearHeldUnderAFixedLoadRelaxesWhileTheDepthCr
   const double u0 = 1.0e-6;
   const std::vector<double> holds{0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0};
   std::string stages =
-      stage("press", fmt::format("normal = {{ control = \"fixed-grips\", to = {} }}\nspeed = "
-                                 "1.0e-3\n",
-                                 depth)) +
-      stage("relax", "duration = 10.0\n") +
-      stage("shear", fmt::format("normal = {{ control = \"fixed-load\", by = {} }}\ntangential = "
-                                 "{{ control = \"fixed-grips\", to = {} }}\nduration = {}\n",
-                                 -force_step, u0, ramp));
+      held_stage("press", fmt::format("normal = {{ control = \"fixed-grips\", to = {} }}\nspeed = "
+                                      "1.0e-3\n",
+                                      depth)) +
+      held_stage("relax", "duration = 10.0\n") +
+      held_stage("shear",
+                 fmt::format("normal = {{ control = \"fixed-load\", by = {} }}\ntangential = "
+                             "{{ control = \"fixed-grips\", to = {} }}\nduration = {}\n",
+                             -force_step, u0, ramp));
   for (std::size_t i = 0; i < holds.size(); ++i) {
-    stages += stage(fmt::format("hold{}", i), fmt::format("duration = {}\n", holds[i]));
+    stages += held_stage(fmt::format("hold{}", i), fmt::format("duration = {}\n", holds[i]));
   }
   const RunResult r =
       run_held_tangential(held_tangential_text(kHtRelaxed, kHtArm, kHtDgamma, stages, 200));
@@ -259,15 +261,18 @@ TEST(ViscoelasticHeldTangential, AShearHeldUnderAFixedLoadRelaxesWhileTheDepthCr
 /// Press under fixed grips to `depth` at `speed`, shear to `ux` at `speed`, pull off under a
 /// fixed load lowered at `force_rate` [N/s] until separation.
 std::string shear_then_load_pull(double depth, double ux, double speed, double force_rate) {
-  return stage("press", fmt::format("normal = {{ control = \"fixed-grips\", to = {} }}\nspeed = "
-                                    "{}\n",
-                                    depth, speed)) +
-         stage("shear",
-               fmt::format("tangential = {{ control = \"fixed-grips\", to = {} }}\nspeed = {}\n",
-                           ux, speed)) +
-         stage("pull", fmt::format("normal = {{ control = \"fixed-load\", by = -1.0 }}\nuntil = "
-                                   "\"separation\"\nduration = {}\n",
-                                   1.0 / force_rate));
+  return held_stage("press",
+                    fmt::format("normal = {{ control = \"fixed-grips\", to = {} }}\nspeed = "
+                                "{}\n",
+                                depth, speed)) +
+         held_stage(
+             "shear",
+             fmt::format("tangential = {{ control = \"fixed-grips\", to = {} }}\nspeed = {}\n", ux,
+                         speed)) +
+         held_stage("pull",
+                    fmt::format("normal = {{ control = \"fixed-load\", by = -1.0 }}\nuntil = "
+                                "\"separation\"\nduration = {}\n",
+                                1.0 / force_rate));
 }
 
 TEST(ViscoelasticHeldTangential, ShearThenFixedLoadPullOffTendsToItsElasticLimits) {
@@ -323,20 +328,20 @@ TEST(ViscoelasticHeldTangential, EveryStageBalances) {
   // vanishing-arm test with the real arm, two terms, and a creep under a held shear.
   std::vector<std::string> programs;
   for (const HeldProgram& p : held_programs()) programs.push_back(p.stages);
-  programs.push_back(stage("press",
-                           "normal = { control = \"fixed-grips\", to = 5.0e-5 }\nspeed "
-                           "= 1.0e-3\n") +
-                     stage("shear",
-                           "normal = { control = \"fixed-load\", by = 0.02 }\ntangential "
-                           "= { control = \"fixed-grips\", to = 4.0e-6 }\nduration = "
-                           "0.2\n") +
-                     stage("hold", "duration = 0.5\n") +
-                     stage("back",
-                           "tangential = { control = \"fixed-grips\", to = -2.0e-6 "
-                           "}\nduration = 0.1\n") +
-                     stage("pull",
-                           "normal = { control = \"compliant\", stiffness = 500.0, by = "
-                           "-1.0 }\nuntil = \"separation\"\nduration = 100.0\n"));
+  programs.push_back(held_stage("press",
+                                "normal = { control = \"fixed-grips\", to = 5.0e-5 }\nspeed "
+                                "= 1.0e-3\n") +
+                     held_stage("shear",
+                                "normal = { control = \"fixed-load\", by = 0.02 }\ntangential "
+                                "= { control = \"fixed-grips\", to = 4.0e-6 }\nduration = "
+                                "0.2\n") +
+                     held_stage("hold", "duration = 0.5\n") +
+                     held_stage("back",
+                                "tangential = { control = \"fixed-grips\", to = -2.0e-6 "
+                                "}\nduration = 0.1\n") +
+                     held_stage("pull",
+                                "normal = { control = \"compliant\", stiffness = 500.0, by = "
+                                "-1.0 }\nuntil = \"separation\"\nduration = 100.0\n"));
   double worst = 0.0;
   for (const std::string& stages : programs) {
     for (const bool two_terms : {false, true}) {
