@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""Runs every scene in scenes/ and scenes/programs/ with two mdrsim builds and compares the JSON.
+"""Runs every scene under scenes/ (all its folders) with two mdrsim builds and compares the JSON.
 
     python3 scripts/compare_scenes.py BEFORE_MDRSIM AFTER_MDRSIM [OUT_DIR] [--accuracy] [--added PATH]...
 
 Each scene runs as `mdrsim run SCENE --json OUT --log-level off` (with --accuracy also with
 `--set discretization.extrapolation=richardson` and with `--set discretization.rtol=1e-4
---set solver.method="event"`, the routes that combine rows); fields whose name contains
-"time" (wall_time_s, ...) are dropped, everything else must be equal exactly (floats bit for
+--set solver.method="event"`, the routes that combine rows); the fields that time the run
+(wall_time_s, ...) are dropped (a program's clock, `time`, `start_time`, `end_time`, is kept), everything else must be equal exactly (floats bit for
 bit). `--added PATH` (repeatable) lets the JSON path PATH (e.g. $.scene.solver.max_events) be
 added by AFTER: a key a newer build records, and nothing else, is then no difference. Prints one
 line per scene (same / DIFFERENT with the differing JSON paths) and exits 1 if
@@ -18,9 +18,13 @@ import subprocess
 import sys
 
 
+# The run's own timing, which no two runs share; every other field is a number of the model.
+WALL_CLOCK_KEYS = {"wall_time_s"}
+
+
 def strip_time(value):
     if isinstance(value, dict):
-        return {k: strip_time(v) for k, v in value.items() if "time" not in k}
+        return {k: strip_time(v) for k, v in value.items() if k not in WALL_CLOCK_KEYS}
     if isinstance(value, list):
         return [strip_time(v) for v in value]
     return value
@@ -78,8 +82,7 @@ def main():
     out_dir = pathlib.Path(args[2] if len(args) > 2 else "compare_scenes_out")
     out_dir.mkdir(parents=True, exist_ok=True)
     root = pathlib.Path(__file__).resolve().parent.parent
-    scenes = sorted((root / "scenes").glob("*.toml")) + sorted(
-        (root / "scenes" / "programs").glob("*.toml"))
+    scenes = sorted((root / "scenes").rglob("*.toml"))
     failed = 0
     runs = 0
     for scene in scenes:
