@@ -28,9 +28,13 @@ std::optional<JumpRecord> ViscoelasticJumps::change(ViscoelasticRowChange change
   const bool edge =
       change == ViscoelasticRowChange::glue || change == ViscoelasticRowChange::let_go;
   const bool inward = change == ViscoelasticRowChange::glue;
-  if (change == ViscoelasticRowChange::let_go) observe(before);
-  if (edge && open_ && open_->time == after.time && open_->inward == inward &&
-      open_->stage == stage) {
+  const bool continues = edge && open_ && open_->time == after.time && open_->inward == inward &&
+                         open_->stage == stage;
+  // A let-go that continues a cascade starts from no equilibrium of the path but from a state
+  // within the jump (under a held force every one of them stands at the held force, to
+  // rounding): the peak is sought among the states a let-go starts from outside a jump.
+  if (change == ViscoelasticRowChange::let_go && !continues) observe(before);
+  if (continues) {
     if (++open_->changes == 2) open_->second_by_shear = by_shear;
     open_->after = after;
     return std::nullopt;
