@@ -3,7 +3,9 @@
 #include "engine/model/prony_front_arms.hpp"
 
 #include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
+#include <cstdint>
 
 #include "engine/model/prony_arms.hpp"
 
@@ -21,25 +23,60 @@ DrivenArmSums::DrivenArmSums(std::vector<PronyTerm> terms)
       decaying_(terms_.size(), 0.0),
       squares_(terms_.size(), 0.0) {}
 
+namespace {
+
+/// x - (1 - exp(-x)) and x - 2 (1 - exp(-x)) + (1 - exp(-2x)) / 2, by their series where the
+/// differences would cancel (x below 1/2: 20 terms leave 1e-24).
+struct DrivenArmMoments {
+  double ramp;     ///< int_0^x (1 - e) = x - (1 - exp(-x))
+  double ramp_sq;  ///< int_0^x (1 - e)^2
+};
+DrivenArmMoments driven_arm_moments(double x) {
+  if (x >= 0.5) {
+    const double once = -std::expm1(-x);
+    const double twice = -std::expm1(-2.0 * x);
+    return {x - once, x - 2.0 * once + 0.5 * twice};
+  }
+  // e^-x - 1 + x = sum_{k >= 2} (-x)^k / k!, and the second sum_{k >= 3} (-x)^k (2 - 2^(k-1)) / k!.
+  DrivenArmMoments m{0.0, 0.0};
+  double power = -x;  // (-x)^k / k!
+  double doubled = 1.0;
+  for (int k = 2; k <= 22; ++k) {
+    power *= -x / static_cast<double>(k);
+    doubled *= 2.0;  // 2^(k-1)
+    m.ramp += power;
+    m.ramp_sq += power * (2.0 - doubled);
+  }
+  return m;
+}
+
+}  // namespace
+
 DrivenArmPiece DrivenArmSums::advance(double rate, double duration) {
   DrivenArmPiece piece;
   if (!(duration > 0.0)) return piece;
   for (std::size_t j = 0; j < terms_.size(); ++j) {
     const PronyTerm& term = terms_[j];
-    // sigma_i(s) = A + (B + c_i) e(s), e = exp(-s / tau), A = E r tau, B = H(0) - A: the sums
-    // are W A + (W B + C) e and W A^2 + 2 A (W B + C) e + (W B^2 + 2 B C + D) e^2.
+    // sigma_i(s) = beta_i e + A (1 - e), e = exp(-s / tau), A = E r tau, beta_i the member's
+    // stress now; with x = h / tau, u1 = 1 - exp(-x), u2 = 1 - exp(-2x):
+    //   int sum_i w_i sigma_i = tau (S u1 + W A ramp),
+    //   int sum_i w_i sigma_i^2 = tau (Q u2 / 2 + A S u1^2 + W A^2 ramp_sq),
+    // S = W H + C and Q = W H^2 + 2 H C + D the sums now. Written so that neither a slow arm
+    // (A far above the stresses) nor a fast one cancels.
+    const double x = duration / term.time;
+    const double u1 = -std::expm1(-x);
+    const double u2 = -std::expm1(-2.0 * x);
+    const DrivenArmMoments moments = driven_arm_moments(x);
     const double steady = term.modulus * rate * term.time;
-    const double b = history_[j] - steady;
-    const double c = decaying_[j];
-    const double once = -std::expm1(-duration / term.time) * term.time;               // int e ds
-    const double twice = -std::expm1(-2.0 * duration / term.time) * 0.5 * term.time;  // int e^2
-    piece.force_time += weight_ * steady * duration + (weight_ * b + c) * once;
-    const double squares = weight_ * steady * steady * duration +
-                           2.0 * steady * (weight_ * b + c) * once +
-                           (weight_ * b * b + 2.0 * b * c + squares_[j]) * twice;
-    piece.dissipated += squares / (term.modulus * term.time);
-    history_[j] = maxwell_arm_after(history_[j], term, rate, duration);
-    const double decay = std::exp(-duration / term.time);
+    const double h = history_[j];
+    const double sum = weight_ * h + decaying_[j];
+    const double squares = weight_ * h * h + 2.0 * h * decaying_[j] + squares_[j];
+    piece.force_time += term.time * (sum * u1 + weight_ * steady * moments.ramp);
+    piece.dissipated += (0.5 * squares * u2 + steady * sum * u1 * u1 +
+                         weight_ * steady * steady * moments.ramp_sq) /
+                        term.modulus;
+    history_[j] = maxwell_arm_after(h, term, rate, duration);
+    const double decay = std::exp(-x);
     decaying_[j] *= decay;
     squares_[j] *= decay * decay;
   }
@@ -96,14 +133,73 @@ double DrivenArmSums::stored() const {
   return sum;
 }
 
-ExponentialSum FrontLineLoad::at_image(double image) const {
-  ExponentialSum q = boundary;
+double FrontLineLoad::at(double image, double s) const {
+  double q = relaxed_modulus * (stretch + rate * s);
   const double shift = image - boundary_image;
-  q.constant -= relaxed_modulus * shift;
-  for (const PronyTerm& term : terms) {
-    q.decays.push_back({-term.modulus * shift * std::exp(-boundary_age / term.time), term.time});
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    const PronyTerm& term = terms[j];
+    const double decay = std::exp(-s / term.time);
+    q += stresses[j] * decay - term.modulus * rate * term.time * std::expm1(-s / term.time);
+    q -= shift * term.modulus * std::exp(-(boundary_age + s) / term.time);
   }
-  return q;
+  return q - shift * relaxed_modulus;
+}
+
+ExponentialSum FrontLineLoad::slope(double image) const {
+  ExponentialSum d;
+  d.constant = relaxed_modulus * rate;
+  const double shift = image - boundary_image;
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    const PronyTerm& term = terms[j];
+    d.decays.push_back({term.modulus * rate - stresses[j] / term.time +
+                            shift * term.modulus / term.time * std::exp(-boundary_age / term.time),
+                        term.time});
+  }
+  return d;
+}
+
+std::optional<double> FrontLineLoad::first_reach(double image, double level, double span) const {
+  if (!(span > 0.0)) return std::nullopt;
+  // The slope's zeros in (0, span): at most one per term.
+  const ExponentialSum d = slope(image);
+  std::vector<double> points{0.0};
+  ExponentialSum shifted = d;
+  for (std::size_t k = 0; k <= terms.size(); ++k) {
+    const double from = points.back();
+    for (std::size_t j = 0; j < d.decays.size(); ++j) {
+      shifted.decays[j].amplitude = d.decays[j].amplitude * std::exp(-from / d.decays[j].time);
+    }
+    const std::optional<double> zero = first_crossing(shifted, 0.0, span - from);
+    if (!zero || !(from + *zero < span)) break;
+    points.push_back(from + *zero);
+  }
+  points.push_back(span);
+  const auto g = [&](double s) { return at(image, s) - level; };
+  double side = g(0.0);
+  std::size_t first = 0;
+  if (side == 0.0) {
+    side = g(points[1]);
+    if (side == 0.0) return std::nullopt;
+    first = 1;
+  }
+  double g_lo = g(points[first]);
+  for (std::size_t i = first; i + 1 < points.size(); ++i) {
+    const double lo = points[i];
+    const double hi = points[i + 1];
+    const double g_hi = g(hi);
+    if (g_hi == 0.0) return hi;
+    if ((g_hi < 0.0) != (side < 0.0)) {
+      if (g_lo == 0.0) return lo;
+      std::uintmax_t iterations = 200;
+      const double width = hi - lo;
+      const auto root = boost::math::tools::toms748_solve(
+          g, lo, hi, g_lo, g_hi,
+          [width](double a, double b) { return std::abs(b - a) <= 1e-15 * width; }, iterations);
+      return 0.5 * (root.first + root.second);
+    }
+    g_lo = g_hi;
+  }
+  return std::nullopt;
 }
 
 }  // namespace mdrsim

@@ -3,6 +3,7 @@
 // between two springs.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -68,21 +69,28 @@ class DrivenArmSums {
 /// the next: spring m's load shifted by the image's difference through the relaxation function,
 ///   q(a, t) = q_m(t) - E(t - t_m) (g(a) - g_m),
 /// exact for a spring at a glued when m glued from the same (relaxed) rest, since the two
-/// stretches then differ by g(a) - g_m at every time since.
+/// stretches then differ by g(a) - g_m at every time since. Spring m's load over its linear
+/// stretch w + r s is E* (w + r s) + sum_j [sigma_j exp(-s / tau_j) + E_j r tau_j (1 -
+/// exp(-s / tau_j))], kept in that form: as a constant plus decays (prony_arms' line_load_over)
+/// a slow arm's E_j r tau_j would cancel against its decay and leave the load's ulp far above
+/// its threshold's.
 struct FrontLineLoad {
-  ExponentialSum boundary;       ///< q_m(t0 + s) [N/m], s [s] from the front's walk start t0
+  double stretch = 0.0;          ///< w_m at t0 [m]
+  double rate = 0.0;             ///< dw_m / dt [m/s]
+  FewValues<double> stresses;    ///< sigma_mj at t0 [N/m]
   double boundary_age = 0.0;     ///< t0 - t_m [s]
   double boundary_image = 0.0;   ///< g_m [m]
   double relaxed_modulus = 0.0;  ///< E* [Pa]
   std::span<const PronyTerm> terms;
 
   /// q at radius image g(a) = `image` [m], s [s] after t0.
-  double at(double image, double s) const {
-    return boundary.at(s) -
-           relaxation_modulus(relaxed_modulus, terms, boundary_age + s) * (image - boundary_image);
-  }
-  /// q at a fixed `image` as an exponential sum in s (for its first crossing of a level).
-  ExponentialSum at_image(double image) const;
+  double at(double image, double s) const;
+  /// dq/ds at `image` as a constant plus decays in s [N/(m s)].
+  ExponentialSum slope(double image) const;
+  /// The first s in (0, span] [s] at which q at `image` reaches `level` [N/m] from the side it
+  /// is on just after 0 (the load split where it is monotone, at the zeros of its slope, and the
+  /// first piece that straddles the level solved by TOMS 748); nullopt where it does not.
+  std::optional<double> first_reach(double image, double level, double span) const;
 };
 
 }  // namespace mdrsim

@@ -49,6 +49,9 @@ using RowFrontStepper = odeint::runge_kutta_dopri5<RowFrontVector>;
 /// are the row's and not the integrator's.
 constexpr double kRowFrontTolerance = 1e-11;
 constexpr long long kMostRowFrontSteps = 10'000'000;
+/// A relaxing bulk's front load within this fraction of its threshold stands on it: the sums of
+/// arm stresses it is read from round far above the load's own ulp.
+constexpr double kThresholdRounding = 1e-12;
 
 /// What a stage does to the held depth: d(t) = start + rate (t - t0) until `end_time`.
 struct RowStageDrive {
@@ -332,9 +335,10 @@ class RateLawRow {
   FrontLineLoad front_load_now() const {
     FrontLineLoad load;
     const DrivenArmMember& member = members_.back();
-    FewValues<double> stresses(terms_.size());
-    for (std::size_t j = 0; j < terms_.size(); ++j) stresses[j] = arms_->stress(member, j);
-    line_load_over(load.boundary, modulus_, terms_, d_ - g(m_), stresses, drive_.rate);
+    load.stresses.resize(terms_.size());
+    for (std::size_t j = 0; j < terms_.size(); ++j) load.stresses[j] = arms_->stress(member, j);
+    load.stretch = d_ - g(m_);
+    load.rate = drive_.rate;
     load.boundary_age = t_ - glue_times_.back();
     load.boundary_image = g(m_);
     load.relaxed_modulus = modulus_;
@@ -360,22 +364,32 @@ class RateLawRow {
   /// before `target` (the clock is then there).
   bool relaxing_onset(double target, double target_depth) {
     front_load_ = front_load_now();
-    if (relaxing_speed(a_, 0.0) > 0.0) return true;
-    const ExponentialSum q = front_load_.at_image(scene_.profile->mdr_image(a_));
+    const double image = scene_.profile->mdr_image(a_);
     const double level = -glue_modulus_ * std::sqrt(glassy_hess_ * a_);
+    const double now = front_load_.at(image, 0.0);
+    double from = level;
+    if (!(now > level)) {
+      // A spring glued this instant sits on its threshold to the rounding of the arms' sums:
+      // where its tension eases it stays, until the load comes back to where it is now.
+      if (!(now >= level - kThresholdRounding * std::abs(level) &&
+            front_load_.slope(image).at(0.0) > 0.0)) {
+        return true;
+      }
+      from = now;
+    }
     double span = target - t_;
     if (!std::isfinite(span)) {
       // Until separation the grips withdraw, so the load falls without bound: a span that
       // reaches the level.
       span = time_scale_;
-      for (int doubling = 0; !(q.at(span) < level); ++doubling) {
+      for (int doubling = 0; !(front_load_.at(image, span) < from); ++doubling) {
         if (doubling > 200) {
           throw std::runtime_error("rate-law row: the front's load never reaches its threshold");
         }
         span *= 2.0;
       }
     }
-    const std::optional<double> onset = first_crossing(q, level, span);
+    const std::optional<double> onset = front_load_.first_reach(image, from, span);
     if (!onset || !(t_ + *onset < target)) {
       move_to(target, target_depth);
       return false;
