@@ -401,6 +401,35 @@ TEST(RateLawRelaxingRow, RelaxedContactRetractedAgainstTheFrontsOde) {
   }
 }
 
+// rtol on the relaxed contact's retraction (n = 1/2): the rows double until the estimates
+// (the peak, each stage's end force and work, dissipated_by_bulk among them) meet it, and the
+// peak is within rtol of the front's ODE; its estimate bounds the error.
+TEST(RateLawRelaxingRow, RtolCoversTheRelaxingRow) {
+  const double glassy = 3.0 * kRelaxed;
+  const double depth = 5.7e-6;
+  const double speed = grips_speed(1.0, kRelaxed);
+  const RelaxingArm arm{2.0 * kRelaxed, 100.0};
+  const double a0 = glassy_advancing_radius(depth, kRelaxingWork, glassy);
+  const RelaxedPeak ref = relaxed_front_peak({kRelaxed, glassy, arm, 0.5, speed, depth}, a0, 1e-10);
+  for (const double rtol : {1e-3, 1e-5}) {
+    std::string text = relaxing_scene(kRelaxed, kRelaxingWork, kRelaxingWork, arm, 0.5, depth,
+                                      100.0 * arm.time, speed, 1000);
+    text.replace(text.find("springs = 1000"), 14, fmt::format("rtol = {}", rtol));
+    const RunResult r = run_relaxing(text);
+    ASSERT_TRUE(r.peak && r.accuracy.peak_error_estimate && r.accuracy.work_error_estimate);
+    const double error = std::abs(r.peak->normal_force - ref.force);
+    fmt::print(
+        "rtol {:g}: {} springs, peak error {:.2e} N, estimate {:.2e} N, bulk estimate "
+        "{:.2e} J of {:.3e} J\n",
+        rtol, r.springs, error, *r.accuracy.peak_error_estimate,
+        r.accuracy.work_error_estimate->bulk, r.work->bulk);
+    EXPECT_TRUE(r.accuracy.rtol_met);
+    EXPECT_LT(error, rtol * std::abs(ref.force));
+    EXPECT_LT(error, *r.accuracy.peak_error_estimate);
+    EXPECT_GT(r.work->bulk, 0.0);
+  }
+}
+
 // A press after a stage in which springs may have let go is refused on a relaxing bulk, even
 // with rebinding: a let-go spring creeps free, which the row does not follow back into contact.
 TEST(RateLawRelaxingRow, RefusesAPressAfterALetGo) {
@@ -412,7 +441,8 @@ TEST(RateLawRelaxingRow, RefusesAPressAfterALetGo) {
   // A finite pull (by -1e-4 at its speed), then a press.
   text.erase(text.find("until = \"separation\"\n", at), 21);
   EXPECT_THROW_MSG(run_relaxing(text), SceneError,
-                   "test.toml:13:19: detachment.front_speed_law: stage 'again' may press the contact again after "
+                   "test.toml:13:19: detachment.front_speed_law: stage 'again' may press the "
+                   "contact again after "
                    "springs let go: not yet taken with material.relaxation (docs/rate_law.md)");
 }
 
