@@ -32,7 +32,6 @@
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
 #include "engine/model/gluing_depth.hpp"
-#include "engine/model/prony_arms.hpp"
 #include "engine/model/prony_creep.hpp"
 #include "engine/model/prony_front_arms.hpp"
 #include "engine/model/viscoelastic_edge.hpp"

@@ -12,7 +12,6 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <vector>
 // Odeint's steppers copy their scratch arrays, unset until the first step, when the controlled
 // stepper is built; GCC at -O3 sees the copy of the unset std::array.
 #if defined(__GNUC__) && !defined(__clang__)
@@ -76,13 +75,13 @@ std::string relaxing_scene(double relaxed, double work, double approach_work, Re
 
 /// JKR's zero-force depth of modulus E [Pa]: a0^3 = 9 pi dgamma R^2 / (2 E), d0 = a0^2 / R -
 /// sqrt(2 pi a0 dgamma / E).
-double zero_force_depth(double modulus) {
+double relaxing_zero_force_depth(double modulus) {
   const double a0 =
       std::cbrt(4.5 * kRelaxingPi * kRelaxingWork * kRelaxingRadius * kRelaxingRadius / modulus);
   return a0 * a0 / kRelaxingRadius - std::sqrt(2.0 * kRelaxingPi * a0 * kRelaxingWork / modulus);
 }
 /// The grips' speed [m/s] of beta = (V / v*) (E R / dgamma)^(1/3).
-double grips_speed(double beta, double modulus) {
+double relaxing_grips_speed(double beta, double modulus) {
   return beta * kRelaxingFront / std::cbrt(modulus * kRelaxingRadius / kRelaxingWork);
 }
 
@@ -244,8 +243,8 @@ RelaxedPeak relaxed_front_peak(const RelaxedFront& p, double a0, double rtol) {
 // E_inf) = 1e-9 relative; the rest is the two walks' integrator (its local tolerance 1e-11,
 // restarted at every let-go on the relaxing bulk).
 TEST(RateLawRelaxingRow, VanishingArmIsTheElasticRow) {
-  const double depth = zero_force_depth(kRelaxed);
-  const double speed = grips_speed(1.0, kRelaxed);
+  const double depth = relaxing_zero_force_depth(kRelaxed);
+  const double speed = relaxing_grips_speed(1.0, kRelaxed);
   for (const double n : {1.0, 0.5}) {
     const RunResult elastic = run_relaxing(
         relaxing_scene(kRelaxed, kRelaxingWork, kRelaxingWork, {}, n, depth, 0.0, speed, 1000));
@@ -280,8 +279,8 @@ TEST(RateLawRelaxingRow, VanishingArmIsTheElasticRow) {
 // row's test takes it), and the elastic row of E_0 at the same N to 1e-8.
 TEST(RateLawRelaxingRow, GlassyLimitIsTheElasticRateLawOfTheGlassyModulus) {
   const double glassy = 3.0 * kRelaxed;
-  const double depth = zero_force_depth(glassy);
-  const double speed = grips_speed(1.0, glassy);
+  const double depth = relaxing_zero_force_depth(glassy);
+  const double speed = relaxing_grips_speed(1.0, glassy);
   const test::RateLawScales sc =
       test::rate_law_scales(glassy, kRelaxingRadius, kRelaxingWork, kRelaxingFront);
   for (const double n : {1.0, 0.5}) {
@@ -325,7 +324,7 @@ TEST(RateLawRelaxingRow, GlassyLimitIsTheElasticRateLawOfTheGlassyModulus) {
 TEST(RateLawRelaxingRow, RelaxedLimitIsTheElasticRateLawOfTheRelaxedModulus) {
   const double glassy = 3.0 * kRelaxed;
   const double depth = 5.7e-6;
-  const double speed = grips_speed(1.0, kRelaxed);
+  const double speed = relaxing_grips_speed(1.0, kRelaxed);
   const RelaxingArm arm{2.0 * kRelaxed, 1e-12};
   const double a0 = glassy_advancing_radius(depth, kRelaxingWork, glassy);
   for (const double n : {1.0, 0.5}) {
@@ -366,7 +365,7 @@ TEST(RateLawRelaxingRow, RelaxedLimitIsTheElasticRateLawOfTheRelaxedModulus) {
 TEST(RateLawRelaxingRow, RelaxedContactRetractedAgainstTheFrontsOde) {
   const double glassy = 3.0 * kRelaxed;
   const double depth = 5.7e-6;
-  const double speed = grips_speed(1.0, kRelaxed);
+  const double speed = relaxing_grips_speed(1.0, kRelaxed);
   const RelaxingArm arm{2.0 * kRelaxed, 100.0};
   const double a0 = glassy_advancing_radius(depth, kRelaxingWork, glassy);
   for (const double n : {1.0, 0.5}) {
@@ -407,7 +406,7 @@ TEST(RateLawRelaxingRow, RelaxedContactRetractedAgainstTheFrontsOde) {
 TEST(RateLawRelaxingRow, RtolCoversTheRelaxingRow) {
   const double glassy = 3.0 * kRelaxed;
   const double depth = 5.7e-6;
-  const double speed = grips_speed(1.0, kRelaxed);
+  const double speed = relaxing_grips_speed(1.0, kRelaxed);
   const RelaxingArm arm{2.0 * kRelaxed, 100.0};
   const double a0 = glassy_advancing_radius(depth, kRelaxingWork, glassy);
   const RelaxedPeak ref = relaxed_front_peak({kRelaxed, glassy, arm, 0.5, speed, depth}, a0, 1e-10);
