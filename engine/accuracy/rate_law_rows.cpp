@@ -50,7 +50,7 @@ DoublingCombined combine_rate_law_rows(std::span<const RunResult, 4> rows, bool 
   double work_scale = 1e-300;
   for (const StageRecord& s : r.stages) {
     force_scale = std::max(force_scale, std::abs(s.end.normal_force));
-    work_scale += std::abs(s.work.normal) + std::abs(s.work.front);
+    work_scale += std::abs(s.work.normal) + std::abs(s.work.front) + std::abs(s.work.bulk);
   }
   // A stage's end force is held to rtol of the path's largest force: a stage may end at zero
   // force (JKR's zero-force state), where its relative error has no meaning.
@@ -76,17 +76,23 @@ DoublingCombined combine_rate_law_rows(std::span<const RunResult, 4> rows, bool 
         doubling_value(sa.work.normal, sc.work.normal, sm.work.normal, s.work.normal, extrapolate);
     const DoublingValue d =
         doubling_value(sa.work.front, sc.work.front, sm.work.front, s.work.front, extrapolate);
+    // dissipated_by_bulk: zero on an elastic bulk, in every row.
+    const DoublingValue b =
+        doubling_value(sa.work.bulk, sc.work.bulk, sm.work.bulk, s.work.bulk, extrapolate);
     s.end.normal_force = f.value;
     s.normal_force_error_estimate = f.error;
     s.work.normal = w.value;
     s.work.front = d.value;
+    s.work.bulk = b.value;
     AxisWork error;
     error.normal = w.error;
     error.front = d.error;
+    error.bulk = b.error;
     s.work_error_estimate = error;
     out.met = out.met && meets_rtol(f.error, f.value, rtol, force_floor) &&
               meets_rtol(w.error, w.value, rtol, work_scale) &&
-              meets_rtol(d.error, d.value, rtol, work_scale);
+              meets_rtol(d.error, d.value, rtol, work_scale) &&
+              meets_rtol(b.error, b.value, rtol, work_scale);
     total += s.work;
     total_error += error;
   }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -31,6 +32,9 @@
 #include "engine/base/bracketed_root.hpp"
 #include "engine/base/hess_scale.hpp"
 #include "engine/model/gluing_depth.hpp"
+#include "engine/model/prony_creep.hpp"
+#include "engine/model/prony_front_arms.hpp"
+#include "engine/model/viscoelastic_edge.hpp"
 #include "engine/program/run_program.hpp"
 
 namespace mdrsim {
@@ -44,12 +48,25 @@ using RowFrontStepper = odeint::runge_kutta_dopri5<RowFrontVector>;
 /// are the row's and not the integrator's.
 constexpr double kRowFrontTolerance = 1e-11;
 constexpr long long kMostRowFrontSteps = 10'000'000;
+/// A relaxing bulk's front load within this fraction of its threshold stands on it: the sums of
+/// arm stresses it is read from round far above the load's own ulp.
+constexpr double kThresholdRounding = 1e-12;
 
 /// What a stage does to the held depth: d(t) = start + rate (t - t0) until `end_time`.
 struct RowStageDrive {
   double rate = 0.0;       ///< dd/dt [m/s]
   double end_time = 0.0;   ///< [s]; infinite until separation
   double end_depth = 0.0;  ///< d at end_time [m] (not until separation)
+};
+
+/// How one walk of the front ended: at its target, with the contact lost, or at a let-go after
+/// which the front's load is read from the new boundary spring (a relaxing bulk).
+enum class RowWalkEnd { reached, lost, restart };
+
+/// A spring of a relaxing bulk that let go: it creeps free from its release.
+struct ReleasedRowSpring {
+  FreeSpringCreep creep;
+  double released_at = 0.0;  ///< [s]
 };
 
 /// The row, its glued springs 1..m, the front's radius a (x_m <= a, and a < x_(m+1)), the held
@@ -66,7 +83,16 @@ class RateLawRow {
         work_of_adhesion_(scene.material.work_of_adhesion),
         hess_(hess_scale(scene.material.work_of_adhesion, scene.material.effective_modulus)),
         length_(spec.reference_radius),
-        time_scale_(spec.reference_radius / law_.speed) {
+        time_scale_(spec.reference_radius / law_.speed),
+        glue_material_(scene.material.relaxes() ? glassy_material(scene.material) : scene.material),
+        glue_modulus_(scene.material.relaxes() ? scene.material.glassy_modulus()
+                                               : scene.material.effective_modulus),
+        glassy_hess_(hess_scale(scene.material.work_of_adhesion, glue_modulus_)) {
+    if (scene.material.relaxes()) {
+      terms_ = scene.material.relaxation;
+      arms_.emplace(terms_);
+      modes_ = std::make_shared<const RetardationModes>(modulus_, terms_);
+    }
     images_.reserve(static_cast<std::size_t>(n_));
     image_sums_.reserve(static_cast<std::size_t>(n_) + 1);
     image_sums_.push_back(0.0);
@@ -83,15 +109,26 @@ class RateLawRow {
   double time() const { return t_; }
   double depth() const { return d_; }
 
-  /// F [N]: 2 E* dx sum_{i <= m} (d - g_i).
+  /// F [N]: 2 E* dx sum_{i <= m} (d - g_i), and on a relaxing bulk the arms' 2 sum_ij dx
+  /// sigma_ij.
   double force() const {
-    return 2.0 * modulus_ * dx_ * (static_cast<double>(m_) * d_ - image_sums_[m_]);
+    const double relaxed = 2.0 * modulus_ * dx_ * (static_cast<double>(m_) * d_ - image_sums_[m_]);
+    if (!arms_) return relaxed;
+    return relaxed + 2.0 * arms_->arm_force();
   }
-  /// The glued springs' elastic energy, both halves: E* dx sum (d - g_i)^2 [J].
+  /// The glued springs' elastic energy, both halves: E* dx sum (d - g_i)^2 [J]; on a relaxing
+  /// bulk with their arms' and the let-go springs' (creeping free) energy.
   double stored() const {
     double sum = 0.0;
     for (std::int64_t i = 1; i <= m_; ++i) sum += (d_ - g(i)) * (d_ - g(i));
-    return modulus_ * dx_ * sum;
+    if (!arms_) return modulus_ * dx_ * sum;
+    return modulus_ * dx_ * sum + 2.0 * arms_->stored() + released_energy_at(t_);
+  }
+  /// What the dashpots dissipated so far [J]: the glued arms' and the let-go springs' creep
+  /// (a free spring carries no load, so it dissipates what it stores less).
+  double bulk() const {
+    if (!arms_) return 0.0;
+    return glued_bulk_ + released_energy_ - released_energy_at(t_);
   }
 
   ContactSnapshot snapshot() const {
@@ -109,9 +146,16 @@ class RateLawRow {
 
   /// Moves the clock to t and the grips to d with the glued springs held: the machine's work
   /// int F dd in closed form, 2 E* dx (d1 - d0) (m (d0 + d1) / 2 - sum g_i).
+  /// On a relaxing bulk the arms advance exactly along the stage's drive, their force's work
+  /// and their dashpots' dissipation in closed form.
   void move_to(double t, double d) {
     machine_work_ += 2.0 * modulus_ * dx_ * (d - d_) *
                      (static_cast<double>(m_) * 0.5 * (d_ + d) - image_sums_[m_]);
+    if (arms_ && t > t_) {
+      const DrivenArmPiece piece = arms_->advance(drive_.rate, t - t_);
+      machine_work_ += 2.0 * drive_.rate * piece.force_time;
+      glued_bulk_ += 2.0 * piece.dissipated;
+    }
     t_ = t;
     d_ = d;
   }
@@ -147,6 +191,7 @@ class RateLawRow {
   double machine_work() const { return machine_work_; }
   double surface() const { return surface_; }
   double front_losses() const { return front_losses_; }
+  bool relaxing() const { return arms_.has_value(); }
   double glue_losses() const { return glue_losses_; }
   long long steps() const { return steps_; }
   long long root_iterations() const { return root_iterations_; }
@@ -163,7 +208,7 @@ class RateLawRow {
  private:
   double depth_at(double t) const { return stage_depth_ + drive_.rate * (t - stage_start_); }
   double gluing_depth_of(std::int64_t i) const {
-    return g(i) - advancing_limit(scene_.material, true, x(i));
+    return g(i) - advancing_limit(glue_material_, true, x(i));
   }
 
   /// Glues every spring the advancing limit takes at d (a cascade at touch), then places the
@@ -177,7 +222,9 @@ class RateLawRow {
       const double e = g(m_) - d_;
       const double surface = 2.0 * std::numbers::pi * x(m_) * work_of_adhesion_ * dx_;
       surface_ -= surface;
-      glue_losses_ += surface - modulus_ * dx_ * e * e;
+      // A glue is instantaneous: the spring answers with E_0, each arm taking E_j of the step.
+      glue_losses_ += surface - glue_modulus_ * dx_ * e * e;
+      if (arms_) glue_arms(-e);
       const ContactSnapshot s = snapshot();
       note(s);
       Event glued{.kind = EventKind::spring_glued, .state = s, .stage = stage_};
@@ -199,7 +246,7 @@ class RateLawRow {
     a_ = std::max(a_, x(m_));
     if (m_ < n_) {
       const auto ahead = [&](double r) {
-        return scene_.profile->mdr_image(r) - advancing_limit(scene_.material, true, r) - d_;
+        return scene_.profile->mdr_image(r) - advancing_limit(glue_material_, true, r) - d_;
       };
       if (ahead(x(m_)) <= 0.0 && ahead(x(m_ + 1)) > 0.0) {
         a_ = std::max(a_, bracketed_root(ahead, x(m_), x(m_ + 1)));
@@ -219,7 +266,11 @@ class RateLawRow {
     const double stretch = g(m_) - d_;
     const double surface = 2.0 * std::numbers::pi * x(m_) * work_of_adhesion_ * dx_;
     surface_ += surface;
-    front_losses_ += modulus_ * dx_ * stretch * stretch - surface;
+    if (arms_) {
+      front_losses_ += release_arms() - surface;
+    } else {
+      front_losses_ += modulus_ * dx_ * stretch * stretch - surface;
+    }
     --m_;
     ++let_gos_;
     if (m_ == 0) {
@@ -246,41 +297,160 @@ class RateLawRow {
   /// G <= dgamma, else the ODE, letting springs go as it passes them. True where the last
   /// glued spring let go (the clock then stands there).
   bool walk_front(double target, double target_depth) {
+    for (;;) {
+      const RowWalkEnd end = walk_front_once(target, target_depth);
+      if (end != RowWalkEnd::restart) return end == RowWalkEnd::lost;
+    }
+  }
+
+  RowWalkEnd walk_front_once(double target, double target_depth) {
     if (m_ == 0 || !(target > t_)) {
       if (std::isfinite(target)) move_to(target, target_depth);
-      return false;
+      return RowWalkEnd::reached;
+    }
+    if (arms_) {
+      if (!relaxing_onset(target, target_depth)) return RowWalkEnd::reached;
+      return walk_in_time(target, target_depth);
     }
     // Pinned until e reaches Hess's stretch sqrt(2 pi a dgamma / E*): G = dgamma.
     if (!(speed(a_, d_) > 0.0)) {
       const double onset = scene_.profile->mdr_image(a_) - std::sqrt(hess_ * a_);
       if (!(drive_.rate < 0.0)) {
         move_to(target, target_depth);
-        return false;
+        return RowWalkEnd::reached;
       }
       const double t_on = t_ + std::max(d_ - onset, 0.0) / -drive_.rate;
       if (t_on >= target) {
         move_to(target, target_depth);
-        return false;
+        return RowWalkEnd::reached;
       }
       move_to(t_on, depth_at(t_on));
     }
     return walk_in_time(target, target_depth);
   }
 
+  // A relaxing bulk: the front's load from the boundary spring's (engine/model/prony_front_arms).
+  /// The load at the front's radius as the boundary spring m stands now.
+  FrontLineLoad front_load_now() const {
+    FrontLineLoad load;
+    const DrivenArmMember& member = members_.back();
+    load.stresses.resize(terms_.size());
+    for (std::size_t j = 0; j < terms_.size(); ++j) load.stresses[j] = arms_->stress(member, j);
+    load.stretch = d_ - g(m_);
+    load.rate = drive_.rate;
+    load.boundary_age = t_ - glue_times_.back();
+    load.boundary_image = g(m_);
+    load.relaxed_modulus = modulus_;
+    load.terms = terms_;
+    return load;
+  }
+  /// v / v* at radius a [m], `seconds` after front_load_ was taken: G = q^2 / (2 pi a E_0).
+  double relaxing_speed(double a, double seconds) const {
+    const double q = front_load_.at(scene_.profile->mdr_image(a), seconds);
+    const double e = std::max(-q, 0.0) / glue_modulus_;
+    if (!(a > 0.0)) return e > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+    return law_.front_speed(e * e / (glassy_hess_ * a)) / law_.speed;
+  }
+  /// As runs_to_axis: G grows as a falls at fixed time where 2 a g'(a) E(t - t_m) < -q.
+  bool relaxing_runs_to_axis(double a, double seconds) const {
+    if (!(drive_.rate <= 0.0) || !(relaxing_speed(a, seconds) >= 1.0)) return false;
+    const double q = front_load_.at(scene_.profile->mdr_image(a), seconds);
+    const double modulus = relaxation_modulus(modulus_, terms_, front_load_.boundary_age + seconds);
+    return 2.0 * a * scene_.profile->mdr_image_slope(a) * modulus < -q;
+  }
+  /// Pinned while G <= dgamma: the clock to the onset, the first time the front's load (an
+  /// exponential sum in time) reaches -sqrt(2 pi a dgamma E_0); false where it does not come
+  /// before `target` (the clock is then there).
+  bool relaxing_onset(double target, double target_depth) {
+    front_load_ = front_load_now();
+    const double image = scene_.profile->mdr_image(a_);
+    const double level = -glue_modulus_ * std::sqrt(glassy_hess_ * a_);
+    const double now = front_load_.at(image, 0.0);
+    double from = level;
+    if (!(now > level)) {
+      // A spring glued this instant sits on its threshold to the rounding of the arms' sums:
+      // where its tension eases it stays, until the load comes back to where it is now.
+      if (!(now >= level - kThresholdRounding * std::abs(level) &&
+            front_load_.slope(image).at(0.0) > 0.0)) {
+        return true;
+      }
+      from = now;
+    }
+    double span = target - t_;
+    if (!std::isfinite(span)) {
+      // Until separation the grips withdraw, so the load falls without bound: a span that
+      // reaches the level.
+      span = time_scale_;
+      for (int doubling = 0; !(front_load_.at(image, span) < from); ++doubling) {
+        if (doubling > 200) {
+          throw std::runtime_error("rate-law row: the front's load never reaches its threshold");
+        }
+        span *= 2.0;
+      }
+    }
+    const std::optional<double> onset = front_load_.first_reach(image, from, span);
+    if (!onset || !(t_ + *onset < target)) {
+      move_to(target, target_depth);
+      return false;
+    }
+    move_to(t_ + *onset, depth_at(t_ + *onset));
+    return true;
+  }
+  /// Spring m glues at stretch w [m] (< 0: pulled up to the indenter): its arms take E_j w.
+  void glue_arms(double stretch) {
+    FewValues<double> stresses(terms_.size());
+    for (std::size_t j = 0; j < terms_.size(); ++j) stresses[j] = terms_[j].modulus * stretch;
+    members_.push_back(arms_->enter(stresses, dx_));
+    glue_times_.push_back(t_);
+  }
+  /// Spring m lets go: its load q steps to zero at E_0 (each arm by E_j of the step) and it
+  /// creeps free from there. Returns the glassy energy released, dx q^2 / E_0 over both halves.
+  double release_arms() {
+    FewValues<double> stresses = arms_->leave(members_.back());
+    double q = modulus_ * (d_ - g(m_));
+    for (const double sigma : stresses) q += sigma;
+    glassy_step(stresses, terms_, -q / glue_modulus_);
+    ReleasedRowSpring spring{FreeSpringCreep(modes_, stresses), t_};
+    released_energy_ += released_energy(spring, t_);
+    released_.push_back(std::move(spring));
+    members_.pop_back();
+    glue_times_.pop_back();
+    return dx_ * q * q / glue_modulus_;
+  }
+  /// A free spring's energy at t [s], both halves: dx (E* w^2 + sum_j sigma_j^2 / E_j).
+  double released_energy(const ReleasedRowSpring& spring, double t) const {
+    const double w = spring.creep.stretch(t - spring.released_at);
+    const FewValues<double> stresses = spring.creep.stresses(t - spring.released_at);
+    double sum = modulus_ * w * w;
+    for (std::size_t j = 0; j < terms_.size(); ++j) {
+      sum += stresses[j] * stresses[j] / terms_[j].modulus;
+    }
+    return dx_ * sum;
+  }
+  double released_energy_at(double t) const {
+    double sum = 0.0;
+    for (const ReleasedRowSpring& spring : released_) sum += released_energy(spring, t);
+    return sum;
+  }
+
   /// The time walk: x(s) by dense-output steps, a let-go where x crosses x_m / l (TOMS 748 on
   /// the step's dense output), the target where s reaches it.
-  bool walk_in_time(double target, double target_depth) {
+  RowWalkEnd walk_in_time(double target, double target_depth) {
     const double t_w = t_;
     const double s_target = (target - t_w) / time_scale_;
     const auto d_of = [&](double s) { return depth_at(t_w + time_scale_ * s); };
+    if (arms_) front_load_ = front_load_now();
+    const auto speed_at = [&](double a, double s) {
+      return arms_ ? relaxing_speed(a, time_scale_ * s) : speed(a, d_of(s));
+    };
     const auto system = [&](const RowFrontVector& y, RowFrontVector& dy, double s) {
-      dy[0] = -speed(length_ * std::max(y[0], 0.0), d_of(s));
+      dy[0] = -speed_at(length_ * std::max(y[0], 0.0), s);
     };
     auto dense =
         odeint::make_dense_output(kRowFrontTolerance, kRowFrontTolerance, RowFrontStepper());
     const auto bounded = [&](double xs, double s, double h) {
       // Never a step past the axis or far past the target.
-      const double q = speed(length_ * xs, d_of(s));
+      const double q = speed_at(length_ * xs, s);
       if (q > 0.0) h = std::min(h, 0.5 * xs / q);
       if (std::isfinite(s_target)) h = std::min(h, std::max(s_target - s, 1e-300));
       return h;
@@ -320,19 +490,20 @@ class RateLawRow {
           move_to(t_w + time_scale_ * s_l, d_of(s_l));
           a_ = x(m_);
           let_go();
-          if (m_ == 0) return true;
+          if (m_ == 0) return RowWalkEnd::lost;
+          if (arms_) return RowWalkEnd::restart;
           from = s_l;
           continue;
         }
         if (ends) {
           a_ = length_ * x_at(s_target);
           move_to(target, target_depth);
-          return false;
+          return RowWalkEnd::reached;
         }
         break;
       }
       a_ = length_ * x1;
-      if (runs_to_axis(a_, d_of(s1))) {
+      if (arms_ ? relaxing_runs_to_axis(a_, time_scale_ * s1) : runs_to_axis(a_, d_of(s1))) {
         move_to(t_w + time_scale_ * s1, d_of(s1));
         return walk_in_radius(target, target_depth);
       }
@@ -343,12 +514,14 @@ class RateLawRow {
 
   /// The radius walk, r = -a / l rising to the axis with s(r): a let-go where r reaches
   /// -x_m / l, the target where s reaches it (TOMS 748 on the dense output).
-  bool walk_in_radius(double target, double target_depth) {
+  RowWalkEnd walk_in_radius(double target, double target_depth) {
     const double t_w = t_;
     const double s_target = (target - t_w) / time_scale_;
     const auto d_of = [&](double s) { return depth_at(t_w + time_scale_ * s); };
+    if (arms_) front_load_ = front_load_now();
     const auto system = [&](const RowFrontVector& y, RowFrontVector& dy, double r) {
-      const double q = speed(length_ * std::max(-r, 0.0), d_of(y[0]));
+      const double a = length_ * std::max(-r, 0.0);
+      const double q = arms_ ? relaxing_speed(a, time_scale_ * y[0]) : speed(a, d_of(y[0]));
       if (!(q > 0.0)) {
         throw std::runtime_error("rate-law row: the front stopped on its way to the axis");
       }
@@ -378,14 +551,15 @@ class RateLawRow {
           const double r_e = crossing([&](double r) { return s_at(r) - s_target; }, from, last);
           a_ = -length_ * r_e;
           move_to(target, target_depth);
-          return false;
+          return RowWalkEnd::reached;
         }
         if (r1 < r_spring) break;
         const double s_l = s_at(r_spring);
         move_to(t_w + time_scale_ * s_l, d_of(s_l));
         a_ = x(m_);
         let_go();
-        if (m_ == 0) return true;
+        if (m_ == 0) return RowWalkEnd::lost;
+        if (arms_) return RowWalkEnd::restart;
         from = r_spring;
       }
     }
@@ -415,9 +589,12 @@ class RateLawRow {
   double dx_;
   double modulus_;
   double work_of_adhesion_;
-  double hess_;        ///< 2 pi dgamma / E* [m]
-  double length_;      ///< l: the row's radius [m]
-  double time_scale_;  ///< l / v* [s]
+  double hess_;             ///< 2 pi dgamma / E* [m]
+  double length_;           ///< l: the row's radius [m]
+  double time_scale_;       ///< l / v* [s]
+  Material glue_material_;  ///< the material a glue sees: the glassy one on a relaxing bulk
+  double glue_modulus_;     ///< E_0 [Pa] (E* on an elastic bulk)
+  double glassy_hess_;      ///< 2 pi dgamma / E_0 [m]
   std::vector<double> images_;
   std::vector<double> image_sums_;  ///< sum of g_1..g_m [m], m = 0..N
 
@@ -440,6 +617,17 @@ class RateLawRow {
   std::optional<ContactSnapshot> peak_;
   std::vector<JumpRecord> jumps_;
   ContactSnapshot lost_at_;
+
+  // A relaxing bulk (material.relaxation): the glued springs' arms, 1..m in order.
+  std::vector<PronyTerm> terms_;
+  std::optional<DrivenArmSums> arms_;
+  std::vector<DrivenArmMember> members_;
+  std::vector<double> glue_times_;  ///< [s] per glued spring
+  std::shared_ptr<const RetardationModes> modes_;
+  std::vector<ReleasedRowSpring> released_;
+  double released_energy_ = 0.0;  ///< the let-go springs' energy at their release [J]
+  double glued_bulk_ = 0.0;       ///< the glued arms' dashpots' dissipation [J]
+  FrontLineLoad front_load_;
 };
 
 /// The stage's drive from depth d at time t: `to` and `by` under fixed grips, a hold without a
@@ -469,7 +657,17 @@ RowStageDrive rate_law_stage_drive(const Stage& stage, double t, double d) {
 
 RunResult run_rate_law_row(const Scene& scene, const ObserverList& observers) {
   RunResult result;
-  const ProgramRowSpec spec = program_row(scene, program_row_frame(scene), scene.springs);
+  ProgramRowSpec spec = program_row(scene, program_row_frame(scene), scene.springs);
+  if (scene.material.relaxes() && !scene.material.glues_on_touch()) {
+    // The front glues at the glassy gap: spring N where it glues at the deepest depth, as the
+    // viscoelastic row places it.
+    Scene glassy = scene;
+    glassy.material = glassy_material(scene.material);
+    const ProgramRowSpec at_glassy_gap =
+        program_row(glassy, program_row_frame(glassy), spec.reference_springs);
+    spec.reference_radius = at_glassy_gap.reference_radius;
+    spec.reference_image = at_glassy_gap.reference_image;
+  }
   result.springs = spec.reference_springs;
   result.accuracy.rows = {spec.reference_springs};
   result.accuracy.outer_radius = spec.reference_radius;
@@ -484,6 +682,7 @@ RunResult run_rate_law_row(const Scene& scene, const ObserverList& observers) {
     const double surface_before = row.surface();
     const double front_before = row.front_losses();
     const double glue_before = row.glue_losses();
+    const double bulk_before = row.bulk();
     StageRecord record;
     record.name = stage.name;
     if (stage.until_separation && row.glued() == 0) {
@@ -520,6 +719,11 @@ RunResult run_rate_law_row(const Scene& scene, const ObserverList& observers) {
     // The let-gos' losses are the front's dissipation, the glues' the advancing front's.
     e.jump_losses = record.work.front + (row.glue_losses() - glue_before);
     e.residual = e.machine_work - e.stored_change - e.surface_change - e.jump_losses;
+    if (row.relaxing()) {
+      record.work.bulk = row.bulk() - bulk_before;
+      e.dissipated_by_bulk = record.work.bulk;
+      e.residual -= e.dissipated_by_bulk;
+    }
     record.energy = e;
     total += record.work;
     total_energy += e;

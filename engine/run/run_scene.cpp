@@ -176,17 +176,7 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
 }
 
 RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
-  if (scene.material.relaxes()) {
-    switch (scene.plan.driver) {
-      case RouteDriver::rtol:
-        return run_viscoelastic_rtol(scene, *scene.discretization.rtol, observers);
-      case RouteDriver::richardson:
-        return run_viscoelastic_richardson(scene, observers);
-      case RouteDriver::one_row:
-        break;
-    }
-    return run_viscoelastic_program(scene, observers);
-  }
+  // The rate law's row takes an elastic or a relaxing bulk.
   if (scene.front_speed_law) {
     switch (scene.plan.driver) {
       case RouteDriver::rtol:
@@ -197,6 +187,17 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
         break;
     }
     return run_rate_law_row(scene, observers);
+  }
+  if (scene.material.relaxes()) {
+    switch (scene.plan.driver) {
+      case RouteDriver::rtol:
+        return run_viscoelastic_rtol(scene, *scene.discretization.rtol, observers);
+      case RouteDriver::richardson:
+        return run_viscoelastic_richardson(scene, observers);
+      case RouteDriver::one_row:
+        break;
+    }
+    return run_viscoelastic_program(scene, observers);
   }
   RunResult result;
   switch (scene.plan.driver) {

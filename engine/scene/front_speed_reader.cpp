@@ -63,17 +63,17 @@ void refuse_outside_front_speed_scope(const Scene& scene, const std::string& at)
     }
   }
   if (scene.plan.engine == RouteEngine::continuum) return;
-  // The program row: the event method's rows, an elastic bulk.
+  // The program row: the event method's rows, an elastic or a relaxing bulk.
   if (scene.solver.method != SolverMethod::event) {
     refuse_front_speed(at,
                        "runs on the row with solver.method = \"event\" (or on the continuum "
                        "route: solver.method = \"continuum\")");
   }
-  if (m.relaxes()) refuse_front_speed(at, "is not yet taken with material.relaxation");
   // A press after a stage in which the front may have receded (a pull, or a hold: the front
   // recedes while G > dgamma) needs rebinding: the springs glue again at the advancing limit;
-  // without it they would push back unglued, which the row's front does not follow.
-  if (scene.program->rebinding) return;
+  // without it they would push back unglued, which the row's front does not follow. On a
+  // relaxing bulk a let-go spring creeps free, which the row does not follow back into contact.
+  if (scene.program->rebinding && !m.relaxes()) return;
   double held = 0.0;
   bool may_have_let_go = false;
   for (const Stage& stage : scene.program->stages) {
@@ -83,6 +83,11 @@ void refuse_outside_front_speed_scope(const Scene& scene, const std::string& at)
       next = held + stage.normal->value;
     }
     const bool presses = next > held && !stage.until_separation;
+    if (presses && may_have_let_go && m.relaxes()) {
+      refuse_front_speed(at, fmt::format("stage '{}' may press the contact again after springs "
+                                         "let go: not yet taken with material.relaxation",
+                                         printable(stage.name)));
+    }
     if (presses && may_have_let_go) {
       refuse_front_speed(at, fmt::format("stage '{}' may press the contact again after springs "
                                          "let go: the rate law's row needs loading.rebinding = "
