@@ -43,9 +43,8 @@ std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plan
   return terms;
 }
 
-void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& loading,
-                                     const TomlReader& material, const RouteKeys& route_keys,
-                                     const Scene& scene) {
+void refuse_outside_relaxation_scope(const TomlReader& loading, const TomlReader& material,
+                                     const RouteKeys& route_keys, const Scene& scene) {
   if (!scene.material.relaxes()) return;
   if (!scene.program) {
     material.fail_at("relaxation",
@@ -58,7 +57,6 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
         "relaxation",
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
-  if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
   // The normal control a stage runs under: its own, or the one before it (fixed grips at first).
   std::string normal_control = "fixed-grips";
   bool sheared = false;  ///< a stage before moved the tangential axis
@@ -104,6 +102,16 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
   if (route_keys.method_given && scene.solver.method != SolverMethod::event) {
     throw SceneError(route_keys.method_at +
                      not_yet_with_relaxation("a method other than \"event\""));
+  }
+}
+
+void refuse_friction_with_relaxation(const TomlReader& friction, const Scene& scene) {
+  if (!scene.material.relaxes() || !scene.friction) return;
+  if (scene.friction->glued == GluedShear::limited) {
+    friction.fail_at("glued", not_yet_with_relaxation("glued = \"coulomb\""));
+  }
+  if (scene.friction->law) {
+    friction.fail_at("law", not_yet_with_relaxation("a friction law other than one coefficient"));
   }
 }
 

@@ -95,8 +95,8 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
       {"Untimed", replaced(replaced(kViscous, "duration = 0.2\n", ""), "duration = 1.0\n", ""),
        "v.toml:5:14: material.relaxation: needs every loading stage to have a duration or speed "
        "(docs/viscoelastic.md \"What it refuses\")"},
-      {"Friction", kViscous + "[friction]\ncoefficient = 0.3\n",
-       "v.toml:18:1: friction: [friction] is not yet taken with material.relaxation "
+      {"CoulombGlue", kViscous + "[friction]\ncoefficient = 0.3\nglued = \"coulomb\"\n",
+       "v.toml:20:9: friction.glued: glued = \"coulomb\" is not yet taken with material.relaxation "
        "(docs/viscoelastic.md \"What it refuses\")"},
       {"AdhesiveStress",
        replaced(kViscous, "work_of_adhesion = 0.0\n",
