@@ -47,6 +47,8 @@ struct ViscoelasticSpringShear {
 };
 
 constexpr std::int8_t kStickEvent = 2;
+/// With friction and rebinding: a sticking pressed spring at the glue's front glues.
+constexpr std::int8_t kGlueEvent = 3;
 
 struct ViscoelasticSpringState {
   ViscoelasticSpringPhase phase = ViscoelasticSpringPhase::untouched;
@@ -464,6 +466,7 @@ class ViscoelasticRowDrive::Row {
       ++state_[*j].version;
       schedule(*j);
     }
+    reschedule_glue_front(k);
     return change;
   }
 
@@ -837,6 +840,7 @@ class ViscoelasticRowDrive::Row {
     s.shear->friction_event = 0;
     s.shear->changed_at = time_;
     count_pressed(s, springs_.images[k]);
+    if (kind == kGlueEvent) return glue_pressed(k, run);
     ViscoelasticRowChange change = ViscoelasticRowChange::slip;
     if (kind == kStickEvent) {
       const FewValues<double> stresses = s.shear->slide->stresses(time_);
@@ -854,7 +858,100 @@ class ViscoelasticRowDrive::Row {
     }
     ++s.version;
     schedule(k);
+    // A stick or a slip changes the run of sticking springs the glue's front may take.
+    reschedule_glue_front(k);
     return change;
+  }
+
+  // Rebinding under friction (docs/friction.md "Rebinding: where the glue holds"): a pressed
+  // spring that sticks glues again keeping its stretch, from the glue's front outwards, out to
+  // the outermost spring of the run of sticking springs there that holds at its kept stretch
+  // with no elongation.
+
+  bool rebinds_pressed() const {
+    return springs_.friction && springs_.edge && springs_.edge->rebinding && tangential_on_;
+  }
+  /// The spring just outside the glue (the centre's without glue).
+  std::size_t glue_front() const { return glued_.empty() ? 0 : glued_.outermost() + 1; }
+  bool sticks_pressed(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    return s.phase == ViscoelasticSpringPhase::pressed && s.shear && s.shear->in_set;
+  }
+  /// Sticking spring k's tangential line load now [N/m].
+  double kept_tangential_load(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    double load = tangential_relaxed() * (tangential_ - s.shear->origin);
+    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+      load += tangential_arms_.stress(s.shear->member, j);
+    }
+    return load;
+  }
+  /// |q_x| [N/m] below which glued spring k holds with no elongation: the glassy criterion's
+  /// margin at (0, q_x / G_0, x_k) is positive, bisected (a built-in criterion's holding set is
+  /// convex and symmetric in u_x); infinity without a criterion or where it always holds.
+  double holding_tangential_load(std::size_t k) const {
+    const ViscoelasticEdge& edge = *springs_.edge;
+    if (!edge.criterion) return HUGE_VAL;
+    const double x = springs_.spacing * static_cast<double>(k + 1);
+    const auto holds = [&](double q) {
+      return edge.criterion->margin({0.0, q / edge.glassy_shear_modulus, x}) > 0.0;
+    };
+    if (!holds(0.0)) return 0.0;
+    double hi = std::max(edge.let_go_loads[k], 1e-300);
+    for (int i = 0; i < 2000 && holds(hi); ++i) hi *= 2.0;
+    if (holds(hi)) return HUGE_VAL;
+    double lo = 0.0;
+    for (;;) {
+      const double mid = lo + 0.5 * (hi - lo);
+      if (mid <= lo || mid >= hi) return lo;
+      (holds(mid) ? lo : hi) = mid;
+    }
+  }
+  /// The front spring k's glue: now where some spring of the sticking run from k outwards holds
+  /// at its kept stretch, else where k's own tangential load falls within what holds.
+  std::optional<double> rebinding_glue_delay(std::size_t k) const {
+    if (!rebinds_pressed() || k != glue_front() || !sticks_pressed(k)) return std::nullopt;
+    for (std::size_t j = k; j < state_.size() && sticks_pressed(j); ++j) {
+      if (std::abs(kept_tangential_load(j)) < holding_tangential_load(j)) return 0.0;
+    }
+    const ViscoelasticSpringState& s = state_[k];
+    FewValues<double> stresses(tangential_terms_.size());
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      stresses[j] = tangential_arms_.stress(s.shear->member, j);
+    }
+    const ExponentialSum load =
+        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
+                       stresses, tangential_rate_);
+    const double holding = holding_tangential_load(k);
+    return first_crossing(load, load.at(0.0) > 0.0 ? holding : -holding, end_ - time_);
+  }
+  /// Pressed sticking spring k glues keeping its stretch: no step, its ring's surface energy
+  /// lost as a glue's at no gap is.
+  ViscoelasticRowChange glue_pressed(std::size_t k, ViscoelasticRowRun& run) {
+    const auto boundary_before = boundary();
+    ViscoelasticSpringState& s = state_[k];
+    const double surface = springs_.edge->surface_energies[k];
+    surface_.add(-surface);
+    jump_losses_.add(surface);
+    s.phase = ViscoelasticSpringPhase::glued;
+    s.glued_at = time_;
+    glued_.insert(k);
+    ++run.glues;
+    for (const auto j : {std::optional<std::size_t>(k), boundary_before,
+                         std::optional<std::size_t>(glue_front())}) {
+      if (!j || *j >= state_.size()) continue;
+      ++state_[*j].version;
+      schedule(*j);
+    }
+    return ViscoelasticRowChange::glue;
+  }
+  /// After spring k's change the glue's front may glue now or later: it is looked at again.
+  void reschedule_glue_front(std::size_t k) {
+    if (!rebinds_pressed()) return;
+    const std::size_t front = glue_front();
+    if (front == k || front >= state_.size()) return;
+    ++state_[front].version;
+    schedule(front);
   }
 
   /// A segment begins: each sliding spring's limit follows the new rates from its state now.
@@ -1024,7 +1121,11 @@ class ViscoelasticRowDrive::Row {
     if (!s.shear) return contact;
     s.shear->friction_event = 0;
     if (s.phase != ViscoelasticSpringPhase::pressed || !springs_.friction) return contact;
-    const auto [friction, kind] = friction_event_delay(k);
+    auto [friction, kind] = friction_event_delay(k);
+    if (const auto glue = rebinding_glue_delay(k); glue && (!friction || *glue < *friction)) {
+      friction = glue;
+      kind = kGlueEvent;
+    }
     if (!friction || (contact && !(*friction < *contact))) return contact;
     s.shear->friction_event = kind;
     return friction;

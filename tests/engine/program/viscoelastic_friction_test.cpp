@@ -275,6 +275,69 @@ TEST(ViscoelasticFriction, AVanishingArmIsTheElasticFrictionProgram) {
   }
 }
 
+/// An adhesive parabola pressed to 2.3e-4 m and eased back to 2.25e-4 m (the row's last spring
+/// then glued or apart alike on both rows), sheared to 3e-5 m (past the glue's strength at its
+/// edge), back to 0, held 0.5 s and pulled off, under mu = 1 with rebinding.
+std::string rebinding_text(double arm) {
+  std::string text = "[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.05\n";
+  if (arm > 0.0) {
+    text += fmt::format("relaxation = [ {{ modulus = {}, time = {} }} ]\n", arm, kFrictionTau);
+  }
+  text += fmt::format(
+      "[loading]\nrebinding = true\n[profile]\ntype = \"parabolic\"\nradius = {}\n"
+      "[[loading.stage]]\nname = \"press\"\nnormal = {{ control = \"fixed-grips\", to = 2.3e-4 }}\n"
+      "speed = 1.0e-3\n[[loading.stage]]\nname = \"ease\"\nnormal = {{ control = "
+      "\"fixed-grips\", to = 2.25e-4 }}\nspeed = 1.0e-3\n"
+      "[[loading.stage]]\nname = \"shear\"\ntangential = {{ control = \"fixed-grips\", to = 3.0e-5 "
+      "}}\nspeed = 1.0e-4\n[[loading.stage]]\nname = \"back\"\ntangential = {{ control = "
+      "\"fixed-grips\", to = 0.0 }}\nspeed = 1.0e-4\n[[loading.stage]]\nname = \"hold\"\n"
+      "duration = 0.5\n[[loading.stage]]\nname = \"pull\"\nnormal = {{ by = -1.0 }}\n"
+      "until = \"separation\"\nspeed = 1.0e-3\n[friction]\ncoefficient = 1.0\n"
+      "[discretization]\nsprings = 200\n[solver]\nmethod = \"event\"\n",
+      kFrictionRadius);
+  return text;
+}
+
+TEST(ViscoelasticFriction, AVanishingArmRebindsAsTheElasticFrictionProgram) {
+  // The shear lets the glue's outer springs go pressed (they slide); shearing back, they stick
+  // and glue again keeping their stretch where the run holds (docs/friction.md "Rebinding"):
+  // every stage up to the pull as the elastic program's (glue, stick and let-go counts, F_x,
+  // sliding springs, friction to 1e-8), and the pull-off's critical point. In the pull the
+  // elastic row glues the edge spring again at the instant it lifts (its gap 0 within the glue
+  // gap), the viscoelastic edge takes no spring back at the time it lifted: that stage's
+  // friction differs and is not compared.
+  const RunResult v = run_friction_text(rebinding_text(1.0e-3));
+  const RunResult e = run_friction_text(rebinding_text(0.0));
+  ASSERT_TRUE(v.critical && e.critical);
+  ASSERT_EQ(v.stages.size(), e.stages.size());
+  const double press_force = e.stages.front().end.normal_force;
+  const double shear_work = std::abs(e.stages[2].work.tangential);
+  for (std::size_t i = 0; i + 1 < v.stages.size(); ++i) {
+    std::printf(
+        "rebinding, stage %s: F_x %.12e (elastic %.12e), in contact %lld (%lld), "
+        "sliding %lld (%lld), friction %.12e (%.12e)\n",
+        v.stages[i].name.c_str(), v.stages[i].end.tangential_force,
+        e.stages[i].end.tangential_force,
+        static_cast<long long>(v.stages[i].end.springs_in_contact),
+        static_cast<long long>(e.stages[i].end.springs_in_contact),
+        static_cast<long long>(v.stages[i].end.springs_sliding),
+        static_cast<long long>(e.stages[i].end.springs_sliding), v.stages[i].work.friction,
+        e.stages[i].work.friction);
+    EXPECT_NEAR(v.stages[i].end.tangential_force, e.stages[i].end.tangential_force,
+                1e-8 * press_force);
+    EXPECT_EQ(v.stages[i].end.glued_radius, e.stages[i].end.glued_radius) << i;
+    EXPECT_EQ(v.stages[i].end.springs_sliding, e.stages[i].end.springs_sliding) << i;
+    EXPECT_NEAR(v.stages[i].work.friction, e.stages[i].work.friction, 1e-8 * shear_work);
+  }
+  // Shearing back glues springs again: the glued radius at the end of "back" exceeds the
+  // shear's.
+  EXPECT_GT(v.stages[3].end.glued_radius, v.stages[2].end.glued_radius);
+  std::printf("rebinding, critical F %.12e (elastic %.12e)\n", v.critical->normal_force,
+              e.critical->normal_force);
+  EXPECT_NEAR(v.critical->normal_force, e.critical->normal_force, 1e-8 * press_force);
+  expect_balances_close(v, "rebinding");
+}
+
 TEST(ViscoelasticFriction, AVanishingArmIsTheElasticCattaneoMindlin) {
   // Pressed and sheared into partial slip, then back and forth: every stage end and its
   // friction as the elastic friction program's, to 1e-8 (the arm's 1e-9 share).
