@@ -126,7 +126,7 @@ def main():
         ax.set_xlabel("prior shear displacement u / u_c (elastic, G_inf)")
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("pull-off force / pull-off force without shear")
-    axes[-1].legend(fontsize=6, loc="upper right")
+    axes[-1].legend(fontsize=6, loc="center right")
     fig.suptitle("pull-off after shear on a relaxing bulk (pull_off_after_shear_relaxing.toml)",
                  fontsize=9)
     fig.tight_layout()
