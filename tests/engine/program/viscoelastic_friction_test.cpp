@@ -255,6 +255,9 @@ TEST(ViscoelasticFriction, AVanishingArmIsTheElasticFrictionProgram) {
         e.critical->tangential_force, static_cast<long long>(v.critical->springs_sliding),
         static_cast<long long>(e.critical->springs_sliding), v.work->friction, e.work->friction,
         static_cast<int>(v.status), static_cast<int>(e.status));
+    if (v.peak && e.peak) {
+      std::printf("  peak F %.12e (elastic %.12e)\n", v.peak->normal_force, e.peak->normal_force);
+    }
     const double press_force = e.stages.front().end.normal_force;
     const double shear_work = e.work->tangential;
     EXPECT_NEAR(v.critical->normal_force, e.critical->normal_force, 1e-8 * press_force);
@@ -263,6 +266,10 @@ TEST(ViscoelasticFriction, AVanishingArmIsTheElasticFrictionProgram) {
     EXPECT_EQ(v.critical->springs_sliding, e.critical->springs_sliding);
     EXPECT_EQ(v.status, e.status);
     EXPECT_NEAR(v.work->friction, e.work->friction, 1e-8 * shear_work);
+    ASSERT_EQ(v.peak.has_value(), e.peak.has_value()) << ux;
+    if (v.peak) {
+      EXPECT_NEAR(v.peak->normal_force, e.peak->normal_force, 1e-8 * press_force);
+    }
     ASSERT_EQ(v.stages.size(), e.stages.size());
     for (std::size_t i = 1; i < v.stages.size(); ++i) {
       EXPECT_NEAR(v.stages[i].end.normal_force, e.stages[i].end.normal_force, 1e-8 * press_force);
