@@ -141,6 +141,17 @@ done
   --threads "$threads" --log-level error
 echo
 "$py" scripts/plot_pull_off_after_shear.py --results "$results" --springs 2000 8000
+# The same sphere on a relaxing bulk (E_0 = 10 E_inf, tau = 1 s): sheared to u over 0 .. 4 u_c
+# at u_c / tau times 0.01, 1 and 100, held 1e-3 s or 10 tau, with and without rebinding
+# (docs/friction.md "Pull-off after shear on a relaxing bulk"; about 20 s on 2 cores).
+echo "== friction: pull-off after shear on a relaxing bulk" >&2
+"$mdrsim" sweep scenes/viscoelastic/pull_off_after_shear_relaxing.toml \
+  --vary "loading.stage.4.tangential.to=0:5.1171560213864e-5:17" \
+  --vary "loading.stage.4.speed=1.27929e-7,1.27929e-5,1.27929e-3" \
+  --vary "loading.stage.5.duration=0.001,10" --vary "loading.rebinding=false,true" \
+  --csv "$results/pull_off_after_shear_relaxing.csv" --force --threads "$threads" \
+  --log-level error
+"$py" scripts/plot_pull_off_after_shear_relaxing.py --results "$results"
 
 # Beyond the paper: finite-range adhesion (Maugis-Dugdale, docs/maugis.md). The parabola's
 # pull-off against Maugis' parameter lambda under a fixed load and fixed grips on the continuum

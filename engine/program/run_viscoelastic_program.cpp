@@ -70,6 +70,10 @@ EventKind viscoelastic_event_kind(ViscoelasticRowChange change) {
       return EventKind::spring_lifted;
     case ViscoelasticRowChange::glue:
       return EventKind::spring_glued;
+    case ViscoelasticRowChange::slip:
+      return EventKind::spring_slipped;
+    case ViscoelasticRowChange::stick:
+      return EventKind::spring_stuck;
     case ViscoelasticRowChange::let_go:
       break;
   }
@@ -84,6 +88,7 @@ ViscoelasticRowSprings viscoelastic_springs(const Scene& scene, const ProgramRow
                                  spec.reference_radius / static_cast<double>(n),
                                  {}};
   springs.shear_ratio = scene.material.effective_shear_modulus / scene.material.effective_modulus;
+  if (scene.friction) springs.friction = scene.friction->coefficient;
   springs.images.reserve(static_cast<std::size_t>(n));
   for (std::int64_t i = 1; i < n; ++i) {
     springs.images.push_back(program_image(scene, springs.spacing * static_cast<double>(i)));
@@ -105,14 +110,16 @@ StageRecord viscoelastic_stage_record(const std::string& name, const Viscoelasti
   record.work.normal = now.machine_work - before.machine_work;
   record.work.tangential = now.tangential_work - before.tangential_work;
   record.work.bulk = now.dissipated_by_bulk - before.dissipated_by_bulk;
+  record.work.friction = now.dissipated_by_friction - before.dissipated_by_friction;
   EnergyBalance e;
   e.machine_work = record.work.normal + record.work.tangential;
   e.stored_change = now.stored - before.stored + machine_spring_change;
   e.dissipated_by_bulk = record.work.bulk;
   e.surface_change = now.surface - before.surface;
   e.jump_losses = now.jump_losses - before.jump_losses;
-  e.residual =
-      e.machine_work - e.stored_change - e.surface_change - e.dissipated_by_bulk - e.jump_losses;
+  e.dissipated_by_friction = record.work.friction;
+  e.residual = e.machine_work - e.stored_change - e.surface_change - e.dissipated_by_bulk -
+               e.jump_losses - e.dissipated_by_friction;
   record.energy = e;
   return record;
 }
@@ -246,7 +253,9 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
         (change != ViscoelasticRowChange::let_go || held_let_gos.back().state.time != s.time)) {
       release_let_gos();
     }
-    if (adhesive) {
+    const bool friction_change =
+        change == ViscoelasticRowChange::slip || change == ViscoelasticRowChange::stick;
+    if (adhesive && !friction_change) {
       const bool by_shear = change == ViscoelasticRowChange::let_go && drive.last_let_go_by_shear();
       report_jump(
           jumps.change(change, stage_name, drive.before_last_change(), drive.sample(), by_shear));

@@ -16,6 +16,8 @@ ContactSnapshot viscoelastic_snapshot(const ViscoelasticRowSample& s) {
   c.glued_radius = s.glued_radius;
   c.tangential_displacement = s.tangential_displacement;
   c.tangential_force = s.tangential_force;
+  c.springs_sliding = s.sliding;
+  c.stick_radius = s.stick_radius;
   c.time = s.time;
   return c;
 }

@@ -18,6 +18,7 @@
 #include "engine/model/prony_shared_drive.hpp"
 #include "engine/model/prony_shared_energy.hpp"
 #include "engine/model/viscoelastic_edge.hpp"
+#include "engine/program/viscoelastic_slide.hpp"
 
 namespace mdrsim {
 namespace {
@@ -36,7 +37,19 @@ struct ViscoelasticSpringShear {
   double counted_stretch = 0.0;
   FewValues<double> counted_stresses;
   double counted_stored = 0.0;
+  /// Whether the member is in the tangential arms' set (glued, or pressed and sticking).
+  bool in_set = false;
+  /// With friction: the slide of a pressed spring at its limit; none while it sticks.
+  std::unique_ptr<ViscoelasticSlide> slide;
+  /// With friction: the spring's queued event (next_event_delay): 0 none, +1 / -1 a slip along
+  /// +x / -x, kStickEvent a stick.
+  std::int8_t friction_event = 0;
+  double changed_at = -1.0;  ///< [s] its last slip or stick
 };
+
+constexpr std::int8_t kStickEvent = 2;
+/// With friction and rebinding: a sticking pressed spring at the glue's front glues.
+constexpr std::int8_t kGlueEvent = 3;
 
 struct ViscoelasticSpringState {
   ViscoelasticSpringPhase phase = ViscoelasticSpringPhase::untouched;
@@ -208,9 +221,11 @@ class ViscoelasticRowDrive::Row {
     tangential_rate_ = segment.tangential_rate;
     end_tangential_ =
         segment.end_tangential.value_or(tangential_ + tangential_rate_ * segment.duration);
-    if (tangential_rate_ != 0.0 && !tangential_on_ && springs_.edge && springs_.shear_ratio > 0.0) {
+    if (tangential_rate_ != 0.0 && !tangential_on_ && (springs_.edge || springs_.friction) &&
+        springs_.shear_ratio > 0.0) {
       start_tangential();
     }
+    if (springs_.friction) restart_slides();
     queue_ = {};
     first_events_.clear();
     next_first_event_ = 0;
@@ -275,11 +290,13 @@ class ViscoelasticRowDrive::Row {
         queue_.pop();
       }
     }
+    if (state_[k].shear && state_[k].shear->friction_event) return apply_friction(k, run);
     if (springs_.edge) return apply_at_edge(k, run);
     ViscoelasticSpringState& s = state_[k];
     const bool release = s.phase == ViscoelasticSpringPhase::pressed;
     if (release) {
       count_pressed(s, springs_.images[k]);
+      if (s.shear) lift_tangentially(k);
       const FewValues<double> stresses = arms_.leave(s.member);
       s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
       s.creep.emplace(modes_, stresses);
@@ -302,6 +319,7 @@ class ViscoelasticRowDrive::Row {
       s.phase = ViscoelasticSpringPhase::pressed;
       pressed_.insert(k);
       pressed_images_.add(springs_.images[k]);
+      if (springs_.friction && tangential_on_) glue_tangentially(s);
       ++run.touches;
       run.separation_time.reset();
     }
@@ -322,7 +340,8 @@ class ViscoelasticRowDrive::Row {
   ViscoelasticRowEnergy energy() {
     count_all();
     ViscoelasticRowEnergy e{machine_work_.value(), tangential_work_.value(), 0.0,
-                            dissipated_.value(),   surface_.value(),         jump_losses_.value()};
+                            dissipated_.value(),   surface_.value(),         jump_losses_.value(),
+                            friction_.value()};
     CompensatedSum stored;
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
@@ -332,8 +351,11 @@ class ViscoelasticRowDrive::Row {
         stored.add(s.counted_stored);
       }
       if (!tangential_on_) continue;
-      if (s.phase == ViscoelasticSpringPhase::glued) {
+      if (s.shear && s.shear->in_set) {
         stored.add(tangential_stored_of(s.shear->counted_stretch, s.shear->counted_stresses));
+      } else if (s.shear && s.shear->slide) {
+        stored.add(
+            tangential_stored_of(s.shear->slide->stretch(time_), s.shear->slide->stresses(time_)));
       } else if (s.shear && s.shear->creep) {
         stored.add(s.shear->counted_stored);
       }
@@ -352,10 +374,13 @@ class ViscoelasticRowDrive::Row {
         glued_.empty() ? 0.0 : springs_.spacing * static_cast<double>(glued_.outermost() + 1);
     double tangential_loads = 0.0;
     if (tangential_on_) {
-      tangential_loads = tangential_relaxed() * (static_cast<double>(glued_.size()) * tangential_ -
-                                                 glued_origins_.value()) +
-                         tangential_arms_.arm_force();
+      tangential_loads =
+          tangential_relaxed() *
+              (static_cast<double>(tangential_members_) * tangential_ - glued_origins_.value()) +
+          tangential_arms_.arm_force();
+      for (const std::size_t k : sliding_) tangential_loads += state_[k].shear->slide->load(time_);
     }
+    const bool carries = tangential_members_ > 0 || !sliding_.empty();
     return {time_,
             depth_,
             2.0 * springs_.spacing * line_loads,
@@ -364,7 +389,11 @@ class ViscoelasticRowDrive::Row {
             static_cast<std::int64_t>(glued_.size()),
             glued_radius,
             tangential_,
-            glued_.empty() ? 0.0 : 2.0 * springs_.spacing * tangential_loads};
+            carries ? 2.0 * springs_.spacing * tangential_loads : 0.0,
+            static_cast<std::int64_t>(sliding_.size()),
+            !springs_.friction || sliding_.empty()
+                ? (springs_.friction ? radius : 0.0)
+                : springs_.spacing * static_cast<double>(*sliding_.begin())};
   }
 
  private:
@@ -443,6 +472,7 @@ class ViscoelasticRowDrive::Row {
       ++state_[*j].version;
       schedule(*j);
     }
+    reschedule_glue_front(k);
     return change;
   }
 
@@ -534,7 +564,11 @@ class ViscoelasticRowDrive::Row {
   /// and its tangential load (q_x^2 / (2 G_0) released) and stays pressed, pushing only.
   void lose_glue_pressed(std::size_t k, ViscoelasticRowRun& run) {
     ViscoelasticSpringState& s = state_[k];
-    let_go_tangentially(s);
+    if (springs_.friction) {
+      slip_to_limit(k);
+    } else {
+      let_go_tangentially(s);
+    }
     const double surface = springs_.edge->surface_energies[k];
     surface_.add(surface);
     jump_losses_.add(-surface);
@@ -559,6 +593,8 @@ class ViscoelasticRowDrive::Row {
       }
     }
     const double x = springs_.spacing * static_cast<double>(k + 1);
+    if (springs_.friction)
+      load = released_tangential(load, load_now(s, depth_ - springs_.images[k]));
     return edge.criterion->margin({0.0, load / edge.glassy_shear_modulus, x}) <= 0.0;
   }
 
@@ -573,6 +609,7 @@ class ViscoelasticRowDrive::Row {
   void leave_contact(std::size_t k, ViscoelasticRowRun& run) {
     ViscoelasticSpringState& s = state_[k];
     count_pressed(s, springs_.images[k]);
+    if (s.shear) lift_tangentially(k);
     const FewValues<double> stresses = arms_.leave(s.member);
     s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
     s.counted_at = time_;
@@ -611,6 +648,7 @@ class ViscoelasticRowDrive::Row {
       if (tangential_on_) glue_tangentially(s);
       ++run.glues;
     } else {
+      if (springs_.friction && tangential_on_) glue_tangentially(s);
       ++run.touches;
     }
     s.member = arms_.enter(stresses, 1.0);
@@ -666,7 +704,8 @@ class ViscoelasticRowDrive::Row {
     }
     machine_work_.add(rate_ * load_integral);
     dissipated_.add(dissipated);
-    if (tangential_on_ && s.phase == ViscoelasticSpringPhase::glued) count_tangential(s, h);
+    if (tangential_on_ && s.shear && s.shear->in_set) count_tangential(s, h);
+    if (s.shear && s.shear->slide) count_sliding(s);
     s.counted_at = time_;
     s.counted_stretch = depth_ - image;
   }
@@ -690,7 +729,9 @@ class ViscoelasticRowDrive::Row {
     tangential_modes_ =
         std::make_shared<const RetardationModes>(tangential_relaxed(), tangential_terms_);
     for (ViscoelasticSpringState& s : state_) {
-      if (s.phase == ViscoelasticSpringPhase::glued) glue_tangentially(s);
+      const bool joins = s.phase == ViscoelasticSpringPhase::glued ||
+                         (springs_.friction && s.phase == ViscoelasticSpringPhase::pressed);
+      if (joins) glue_tangentially(s);
     }
   }
 
@@ -712,6 +753,8 @@ class ViscoelasticRowDrive::Row {
     s.shear->member = tangential_arms_.enter(stresses, 1.0);
     s.shear->counted_stretch = stretch;
     s.shear->counted_stresses = stresses;
+    s.shear->in_set = true;
+    ++tangential_members_;
     glued_origins_.add(s.shear->origin);
   }
 
@@ -723,10 +766,12 @@ class ViscoelasticRowDrive::Row {
     const double stretch = tangential_ - s.shear->origin;
     const double load = tangential_relaxed() * stretch + sum_of(stresses);
     const double before = tangential_stored_of(stretch, stresses);
-    glassy_step(stresses, tangential_terms_, -load / springs_.edge->glassy_shear_modulus);
+    glassy_step(stresses, tangential_terms_, -load / glassy_shear_modulus());
     const double after = tangential_stored_of(-sum_of(stresses) / tangential_relaxed(), stresses);
     jump_losses_.add(before - after);
     glued_origins_.add(-s.shear->origin);
+    s.shear->in_set = false;
+    --tangential_members_;
     s.shear->creep.emplace(tangential_modes_, stresses);
     s.shear->free_since = time_;
     s.shear->counted_stored = after;
@@ -774,6 +819,293 @@ class ViscoelasticRowDrive::Row {
     dissipated_.add(arms.dissipated);
   }
 
+  // Friction on pressed springs (docs/friction.md, docs/viscoelastic.md "Friction"): a sticking
+  // spring is a member of the tangential set as a glued one is; a sliding one leaves it and
+  // follows its limit (ViscoelasticSlide) until its slip velocity turns.
+
+  /// G_0 [Pa]: the tangential arms' glassy modulus (the edge's where there is one).
+  double glassy_shear_modulus() const {
+    if (springs_.edge) return springs_.edge->glassy_shear_modulus;
+    double modulus = tangential_relaxed();
+    for (const PronyTerm& term : tangential_terms_) modulus += term.modulus;
+    return modulus;
+  }
+
+  /// A member of the tangential set leaves it; its arm stresses then [N/m].
+  FewValues<double> leave_set(ViscoelasticSpringState& s) {
+    FewValues<double> stresses = tangential_arms_.leave(s.shear->member);
+    glued_origins_.add(-s.shear->origin);
+    s.shear->in_set = false;
+    --tangential_members_;
+    return stresses;
+  }
+
+  /// Spring s joins the tangential set at stretch `stretch` with arm stresses `stresses`.
+  void join_set(ViscoelasticSpringState& s, double stretch, std::span<const double> stresses) {
+    s.shear->origin = tangential_ - stretch;
+    s.shear->member = tangential_arms_.enter(stresses, 1.0);
+    s.shear->counted_stretch = stretch;
+    s.shear->counted_stresses = FewValues<double>(stresses.begin(), stresses.end());
+    s.shear->in_set = true;
+    ++tangential_members_;
+    glued_origins_.add(s.shear->origin);
+  }
+
+  /// Pressed spring k slides from now along `direction` from arm stresses `stresses` and stretch
+  /// `stretch` [m]; the rounding between that stretch and the slide's (its load then the limit
+  /// to the last bits) is a jump loss.
+  void start_slide(std::size_t k, std::span<const double> stresses, double stretch,
+                   std::int8_t direction) {
+    ViscoelasticSpringState& s = state_[k];
+    s.shear->slide = std::make_unique<ViscoelasticSlide>(
+        *tangential_modes_, stresses, load_over(s, depth_ - springs_.images[k]), *springs_.friction,
+        direction, tangential_rate_, time_);
+    jump_losses_.add(tangential_stored_of(stretch, stresses) -
+                     tangential_stored_of(s.shear->slide->stretch(time_), stresses));
+    sliding_.insert(k);
+  }
+
+  /// The queued slip or stick of pressed spring k, now.
+  ViscoelasticRowChange apply_friction(std::size_t k, ViscoelasticRowRun& run) {
+    ViscoelasticSpringState& s = state_[k];
+    const std::int8_t kind = s.shear->friction_event;
+    s.shear->friction_event = 0;
+    s.shear->changed_at = time_;
+    count_pressed(s, springs_.images[k]);
+    if (kind == kGlueEvent) return glue_pressed(k, run);
+    ViscoelasticRowChange change = ViscoelasticRowChange::slip;
+    if (kind == kStickEvent) {
+      const FewValues<double> stresses = s.shear->slide->stresses(time_);
+      const double stretch = s.shear->slide->stretch(time_);
+      s.shear->slide.reset();
+      sliding_.erase(k);
+      join_set(s, stretch, stresses);
+      change = ViscoelasticRowChange::stick;
+      ++run.sticks;
+    } else {
+      const double stretch = tangential_ - s.shear->origin;
+      const FewValues<double> stresses = leave_set(s);
+      start_slide(k, stresses, stretch, kind);
+      ++run.slips;
+    }
+    ++s.version;
+    schedule(k);
+    // A stick or a slip changes the run of sticking springs the glue's front may take.
+    reschedule_glue_front(k);
+    return change;
+  }
+
+  // Rebinding under friction (docs/friction.md "Rebinding: where the glue holds"): a pressed
+  // spring that sticks glues again keeping its stretch, from the glue's front outwards, out to
+  // the outermost spring of the run of sticking springs there that holds at its kept stretch
+  // with no elongation.
+
+  bool rebinds_pressed() const {
+    return springs_.friction && springs_.edge && springs_.edge->rebinding && tangential_on_;
+  }
+  /// The spring just outside the glue (the centre's without glue).
+  std::size_t glue_front() const { return glued_.empty() ? 0 : glued_.outermost() + 1; }
+  bool sticks_pressed(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    return s.phase == ViscoelasticSpringPhase::pressed && s.shear && s.shear->in_set;
+  }
+  /// Sticking spring k's tangential line load now [N/m].
+  double kept_tangential_load(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    double load = tangential_relaxed() * (tangential_ - s.shear->origin);
+    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+      load += tangential_arms_.stress(s.shear->member, j);
+    }
+    return load;
+  }
+  /// |q_x| [N/m] below which glued spring k holds with no elongation: the glassy criterion's
+  /// margin at (0, q_x / G_0, x_k) is positive, bisected (a built-in criterion's holding set is
+  /// convex and symmetric in u_x); infinity without a criterion or where it always holds.
+  double holding_tangential_load(std::size_t k) const {
+    const ViscoelasticEdge& edge = *springs_.edge;
+    if (!edge.criterion) return HUGE_VAL;
+    const double x = springs_.spacing * static_cast<double>(k + 1);
+    const auto holds = [&](double q) {
+      return edge.criterion->margin({0.0, q / edge.glassy_shear_modulus, x}) > 0.0;
+    };
+    if (!holds(0.0)) return 0.0;
+    double hi = std::max(edge.let_go_loads[k], 1e-300);
+    for (int i = 0; i < 2000 && holds(hi); ++i) hi *= 2.0;
+    if (holds(hi)) return HUGE_VAL;
+    double lo = 0.0;
+    for (;;) {
+      const double mid = lo + 0.5 * (hi - lo);
+      if (mid <= lo || mid >= hi) return lo;
+      (holds(mid) ? lo : hi) = mid;
+    }
+  }
+  /// The front spring k's glue: now where some spring of the sticking run from k outwards holds
+  /// at its kept stretch, else where k's own tangential load falls within what holds.
+  std::optional<double> rebinding_glue_delay(std::size_t k) const {
+    if (!rebinds_pressed() || k != glue_front() || !sticks_pressed(k)) return std::nullopt;
+    for (std::size_t j = k; j < state_.size() && sticks_pressed(j); ++j) {
+      if (std::abs(kept_tangential_load(j)) < holding_tangential_load(j)) return 0.0;
+    }
+    const ViscoelasticSpringState& s = state_[k];
+    FewValues<double> stresses(tangential_terms_.size());
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      stresses[j] = tangential_arms_.stress(s.shear->member, j);
+    }
+    const ExponentialSum load =
+        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
+                       stresses, tangential_rate_);
+    const double holding = holding_tangential_load(k);
+    return first_crossing(load, load.at(0.0) > 0.0 ? holding : -holding, end_ - time_);
+  }
+  /// Pressed sticking spring k glues keeping its stretch: no step, its ring's surface energy
+  /// lost as a glue's at no gap is.
+  ViscoelasticRowChange glue_pressed(std::size_t k, ViscoelasticRowRun& run) {
+    const auto boundary_before = boundary();
+    ViscoelasticSpringState& s = state_[k];
+    const double surface = springs_.edge->surface_energies[k];
+    surface_.add(-surface);
+    jump_losses_.add(surface);
+    s.phase = ViscoelasticSpringPhase::glued;
+    s.glued_at = time_;
+    glued_.insert(k);
+    ++run.glues;
+    for (const auto j : {std::optional<std::size_t>(k), boundary_before,
+                         std::optional<std::size_t>(glue_front())}) {
+      if (!j || *j >= state_.size()) continue;
+      ++state_[*j].version;
+      schedule(*j);
+    }
+    return ViscoelasticRowChange::glue;
+  }
+  /// After spring k's change the glue's front may glue now or later: it is looked at again.
+  void reschedule_glue_front(std::size_t k) {
+    if (!rebinds_pressed()) return;
+    const std::size_t front = glue_front();
+    if (front == k || front >= state_.size()) return;
+    ++state_[front].version;
+    schedule(front);
+  }
+
+  /// A segment begins: each sliding spring's limit follows the new rates from its state now.
+  void restart_slides() {
+    const std::vector<std::size_t> sliding(sliding_.begin(), sliding_.end());
+    for (const std::size_t k : sliding) {
+      ViscoelasticSpringState& s = state_[k];
+      const FewValues<double> stresses = s.shear->slide->stresses(time_);
+      const double stretch = s.shear->slide->stretch(time_);
+      const std::int8_t direction = s.shear->slide->direction();
+      sliding_.erase(k);
+      start_slide(k, stresses, stretch, direction);
+    }
+  }
+
+  /// Pressed spring k lifts (counted up to now): its tangential load, zero at its limit to
+  /// rounding, steps to zero and its arms creep free; its slip offset is forgotten.
+  void lift_tangentially(std::size_t k) {
+    ViscoelasticSpringState& s = state_[k];
+    if (s.shear->in_set) {
+      let_go_tangentially(s);
+      return;
+    }
+    if (!s.shear->slide) return;
+    FewValues<double> stresses = s.shear->slide->stresses(time_);
+    const double stretch = s.shear->slide->stretch(time_);
+    const double load = tangential_relaxed() * stretch + sum_of(stresses);
+    const double before = tangential_stored_of(stretch, stresses);
+    glassy_step(stresses, tangential_terms_, -load / glassy_shear_modulus());
+    const double after = tangential_stored_of(-sum_of(stresses) / tangential_relaxed(), stresses);
+    jump_losses_.add(before - after);
+    s.shear->slide.reset();
+    sliding_.erase(k);
+    s.shear->creep.emplace(tangential_modes_, stresses);
+    s.shear->free_since = time_;
+    s.shear->counted_stored = after;
+  }
+
+  /// Glued spring k, compressed, loses its glue and keeps its stretch: beyond its limit mu q_z
+  /// it slips there at once (the arms' springs take the step, G_0), the limit times the slip
+  /// lost to friction and the rest, G_0 step^2 / 2, a jump loss; then it slides on.
+  void slip_to_limit(std::size_t k) {
+    ViscoelasticSpringState& s = state_[k];
+    const double stretch = tangential_ - s.shear->origin;
+    double load = tangential_relaxed() * stretch;
+    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+      load += tangential_arms_.stress(s.shear->member, j);
+    }
+    const double limit = *springs_.friction * load_now(s, depth_ - springs_.images[k]);
+    if (std::abs(load) <= limit) return;
+    const std::int8_t direction = load > 0.0 ? 1 : -1;
+    FewValues<double> stresses = leave_set(s);
+    const double step = (direction * limit - load) / glassy_shear_modulus();
+    const double before = tangential_stored_of(stretch, stresses);
+    glassy_step(stresses, tangential_terms_, step);
+    const double after = tangential_stored_of(stretch + step, stresses);
+    const double lost = limit * std::abs(step);
+    friction_.add(lost);
+    jump_losses_.add(before - after - lost);
+    s.shear->changed_at = time_;
+    start_slide(k, stresses, stretch + step, direction);
+  }
+
+  /// A sliding spring's work and dissipation from its last count to now.
+  void count_sliding(ViscoelasticSpringState& s) {
+    const SlideCount c = s.shear->slide->count(tangential_terms_, s.counted_at, time_);
+    tangential_work_.add(c.work);
+    friction_.add(c.friction);
+    dissipated_.add(c.bulk);
+  }
+
+  /// Pressed spring k's next slip (sticking: |f_x| reaching mu f_z, both exponential sums
+  /// over the segment) or stick (sliding: its slip velocity turning) within the segment, and
+  /// which (the slip's direction or kStickEvent). Just after its last change the level is taken
+  /// where it stands, so that rounding cannot turn it back at once.
+  std::pair<std::optional<double>, std::int8_t> friction_event_delay(std::size_t k) const {
+    const ViscoelasticSpringState& s = state_[k];
+    const double span = end_ - time_;
+    const bool just_changed = s.shear->changed_at == time_;
+    if (s.shear->slide)
+      return {s.shear->slide->stick_delay(time_, span, just_changed), kStickEvent};
+    if (!s.shear->in_set) return {std::nullopt, 0};
+    const ExponentialSum normal = load_over(s, depth_ - springs_.images[k]);
+    FewValues<double> stresses(tangential_terms_.size());
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      stresses[j] = tangential_arms_.stress(s.shear->member, j);
+    }
+    const ExponentialSum tangential =
+        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
+                       stresses, tangential_rate_);
+    const double mu = *springs_.friction;
+    std::optional<double> best;
+    std::int8_t kind = 0;
+    for (const std::int8_t direction : {std::int8_t{1}, std::int8_t{-1}}) {
+      // direction f_x - mu f_z: negative while it sticks.
+      ExponentialSum margin{direction * tangential.constant - mu * normal.constant,
+                            direction * tangential.slope - mu * normal.slope,
+                            {}};
+      for (const ExponentialDecay& d : tangential.decays) {
+        margin.decays.push_back({direction * d.amplitude, d.time});
+      }
+      for (const ExponentialDecay& d : normal.decays) {
+        margin.decays.push_back({-mu * d.amplitude, d.time});
+      }
+      const double now = margin.at(0.0);
+      // Just stuck on this side: on its limit to the rounding of the loads.
+      const double scale = std::abs(tangential.at(0.0)) + mu * std::abs(normal.at(0.0));
+      const bool on_limit = just_changed && std::abs(now) <= 1e-9 * scale;
+      std::optional<double> delay;
+      if (!on_limit && now >= 0.0 && margin.slope_at(0.0) > 0.0) {
+        delay = 0.0;
+      } else {
+        delay = first_crossing(margin, on_limit ? now : std::max(now, 0.0), span);
+      }
+      if (delay && (!best || *delay < *best)) {
+        best = delay;
+        kind = direction;
+      }
+    }
+    return {best, kind};
+  }
+
   /// A free tangential creep's dissipation from its last count to now: what it stores less.
   void count_tangential_free(ViscoelasticSpringState& s) {
     const double t = time_ - s.shear->free_since;
@@ -816,6 +1148,23 @@ class ViscoelasticRowDrive::Row {
   }
 
   std::optional<double> next_event_delay(std::size_t k) const {
+    const std::optional<double> contact = contact_event_delay(k);
+    const ViscoelasticSpringState& s = state_[k];
+    if (!s.shear) return contact;
+    s.shear->friction_event = 0;
+    if (s.phase != ViscoelasticSpringPhase::pressed || !springs_.friction) return contact;
+    auto [friction, kind] = friction_event_delay(k);
+    if (const auto glue = rebinding_glue_delay(k); glue && (!friction || *glue < *friction)) {
+      friction = glue;
+      kind = kGlueEvent;
+    }
+    if (!friction || (contact && !(*friction < *contact))) return contact;
+    s.shear->friction_event = kind;
+    return friction;
+  }
+
+  /// Spring k's next touch, release, glue or let-go from now within the segment.
+  std::optional<double> contact_event_delay(std::size_t k) const {
     if (springs_.edge) return next_event_delay_at_edge(k);
     const ViscoelasticSpringState& s = state_[k];
     const double span = end_ - time_;
@@ -1357,8 +1706,9 @@ class ViscoelasticRowDrive::Row {
     const ViscoelasticEdge& edge = *springs_.edge;
     const double x = springs_.spacing * static_cast<double>(k + 1);
     const auto lets_go = [&](double at) {
+      const double qx = released_tangential(tangential.at(at), normal.at(at));
       const BoundarySpring spring{std::max(-normal.at(at) / edge.glassy_modulus, 0.0),
-                                  tangential.at(at) / edge.glassy_shear_modulus, x};
+                                  qx / edge.glassy_shear_modulus, x};
       return edge.criterion->margin(spring) <= 0.0;
     };
     if (lets_go(0.0) && s.glued_at != time_) return 0.0;
@@ -1393,7 +1743,10 @@ class ViscoelasticRowDrive::Row {
       const bool closing = normal.at(mid) < 0.0 && normal_slope.at(mid) >= 0.0;
       const double qx = tangential.at(mid);
       const double qx_slope = tangential_slope.at(mid);
-      const bool shearing = qx * qx_slope >= 0.0;
+      // With friction a compressed spring releases |q_x| - mu q_z: it grows with |q_x| only
+      // where q_z does not.
+      const bool shearing = qx * qx_slope >= 0.0 && (!springs_.friction || normal.at(mid) <= 0.0 ||
+                                                     normal_slope.at(mid) <= 0.0);
       const bool unshearing = qx * qx_slope <= 0.0;
       if ((opening && shearing) || (closing && unshearing)) continue;
       double lo = a;
@@ -1404,6 +1757,15 @@ class ViscoelasticRowDrive::Row {
       }
     }
     return normal_let_go;
+  }
+
+  /// The tangential line load [N/m] a glued spring's let-go releases to the surface, of its
+  /// tangential load q_x and normal load q_z: all of it without friction or in tension; with
+  /// friction a compressed spring keeps its limit mu q_z (it slips there, dissipating), and
+  /// releases sign(q_x) max(|q_x| - mu q_z, 0) (docs/friction.md "Letting go under friction").
+  double released_tangential(double qx, double qz) const {
+    if (!springs_.friction || !(qz > 0.0)) return qx;
+    return std::copysign(std::max(std::abs(qx) - *springs_.friction * qz, 0.0), qx);
   }
 
   /// Whether free spring s, pressed now at stretch `stretch`, would see its load rise: the
@@ -1436,8 +1798,11 @@ class ViscoelasticRowDrive::Row {
   double segment_tangential_ = 0.0;
   double tangential_rate_ = 0.0;
   double end_tangential_ = 0.0;
-  CompensatedSum glued_origins_;    ///< sum of the glued springs' tangential origins [m]
-  CompensatedSum tangential_work_;  ///< [J/m]
+  CompensatedSum glued_origins_;         ///< sum of the tangential set's origins [m]
+  std::int64_t tangential_members_ = 0;  ///< springs in the tangential set (glued or sticking)
+  std::set<std::size_t> sliding_;        ///< with friction: pressed springs sliding
+  CompensatedSum friction_;              ///< dissipated by friction [J/m]
+  CompensatedSum tangential_work_;       ///< [J/m]
   bool last_let_go_by_shear_ = false;
   std::vector<ViscoelasticSpringState> state_;
   RowSpringSet pressed_;  ///< in contact: pressed or glued
@@ -1541,7 +1906,8 @@ ViscoelasticRowEnergy ViscoelasticRowDrive::energy() {
           .stored = e.stored * both_halves,
           .dissipated_by_bulk = e.dissipated_by_bulk * both_halves,
           .surface = e.surface * both_halves,
-          .jump_losses = e.jump_losses * both_halves};
+          .jump_losses = e.jump_losses * both_halves,
+          .dissipated_by_friction = e.dissipated_by_friction * both_halves};
 }
 
 ViscoelasticRowRun run_viscoelastic_row(const ViscoelasticRowSprings& springs,

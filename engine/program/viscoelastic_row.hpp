@@ -32,6 +32,9 @@ struct ViscoelasticRowSprings {
   /// G* / E*: a glued spring's tangential arms are its normal arms scaled by it (G_inf dx in
   /// parallel with Maxwell arms G_j = E_j G* / E*, the same tau_j); 0: no tangential arms.
   double shear_ratio = 0.0;
+  /// Coulomb's mu with [friction]: a pressed spring carries tangential arms too, sticking while
+  /// |f_x| <= mu f_z and sliding at the limit otherwise (docs/friction.md); none: they push only.
+  std::optional<double> friction = std::nullopt;
 };
 
 /// What a segment holds instead of the depth: the constraint a_u d + a_F F = h (fixed load,
@@ -70,6 +73,8 @@ struct ViscoelasticRowSample {
   double glued_radius = 0.0;  ///< the outermost glued spring's x [m]; 0 without glue
   double tangential_displacement = 0.0;  ///< u_x [m]
   double tangential_force = 0.0;         ///< F_x [N], the glued springs' (pressed ones carry none)
+  std::int64_t sliding = 0;              ///< with friction: pressed springs sliding at their limit
+  double stick_radius = 0.0;  ///< with friction: inside it every spring in contact sticks [m]
 };
 
 struct ViscoelasticRowRun {
@@ -82,7 +87,9 @@ struct ViscoelasticRowRun {
   std::int64_t releases = 0;  ///< springs whose load fell to zero
   std::int64_t glues = 0;     ///< springs glued by the advancing front
   std::int64_t let_gos = 0;   ///< boundary springs let go
-  std::int64_t events() const { return touches + releases + glues + let_gos; }
+  std::int64_t slips = 0;     ///< with friction: sticking springs that began to slide
+  std::int64_t sticks = 0;    ///< with friction: sliding springs that stuck
+  std::int64_t events() const { return touches + releases + glues + let_gos + slips + sticks; }
 };
 
 /// The row's energy since it started (d = 0, t = 0, every spring at rest), both halves [J]:
@@ -112,12 +119,14 @@ struct ViscoelasticRowEnergy {
   double dissipated_by_bulk = 0.0;
   double surface = 0.0;
   double jump_losses = 0.0;
+  double dissipated_by_friction = 0.0;
 };
 
 /// A touch (a spring met by the indenter and pressed, pushing only), a release (a pressed
 /// spring's load fell to zero), a glue (the spring outside the contact glued) or a let-go (the
-/// boundary glued spring let go).
-enum class ViscoelasticRowChange { touch, release, glue, let_go };
+/// boundary glued spring let go); with friction a slip (a pressed spring reaches its limit and
+/// slides) or a stick (a sliding spring's slip velocity turns).
+enum class ViscoelasticRowChange { touch, release, glue, let_go, slip, stick };
 
 /// The row run segment by segment, for a caller that reports between them (a program's stages).
 class ViscoelasticRowDrive {

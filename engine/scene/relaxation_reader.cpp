@@ -43,9 +43,8 @@ std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plan
   return terms;
 }
 
-void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& loading,
-                                     const TomlReader& material, const RouteKeys& route_keys,
-                                     const Scene& scene) {
+void refuse_outside_relaxation_scope(const TomlReader& loading, const TomlReader& material,
+                                     const RouteKeys& route_keys, const Scene& scene) {
   if (!scene.material.relaxes()) return;
   if (!scene.program) {
     material.fail_at("relaxation",
@@ -58,7 +57,6 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
         "relaxation",
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
-  if (root.has("friction")) root.fail_at("friction", not_yet_with_relaxation("[friction]"));
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
     // u_x moves under fixed grips whatever the normal control; a held tangential force is not
@@ -86,6 +84,29 @@ void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& l
   if (route_keys.method_given && scene.solver.method != SolverMethod::event) {
     throw SceneError(route_keys.method_at +
                      not_yet_with_relaxation("a method other than \"event\""));
+  }
+}
+
+void refuse_friction_with_relaxation(const TomlReader& friction, const Scene& scene) {
+  if (!scene.material.relaxes() || !scene.friction) return;
+  if (scene.friction->glued == GluedShear::limited) {
+    friction.fail_at("glued", not_yet_with_relaxation("glued = \"coulomb\""));
+  }
+  if (scene.friction->law) {
+    friction.fail_at("law", not_yet_with_relaxation("a friction law other than one coefficient"));
+  }
+  // Slips and sticks are located along a fixed-grips drive only: under a held control the depth
+  // creeps between events, and the sliding springs' limits with it.
+  std::string normal_control = "fixed-grips";  // a stage's own, or the one before it
+  for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
+    const Stage& stage = scene.program->stages[i];
+    if (stage.normal) normal_control = stage.normal->control;
+    if (normal_control != "fixed-grips") {
+      friction.fail_at("coefficient", not_yet_with_relaxation(fmt::format(
+                                          "friction under a normal control other than fixed grips "
+                                          "(loading.stage.{}: \"{}\")",
+                                          i + 1, normal_control)));
+    }
   }
 }
 

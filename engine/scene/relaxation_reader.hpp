@@ -21,12 +21,16 @@ std::optional<std::vector<PronyTerm>> read_relaxation(TomlReader& t, double plan
 
 /// The scene's other keys against a relaxing bulk (SPEC "Time and viscoelastic media", "Scope",
 /// and what the program row carries so far): the shorthand, a program without a clock,
-/// [friction], a tangential stage, a fixed-load stage until separation or lowered to or below
+/// a tangential stage, a fixed-load stage until separation or lowered to or below
 /// zero force, adhesion with other than fixed-grips normal stages (one line of its own) and a
 /// method other than event are refused, before the routes those keys choose. A no-op without
 /// the key.
-void refuse_outside_relaxation_scope(const TomlReader& root, const TomlReader& loading,
-                                     const TomlReader& material, const RouteKeys& route_keys,
-                                     const Scene& scene);
+void refuse_outside_relaxation_scope(const TomlReader& loading, const TomlReader& material,
+                                     const RouteKeys& route_keys, const Scene& scene);
+
+/// [friction] `friction` against a relaxing bulk: glued = "coulomb" (and so shear_strength)
+/// and a law other than one coefficient are refused at their key (pressed springs stick and
+/// slide at mu f_z, glued ones hold any stretch). A no-op without relaxation or friction.
+void refuse_friction_with_relaxation(const TomlReader& friction, const Scene& scene);
 
 }  // namespace mdrsim

@@ -476,6 +476,7 @@ void read_friction_and_plan(TomlReader& root, const Registries& registries, Rout
   // [friction] before the route: a scene with friction stays on the row.
   if (auto friction = root.optional_table("friction")) {
     scene.friction = read_friction(*friction, registries.friction_laws);
+    refuse_friction_with_relaxation(*friction, scene);
     if (scene.friction) {
       route_keys.friction_at = friction->message_at(friction_acting_key(*scene.friction), "");
     }
@@ -540,7 +541,7 @@ Scene build_scene(const toml::table& root_table, const std::string& source_name,
                            {"max_events", scene.solver.max_events},
                            {"max_events_per_spring", scene.solver.max_events_per_spring}});
   }
-  refuse_outside_relaxation_scope(root, loading, material, route_keys, scene);
+  refuse_outside_relaxation_scope(loading, material, route_keys, scene);
   refuse_outside_dugdale_scope(root, loading, route_keys, scene);
   if (scene.material.finite_range()) use_dugdale_route(*resolved, scene, route_keys);
   refuse_outside_grading_scope(root, loading, material, scene);

@@ -95,8 +95,16 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
       {"Untimed", replaced(replaced(kViscous, "duration = 0.2\n", ""), "duration = 1.0\n", ""),
        "v.toml:5:14: material.relaxation: needs every loading stage to have a duration or speed "
        "(docs/viscoelastic.md \"What it refuses\")"},
-      {"Friction", kViscous + "[friction]\ncoefficient = 0.3\n",
-       "v.toml:18:1: friction: [friction] is not yet taken with material.relaxation "
+      {"CoulombGlue", kViscous + "[friction]\ncoefficient = 0.3\nglued = \"coulomb\"\n",
+       "v.toml:20:9: friction.glued: glued = \"coulomb\" is not yet taken with material.relaxation "
+       "(docs/viscoelastic.md \"What it refuses\")"},
+      // Slips are located along fixed grips only.
+      {"FrictionUnderAHeldForce",
+       replaced(replaced(kViscous + "[friction]\ncoefficient = 0.3\n", "normal = { by = -1.0e-4 }",
+                         "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
+                "work_of_adhesion = 0.0\n", "work_of_adhesion = 0.05\n"),
+       "v.toml:19:15: friction.coefficient: friction under a normal control other than fixed "
+       "grips (loading.stage.2: \"fixed-load\") is not yet taken with material.relaxation "
        "(docs/viscoelastic.md \"What it refuses\")"},
       {"AdhesiveStress",
        replaced(kViscous, "work_of_adhesion = 0.0\n",
