@@ -8,6 +8,7 @@
 # of these regular expressions finds it (ctest's full name: Suite.Case, or
 # Instance/Suite.Case/Param  # GetParam() = ... for a parameterized case).
 set(mdrsim_slow_tests
+    "^ViscoelasticFrictionRows\\.RichardsonCombinesTheTangentialWorkAndFriction$"  # 6 s: rows of 4000 and 8000 springs (rebinding scans O(N) an event)
     # rows of up to 2^25 springs on the plain route: 150 s and 12 s
     "^RandomSet/RtolGuarantee\\.WithinRtolOfTheContinuum/rtol1e[46]_none"
     "^RandomScenes\\.PlainRowAgreesWithTheReference$"  # 7.5 s

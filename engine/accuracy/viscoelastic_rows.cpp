@@ -117,7 +117,8 @@ DoublingCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, b
   double work_scale = 1e-300;
   for (const StageRecord& s : r.stages) {
     force_scale = std::max(force_scale, std::abs(s.end.normal_force));
-    work_scale += std::abs(s.work.normal) + std::abs(s.work.bulk);
+    work_scale += std::abs(s.work.normal) + std::abs(s.work.tangential) +
+                  std::abs(s.work.friction) + std::abs(s.work.bulk);
   }
   // A stage's end force is held to rtol of the path's largest force (a stage may end at zero
   // force, where its relative error has no meaning), a time to rtol of the program's duration.
@@ -149,6 +150,12 @@ DoublingCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, b
         [k](auto& q) -> auto& { return q.stages[k].work.normal; }, work_scale);
     error.bulk = c.combine(
         [k](auto& q) -> auto& { return q.stages[k].work.bulk; }, work_scale);
+    // A tangential stage's work and friction's share of it are the rows' sums as the normal
+    // work is: combined and estimated alike, or `work` would claim what only the finest row has.
+    error.tangential = c.combine(
+        [k](auto& q) -> auto& { return q.stages[k].work.tangential; }, work_scale);
+    error.friction = c.combine(
+        [k](auto& q) -> auto& { return q.stages[k].work.friction; }, work_scale);
     s.work_error_estimate = error;
     combine_viscoelastic_energy(c, k);
     total += s.work;

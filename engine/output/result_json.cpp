@@ -189,6 +189,9 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
   const auto scales = dimensionless_scales(scene);
   const Accuracy& accuracy = result.accuracy;
   const bool friction = scene.friction.has_value();
+  // The viscoelastic rows estimate friction's work as they do the other works; the elastic
+  // program's leave it the finest row's (a warning says so).
+  const bool friction_estimated = friction && scene.material.relaxes();
   const bool bulk = scene.material.relaxes();
   const StateKeys keys{.friction = friction,
                        .cohesive = scene.material.finite_range(),
@@ -222,8 +225,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
     }
     if (accuracy.peak_error_estimate) a["peak_error_estimate"] = *accuracy.peak_error_estimate;
     if (accuracy.work_error_estimate) {
-      a["work_error_estimate"] =
-          work_json(*accuracy.work_error_estimate, false, scene.front_speed_law.has_value(), bulk);
+      a["work_error_estimate"] = work_json(*accuracy.work_error_estimate, friction_estimated,
+                                           scene.front_speed_law.has_value(), bulk);
     }
     if (accuracy.critical_zoom) {
       a["critical_zoom"] = {{"outer_radius", accuracy.critical_zoom->outer_radius},
@@ -271,8 +274,8 @@ nlohmann::ordered_json result_to_json(const Scene& scene, const RunResult& resul
         }
       }
       if (stage.work_error_estimate) {
-        record["work_error_estimate"] =
-            work_json(*stage.work_error_estimate, false, scene.front_speed_law.has_value(), bulk);
+        record["work_error_estimate"] = work_json(*stage.work_error_estimate, friction_estimated,
+                                                  scene.front_speed_law.has_value(), bulk);
       }
       if (stage.energy) record["energy"] = energy_json(*stage.energy, bulk);
       stages.push_back(record);

@@ -189,15 +189,26 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
     return run_rate_law_row(scene, observers);
   }
   if (scene.material.relaxes()) {
+    RunResult result;
     switch (scene.plan.driver) {
       case RouteDriver::rtol:
-        return run_viscoelastic_rtol(scene, *scene.discretization.rtol, observers);
-      case RouteDriver::richardson:
-        return run_viscoelastic_richardson(scene, observers);
-      case RouteDriver::one_row:
+        result = run_viscoelastic_rtol(scene, *scene.discretization.rtol, observers);
         break;
+      case RouteDriver::richardson:
+        result = run_viscoelastic_richardson(scene, observers);
+        break;
+      case RouteDriver::one_row:
+        return run_viscoelastic_program(scene, observers);
     }
-    return run_viscoelastic_program(scene, observers);
+    if (scene.friction) {
+      // The works, friction's included, are combined across the rows; the stick/slip front is
+      // not located between springs (docs/viscoelastic.md "Friction").
+      result.warnings.push_back(fmt::format(
+          "friction: springs_sliding and stick_radius are the finest row's ({} springs), not "
+          "covered by {}'s estimates",
+          result.springs, to_string(scene.plan.driver)));
+    }
+    return result;
   }
   RunResult result;
   switch (scene.plan.driver) {
