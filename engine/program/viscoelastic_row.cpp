@@ -230,8 +230,22 @@ class ViscoelasticRowDrive::Row {
         first_events_.push_back({time_ + *delay, k, state_[k].version});
       }
     }
-    std::sort(first_events_.begin(), first_events_.end(),
-              [](const ViscoelasticRowEvent& a, const ViscoelasticRowEvent& b) { return b > a; });
+    sort_first_events();
+  }
+
+  /// first_events_ in their order. A linear drive meets the springs from the inside out and
+  /// Ting's releases go from the outside in, so they mostly come in order or in reverse (no two
+  /// entries are equal: one a spring), found in one pass each before sorting.
+  void sort_first_events() {
+    const auto earlier = [](const ViscoelasticRowEvent& a, const ViscoelasticRowEvent& b) {
+      return b > a;
+    };
+    if (std::is_sorted(first_events_.begin(), first_events_.end(), earlier)) return;
+    if (std::is_sorted(first_events_.rbegin(), first_events_.rend(), earlier)) {
+      std::reverse(first_events_.begin(), first_events_.end());
+      return;
+    }
+    std::sort(first_events_.begin(), first_events_.end(), earlier);
   }
 
   double end() const { return end_; }
