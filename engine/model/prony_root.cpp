@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/base/bracketed_root.hpp"
 
@@ -111,6 +112,34 @@ void append_decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi,
   append_sign_changes([&](double s) { return p.at(s); }, points, zeros);
 }
 
+// The root of g(s) = f(s) - level on a piece [lo, hi] where g is monotone and changes sign
+// (g_lo its value at lo), f with one decay: g'' = (c / tau^2) exp(-s / tau) keeps c's
+// sign, so Newton from the end where g has the sign of g'' (Fourier's condition) moves to the
+// root from one side without overshooting, one exp a step, quadratically near it. It stops at a
+// step within 4 eps of s, TOMS 748's tolerance; a step that leaves the bracket (rounding far
+// from the root) or no convergence in kMostNewtonSteps hands the piece to TOMS 748.
+constexpr int kMostNewtonSteps = 60;
+std::optional<double> one_decay_root(const ExponentialSum& f, double level, double lo, double hi,
+                                     double g_lo) {
+  const ExponentialDecay& d = f.decays.front();
+  const bool convex = d.amplitude > 0.0;
+  double s = (g_lo > 0.0) == convex ? lo : hi;
+  for (int step = 0; step < kMostNewtonSteps; ++step) {
+    const double e = d.amplitude * std::exp(-s / d.time);
+    const double g = f.constant + f.slope * s + e - level;
+    const double slope = f.slope - e / d.time;
+    if (g == 0.0) return s;
+    if (!(slope != 0.0)) return std::nullopt;
+    const double next = s - g / slope;
+    if (!(next >= lo && next <= hi)) return std::nullopt;
+    if (std::abs(next - s) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(next)) {
+      return next;
+    }
+    s = next;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 double ExponentialSum::at(double s) const {
@@ -156,7 +185,11 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     const double lo = points[i], hi = points[i + 1];
     const double g_hi = g(hi);
     if (g_hi == 0.0 || (g_hi < 0.0) != (side < 0.0)) {
-      return g_hi == 0.0 ? hi : bracketed_root_from(g, lo, hi, g_lo, g_hi);
+      if (g_hi == 0.0) return hi;
+      if (f.decays.size() == 1 && f.decays.front().amplitude != 0.0) {
+        if (const auto root = one_decay_root(f, level, lo, hi, g_lo)) return root;
+      }
+      return bracketed_root_from(g, lo, hi, g_lo, g_hi);
     }
     g_lo = g_hi;
   }
