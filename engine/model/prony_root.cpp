@@ -2,6 +2,8 @@
 #include "engine/model/prony_root.hpp"
 
 #include <boost/container/small_vector.hpp>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/lambert_w.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -112,18 +114,49 @@ void append_decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi,
   append_sign_changes([&](double s) { return p.at(s); }, points, zeros);
 }
 
+// Where g(s) = A + b s + c exp(-s / tau) vanishes on [lo, hi], in closed form: with
+// u = s + A / b, (u / tau) exp(u / tau) = -c exp(A / (b tau)) / (b tau) =: x, so s = tau W(x) -
+// A / b, W_0 or W_-1 (both where -1/e < x < 0) whichever falls on the piece; with b = 0,
+// s = tau ln(-c / A). None where x leaves W's domain or overflows. Exact to a few ulps of its
+// terms, which may cancel: it is a start for Newton, not the root.
+std::optional<double> one_decay_start(double a, double b, double c, double tau, double lo,
+                                      double hi) {
+  const auto on_piece = [&](double s) { return s >= lo && s <= hi; };
+  if (b == 0.0) {
+    const double ratio = -c / a;
+    if (!(ratio > 0.0)) return std::nullopt;
+    const double s = tau * std::log(ratio);
+    return on_piece(s) ? std::optional<double>(s) : std::nullopt;
+  }
+  const double scale = b * tau;
+  const double x = -c / scale * std::exp(a / scale);
+  if (!std::isfinite(x) || x < -boost::math::constants::exp_minus_one<double>()) {
+    return std::nullopt;
+  }
+  const double principal = tau * boost::math::lambert_w0(x) - a / b;
+  if (on_piece(principal)) return principal;
+  if (x < 0.0) {
+    const double lower = tau * boost::math::lambert_wm1(x) - a / b;
+    if (on_piece(lower)) return lower;
+  }
+  return std::nullopt;
+}
+
 // The root of g(s) = f(s) - level on a piece [lo, hi] where g is monotone and changes sign
-// (g_lo its value at lo), f with one decay: g'' = (c / tau^2) exp(-s / tau) keeps c's
-// sign, so Newton from the end where g has the sign of g'' (Fourier's condition) moves to the
-// root from one side without overshooting, one exp a step, quadratically near it. It stops at a
-// step within 4 eps of s, TOMS 748's tolerance; a step that leaves the bracket (rounding far
-// from the root) or no convergence in kMostNewtonSteps hands the piece to TOMS 748.
+// (g_lo its value at lo), f with one decay: g'' = (c / tau^2) exp(-s / tau) keeps c's sign, so
+// a Newton step from anywhere on the piece lands on the side where g has the sign of g''
+// (Fourier's condition), and from there moves to the root without overshooting, one exp a
+// step, quadratically near it. It starts from the closed form (one_decay_start), else from that
+// end, and stops at a step within 4 eps of s, TOMS 748's tolerance; a step that leaves the
+// bracket (rounding far from the root) or no convergence in kMostNewtonSteps hands the piece to
+// TOMS 748.
 constexpr int kMostNewtonSteps = 60;
 std::optional<double> one_decay_root(const ExponentialSum& f, double level, double lo, double hi,
                                      double g_lo) {
   const ExponentialDecay& d = f.decays.front();
   const bool convex = d.amplitude > 0.0;
-  double s = (g_lo > 0.0) == convex ? lo : hi;
+  double s = one_decay_start(f.constant - level, f.slope, d.amplitude, d.time, lo, hi)
+                 .value_or((g_lo > 0.0) == convex ? lo : hi);
   for (int step = 0; step < kMostNewtonSteps; ++step) {
     const double e = d.amplitude * std::exp(-s / d.time);
     const double g = f.constant + f.slope * s + e - level;
