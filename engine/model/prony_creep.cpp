@@ -129,8 +129,10 @@ void FreeSpringCreepRef::stretch_from(double t0, ExponentialSum& w) const {
 }
 
 double FreeSpringCreepRef::mode_stretch(std::size_t k, double t) const {
-  return modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus() *
-         std::exp(-modes_->rates()[k] * t);
+  const double at_release =
+      modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus();
+  // exp(-mu 0) is 1 exactly: a spring read as it is released needs no call.
+  return t == 0.0 ? at_release : at_release * std::exp(-modes_->rates()[k] * t);
 }
 
 double FreeSpringCreepRef::stretch(double t) const {

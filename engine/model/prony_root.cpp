@@ -177,6 +177,11 @@ std::optional<double> one_decay_root(const ExponentialSum& f, double level, doub
 
 double ExponentialSum::at(double s) const {
   double sum = constant + slope * s;
+  if (s == 0.0) {
+    // exp(-0 / tau) is 1 exactly: the same sum without the calls (most reads are at s = 0).
+    for (const ExponentialDecay& decay : decays) sum += decay.amplitude;
+    return sum;
+  }
   for (const ExponentialDecay& decay : decays) {
     sum += decay.amplitude * std::exp(-s / decay.time);
   }
@@ -185,6 +190,10 @@ double ExponentialSum::at(double s) const {
 
 double ExponentialSum::slope_at(double s) const {
   double sum = slope;
+  if (s == 0.0) {
+    for (const ExponentialDecay& decay : decays) sum -= decay.amplitude / decay.time;
+    return sum;
+  }
   for (const ExponentialDecay& decay : decays) {
     sum -= decay.amplitude / decay.time * std::exp(-s / decay.time);
   }

@@ -54,7 +54,10 @@ double SharedDriveArms::stress(const SharedDriveMember& member, std::size_t j) c
 }
 
 double SharedDriveArms::stress(const SharedDriveMemberRef& member, std::size_t j) const {
-  return history_[j] + member.offsets[j] * std::exp(-(time_ - member.entry_time) / terms_[j].time);
+  const double age = time_ - member.entry_time;
+  // exp(-0 / tau) is 1 exactly: a member read as it enters needs no call.
+  if (age == 0.0) return history_[j] + member.offsets[j];
+  return history_[j] + member.offsets[j] * std::exp(-age / terms_[j].time);
 }
 
 FewValues<double> SharedDriveArms::leave(const SharedDriveMember& member) {
