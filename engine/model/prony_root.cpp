@@ -27,6 +27,10 @@ struct ConstantPlusDecays {
 
   double at(double s) const {
     double sum = constant;
+    if (s == 0.0) {
+      for (const auto& term : terms) sum += term.first;  // exp(-rate 0) is 1 exactly
+      return sum;
+    }
     for (const auto& [amplitude, rate] : terms) {
       sum += amplitude * std::exp(-rate * s);
     }

@@ -68,8 +68,12 @@ FewValues<double> SharedDriveArms::leave(const SharedDriveMember& member) {
 
 void SharedDriveArms::leave(const SharedDriveMemberRef& member, double weight,
                             std::span<double> stresses) {
+  for (std::size_t j = 0; j < terms_.size(); ++j) stresses[j] = stress(member, j);
+  leave_read(stresses, weight);
+}
+
+void SharedDriveArms::leave_read(std::span<const double> stresses, double weight) {
   for (std::size_t j = 0; j < terms_.size(); ++j) {
-    stresses[j] = stress(member, j);
     decaying_[j] -= weight * (stresses[j] - history_[j]);
   }
   weight_ -= weight;

@@ -50,6 +50,8 @@ class SharedDriveArms {
   FewValues<double> leave(const SharedDriveMember& member);
   /// The same for a member of weight `weight` held elsewhere, its stresses into `stresses`.
   void leave(const SharedDriveMemberRef& member, double weight, std::span<double> stresses);
+  /// The same for a member whose stresses now, `stresses`, were just read by stress().
+  void leave_read(std::span<const double> stresses, double weight);
   /// A member's arm stress of term j now [N/m].
   double stress(const SharedDriveMember& member, std::size_t j) const;
   double stress(const SharedDriveMemberRef& member, std::size_t j) const;

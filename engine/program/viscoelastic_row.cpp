@@ -294,7 +294,7 @@ class ViscoelasticRowDrive::Row {
     const bool release = s.phase == ViscoelasticSpringPhase::pressed;
     if (release) {
       count_pressed(s, springs_.images[k]);
-      const FewValues<double> stresses = leave_arms(s);
+      const FewValues<double> stresses = leave_arms_counted(s);
       s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
       start_creep(s, stresses);
       s.released_at = time_;
@@ -421,6 +421,13 @@ class ViscoelasticRowDrive::Row {
   FewValues<double> leave_arms(const ViscoelasticSpringState& s) {
     FewValues<double> stresses(terms());
     arms_.leave(member(s), 1.0, stresses);
+    return stresses;
+  }
+  /// The same just after count_pressed(s), which read them into counted_stresses.
+  FewValues<double> leave_arms_counted(const ViscoelasticSpringState& s) {
+    const std::span<const double> counted = counted_stresses(s);
+    FewValues<double> stresses(counted.begin(), counted.end());
+    arms_.leave_read(stresses, 1.0);
     return stresses;
   }
 
@@ -559,7 +566,7 @@ class ViscoelasticRowDrive::Row {
       lose_glue_pressed(k, run);
       return;
     }
-    FewValues<double> stresses = leave_arms(s);
+    FewValues<double> stresses = leave_arms_counted(s);
     const double stretch = depth_ - springs_.images[k];
     const double load = springs_.relaxed_modulus * stretch + sum_of(stresses);
     const double before = stored_of(stretch, stresses);
@@ -624,7 +631,7 @@ class ViscoelasticRowDrive::Row {
   void leave_contact(std::size_t k, ViscoelasticRowRun& run) {
     ViscoelasticSpringState& s = state_[k];
     count_pressed(s, springs_.images[k]);
-    const FewValues<double> stresses = leave_arms(s);
+    const FewValues<double> stresses = leave_arms_counted(s);
     s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
     s.counted_at = time_;
     start_creep(s, stresses);
