@@ -137,10 +137,17 @@ std::optional<double> one_decay_start(double a, double b, double c, double tau, 
   if (!std::isfinite(x) || x < -boost::math::constants::exp_minus_one<double>()) {
     return std::nullopt;
   }
-  const double principal = tau * boost::math::lambert_w0(x) - a / b;
+  // Boost's W raises on denormals and at its domain's edges: a start is only a start, so those
+  // give NaN or an infinity, off the piece.
+  using Quiet = boost::math::policies::policy<
+      boost::math::policies::domain_error<boost::math::policies::ignore_error>,
+      boost::math::policies::overflow_error<boost::math::policies::ignore_error>,
+      boost::math::policies::underflow_error<boost::math::policies::ignore_error>,
+      boost::math::policies::evaluation_error<boost::math::policies::ignore_error>>;
+  const double principal = tau * boost::math::lambert_w0(x, Quiet()) - a / b;
   if (on_piece(principal)) return principal;
-  if (x < 0.0) {
-    const double lower = tau * boost::math::lambert_wm1(x) - a / b;
+  if (x < -std::numeric_limits<double>::min()) {
+    const double lower = tau * boost::math::lambert_wm1(x, Quiet()) - a / b;
     if (on_piece(lower)) return lower;
   }
   return std::nullopt;

@@ -7,6 +7,7 @@
 #include <boost/math/special_functions/lambert_w.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 
 namespace mdrsim {
@@ -46,11 +47,38 @@ TEST(PronyRoot, OneDecayAndASlopeByLambertW) {
   EXPECT_NEAR(*s_back + mid, second, 1e-13 * second);
 }
 
+// The first crossing of a + b s + c exp(-s / tau) from 0 against its own root in long double,
+// bisected next to it to 64 bits; whether it has one. Tolerance 4 eps of the root (the root
+// finder's stopping rule: a step, or TOMS 748's bracket, within 4 eps of s) plus the rounding
+// of g in double, 4 eps of its terms' sizes over its slope (a root near 0 sits where a and
+// c exp(-s / tau) cancel).
+bool expect_one_decay_root(double a, double b, double c, double tau, double span) {
+  const std::optional<double> s = first_crossing(ExponentialSum{a, b, {{c, tau}}}, 0.0, span);
+  if (!s) return false;
+  const auto g = [&](long double x) {
+    return static_cast<long double>(a) + static_cast<long double>(b) * x +
+           static_cast<long double>(c) * std::exp(-x / static_cast<long double>(tau));
+  };
+  long double lo = std::max(0.0L, static_cast<long double>(*s) * (1.0L - 1e-9L));
+  long double hi = std::min(static_cast<long double>(span), *s * (1.0L + 1e-9L) + 1e-300L);
+  EXPECT_NE(g(lo) < 0.0L, g(hi) < 0.0L);
+  for (int i = 0; i < 200 && hi - lo > 0.0L; ++i) {
+    const long double mid = 0.5L * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    ((g(mid) < 0.0L) == (g(lo) < 0.0L) ? lo : hi) = mid;
+  }
+  const double reference = static_cast<double>(0.5L * (lo + hi));
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double decay = c * std::exp(-reference / tau);
+  const double rounding = 4.0 * eps * (std::abs(a) + std::abs(b * reference) + std::abs(decay)) /
+                          std::abs(b - decay / tau);
+  EXPECT_NEAR(*s, reference, 4.0 * eps * reference + rounding)
+      << "a " << a << " b " << b << " c " << c << " tau " << tau;
+  return true;
+}
+
 // One decay and a slope over every sign of each (the loads of a spring pressed, withdrawn or
-// held, a free surface met again): the first crossing against its own root in long double,
-// bisected next to it to 64 bits. Tolerance 4 eps of the root (the root finder's stopping rule:
-// a step, or TOMS 748's bracket, within 4 eps of s) plus the rounding of g in double, 4 eps of
-// its terms' sizes over its slope (a root near 0 sits where a and c exp(-s / tau) cancel).
+// held, a free surface met again).
 TEST(PronyRoot, OneDecayRootsToTheirLastBits) {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(0.05, 1.0);
@@ -60,34 +88,23 @@ TEST(PronyRoot, OneDecayRootsToTheirLastBits) {
     const double c = (trial % 4 < 2 ? 1.0 : -1.0) * unit(random) * 10.0;
     const double tau = 0.01 + unit(random);
     const double a = (unit(random) - 0.5) * 20.0;
-    const ExponentialSum f{a, b, {{c, tau}}};
-    const double span = 5.0;
-    const auto s = first_crossing(f, 0.0, span);
-    if (!s) continue;
-    ++found;
-    // The reference: g changes sign across the root, bisected in long double on the piece the
-    // root lies on (the sign of g just below and above it, read in long double).
-    const auto g = [&](long double x) {
-      return static_cast<long double>(a) + static_cast<long double>(b) * x +
-             static_cast<long double>(c) * std::exp(-x / static_cast<long double>(tau));
-    };
-    long double lo = std::max(0.0L, static_cast<long double>(*s) * (1.0L - 1e-9L));
-    long double hi = std::min(static_cast<long double>(span), *s * (1.0L + 1e-9L) + 1e-300L);
-    ASSERT_NE(g(lo) < 0.0L, g(hi) < 0.0L) << trial;
-    for (int i = 0; i < 200 && hi - lo > 0.0L; ++i) {
-      const long double mid = 0.5L * (lo + hi);
-      if (mid <= lo || mid >= hi) break;
-      ((g(mid) < 0.0L) == (g(lo) < 0.0L) ? lo : hi) = mid;
-    }
-    const double reference = static_cast<double>(0.5L * (lo + hi));
-    const double eps = std::numeric_limits<double>::epsilon();
-    const double decay = c * std::exp(-reference / tau);
-    const double rounding = 4.0 * eps * (std::abs(a) + std::abs(b * reference) + std::abs(decay)) /
-                            std::abs(b - decay / tau);
-    EXPECT_NEAR(*s, reference, 4.0 * eps * reference + rounding)
-        << "trial " << trial << ": a " << a << " b " << b << " c " << c << " tau " << tau;
+    if (expect_one_decay_root(a, b, c, tau, 5.0)) ++found;
   }
   EXPECT_GT(found, 1000);
+}
+
+// A first root on the lower branch of Lambert's W whose argument -c exp(a / (b tau)) / (b tau)
+// is denormal (a / (b tau) < -708: a slope far smaller than the decay's rate), where Boost's W
+// raises: the root is still found, and exactly.
+TEST(PronyRoot, OneDecayRootWhereLambertsArgumentIsDenormal) {
+  EXPECT_TRUE(expect_one_decay_root(0.0020212469952489574, -0.00012404109684988903,
+                                    -0.01948942312466341, 0.022200771402853006,
+                                    5.2113221782724635));
+  EXPECT_TRUE(expect_one_decay_root(5.4881945973060218e-05, -1.0908453491579908e-07,
+                                    -0.00012968356403798053, 0.69668225962364971,
+                                    2.792716863508002));
+  EXPECT_TRUE(expect_one_decay_root(46.908810332294017 - 37.493556357571904, -0.13010657455781122,
+                                    -67.124167327830975, 0.10001122274614205, 0.4938206141479739));
 }
 
 // (x - 0.9)(x - 0.5)(x - 0.2) with x = exp(-s): three decays (rates 1, 2, 3), roots at s =
