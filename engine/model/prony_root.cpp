@@ -154,24 +154,36 @@ std::optional<double> one_decay_start(double a, double b, double c, double tau, 
 }
 
 // The root of g(s) = f(s) - level on a piece [lo, hi] where g is monotone and changes sign
-// (g_lo its value at lo), f with one decay: g'' = (c / tau^2) exp(-s / tau) keeps c's sign, so
-// a Newton step from anywhere on the piece lands on the side where g has the sign of g''
-// (Fourier's condition), and from there moves to the root without overshooting, one exp a
-// step, quadratically near it. It starts from the closed form (one_decay_start), else from that
-// end, and stops at a step within 4 eps of s, TOMS 748's tolerance; a step that leaves the
-// bracket (rounding far from the root) or no convergence in kMostNewtonSteps hands the piece to
-// TOMS 748.
+// (g_lo its value at lo), f's decays all of one sign: g'' = sum_j (c_j / tau_j^2)
+// exp(-s / tau_j) keeps their sign, so a Newton step from anywhere on the piece lands on the
+// side where g has the sign of g'' (Fourier's condition), and from there moves to the root
+// without overshooting, an exp a decay a step, quadratically near it. With one decay it starts
+// from the closed form (one_decay_start), else from that end, and stops at a step within 4 eps
+// of s, TOMS 748's tolerance; decays of both signs, a step that leaves the bracket (rounding far
+// from the root) or no convergence in kMostNewtonSteps hand the piece to TOMS 748.
 constexpr int kMostNewtonSteps = 60;
-std::optional<double> one_decay_root(const ExponentialSum& f, double level, double lo, double hi,
-                                     double g_lo) {
-  const ExponentialDecay& d = f.decays.front();
-  const bool convex = d.amplitude > 0.0;
-  double s = one_decay_start(f.constant - level, f.slope, d.amplitude, d.time, lo, hi)
-                 .value_or((g_lo > 0.0) == convex ? lo : hi);
+std::optional<double> one_signed_decays_root(const ExponentialSum& f, double level, double lo,
+                                             double hi, double g_lo) {
+  const bool convex = std::any_of(f.decays.begin(), f.decays.end(),
+                                  [](const ExponentialDecay& d) { return d.amplitude > 0.0; });
+  const bool concave = std::any_of(f.decays.begin(), f.decays.end(),
+                                   [](const ExponentialDecay& d) { return d.amplitude < 0.0; });
+  if (convex == concave) return std::nullopt;
+  std::optional<double> start;
+  if (f.decays.size() == 1) {
+    const ExponentialDecay& d = f.decays.front();
+    start = one_decay_start(f.constant - level, f.slope, d.amplitude, d.time, lo, hi);
+  }
+  double s = start.value_or((g_lo > 0.0) == convex ? lo : hi);
   for (int step = 0; step < kMostNewtonSteps; ++step) {
-    const double e = d.amplitude * std::exp(-s / d.time);
-    const double g = f.constant + f.slope * s + e - level;
-    const double slope = f.slope - e / d.time;
+    double g = f.constant + f.slope * s;
+    double slope = f.slope;
+    for (const ExponentialDecay& d : f.decays) {
+      const double e = d.amplitude * std::exp(-s / d.time);
+      g += e;
+      slope -= e / d.time;
+    }
+    g -= level;
     if (g == 0.0) return s;
     if (!(slope != 0.0)) return std::nullopt;
     const double next = s - g / slope;
@@ -239,9 +251,7 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     const double g_hi = g(hi);
     if (g_hi == 0.0 || (g_hi < 0.0) != (side < 0.0)) {
       if (g_hi == 0.0) return hi;
-      if (f.decays.size() == 1 && f.decays.front().amplitude != 0.0) {
-        if (const auto root = one_decay_root(f, level, lo, hi, g_lo)) return root;
-      }
+      if (const auto root = one_signed_decays_root(f, level, lo, hi, g_lo)) return root;
       return bracketed_root_from(g, lo, hi, g_lo, g_hi);
     }
     g_lo = g_hi;

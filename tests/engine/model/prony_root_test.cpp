@@ -47,17 +47,20 @@ TEST(PronyRoot, OneDecayAndASlopeByLambertW) {
   EXPECT_NEAR(*s_back + mid, second, 1e-13 * second);
 }
 
-// The first crossing of a + b s + c exp(-s / tau) from 0 against its own root in long double,
-// bisected next to it to 64 bits; whether it has one. Tolerance 4 eps of the root (the root
-// finder's stopping rule: a step, or TOMS 748's bracket, within 4 eps of s) plus the rounding
-// of g in double, 4 eps of its terms' sizes over its slope (a root near 0 sits where a and
-// c exp(-s / tau) cancel).
-bool expect_one_decay_root(double a, double b, double c, double tau, double span) {
-  const std::optional<double> s = first_crossing(ExponentialSum{a, b, {{c, tau}}}, 0.0, span);
+// The first crossing of f from 0 against its own root in long double, bisected next to it to
+// 64 bits; whether it has one. Tolerance 4 eps of the root (the root finder's stopping rule: a
+// step, or TOMS 748's bracket, within 4 eps of s) plus the rounding of f in double, 4 eps of
+// its terms' sizes over its slope (a root near 0 sits where its terms cancel).
+bool expect_root(const ExponentialSum& f, double span) {
+  const std::optional<double> s = first_crossing(f, 0.0, span);
   if (!s) return false;
   const auto g = [&](long double x) {
-    return static_cast<long double>(a) + static_cast<long double>(b) * x +
-           static_cast<long double>(c) * std::exp(-x / static_cast<long double>(tau));
+    long double sum = static_cast<long double>(f.constant) + static_cast<long double>(f.slope) * x;
+    for (const ExponentialDecay& d : f.decays) {
+      sum +=
+          static_cast<long double>(d.amplitude) * std::exp(-x / static_cast<long double>(d.time));
+    }
+    return sum;
   };
   long double lo = std::max(0.0L, static_cast<long double>(*s) * (1.0L - 1e-9L));
   long double hi = std::min(static_cast<long double>(span), *s * (1.0L + 1e-9L) + 1e-300L);
@@ -69,12 +72,21 @@ bool expect_one_decay_root(double a, double b, double c, double tau, double span
   }
   const double reference = static_cast<double>(0.5L * (lo + hi));
   const double eps = std::numeric_limits<double>::epsilon();
-  const double decay = c * std::exp(-reference / tau);
-  const double rounding = 4.0 * eps * (std::abs(a) + std::abs(b * reference) + std::abs(decay)) /
-                          std::abs(b - decay / tau);
-  EXPECT_NEAR(*s, reference, 4.0 * eps * reference + rounding)
-      << "a " << a << " b " << b << " c " << c << " tau " << tau;
+  double sizes = std::abs(f.constant) + std::abs(f.slope * reference);
+  double slope = f.slope;
+  for (const ExponentialDecay& d : f.decays) {
+    const double decay = d.amplitude * std::exp(-reference / d.time);
+    sizes += std::abs(decay);
+    slope -= decay / d.time;
+  }
+  EXPECT_NEAR(*s, reference, 4.0 * eps * reference + 4.0 * eps * sizes / std::abs(slope))
+      << "a " << f.constant << " b " << f.slope << " c " << f.decays.front().amplitude << " tau "
+      << f.decays.front().time;
   return true;
+}
+
+bool expect_one_decay_root(double a, double b, double c, double tau, double span) {
+  return expect_root(ExponentialSum{a, b, {{c, tau}}}, span);
 }
 
 // One decay and a slope over every sign of each (the loads of a spring pressed, withdrawn or
@@ -105,6 +117,26 @@ TEST(PronyRoot, OneDecayRootWhereLambertsArgumentIsDenormal) {
                                     2.792716863508002));
   EXPECT_TRUE(expect_one_decay_root(46.908810332294017 - 37.493556357571904, -0.13010657455781122,
                                     -67.124167327830975, 0.10001122274614205, 0.4938206141479739));
+}
+
+// Two and four decays of one sign (a spring withdrawn whose arms all push, or all pull) and of
+// both, over every sign of the slope: roots to their last bits, as with one decay.
+TEST(PronyRoot, SeveralDecaysRootsToTheirLastBits) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(0.05, 1.0);
+  int found = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    ExponentialSum f{(unit(random) - 0.5) * 20.0,
+                     (trial % 2 ? 1.0 : -1.0) * unit(random) * (trial % 8 < 4 ? 1.0 : 1e3),
+                     {}};
+    const int decays = trial % 3 == 0 ? 4 : 2;
+    for (int j = 0; j < decays; ++j) {
+      const double sign = trial % 4 < 2 ? 1.0 : (trial % 4 == 2 ? -1.0 : (j % 2 ? 1.0 : -1.0));
+      f.decays.push_back({sign * unit(random) * 10.0, 0.01 + unit(random)});
+    }
+    if (expect_root(f, 5.0)) ++found;
+  }
+  EXPECT_GT(found, 1000);
 }
 
 // (x - 0.9)(x - 0.5)(x - 0.2) with x = exp(-s): three decays (rates 1, 2, 3), roots at s =
