@@ -417,13 +417,8 @@ class ViscoelasticRowDrive::Row {
   void enter_arms(ViscoelasticSpringState& s, std::span<const double> stresses) {
     s.entry_time = arms_.enter(stresses, 1.0, {block(s), terms()});
   }
-  /// Spring s leaves the arms now; its arm stresses then [N/m].
-  FewValues<double> leave_arms(const ViscoelasticSpringState& s) {
-    FewValues<double> stresses(terms());
-    arms_.leave(member(s), 1.0, stresses);
-    return stresses;
-  }
-  /// The same just after count_pressed(s), which read them into counted_stresses.
+  /// Spring s leaves the arms now, just after count_pressed(s), which read its arm stresses
+  /// [N/m] into counted_stresses; they are returned.
   FewValues<double> leave_arms_counted(const ViscoelasticSpringState& s) {
     const std::span<const double> counted = counted_stresses(s);
     FewValues<double> stresses(counted.begin(), counted.end());
