@@ -225,6 +225,8 @@ class ViscoelasticRowDrive::Row {
       rebuild_motion();
       return;
     }
+    // At most one a spring: room for all at once, not grown by copies.
+    first_events_.reserve(state_.size());
     for (std::size_t k = 0; k < state_.size(); ++k) {
       if (const auto delay = next_event_delay(k)) {
         first_events_.push_back({time_ + *delay, k, state_[k].version});
