@@ -68,26 +68,32 @@ FewValues<double> RetardationModes::amplitudes(std::span<const double> group_str
   return alpha;
 }
 
+void free_spring_numbers(const RetardationModes& modes, std::span<const double> stresses,
+                         std::span<double> amplitudes, std::span<double> residuals) {
+  const std::span<const PronyTerm> terms = modes.terms();
+  FewValues<double> group_stresses(modes.groups().size(), 0.0);
+  for (std::size_t j = 0; j < terms.size(); ++j) group_stresses[modes.group_of(j)] += stresses[j];
+  const FewValues<double> alpha = modes.amplitudes(group_stresses);
+  std::copy(alpha.begin(), alpha.end(), amplitudes.begin());
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    const std::size_t g = modes.group_of(j);
+    residuals[j] = stresses[j] - terms[j].modulus / modes.groups()[g].modulus * group_stresses[g];
+  }
+}
+
 FreeSpringCreep::FreeSpringCreep(std::shared_ptr<const RetardationModes> modes,
                                  std::span<const double> stresses)
-    : modes_(std::move(modes)) {
-  const std::span<const PronyTerm> terms = modes_->terms();
-  FewValues<double> group_stresses(modes_->groups().size(), 0.0);
-  for (std::size_t j = 0; j < terms.size(); ++j) group_stresses[modes_->group_of(j)] += stresses[j];
-  amplitudes_ = modes_->amplitudes(group_stresses);
-  residuals_.resize(terms.size());
-  for (std::size_t j = 0; j < terms.size(); ++j) {
-    const std::size_t g = modes_->group_of(j);
-    residuals_[j] =
-        stresses[j] - terms[j].modulus / modes_->groups()[g].modulus * group_stresses[g];
-  }
+    : modes_(std::move(modes)),
+      amplitudes_(modes_->rates().size()),
+      residuals_(modes_->terms().size()) {
+  free_spring_numbers(*modes_, stresses, amplitudes_, residuals_);
 }
 
 FreeSpringCreep::FreeSpringCreep(double relaxed_modulus, std::span<const PronyTerm> terms,
                                  std::span<const double> stresses)
     : FreeSpringCreep(std::make_shared<const RetardationModes>(relaxed_modulus, terms), stresses) {}
 
-FewValues<double> FreeSpringCreep::stresses(double t) const {
+FewValues<double> FreeSpringCreepRef::stresses(double t) const {
   const std::span<const PronyTerm> groups = modes_->groups();
   FewValues<double> group_stress(groups.size(), 0.0);
   for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
@@ -106,14 +112,14 @@ FewValues<double> FreeSpringCreep::stresses(double t) const {
   return out;
 }
 
-ExponentialSum FreeSpringCreep::stretch_from(double t0) const {
+ExponentialSum FreeSpringCreepRef::stretch_from(double t0) const {
   // w = -sum_g sigma_g / E* (the residuals of a group sum to zero).
   ExponentialSum w;
   stretch_from(t0, w);
   return w;
 }
 
-void FreeSpringCreep::stretch_from(double t0, ExponentialSum& w) const {
+void FreeSpringCreepRef::stretch_from(double t0, ExponentialSum& w) const {
   w.constant = 0.0;
   w.slope = 0.0;
   w.decays.clear();
@@ -122,12 +128,14 @@ void FreeSpringCreep::stretch_from(double t0, ExponentialSum& w) const {
   }
 }
 
-double FreeSpringCreep::mode_stretch(std::size_t k, double t) const {
-  return modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus() *
-         std::exp(-modes_->rates()[k] * t);
+double FreeSpringCreepRef::mode_stretch(std::size_t k, double t) const {
+  const double at_release =
+      modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus();
+  // exp(-mu 0) is 1 exactly: a spring read as it is released needs no call.
+  return t == 0.0 ? at_release : at_release * std::exp(-modes_->rates()[k] * t);
 }
 
-double FreeSpringCreep::stretch(double t) const {
+double FreeSpringCreepRef::stretch(double t) const {
   // stretch_from(t) at 0, summed as ExponentialSum::at sums it (each decay times exp(0) = 1).
   double w = 0.0;
   for (std::size_t k = 0; k < amplitudes_.size(); ++k) w += mode_stretch(k, t);

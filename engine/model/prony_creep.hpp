@@ -49,16 +49,13 @@ class RetardationModes {
   std::vector<double> mode_norms_;  ///< <v_k, v_k> in the pencil's inner product
 };
 
-/// One free spring: O(1) per term (its modes' amplitudes and its terms' residuals), the modes
-/// shared by every spring of the material.
-class FreeSpringCreep {
+/// A free spring's numbers held elsewhere (a row's flat per-spring store), read in place: its
+/// modes' amplitudes alpha_k and its terms' residuals, the modes the material's.
+class FreeSpringCreepRef {
  public:
-  /// The spring is free from now (t = 0) with arm stresses sigma_j [N/m]; its stretch is then
-  /// w = -sum_j sigma_j / E*.
-  FreeSpringCreep(std::shared_ptr<const RetardationModes> modes, std::span<const double> stresses);
-  /// The same with modes of its own.
-  FreeSpringCreep(double relaxed_modulus, std::span<const PronyTerm> terms,
-                  std::span<const double> stresses);
+  FreeSpringCreepRef(const RetardationModes& modes, std::span<const double> amplitudes,
+                     std::span<const double> residuals)
+      : modes_(&modes), amplitudes_(amplitudes), residuals_(residuals) {}
 
   /// The stretch w(t) [m] at t [s] after the release.
   double stretch(double t) const;
@@ -75,6 +72,41 @@ class FreeSpringCreep {
   /// Mode k's part of the stretch at t [m].
   double mode_stretch(std::size_t k, double t) const;
 
+  const RetardationModes* modes_;
+  std::span<const double> amplitudes_;
+  std::span<const double> residuals_;
+};
+
+/// The numbers of a spring free from now with arm stresses sigma_j [N/m]: its modes' amplitudes
+/// (one per retardation rate) into `amplitudes`, its terms' residuals into `residuals`.
+void free_spring_numbers(const RetardationModes& modes, std::span<const double> stresses,
+                         std::span<double> amplitudes, std::span<double> residuals);
+
+/// One free spring: O(1) per term (its modes' amplitudes and its terms' residuals), the modes
+/// shared by every spring of the material.
+class FreeSpringCreep {
+ public:
+  /// The spring is free from now (t = 0) with arm stresses sigma_j [N/m]; its stretch is then
+  /// w = -sum_j sigma_j / E*.
+  FreeSpringCreep(std::shared_ptr<const RetardationModes> modes, std::span<const double> stresses);
+  /// The same with modes of its own.
+  FreeSpringCreep(double relaxed_modulus, std::span<const PronyTerm> terms,
+                  std::span<const double> stresses);
+
+  /// The stretch w(t) [m] at t [s] after the release.
+  double stretch(double t) const { return numbers().stretch(t); }
+  /// The arm stresses sigma_j(t) [N/m].
+  FewValues<double> stresses(double t) const { return numbers().stresses(t); }
+  /// w(t0 + s) as an exponential sum in s [s].
+  ExponentialSum stretch_from(double t0) const { return numbers().stretch_from(t0); }
+  /// The same into `w` (its decays' storage reused).
+  void stretch_from(double t0, ExponentialSum& w) const { numbers().stretch_from(t0, w); }
+  /// The retardation rates mu_k [1/s], ascending.
+  std::span<const double> rates() const { return modes_->rates(); }
+  /// Its numbers, read in place.
+  FreeSpringCreepRef numbers() const { return {*modes_, amplitudes_, residuals_}; }
+
+ private:
   std::shared_ptr<const RetardationModes> modes_;
   FewValues<double> amplitudes_;  ///< alpha_k
   FewValues<double> residuals_;   ///< sigma_j - (E_j / E_group) sigma_group at 0 [N/m]

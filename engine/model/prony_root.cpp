@@ -2,9 +2,12 @@
 #include "engine/model/prony_root.hpp"
 
 #include <boost/container/small_vector.hpp>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/lambert_w.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/base/bracketed_root.hpp"
 
@@ -24,6 +27,10 @@ struct ConstantPlusDecays {
 
   double at(double s) const {
     double sum = constant;
+    if (s == 0.0) {
+      for (const auto& term : terms) sum += term.first;  // exp(-rate 0) is 1 exactly
+      return sum;
+    }
     for (const auto& [amplitude, rate] : terms) {
       sum += amplitude * std::exp(-rate * s);
     }
@@ -111,10 +118,103 @@ void append_decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi,
   append_sign_changes([&](double s) { return p.at(s); }, points, zeros);
 }
 
+// Where g(s) = A + b s + c exp(-s / tau) vanishes on [lo, hi], in closed form: with
+// u = s + A / b, (u / tau) exp(u / tau) = -c exp(A / (b tau)) / (b tau) =: x, so s = tau W(x) -
+// A / b, W_0 or W_-1 (both where -1/e < x < 0) whichever falls on the piece; with b = 0,
+// s = tau ln(-c / A). None where x leaves W's domain or overflows. Exact to a few ulps of its
+// terms, which may cancel: it is a start for Newton, not the root.
+std::optional<double> one_decay_start(double a, double b, double c, double tau, double lo,
+                                      double hi) {
+  const auto on_piece = [&](double s) { return s >= lo && s <= hi; };
+  if (b == 0.0) {
+    const double ratio = -c / a;
+    if (!(ratio > 0.0)) return std::nullopt;
+    const double s = tau * std::log(ratio);
+    return on_piece(s) ? std::optional<double>(s) : std::nullopt;
+  }
+  const double scale = b * tau;
+  const double x = -c / scale * std::exp(a / scale);
+  if (!std::isfinite(x) || x < -boost::math::constants::exp_minus_one<double>()) {
+    return std::nullopt;
+  }
+  // Boost's W raises on denormals and at its domain's edges: a start is only a start, so those
+  // give NaN or an infinity, off the piece.
+  using Quiet = boost::math::policies::policy<
+      boost::math::policies::domain_error<boost::math::policies::ignore_error>,
+      boost::math::policies::overflow_error<boost::math::policies::ignore_error>,
+      boost::math::policies::underflow_error<boost::math::policies::ignore_error>,
+      boost::math::policies::evaluation_error<boost::math::policies::ignore_error>>;
+  const double principal = tau * boost::math::lambert_w0(x, Quiet()) - a / b;
+  if (on_piece(principal)) return principal;
+  if (x < -std::numeric_limits<double>::min()) {
+    const double lower = tau * boost::math::lambert_wm1(x, Quiet()) - a / b;
+    if (on_piece(lower)) return lower;
+  }
+  return std::nullopt;
+}
+
+// The root of g(s) = f(s) - level on a piece [lo, hi] where g is monotone and changes sign
+// (g_lo its value at lo), f's decays all of one sign: g'' = sum_j (c_j / tau_j^2)
+// exp(-s / tau_j) keeps their sign, so a Newton step from anywhere on the piece lands on the
+// side where g has the sign of g'' (Fourier's condition), and from there moves to the root
+// without overshooting, an exp a decay a step, quadratically near it. With one decay it starts
+// from the closed form (one_decay_start); with several from that end, far from the root, so
+// while Newton's step is longer than 1e-6 of the piece it takes Halley's (g'' is free: cubic,
+// about a third fewer steps there), which may pass the root: the Newton steps after it land on
+// Fourier's side again. It stops at a step within 4 eps of s, TOMS 748's tolerance; decays of
+// both signs, a step that leaves the bracket (rounding far from the root) or no convergence in
+// kMostNewtonSteps hand the piece to TOMS 748.
+constexpr int kMostNewtonSteps = 60;
+std::optional<double> one_signed_decays_root(const ExponentialSum& f, double level, double lo,
+                                             double hi, double g_lo) {
+  const bool convex = std::any_of(f.decays.begin(), f.decays.end(),
+                                  [](const ExponentialDecay& d) { return d.amplitude > 0.0; });
+  const bool concave = std::any_of(f.decays.begin(), f.decays.end(),
+                                   [](const ExponentialDecay& d) { return d.amplitude < 0.0; });
+  if (convex == concave) return std::nullopt;
+  std::optional<double> start;
+  if (f.decays.size() == 1) {
+    const ExponentialDecay& d = f.decays.front();
+    start = one_decay_start(f.constant - level, f.slope, d.amplitude, d.time, lo, hi);
+  }
+  double s = start.value_or((g_lo > 0.0) == convex ? lo : hi);
+  const bool halley = f.decays.size() > 1;
+  for (int step = 0; step < kMostNewtonSteps; ++step) {
+    double g = f.constant + f.slope * s;
+    double slope = f.slope;
+    double curvature = 0.0;
+    for (const ExponentialDecay& d : f.decays) {
+      const double e = d.amplitude * std::exp(-s / d.time);
+      g += e;
+      slope -= e / d.time;
+      if (halley) curvature += e / (d.time * d.time);
+    }
+    g -= level;
+    if (g == 0.0) return s;
+    if (!(slope != 0.0)) return std::nullopt;
+    double next = s - g / slope;
+    if (halley && std::abs(next - s) > 1e-6 * (hi - lo)) {
+      const double far = s - 2.0 * g * slope / (2.0 * slope * slope - g * curvature);
+      if (far >= lo && far <= hi) next = far;
+    }
+    if (!(next >= lo && next <= hi)) return std::nullopt;
+    if (std::abs(next - s) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(next)) {
+      return next;
+    }
+    s = next;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 double ExponentialSum::at(double s) const {
   double sum = constant + slope * s;
+  if (s == 0.0) {
+    // exp(-0 / tau) is 1 exactly: the same sum without the calls (most reads are at s = 0).
+    for (const ExponentialDecay& decay : decays) sum += decay.amplitude;
+    return sum;
+  }
   for (const ExponentialDecay& decay : decays) {
     sum += decay.amplitude * std::exp(-s / decay.time);
   }
@@ -123,6 +223,10 @@ double ExponentialSum::at(double s) const {
 
 double ExponentialSum::slope_at(double s) const {
   double sum = slope;
+  if (s == 0.0) {
+    for (const ExponentialDecay& decay : decays) sum -= decay.amplitude / decay.time;
+    return sum;
+  }
   for (const ExponentialDecay& decay : decays) {
     sum -= decay.amplitude / decay.time * std::exp(-s / decay.time);
   }
@@ -156,7 +260,9 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     const double lo = points[i], hi = points[i + 1];
     const double g_hi = g(hi);
     if (g_hi == 0.0 || (g_hi < 0.0) != (side < 0.0)) {
-      return g_hi == 0.0 ? hi : bracketed_root_from(g, lo, hi, g_lo, g_hi);
+      if (g_hi == 0.0) return hi;
+      if (const auto root = one_signed_decays_root(f, level, lo, hi, g_lo)) return root;
+      return bracketed_root_from(g, lo, hi, g_lo, g_hi);
     }
     g_lo = g_hi;
   }

@@ -43,7 +43,8 @@ struct ExponentialSum {
 /// pieces where it is monotone, at the zeros of f' (found the same way, since f' = slope + a sum
 /// of decays, whose own derivative divided by its slowest decay is again a constant plus decays:
 /// an exponential sum with K decays has at most K such pieces), and the first piece whose ends
-/// straddle the level is solved by TOMS 748.
+/// straddle the level is solved by TOMS 748, or with one decay (f convex or concave throughout)
+/// by Newton from the end where it cannot overshoot, to the same 4 eps.
 std::optional<double> first_crossing(const ExponentialSum& f, double level, double span);
 
 }  // namespace mdrsim

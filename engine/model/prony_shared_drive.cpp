@@ -34,32 +34,54 @@ void SharedDriveArms::glassy_step(double step) {
 
 SharedDriveMember SharedDriveArms::enter(std::span<const double> stresses, double weight) {
   SharedDriveMember member{time_, FewValues<double>(terms_.size()), weight};
-  for (std::size_t j = 0; j < terms_.size(); ++j) {
-    member.offsets[j] = stresses[j] - history_[j];
-    decaying_[j] += weight * member.offsets[j];
-  }
-  weight_ += weight;
-  ++members_;
+  enter(stresses, weight, member.offsets);
   return member;
 }
 
+double SharedDriveArms::enter(std::span<const double> stresses, double weight,
+                              std::span<double> offsets) {
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    offsets[j] = stresses[j] - history_[j];
+    decaying_[j] += weight * offsets[j];
+  }
+  weight_ += weight;
+  ++members_;
+  return time_;
+}
+
 double SharedDriveArms::stress(const SharedDriveMember& member, std::size_t j) const {
-  return history_[j] + member.offsets[j] * std::exp(-(time_ - member.entry_time) / terms_[j].time);
+  return stress(SharedDriveMemberRef{member.entry_time, member.offsets}, j);
+}
+
+double SharedDriveArms::stress(const SharedDriveMemberRef& member, std::size_t j) const {
+  const double age = time_ - member.entry_time;
+  // exp(-0 / tau) is 1 exactly: a member read as it enters needs no call.
+  if (age == 0.0) return history_[j] + member.offsets[j];
+  return history_[j] + member.offsets[j] * std::exp(-age / terms_[j].time);
 }
 
 FewValues<double> SharedDriveArms::leave(const SharedDriveMember& member) {
   FewValues<double> stresses(terms_.size());
+  leave(SharedDriveMemberRef{member.entry_time, member.offsets}, member.weight, stresses);
+  return stresses;
+}
+
+void SharedDriveArms::leave(const SharedDriveMemberRef& member, double weight,
+                            std::span<double> stresses) {
+  for (std::size_t j = 0; j < terms_.size(); ++j) stresses[j] = stress(member, j);
+  leave_read(stresses, weight);
+}
+
+void SharedDriveArms::leave_read(std::span<const double> stresses, double weight) {
   for (std::size_t j = 0; j < terms_.size(); ++j) {
-    stresses[j] = stress(member, j);
-    decaying_[j] -= member.weight * (stresses[j] - history_[j]);
+    decaying_[j] -= weight * (stresses[j] - history_[j]);
   }
-  weight_ -= member.weight;
+  weight_ -= weight;
   if (--members_ == 0) {
     // An empty set sums to zero exactly, not to the roundoff of its additions and removals.
     weight_ = 0.0;
     std::fill(decaying_.begin(), decaying_.end(), 0.0);
   }
-  return stresses;
 }
 
 double SharedDriveArms::arm_force(std::size_t j) const {

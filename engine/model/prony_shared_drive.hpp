@@ -19,6 +19,12 @@ struct SharedDriveMember {
   double weight = 0.0;        ///< dx [m]: the member's share of the sums
 };
 
+/// A member whose offsets are held elsewhere (a row's flat per-spring store), read in place.
+struct SharedDriveMemberRef {
+  double entry_time;                ///< [s] on the set's clock
+  std::span<const double> offsets;  ///< [N/m] per term
+};
+
 /// Every member's stretch moves at the same rate, so each arm obeys d sigma_j/dt = E_j w' -
 /// sigma_j / tau_j with one w'(t): sigma_j = H_j + a decay of the member's own, where H_j solves
 /// the same equation from H_j = 0 at the clock's start. The weighted sum over the members is
@@ -38,10 +44,17 @@ class SharedDriveArms {
   void glassy_step(double step);
   /// A spring joins now with arm stresses `stresses` [N/m] (zero for a fresh one) and weight dx.
   SharedDriveMember enter(std::span<const double> stresses, double weight);
+  /// The same into `offsets` (one per term, held by the caller); the entry time is returned.
+  double enter(std::span<const double> stresses, double weight, std::span<double> offsets);
   /// A member leaves now; its arm stresses then [N/m] are returned.
   FewValues<double> leave(const SharedDriveMember& member);
+  /// The same for a member of weight `weight` held elsewhere, its stresses into `stresses`.
+  void leave(const SharedDriveMemberRef& member, double weight, std::span<double> stresses);
+  /// The same for a member whose stresses now, `stresses`, were just read by stress().
+  void leave_read(std::span<const double> stresses, double weight);
   /// A member's arm stress of term j now [N/m].
   double stress(const SharedDriveMember& member, std::size_t j) const;
+  double stress(const SharedDriveMemberRef& member, std::size_t j) const;
 
   /// sum_i weight_i sigma_ij over the members [N], term j.
   double arm_force(std::size_t j) const;

@@ -51,8 +51,8 @@ ViscoelasticEdge viscoelastic_edge(const DetachmentCriterion& glassy_criterion,
   return edge;
 }
 
-std::optional<double> reach_time(const FreeSpringCreep& creep, double t0, double reach, double rate,
-                                 double span, bool on_level) {
+std::optional<double> reach_time(const FreeSpringCreepRef& creep, double t0, double reach,
+                                 double rate, double span, bool on_level) {
   // The reach less the free surface: negative while apart, zero where they meet.
   ExponentialSum apart = creep.stretch_from(t0);
   for (ExponentialDecay& decay : apart.decays) decay.amplitude = -decay.amplitude;
@@ -61,6 +61,11 @@ std::optional<double> reach_time(const FreeSpringCreep& creep, double t0, double
   // On the level: the level where the difference stands, to the bit, so that its side is
   // read from where it goes.
   return first_crossing(apart, on_level ? apart.at(0.0) : 0.0, span);
+}
+
+std::optional<double> reach_time(const FreeSpringCreep& creep, double t0, double reach, double rate,
+                                 double span, bool on_level) {
+  return reach_time(creep.numbers(), t0, reach, rate, span, on_level);
 }
 
 void glassy_step(std::span<double> stresses, std::span<const PronyTerm> terms, double step) {

@@ -59,5 +59,7 @@ void glassy_step(std::span<double> stresses, std::span<const PronyTerm> terms, d
 /// one after they part, never one the rounding of the start makes up.
 std::optional<double> reach_time(const FreeSpringCreep& creep, double t0, double reach, double rate,
                                  double span, bool on_level);
+std::optional<double> reach_time(const FreeSpringCreepRef& creep, double t0, double reach,
+                                 double rate, double span, bool on_level);
 
 }  // namespace mdrsim

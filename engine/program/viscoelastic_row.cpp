@@ -53,21 +53,20 @@ constexpr std::int8_t kGlueEvent = 3;
 
 struct ViscoelasticSpringState {
   ViscoelasticSpringPhase phase = ViscoelasticSpringPhase::untouched;
-  SharedDriveMember member;              ///< while pressed or glued
-  std::optional<FreeSpringCreep> creep;  ///< while free
-  double released_at = 0.0;              ///< [s]
-  double glued_at = -1.0;                ///< [s] the last glue; < 0: never glued
-  double lifted_at = -1.0;               ///< [s] the last release from pressed; < 0: never
+  std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
+  /// While pressed or glued: when it joined the arms [s] (its offsets in the row's store).
+  double entry_time = 0.0;
+  double released_at = 0.0;  ///< [s]
+  double glued_at = -1.0;    ///< [s] the last glue; < 0: never glued
+  double lifted_at = -1.0;   ///< [s] the last release from pressed; < 0: never
   /// The energy summed up to `counted_at` [s]: while in contact, the stretch [m] and arm stresses
-  /// [N/m] then; while free, the energy it stored then [J/m].
+  /// [N/m] (in the row's store) then; while free, the energy it stored then [J/m].
   double counted_at = 0.0;
   double counted_stretch = 0.0;
-  FewValues<double> counted_stresses;
   double counted_stored = 0.0;
   /// The tangential arms, made when the spring first glues under a tangential drive (so that a
   /// row without one carries none of them, O(1) numbers a spring).
   std::unique_ptr<ViscoelasticSpringShear> shear;
-  std::uint32_t version = 0;  ///< bumped at each change: older queue entries are stale
 };
 
 /// A spring's key in a held segment's search (Row::index_held).
@@ -205,6 +204,8 @@ class ViscoelasticRowDrive::Row {
         tangential_terms_(tangential_terms(springs.terms, springs.shear_ratio)),
         tangential_arms_(tangential_terms_),
         state_(springs.images.size()),
+        store_stride_(3 * springs.terms.size() + modes_->rates().size()),
+        store_(state_.size() * store_stride_, 0.0),
         pressed_(springs.images.size()),
         glued_(springs.images.size()) {}
 
@@ -240,13 +241,29 @@ class ViscoelasticRowDrive::Row {
       rebuild_motion();
       return;
     }
+    // At most one a spring: room for all at once, not grown by copies.
+    first_events_.reserve(state_.size());
     for (std::size_t k = 0; k < state_.size(); ++k) {
       if (const auto delay = next_event_delay(k)) {
         first_events_.push_back({time_ + *delay, k, state_[k].version});
       }
     }
-    std::sort(first_events_.begin(), first_events_.end(),
-              [](const ViscoelasticRowEvent& a, const ViscoelasticRowEvent& b) { return b > a; });
+    sort_first_events();
+  }
+
+  /// first_events_ in their order. A linear drive meets the springs from the inside out and
+  /// Ting's releases go from the outside in, so they mostly come in order or in reverse (no two
+  /// entries are equal: one a spring), found in one pass each before sorting.
+  void sort_first_events() {
+    const auto earlier = [](const ViscoelasticRowEvent& a, const ViscoelasticRowEvent& b) {
+      return b > a;
+    };
+    if (std::is_sorted(first_events_.begin(), first_events_.end(), earlier)) return;
+    if (std::is_sorted(first_events_.rbegin(), first_events_.rend(), earlier)) {
+      std::reverse(first_events_.begin(), first_events_.end());
+      return;
+    }
+    std::sort(first_events_.begin(), first_events_.end(), earlier);
   }
 
   double end() const { return end_; }
@@ -297,9 +314,9 @@ class ViscoelasticRowDrive::Row {
     if (release) {
       count_pressed(s, springs_.images[k]);
       if (s.shear) lift_tangentially(k);
-      const FewValues<double> stresses = arms_.leave(s.member);
+      const FewValues<double> stresses = leave_arms_counted(s);
       s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
-      s.creep.emplace(modes_, stresses);
+      start_creep(s, stresses);
       s.released_at = time_;
       s.phase = ViscoelasticSpringPhase::free;
       pressed_.erase(k);
@@ -308,14 +325,13 @@ class ViscoelasticRowDrive::Row {
       if (pressed_.empty()) run.separation_time = time_;
     } else {
       const FewValues<double> stresses = s.phase == ViscoelasticSpringPhase::free
-                                             ? s.creep->stresses(time_ - s.released_at)
+                                             ? creep(s).stresses(time_ - s.released_at)
                                              : FewValues<double>(springs_.terms.size(), 0.0);
       if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
-      s.member = arms_.enter(stresses, 1.0);
+      enter_arms(s, stresses);
       s.counted_at = time_;
       s.counted_stretch = depth_ - springs_.images[k];
-      s.counted_stresses = stresses;
-      s.creep.reset();
+      copy_counted_stresses(s, stresses);
       s.phase = ViscoelasticSpringPhase::pressed;
       pressed_.insert(k);
       pressed_images_.add(springs_.images[k]);
@@ -346,7 +362,7 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
       if (in_contact(s)) {
-        stored.add(stored_of(s.counted_stretch, s.counted_stresses));
+        stored.add(stored_of(s.counted_stretch, counted_stresses(s)));
       } else if (s.phase == ViscoelasticSpringPhase::free) {
         stored.add(s.counted_stored);
       }
@@ -397,6 +413,51 @@ class ViscoelasticRowDrive::Row {
   }
 
  private:
+  // A spring's per-term numbers sit in the row's flat store, a block a spring: its arms'
+  // offsets while in contact, its counted stresses, its free creep's mode amplitudes and its
+  // terms' residuals (a spring's state stays small: the row's passes stream it).
+  std::size_t terms() const { return springs_.terms.size(); }
+  const double* block(const ViscoelasticSpringState& s) const {
+    return store_.data() + static_cast<std::size_t>(&s - state_.data()) * store_stride_;
+  }
+  double* block(const ViscoelasticSpringState& s) {
+    return store_.data() + static_cast<std::size_t>(&s - state_.data()) * store_stride_;
+  }
+  SharedDriveMemberRef member(const ViscoelasticSpringState& s) const {
+    return {s.entry_time, {block(s), terms()}};
+  }
+  std::span<double> counted_stresses(const ViscoelasticSpringState& s) {
+    return {block(s) + terms(), terms()};
+  }
+  std::span<const double> counted_stresses(const ViscoelasticSpringState& s) const {
+    return {block(s) + terms(), terms()};
+  }
+  void copy_counted_stresses(const ViscoelasticSpringState& s, std::span<const double> stresses) {
+    std::copy(stresses.begin(), stresses.end(), counted_stresses(s).begin());
+  }
+  FreeSpringCreepRef creep(const ViscoelasticSpringState& s) const {
+    const std::size_t modes = modes_->rates().size();
+    return {*modes_, {block(s) + 2 * terms(), modes}, {block(s) + 2 * terms() + modes, terms()}};
+  }
+  /// Spring s is free from now with arm stresses `stresses` [N/m].
+  void start_creep(const ViscoelasticSpringState& s, std::span<const double> stresses) {
+    const std::size_t modes = modes_->rates().size();
+    double* numbers = block(s) + 2 * terms();
+    free_spring_numbers(*modes_, stresses, {numbers, modes}, {numbers + modes, terms()});
+  }
+  /// Spring s joins the arms now with arm stresses `stresses` [N/m].
+  void enter_arms(ViscoelasticSpringState& s, std::span<const double> stresses) {
+    s.entry_time = arms_.enter(stresses, 1.0, {block(s), terms()});
+  }
+  /// Spring s leaves the arms now, just after count_pressed(s), which read its arm stresses
+  /// [N/m] into counted_stresses; they are returned.
+  FewValues<double> leave_arms_counted(const ViscoelasticSpringState& s) {
+    const std::span<const double> counted = counted_stresses(s);
+    FewValues<double> stresses(counted.begin(), counted.end());
+    arms_.leave_read(stresses, 1.0);
+    return stresses;
+  }
+
   static bool in_contact(const ViscoelasticSpringState& s) {
     return s.phase == ViscoelasticSpringPhase::pressed || s.phase == ViscoelasticSpringPhase::glued;
   }
@@ -538,7 +599,7 @@ class ViscoelasticRowDrive::Row {
       lose_glue_pressed(k, run);
       return;
     }
-    FewValues<double> stresses = arms_.leave(s.member);
+    FewValues<double> stresses = leave_arms_counted(s);
     const double stretch = depth_ - springs_.images[k];
     const double load = springs_.relaxed_modulus * stretch + sum_of(stresses);
     const double before = stored_of(stretch, stresses);
@@ -550,7 +611,7 @@ class ViscoelasticRowDrive::Row {
     if (tangential_on_) let_go_tangentially(s);
     s.counted_stored = after;
     s.counted_at = time_;
-    s.creep.emplace(modes_, stresses);
+    start_creep(s, stresses);
     s.released_at = time_;
     s.phase = ViscoelasticSpringPhase::free;
     pressed_.erase(k);
@@ -601,7 +662,7 @@ class ViscoelasticRowDrive::Row {
   /// Spring s's normal line load now [N/m] (in contact, its stretch `stretch`).
   double load_now(const ViscoelasticSpringState& s, double stretch) const {
     double load = springs_.relaxed_modulus * stretch;
-    for (std::size_t j = 0; j < springs_.terms.size(); ++j) load += arms_.stress(s.member, j);
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) load += arms_.stress(member(s), j);
     return load;
   }
 
@@ -610,10 +671,10 @@ class ViscoelasticRowDrive::Row {
     ViscoelasticSpringState& s = state_[k];
     count_pressed(s, springs_.images[k]);
     if (s.shear) lift_tangentially(k);
-    const FewValues<double> stresses = arms_.leave(s.member);
+    const FewValues<double> stresses = leave_arms_counted(s);
     s.counted_stored = stored_of(-sum_of(stresses) / springs_.relaxed_modulus, stresses);
     s.counted_at = time_;
-    s.creep.emplace(modes_, stresses);
+    start_creep(s, stresses);
     s.released_at = time_;
     s.lifted_at = time_;
     s.phase = ViscoelasticSpringPhase::free;
@@ -628,14 +689,14 @@ class ViscoelasticRowDrive::Row {
   void enter_contact(std::size_t k, ViscoelasticRowRun& run, std::optional<double> glue_gap) {
     ViscoelasticSpringState& s = state_[k];
     const bool free = s.phase == ViscoelasticSpringPhase::free;
-    FewValues<double> stresses = free ? s.creep->stresses(time_ - s.released_at)
+    FewValues<double> stresses = free ? creep(s).stresses(time_ - s.released_at)
                                       : FewValues<double>(springs_.terms.size(), 0.0);
     double before = 0.0;
     double free_stretch = 0.0;
     if (free) {
       count_free(s);
       before = s.counted_stored;
-      free_stretch = s.creep->stretch(time_ - s.released_at);
+      free_stretch = creep(s).stretch(time_ - s.released_at);
     }
     const double stretch = depth_ - springs_.images[k];
     if (glue_gap) {
@@ -651,11 +712,10 @@ class ViscoelasticRowDrive::Row {
       if (springs_.friction && tangential_on_) glue_tangentially(s);
       ++run.touches;
     }
-    s.member = arms_.enter(stresses, 1.0);
+    enter_arms(s, stresses);
     s.counted_at = time_;
     s.counted_stretch = stretch;
-    s.counted_stresses = stresses;
-    s.creep.reset();
+    copy_counted_stresses(s, stresses);
     s.phase = glue_gap ? ViscoelasticSpringPhase::glued : ViscoelasticSpringPhase::pressed;
     pressed_.insert(k);
     pressed_images_.add(springs_.images[k]);
@@ -684,7 +744,7 @@ class ViscoelasticRowDrive::Row {
       // A held segment counts the work and the dissipation of every pressed spring together
       // (count_held_piece); the spring only notes where it stands.
       for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-        s.counted_stresses[j] = arms_.stress(s.member, j);
+        counted_stresses(s)[j] = arms_.stress(member(s), j);
       }
       s.counted_at = time_;
       s.counted_stretch = depth_ - image;
@@ -697,10 +757,10 @@ class ViscoelasticRowDrive::Row {
     double dissipated = 0.0;
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
       const PronyTerm& term = springs_.terms[j];
-      const ArmStressIntegrals i = arm_stress_integrals(term, s.counted_stresses[j], rate_, h);
+      const ArmStressIntegrals i = arm_stress_integrals(term, counted_stresses(s)[j], rate_, h);
       load_integral += i.stress;
       dissipated += i.square / (term.modulus * term.time);
-      s.counted_stresses[j] = arms_.stress(s.member, j);
+      counted_stresses(s)[j] = arms_.stress(member(s), j);
     }
     machine_work_.add(rate_ * load_integral);
     dissipated_.add(dissipated);
@@ -1118,7 +1178,7 @@ class ViscoelasticRowDrive::Row {
   /// A free spring's dissipation from its last count to now: the energy it stores less.
   void count_free(ViscoelasticSpringState& s) {
     const double t = time_ - s.released_at;
-    const double stored = stored_of(s.creep->stretch(t), s.creep->stresses(t));
+    const double stored = stored_of(creep(s).stretch(t), creep(s).stresses(t));
     dissipated_.add(s.counted_stored - stored);
     s.counted_stored = stored;
     s.counted_at = time_;
@@ -1185,7 +1245,7 @@ class ViscoelasticRowDrive::Row {
       // Within rounding of the surface the level is taken where the overlap stands (shifting
       // the sum by its value at 0 need not make it 0 there), so that the crossing is a later one.
       ExponentialSum& overlap = scratch_;
-      s.creep->stretch_from(time_ - s.released_at, overlap);
+      creep(s).stretch_from(time_ - s.released_at, overlap);
       for (ExponentialDecay& decay : overlap.decays) decay.amplitude = -decay.amplitude;
       overlap.constant = stretch - overlap.constant;
       overlap.slope = rate_;
@@ -1194,7 +1254,7 @@ class ViscoelasticRowDrive::Row {
       return first_crossing(overlap, std::max(now, 0.0), span);
     }
     FewValues<double> stresses(springs_.terms.size());
-    for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(s.member, j);
+    for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(member(s), j);
     ExponentialSum& load = scratch_;
     line_load_over(load, springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
     const double now = load.at(0.0);
@@ -1227,7 +1287,7 @@ class ViscoelasticRowDrive::Row {
       const ViscoelasticSpringState& s = state_[k];
       if (s.phase == ViscoelasticSpringPhase::pressed) continue;
       const double w =
-          s.phase == ViscoelasticSpringPhase::free ? s.creep->stretch(time_ - s.released_at) : 0.0;
+          s.phase == ViscoelasticSpringPhase::free ? creep(s).stretch(time_ - s.released_at) : 0.0;
       nearest = std::min(nearest, springs_.images[k] + w);
     }
     return nearest;
@@ -1325,7 +1385,7 @@ class ViscoelasticRowDrive::Row {
   double pressed_key(std::size_t k) const {
     double key = springs_.relaxed_modulus * springs_.images[k];
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-      key -= std::min(arms_.stress(state_[k].member, j) - arms_.history(j), 0.0);
+      key -= std::min(arms_.stress(member(state_[k]), j) - arms_.history(j), 0.0);
     }
     return key;
   }
@@ -1335,7 +1395,7 @@ class ViscoelasticRowDrive::Row {
   double free_key(std::size_t k, double horizon) const {
     const ViscoelasticSpringState& s = state_[k];
     double key = springs_.images[k];
-    for (const ExponentialDecay& d : s.creep->stretch_from(time_ - s.released_at).decays) {
+    for (const ExponentialDecay& d : creep(s).stretch_from(time_ - s.released_at).decays) {
       key += std::min(d.amplitude, d.amplitude * std::exp(-horizon / d.time));
     }
     return key;
@@ -1376,7 +1436,7 @@ class ViscoelasticRowDrive::Row {
           pressed_keys_.push({pressed_key(k), k, s.version});
         }
         for (std::size_t j = 0; j < own_squares_.size(); ++j) {
-          const double delta = arms_.stress(s.member, j) - arms_.history(j);
+          const double delta = arms_.stress(member(s), j) - arms_.history(j);
           own_squares_[j] += delta * delta;
         }
         if (tangential_on_ && s.phase == ViscoelasticSpringPhase::glued) {
@@ -1397,7 +1457,7 @@ class ViscoelasticRowDrive::Row {
   void index_change(std::size_t k, bool release) {
     const ViscoelasticSpringState& s = state_[k];
     for (std::size_t j = 0; j < own_squares_.size(); ++j) {
-      const double delta = s.counted_stresses[j] - arms_.history(j);
+      const double delta = counted_stresses(s)[j] - arms_.history(j);
       own_squares_[j] += release ? -delta * delta : delta * delta;
     }
     if (release) {
@@ -1437,12 +1497,12 @@ class ViscoelasticRowDrive::Row {
     const double g = springs_.images[k] - held_glue_gap(k);
     if (s.phase == ViscoelasticSpringPhase::untouched) return depth.hi - g >= 0.0;
     if (s.phase == ViscoelasticSpringPhase::free) {
-      const ExponentialSum w = s.creep->stretch_from(time_ - s.released_at);
+      const ExponentialSum w = creep(s).stretch_from(time_ - s.released_at);
       return depth.hi - g - bounds_over(w, limit).lo >= 0.0;
     }
     double lo = shared.lo - springs_.relaxed_modulus * g;
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-      const double sigma = arms_.stress(s.member, j);
+      const double sigma = arms_.stress(member(s), j);
       lo += std::min(sigma, sigma * std::exp(-limit / springs_.terms[j].time));
     }
     return lo <= 0.0;
@@ -1465,7 +1525,7 @@ class ViscoelasticRowDrive::Row {
     if (s.phase == ViscoelasticSpringPhase::free) {
       ExponentialSum overlap = motion_;
       overlap.constant -= g;
-      for (const ExponentialDecay& d : s.creep->stretch_from(time_ - s.released_at).decays) {
+      for (const ExponentialDecay& d : creep(s).stretch_from(time_ - s.released_at).decays) {
         overlap.decays.push_back({-d.amplitude, d.time});
       }
       const double now = overlap.at(0.0);
@@ -1479,7 +1539,7 @@ class ViscoelasticRowDrive::Row {
     ExponentialSum load = shared;
     load.constant -= springs_.relaxed_modulus * g;
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-      load.decays.push_back({arms_.stress(s.member, j), springs_.terms[j].time});
+      load.decays.push_back({arms_.stress(member(s), j), springs_.terms[j].time});
     }
     // A spring at zero load within rounding starts on its level (f - level is then exactly 0 at
     // s = 0, and first_crossing takes its side from where it moves).
@@ -1500,7 +1560,7 @@ class ViscoelasticRowDrive::Row {
     ExponentialSum load = shared;
     load.constant -= springs_.relaxed_modulus * springs_.images[k];
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-      load.decays.push_back({arms_.stress(state_[k].member, j), springs_.terms[j].time});
+      load.decays.push_back({arms_.stress(member(state_[k]), j), springs_.terms[j].time});
     }
     return load;
   }
@@ -1664,7 +1724,7 @@ class ViscoelasticRowDrive::Row {
     // on it (with dgamma_a = dgamma a spring that let go stands at its glue gap), and takes it
     // only as the motion leads on; a spring that glued and let go at this time is not taken
     // back at it.
-    const ExponentialSum free_surface = s.creep->stretch_from(time_ - s.released_at);
+    const ExponentialSum free_surface = creep(s).stretch_from(time_ - s.released_at);
     const double surface = free_surface.at(0.0);
     const double overlap = reach - surface;
     const double rounding =
@@ -1677,10 +1737,10 @@ class ViscoelasticRowDrive::Row {
       // hair inside): it is taken back now only where its load, pressed, would rise, read as the
       // pressed spring's own release reads it, so the two cannot take turns at one time.
       if (overlap >= -rounding && lifted_load_rises(s, stretch)) return 0.0;
-      return reach_time(*s.creep, time_ - s.released_at, reach, rate_, span, true);
+      return reach_time(creep(s), time_ - s.released_at, reach, rate_, span, true);
     }
     if (!again_now && (overlap > rounding || (overlap >= -rounding && approaching))) return 0.0;
-    return reach_time(*s.creep, time_ - s.released_at, reach, rate_, span, overlap >= -rounding);
+    return reach_time(creep(s), time_ - s.released_at, reach, rate_, span, overlap >= -rounding);
   }
 
   /// The boundary spring k's let-go with a tangential load: the first s at which the glassy
@@ -1771,7 +1831,7 @@ class ViscoelasticRowDrive::Row {
   /// Whether free spring s, pressed now at stretch `stretch`, would see its load rise: the
   /// slope of load_over() with the arm stresses SharedDriveArms would give it on entering.
   bool lifted_load_rises(const ViscoelasticSpringState& s, double stretch) const {
-    FewValues<double> stresses = s.creep->stresses(time_ - s.released_at);
+    FewValues<double> stresses = creep(s).stresses(time_ - s.released_at);
     for (std::size_t j = 0; j < stresses.size(); ++j) {
       const double history = arms_.history(j);
       stresses[j] = history + (stresses[j] - history);
@@ -1783,7 +1843,7 @@ class ViscoelasticRowDrive::Row {
   /// Spring s's line load from now over the segment's motion (its stretch `stretch` now).
   ExponentialSum load_over(const ViscoelasticSpringState& s, double stretch) const {
     FewValues<double> stresses(springs_.terms.size());
-    for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(s.member, j);
+    for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(member(s), j);
     return line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
   }
 
@@ -1805,7 +1865,9 @@ class ViscoelasticRowDrive::Row {
   CompensatedSum tangential_work_;       ///< [J/m]
   bool last_let_go_by_shear_ = false;
   std::vector<ViscoelasticSpringState> state_;
-  RowSpringSet pressed_;  ///< in contact: pressed or glued
+  std::size_t store_stride_;   ///< the numbers a spring's block holds
+  std::vector<double> store_;  ///< the springs' blocks, in spring order
+  RowSpringSet pressed_;       ///< in contact: pressed or glued
   RowSpringSet glued_;
   CompensatedSum pressed_images_;
   /// The events found as a segment begins (each spring's first in it: most of its events), in

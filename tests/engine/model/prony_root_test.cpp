@@ -6,6 +6,9 @@
 
 #include <boost/math/special_functions/lambert_w.hpp>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
 
 namespace mdrsim {
 namespace {
@@ -42,6 +45,98 @@ TEST(PronyRoot, OneDecayAndASlopeByLambertW) {
   const auto s_back = first_crossing(from_mid, 0.0, 50.0);
   ASSERT_TRUE(s_back.has_value());
   EXPECT_NEAR(*s_back + mid, second, 1e-13 * second);
+}
+
+// The first crossing of f from 0 against its own root in long double, bisected next to it to
+// 64 bits; whether it has one. Tolerance 4 eps of the root (the root finder's stopping rule: a
+// step, or TOMS 748's bracket, within 4 eps of s) plus the rounding of f in double, 4 eps of
+// its terms' sizes over its slope (a root near 0 sits where its terms cancel).
+bool expect_root(const ExponentialSum& f, double span) {
+  const std::optional<double> s = first_crossing(f, 0.0, span);
+  if (!s) return false;
+  const auto g = [&](long double x) {
+    long double sum = static_cast<long double>(f.constant) + static_cast<long double>(f.slope) * x;
+    for (const ExponentialDecay& d : f.decays) {
+      sum +=
+          static_cast<long double>(d.amplitude) * std::exp(-x / static_cast<long double>(d.time));
+    }
+    return sum;
+  };
+  long double lo = std::max(0.0L, static_cast<long double>(*s) * (1.0L - 1e-9L));
+  long double hi = std::min(static_cast<long double>(span), *s * (1.0L + 1e-9L) + 1e-300L);
+  EXPECT_NE(g(lo) < 0.0L, g(hi) < 0.0L);
+  for (int i = 0; i < 200 && hi - lo > 0.0L; ++i) {
+    const long double mid = 0.5L * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    ((g(mid) < 0.0L) == (g(lo) < 0.0L) ? lo : hi) = mid;
+  }
+  const double reference = static_cast<double>(0.5L * (lo + hi));
+  const double eps = std::numeric_limits<double>::epsilon();
+  double sizes = std::abs(f.constant) + std::abs(f.slope * reference);
+  double slope = f.slope;
+  for (const ExponentialDecay& d : f.decays) {
+    const double decay = d.amplitude * std::exp(-reference / d.time);
+    sizes += std::abs(decay);
+    slope -= decay / d.time;
+  }
+  EXPECT_NEAR(*s, reference, 4.0 * eps * reference + 4.0 * eps * sizes / std::abs(slope))
+      << "a " << f.constant << " b " << f.slope << " c " << f.decays.front().amplitude << " tau "
+      << f.decays.front().time;
+  return true;
+}
+
+bool expect_one_decay_root(double a, double b, double c, double tau, double span) {
+  return expect_root(ExponentialSum{a, b, {{c, tau}}}, span);
+}
+
+// One decay and a slope over every sign of each (the loads of a spring pressed, withdrawn or
+// held, a free surface met again).
+TEST(PronyRoot, OneDecayRootsToTheirLastBits) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(0.05, 1.0);
+  int found = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const double b = (trial % 2 ? 1.0 : -1.0) * unit(random) * (trial % 8 < 4 ? 1.0 : 1e3);
+    const double c = (trial % 4 < 2 ? 1.0 : -1.0) * unit(random) * 10.0;
+    const double tau = 0.01 + unit(random);
+    const double a = (unit(random) - 0.5) * 20.0;
+    if (expect_one_decay_root(a, b, c, tau, 5.0)) ++found;
+  }
+  EXPECT_GT(found, 1000);
+}
+
+// A first root on the lower branch of Lambert's W whose argument -c exp(a / (b tau)) / (b tau)
+// is denormal (a / (b tau) < -708: a slope far smaller than the decay's rate), where Boost's W
+// raises: the root is still found, and exactly.
+TEST(PronyRoot, OneDecayRootWhereLambertsArgumentIsDenormal) {
+  EXPECT_TRUE(expect_one_decay_root(0.0020212469952489574, -0.00012404109684988903,
+                                    -0.01948942312466341, 0.022200771402853006,
+                                    5.2113221782724635));
+  EXPECT_TRUE(expect_one_decay_root(5.4881945973060218e-05, -1.0908453491579908e-07,
+                                    -0.00012968356403798053, 0.69668225962364971,
+                                    2.792716863508002));
+  EXPECT_TRUE(expect_one_decay_root(46.908810332294017 - 37.493556357571904, -0.13010657455781122,
+                                    -67.124167327830975, 0.10001122274614205, 0.4938206141479739));
+}
+
+// Two and four decays of one sign (a spring withdrawn whose arms all push, or all pull) and of
+// both, over every sign of the slope: roots to their last bits, as with one decay.
+TEST(PronyRoot, SeveralDecaysRootsToTheirLastBits) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(0.05, 1.0);
+  int found = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    ExponentialSum f{(unit(random) - 0.5) * 20.0,
+                     (trial % 2 ? 1.0 : -1.0) * unit(random) * (trial % 8 < 4 ? 1.0 : 1e3),
+                     {}};
+    const int decays = trial % 3 == 0 ? 4 : 2;
+    for (int j = 0; j < decays; ++j) {
+      const double sign = trial % 4 < 2 ? 1.0 : (trial % 4 == 2 ? -1.0 : (j % 2 ? 1.0 : -1.0));
+      f.decays.push_back({sign * unit(random) * 10.0, 0.01 + unit(random)});
+    }
+    if (expect_root(f, 5.0)) ++found;
+  }
+  EXPECT_GT(found, 1000);
 }
 
 // (x - 0.9)(x - 0.5)(x - 0.2) with x = exp(-s): three decays (rates 1, 2, 3), roots at s =
