@@ -3,8 +3,10 @@
 #include "engine/accuracy/viscoelastic_rows.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -103,26 +105,100 @@ void combine_viscoelastic_energy(ViscoelasticCombination& c, std::size_t k) {
   }
 }
 
+/// Whether every row located its critical point between springs (viscoelastic_fold.hpp).
+bool viscoelastic_critical_located(std::span<const RunResult, 4> rows) {
+  return std::all_of(rows.begin(), rows.end(), [](const RunResult& q) {
+    return q.critical.has_value() && q.refined_critical.has_value();
+  });
+}
+
+/// Whether stage `s` of `q` ended at its critical point (the glue's loss ends its stage there).
+bool viscoelastic_stage_ends_at_critical(const RunResult& q, const StageRecord& s) {
+  return q.critical && s.name == q.critical_stage && s.end.time == q.critical->time;
+}
+
+/// The state `end` of a stage moved to the critical point `fold` in time: the continuum's stage
+/// ends at its fold.
+void move_viscoelastic_end_to(const ContactSnapshot& fold, ContactSnapshot& end) {
+  end.time = fold.time;
+  end.indentation = fold.indentation;
+  end.normal_control = fold.normal_control;
+}
+
+/// The rows with their critical point where they located it between springs, and the end of
+/// the stage that ended at it there too.
+std::array<RunResult, 4> viscoelastic_rows_at_fold(std::span<const RunResult, 4> rows) {
+  std::array<RunResult, 4> moved{rows[0], rows[1], rows[2], rows[3]};
+  for (RunResult& q : moved) {
+    const ContactSnapshot& fold = *q.refined_critical;
+    for (StageRecord& s : q.stages) {
+      if (viscoelastic_stage_ends_at_critical(q, s)) move_viscoelastic_end_to(fold, s.end);
+    }
+    q.critical = fold;
+  }
+  return moved;
+}
+
 /// The finest of four rows (N/4, N/2, N, 2N springs) with the stages' end forces, times and
-/// works, the peak tension and the totals replaced by their values across the rows, and their
-/// estimates. The critical point stays the finest row's: it sits on a spring, the same spring
-/// of every row of a doubling sequence, and the force still varies along the branch there, so
-/// the rows agree on a value O(1/N) off that their changes do not show; so do the stage end
-/// times of a run that has one (the glue's loss ends its stage at the critical point's time).
-DoublingCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, bool extrapolate,
-                                           double rtol) {
+/// works, the peak tension, the critical point and the totals replaced by their values across
+/// the rows, and their estimates. The critical point is the one every row located between
+/// springs (viscoelastic_fold.hpp); where one did not (a shear-off, a cascade from the first
+/// let-go), it stays the finest row's: it sits on a spring, the same spring of every row of a
+/// doubling sequence, and the force still varies along the branch there, so the rows agree on a
+/// value O(1/N) off that their changes do not show; so do the stage end times of such a run
+/// (the glue's loss ends its stage at the critical point's time).
+DoublingCombined combine_viscoelastic_rows(std::span<const RunResult, 4> plain_rows,
+                                           bool extrapolate, double rtol) {
+  const bool located = viscoelastic_critical_located(plain_rows);
+  std::array<RunResult, 4> at_fold;
+  std::optional<std::size_t> fold_stage;  // the finest row's stage that ended at the fold
+  if (located) {
+    at_fold = viscoelastic_rows_at_fold(plain_rows);
+    const RunResult& finest = plain_rows[3];
+    for (std::size_t k = 0; k < finest.stages.size(); ++k) {
+      if (viscoelastic_stage_ends_at_critical(finest, finest.stages[k])) fold_stage = k;
+    }
+  }
+  const std::span<const RunResult, 4> rows =
+      located ? std::span<const RunResult, 4>(at_fold) : plain_rows;
   ViscoelasticCombination c(rows, extrapolate, rtol);
   RunResult& r = c.result();
   double force_scale = r.peak ? std::abs(r.peak->normal_force) : 0.0;
+  double depth_scale = r.critical ? std::abs(r.critical->indentation) : 0.0;
   double work_scale = 1e-300;
   for (const StageRecord& s : r.stages) {
     force_scale = std::max(force_scale, std::abs(s.end.normal_force));
+    depth_scale = std::max(depth_scale, std::abs(s.end.indentation));
     work_scale += std::abs(s.work.normal) + std::abs(s.work.bulk);
   }
   // A stage's end force is held to rtol of the path's largest force (a stage may end at zero
   // force, where its relative error has no meaning), a time to rtol of the program's duration.
   const double force_floor = 1e-300 + force_scale;
   const double time_floor = 1e-300 + (r.stages.empty() ? 0.0 : std::abs(r.stages.back().end.time));
+  double critical_time_error = 0.0;
+  if (located) {
+    // A depth is held to rtol of the path's deepest (the fold's may lie near zero), a radius to
+    // rtol of the row's.
+    const double depth_floor = 1e-300 + depth_scale;
+    const double radius_floor = 1e-300 + r.accuracy.outer_radius;
+    r.accuracy.critical_error_estimate = c.combine(
+        [](auto& q) -> auto& { return q.critical->normal_force; }, force_floor);
+    c.combine(
+        [](auto& q) -> auto& { return q.critical->indentation; }, depth_floor);
+    c.combine(
+        [](auto& q) -> auto& { return q.critical->normal_control; }, -1.0);
+    c.combine(
+        [](auto& q) -> auto& { return q.critical->contact_radius; }, radius_floor);
+    c.combine(
+        [](auto& q) -> auto& { return q.critical->glued_radius; }, -1.0);
+    c.combine(
+        [](auto& q) -> auto& { return q.critical->tangential_force; }, -1.0);
+    c.combine(
+        [](auto& q) -> auto& { return q.critical->tangential_displacement; }, -1.0);
+    critical_time_error = c.combine(
+        [](auto& q) -> auto& { return q.critical->time; }, time_floor);
+    r.refined_critical = r.critical;
+  }
   if (r.peak) {
     r.accuracy.peak_error_estimate = c.combine(
         [](auto& q) -> auto& { return q.peak->normal_force; }, force_floor);
@@ -134,7 +210,7 @@ DoublingCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, b
     StageRecord& s = r.stages[k];
     s.normal_force_error_estimate = c.combine(
         [k](auto& q) -> auto& { return q.stages[k].end.normal_force; }, force_floor);
-    if (!r.critical) {
+    if (!r.critical || located) {
       // Under fixed grips the depth is the held depth at the end's time: it moves with it.
       const auto time = [k](auto& q) -> auto& { return q.stages[k].end.time; };
       const int order = c.time_order(time);
@@ -155,12 +231,25 @@ DoublingCombined combine_viscoelastic_rows(std::span<const RunResult, 4> rows, b
     total_error += error;
     if (s.energy) total_energy += *s.energy;
   }
+  if (fold_stage) {
+    // Ends exactly at the combined critical point (its time combined as the critical's is).
+    StageRecord& s = r.stages[*fold_stage];
+    move_viscoelastic_end_to(*r.critical, s.end);
+    s.time_error_estimate = critical_time_error;
+  }
   r.work = total;
   if (r.energy) r.energy = total_energy;
   r.accuracy.work_error_estimate = total_error;
   r.accuracy.covers = {"stages.end.normal_force", "stages.work", "work"};
-  if (!r.critical) r.accuracy.covers.insert(r.accuracy.covers.begin() + 1, "stages.end_time");
+  if (!r.critical || located) {
+    r.accuracy.covers.insert(r.accuracy.covers.begin() + 1, "stages.end_time");
+  }
   if (r.peak) r.accuracy.covers.insert(r.accuracy.covers.begin(), "peak_adhesion.normal_force");
+  if (located) {
+    r.accuracy.covers.insert(r.accuracy.covers.begin(),
+                             {"critical.normal_force", "critical.indentation",
+                              "critical.contact_radius", "critical.time"});
+  }
   r.accuracy.rows = {rows[0].springs, rows[1].springs, rows[2].springs, r.springs};
   const bool met = c.met();
   return {std::move(r), met};
