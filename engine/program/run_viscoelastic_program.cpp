@@ -408,7 +408,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     result.status = lost ? RunStatus::no_instability : RunStatus::completed;
     if (lost && jumps.glue_loss()) {
       ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
-      if (result.critical) result.refined_critical = fold.located(*jumps.glue_loss());
+      if (result.critical) fold.locate(*jumps.glue_loss(), result);
     }
   }
   if (const auto& peak = jumps.most_tensile(); peak && peak->force < -spec.zero.force) {

@@ -12,6 +12,7 @@
 #include "engine/model/contact_snapshot.hpp"
 #include "engine/program/viscoelastic_jumps.hpp"
 #include "engine/program/viscoelastic_row.hpp"
+#include "engine/result/run_result.hpp"
 
 namespace mdrsim {
 
@@ -39,8 +40,20 @@ class ViscoelasticFold {
   void change(ViscoelasticRowChange change, std::string_view stage,
               const ViscoelasticRowSample& before, double held, bool by_shear);
   /// The critical point of the cascade `loss` (the one that lost the glue) between springs, or
-  /// nothing.
-  std::optional<ContactSnapshot> located(const ViscoelasticCascade& loss) const;
+  /// nothing; with how far rounding can move each of its fields (force, depth, held value,
+  /// radius, time). The held values are rounded (their times, roots in a clock that has run for
+  /// the whole program, to its last bits, times the rate of the held value), and their turn
+  /// over three springs, h'' dx^2, falls with the spacing squared: the place found between
+  /// springs moves by rounding / h'' dx^2 spacings, and a field by that times its change per
+  /// spacing, which grows like N. Past the rows where it reaches rtol more springs cannot
+  /// locate the fold better.
+  struct Located {
+    ContactSnapshot state;
+    ContactSnapshot rounding;
+  };
+  std::optional<Located> located(const ViscoelasticCascade& loss) const;
+  /// Sets `r`'s refined_critical and its rounding from located(loss) where there is one.
+  void locate(const ViscoelasticCascade& loss, RunResult& r) const;
 
  private:
   struct LetGoPoint {
