@@ -186,10 +186,9 @@ RelaxedCritical relaxed_critical(double glassy = kPullOffGlassy) {
 // The relaxed pull-off's critical point, which every row puts on the same spring (x = 0.27 mm
 // from 100 to 3200 springs, F 9.8e-4 off at the limit), located between springs: the plain
 // row's located point (RunResult::refined_critical, what the accuracy routes combine) has the
-// row's O(1/N) error, halving with each doubling (measured 2.6e-3 at 400 springs, 1.3e-3 at
-// 800); Richardson's is within its estimate and of second order (5.5e-5 at 200, 1.4e-5 at 400:
-// above 3 times smaller; 4 for a pure c / N^2). The depth and time, set by the let-go depth of
-// each spring's own radius, are nearer still.
+// row's O(1/N) error, halving with each doubling (measured 2.05e-3 at 400 springs, 1.03e-3 at
+// 800); Richardson's is within its estimate and of second order (5.5e-5 at 200, 1.4e-5 at 400). The
+// depth and time, set by the let-go depth of each spring's own radius, are nearer still.
 TEST(ViscoelasticRows, RelaxedCriticalPointLocatedBetweenSprings) {
   const RelaxedCritical exact = relaxed_critical();
   const double f = std::abs(exact.force);
@@ -204,8 +203,8 @@ TEST(ViscoelasticRows, RelaxedCriticalPointLocatedBetweenSprings) {
     // The plain row still reports its own critical point (as an elastic program's row does).
     EXPECT_NEAR(plain.critical->contact_radius, 0.27e-3, 1e-12) << n;
     if (previous_located > 0.0) {
-      // First order: halving (within 15 %: the interpolation's O(dx^2) rides on it).
-      EXPECT_NEAR(previous_located / located, 2.0, 0.3) << n;
+      // First order (measured 1.00; 0.2 for the interpolation's O(dx^2) riding on it).
+      EXPECT_NEAR(std::log2(previous_located / located), 1.0, 0.2) << n;
     }
     previous_located = located;
   }
@@ -229,7 +228,9 @@ TEST(ViscoelasticRows, RelaxedCriticalPointLocatedBetweenSprings) {
     // The withdrawal ends at the critical point.
     EXPECT_EQ(r.stages.back().end.time, c.time) << n;
     if (previous > 0.0) {
-      EXPECT_GT(previous / error, 3.0) << n;
+      // Second order (measured 1.97; the fold's place between springs, a phase that does not
+      // fall smoothly with N, leaves a few tenths).
+      EXPECT_GT(std::log2(previous / error), 1.6) << n;
     }
     previous = error;
   }
@@ -261,6 +262,27 @@ TEST(ViscoelasticRows, RtolCoversTheRelaxedCriticalPoint) {
     EXPECT_NEAR(c.indentation, exact.depth, rtol * exact.depth) << rtol;
     EXPECT_NEAR(c.time, exact.time, rtol * exact.time) << rtol;
   }
+}
+
+// Past the rows where rounding of the let-gos' held values alone takes what rtol allows the
+// located critical point (its place from a turn h'' dx^2 that falls like N^-2), rtol stops
+// doubling: at 1e-9 the relaxed pull-off stops at 2^18 springs, with its critical point
+// reported (within 1e-7 of the closed form: the place's rounding, about 4e-8) but left out of
+// covers, and a warning; the rest meets rtol.
+TEST(ViscoelasticRows, RtolStopsWhereRoundingLimitsTheCriticalPoint) {
+  const RelaxedCritical exact = relaxed_critical();
+  const RunResult r = run_relaxed_pull_off("rtol = 1e-9");
+  EXPECT_TRUE(r.accuracy.rtol_met);
+  EXPECT_LE(r.springs, std::int64_t{1} << 18);
+  ASSERT_TRUE(r.critical);
+  EXPECT_NEAR(r.critical->normal_force, exact.force, 1e-7 * std::abs(exact.force));
+  EXPECT_EQ(std::find(r.accuracy.covers.begin(), r.accuracy.covers.end(), "critical.normal_force"),
+            r.accuracy.covers.end());
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.back().find("the critical point's place between springs is limited by "
+                                   "rounding on rows of 262144 springs"),
+            std::string::npos)
+      << r.warnings.back();
 }
 
 // A vanishing arm (E_1 = 1e-3 Pa against E_inf = 1 MPa) gives the elastic program's critical
