@@ -12,7 +12,7 @@
 namespace mdrsim {
 namespace {
 
-constexpr double kSpacing = 1.0e-5;  // [m]
+constexpr double kFoldTestSpacing = 1.0e-5;  // [m]
 
 /// The equilibrium before spring k lets go, k springs glued, at time 10 - k [s].
 ViscoelasticRowSample before_let_go(std::int64_t k) {
@@ -20,7 +20,7 @@ ViscoelasticRowSample before_let_go(std::int64_t k) {
   s.time = 10.0 - static_cast<double>(k);
   s.depth = 1.0e-6 * static_cast<double>(k);
   s.force = -0.01 * static_cast<double>(k);
-  s.contact_radius = kSpacing * static_cast<double>(k);
+  s.contact_radius = kFoldTestSpacing * static_cast<double>(k);
   s.pressed = k;
   s.glued = k;
   s.glued_radius = s.contact_radius;
@@ -35,7 +35,7 @@ double folding_held(std::int64_t k) {
 /// Springs 10 down to 5 let go one by one in stage "pull" (held values `held(k)`), and spring 5's
 /// let-go starts a cascade (spring 4 at the same time): the cascade that lost the glue.
 template <class Held>
-ViscoelasticCascade peel(ViscoelasticFold& fold, Held held, std::int64_t first = 10) {
+ViscoelasticCascade peel_to_cascade(ViscoelasticFold& fold, Held held, std::int64_t first = 10) {
   for (std::int64_t k = first; k >= 5; --k) {
     fold.change(ViscoelasticRowChange::let_go, "pull", before_let_go(k), held(k), false);
   }
@@ -52,7 +52,7 @@ ViscoelasticCascade peel(ViscoelasticFold& fold, Held held, std::int64_t first =
 
 TEST(ViscoelasticFold, LocatesTheTurnOfTheHeldValue) {
   ViscoelasticFold fold;
-  const ViscoelasticCascade loss = peel(fold, folding_held);
+  const ViscoelasticCascade loss = peel_to_cascade(fold, folding_held);
   const auto located = fold.located(loss);
   ASSERT_TRUE(located.has_value());
   const ContactSnapshot* q = &located->state;
@@ -60,8 +60,8 @@ TEST(ViscoelasticFold, LocatesTheTurnOfTheHeldValue) {
   EXPECT_LT(located->rounding.normal_force, 1e-12);
   EXPECT_LT(located->rounding.contact_radius, 1e-18);
   // Exact to rounding: the held values are a parabola, the fields lines in k.
-  EXPECT_NEAR(q->contact_radius, 5.3 * kSpacing, 1e-15);
-  EXPECT_NEAR(q->glued_radius, 5.3 * kSpacing, 1e-15);
+  EXPECT_NEAR(q->contact_radius, 5.3 * kFoldTestSpacing, 1e-15);
+  EXPECT_NEAR(q->glued_radius, 5.3 * kFoldTestSpacing, 1e-15);
   EXPECT_NEAR(q->normal_force, -0.053, 1e-14);
   EXPECT_NEAR(q->indentation, 5.3e-6, 1e-18);
   EXPECT_NEAR(q->time, 10.0 - 5.3, 1e-13);
@@ -72,19 +72,19 @@ TEST(ViscoelasticFold, LocatesNothingWhereTheBranchDoesNotFold) {
   {
     // A held force that does not move (creep under a fixed load): no turn of it.
     ViscoelasticFold fold;
-    const ViscoelasticCascade loss = peel(fold, [](std::int64_t) { return -0.02; });
+    const ViscoelasticCascade loss = peel_to_cascade(fold, [](std::int64_t) { return -0.02; });
     EXPECT_FALSE(fold.located(loss).has_value());
   }
   {
     // The cascade starts at the first let-go.
     ViscoelasticFold fold;
-    const ViscoelasticCascade loss = peel(fold, folding_held, 5);
+    const ViscoelasticCascade loss = peel_to_cascade(fold, folding_held, 5);
     EXPECT_FALSE(fold.located(loss).has_value());
   }
   {
     // A shear-off: the cascade's first let-go broke a spring at rest.
     ViscoelasticFold fold;
-    ViscoelasticCascade loss = peel(fold, folding_held);
+    ViscoelasticCascade loss = peel_to_cascade(fold, folding_held);
     loss.first_by_shear = true;
     EXPECT_FALSE(fold.located(loss).has_value());
   }
@@ -95,14 +95,14 @@ TEST(ViscoelasticFold, LocatesNothingWhereTheBranchDoesNotFold) {
       fold.change(ViscoelasticRowChange::let_go, "pull", before_let_go(k), folding_held(k), false);
     }
     fold.change(ViscoelasticRowChange::glue, "pull", before_let_go(6), 0.0, false);
-    const ViscoelasticCascade loss = peel(fold, folding_held, 6);
+    const ViscoelasticCascade loss = peel_to_cascade(fold, folding_held, 6);
     EXPECT_FALSE(fold.located(loss).has_value());
   }
   {
     // The held value still falling fast at spring 5: no turn within half a spacing of it.
     ViscoelasticFold fold;
     const ViscoelasticCascade loss =
-        peel(fold, [](std::int64_t k) { return static_cast<double>(k * k); });
+        peel_to_cascade(fold, [](std::int64_t k) { return static_cast<double>(k * k); });
     EXPECT_FALSE(fold.located(loss).has_value());
   }
 }
