@@ -27,6 +27,7 @@ set(mdrsim_slow_tests
     "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$"  # 1.4 s
     "^RoughAdhesion\\.FrontPinnedAtAStepFarOutside$"  # 4.9 s: rows of 2^19 springs
     "^ProgramRtolPinned\\.RebindingReloadWorkMeetsRtolAgainstItsClosedForm$"  # 3 s: rows of 2^24
+    "^ViscoelasticRows\\.RtolStopsWhereRoundingLimitsTheCriticalPoint$"  # 1.7 s: rows of 2^18
     "^RouteAgreement\\."  # 120 scenes on both routes, the row at rtol 1e-8: 5 s
     # 100 seeds of a Maugis fit of both segments a case: 3-20 s
     "^Cases/MaugisBothSynthetic\\."
@@ -50,6 +51,7 @@ set(mdrsim_unsanitized_tests
     "^StatusMargin\\.TheStatusDoesNotDependOnRtol$"
     "^Provenance\\.ItsSceneRunAgainGivesIdenticalNumbers$"
     "^RouteAgreement\\."
+    "^ViscoelasticRows\\.RtolStopsWhereRoundingLimitsTheCriticalPoint$"
     # the Maugis fits' recovery over 100 seeds (MaugisFit's single fits run the same code under
     # the sanitizers): 30-140 s a case there
     "^Cases/MaugisBothSynthetic\\."

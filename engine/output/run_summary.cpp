@@ -85,7 +85,9 @@ void print_accuracy(std::FILE* out, const Scene& scene, const RunResult& r) {
                         *a.critical_error_estimate,
                         *a.critical_error_estimate / std::abs(r.critical->normal_force));
   }
-  if (bulk_rows && r.critical) line += "; the critical point is the finest row's, not estimated";
+  if (bulk_rows && r.critical && !a.critical_error_estimate) {
+    line += "; the critical point is the finest row's, not estimated";
+  }
   if (scene.discretization.rtol) {
     line += fmt::format("; rtol {} {}", *scene.discretization.rtol, a.rtol_met ? "met" : "NOT met");
   }

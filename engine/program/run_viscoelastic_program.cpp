@@ -11,6 +11,7 @@
 #include "engine/model/viscoelastic_edge.hpp"
 #include "engine/program/run_program.hpp"
 #include "engine/program/stage_motion.hpp"
+#include "engine/program/viscoelastic_fold.hpp"
 #include "engine/program/viscoelastic_jumps.hpp"
 #include "engine/program/viscoelastic_row.hpp"
 
@@ -230,6 +231,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
 
   ViscoelasticRowDrive drive(springs);
   ViscoelasticJumps jumps;
+  ViscoelasticFold fold;  // the critical point between springs, for the accuracy routes
   std::string_view stage_name;
   // The normal axis's controller and held value; a program starts under fixed grips at 0.
   AffineConstraint control{1.0, 0.0};
@@ -259,6 +261,8 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       const bool by_shear = change == ViscoelasticRowChange::let_go && drive.last_let_go_by_shear();
       report_jump(
           jumps.change(change, stage_name, drive.before_last_change(), drive.sample(), by_shear));
+      fold.change(change, stage_name, drive.before_last_change(),
+                  held_value(control, drive.before_last_change()), by_shear);
     }
     Event event{.kind = viscoelastic_event_kind(change),
                 .state = held_snapshot(s, control),
@@ -413,6 +417,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     result.status = lost ? RunStatus::no_instability : RunStatus::completed;
     if (lost && jumps.glue_loss()) {
       ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
+      if (result.critical) fold.locate(*jumps.glue_loss(), result);
     }
   }
   if (const auto& peak = jumps.most_tensile(); peak && peak->force < -spec.zero.force) {

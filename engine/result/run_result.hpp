@@ -64,6 +64,10 @@ struct RunResult {
   /// smooth enough for that; else empty.
   std::optional<ContactSnapshot> refined_critical;
   std::optional<ContactSnapshot> refined_peak;
+  /// How far the rounding of the row's own numbers can move each field of refined_critical
+  /// where that grows with the springs (a viscoelastic row's fold, viscoelastic_fold.hpp);
+  /// else every field 0.
+  ContactSnapshot refined_critical_rounding{};
   /// Springs in contact at the first equilibrium of the unbroken run of single let-gos that
   /// ends at the critical point: the zoom may restart anywhere in that run.
   std::int64_t stable_run_top = 0;

@@ -117,7 +117,7 @@ void drop_peak_that_never_pulls(const Scene& scene, RunResult& result) {
 void warn_program_resolution(const Scene& scene, RunResult& result) {
   if (scene.discretization.rtol) return;  // rtol refines until its estimate meets it
   const ResolvedRow row{result.springs, result.accuracy.outer_radius, "largest",
-                        scene.material.relaxes()
+                        scene.material.relaxes() && !result.refined_critical
                             ? "more discretization.springs resolve it (rtol and Richardson do "
                               "not estimate the viscoelastic row's critical point)"
                             : "discretization.rtol refines the row until it is resolved"};

@@ -252,7 +252,7 @@ TEST_F(ResultOutputs, APlainRowSaysItsErrorIsNotEstimated) {
 
 // The viscoelastic row the same: its plain row says its error is not estimated; its rows,
 // contact lost at zero force (no critical point, no peak) or with the glue, print the rows
-// they ran, and with a critical point that it is the finest row's, not estimated.
+// they ran, and with a critical point located between springs its estimate.
 TEST_F(ResultOutputs, TheViscoelasticRowSaysWhatItsRowsEstimate) {
   const auto plain = run_mdrsim("run scenes/viscoelastic/lee_radok_parabola.toml --log-level off");
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
@@ -272,7 +272,7 @@ TEST_F(ResultOutputs, TheViscoelasticRowSaysWhatItsRowsEstimate) {
       "discretization.extrapolation=richardson --log-level off");
   ASSERT_EQ(adhesive.exit_code, 0) << adhesive.err;
   EXPECT_NE(adhesive.out.find("accuracy: richardson over rows of 50, 100, 200, 400 springs across "
-                              "0.0015 m; the critical point is the finest row's, not estimated"),
+                              "0.0015 m; critical force error estimate"),
             std::string::npos)
       << adhesive.out;
 }
