@@ -21,7 +21,9 @@
 #include "engine/program/viscoelastic_slide.hpp"
 
 namespace mdrsim {
-namespace {
+// The row's parts, in a namespace of their own rather than an anonymous one: the Row class
+// holds them as fields, which a unity build (Python's package) would flag (-Wsubobject-linkage).
+namespace viscoelastic_row_parts {
 
 /// pressed: in contact, pushing only; glued: in contact, holding tension too.
 enum class ViscoelasticSpringPhase { untouched, pressed, glued, free };
@@ -193,7 +195,9 @@ std::vector<PronyTerm> tangential_terms(std::span<const PronyTerm> terms, double
   return scaled;
 }
 
-}  // namespace
+}  // namespace viscoelastic_row_parts
+
+using namespace viscoelastic_row_parts;
 
 class ViscoelasticRowDrive::Row {
  public:
