@@ -18,6 +18,7 @@
 #include "engine/model/prony_shared_drive.hpp"
 #include "engine/model/prony_shared_energy.hpp"
 #include "engine/model/viscoelastic_edge.hpp"
+#include "engine/program/viscoelastic_holding.hpp"
 #include "engine/program/viscoelastic_slide.hpp"
 
 namespace mdrsim {
@@ -206,7 +207,8 @@ class ViscoelasticRowDrive::Row {
         tangential_arms_(tangential_terms_),
         state_(springs.images.size()),
         pressed_(springs.images.size()),
-        glued_(springs.images.size()) {}
+        glued_(springs.images.size()),
+        holding_loads_(springs.edge, springs.spacing, springs.images.size()) {}
 
   /// A new segment from the present time: every spring's next event within it is queued (the
   /// energy summed up to now, the rate changing).
@@ -918,27 +920,8 @@ class ViscoelasticRowDrive::Row {
     }
     return load;
   }
-  /// |q_x| [N/m] below which glued spring k holds with no elongation: the glassy criterion's
-  /// margin at (0, q_x / G_0, x_k) is positive, bisected (a built-in criterion's holding set is
-  /// convex and symmetric in u_x); infinity without a criterion or where it always holds.
-  double holding_tangential_load(std::size_t k) const {
-    const ViscoelasticEdge& edge = *springs_.edge;
-    if (!edge.criterion) return HUGE_VAL;
-    const double x = springs_.spacing * static_cast<double>(k + 1);
-    const auto holds = [&](double q) {
-      return edge.criterion->margin({0.0, q / edge.glassy_shear_modulus, x}) > 0.0;
-    };
-    if (!holds(0.0)) return 0.0;
-    double hi = std::max(edge.let_go_loads[k], 1e-300);
-    for (int i = 0; i < 2000 && holds(hi); ++i) hi *= 2.0;
-    if (holds(hi)) return HUGE_VAL;
-    double lo = 0.0;
-    for (;;) {
-      const double mid = lo + 0.5 * (hi - lo);
-      if (mid <= lo || mid >= hi) return lo;
-      (holds(mid) ? lo : hi) = mid;
-    }
-  }
+  /// |q_x| [N/m] below which glued spring k holds with no elongation (HoldingTangentialLoads).
+  double holding_tangential_load(std::size_t k) const { return holding_loads_.at(k); }
   /// The front spring k's glue: now where some spring of the sticking run from k outwards holds
   /// at its kept stretch, else where k's own tangential load falls within what holds.
   std::optional<double> rebinding_glue_delay(std::size_t k) const {
@@ -1807,6 +1790,7 @@ class ViscoelasticRowDrive::Row {
   std::vector<ViscoelasticSpringState> state_;
   RowSpringSet pressed_;  ///< in contact: pressed or glued
   RowSpringSet glued_;
+  HoldingTangentialLoads holding_loads_;
   CompensatedSum pressed_images_;
   /// The events found as a segment begins (each spring's first in it: most of its events), in
   /// their order, read in turn; the events found later are queued. The next is the earlier head
