@@ -18,6 +18,7 @@
 #include "engine/model/prony_shared_drive.hpp"
 #include "engine/model/prony_shared_energy.hpp"
 #include "engine/model/viscoelastic_edge.hpp"
+#include "engine/program/rebinding_run.hpp"
 #include "engine/program/viscoelastic_holding.hpp"
 #include "engine/program/viscoelastic_slide.hpp"
 
@@ -228,6 +229,7 @@ class ViscoelasticRowDrive::Row {
       start_tangential();
     }
     if (springs_.friction) restart_slides();
+    run_memo_.forget();
     queue_ = {};
     first_events_.clear();
     next_first_event_ = 0;
@@ -292,6 +294,7 @@ class ViscoelasticRowDrive::Row {
         queue_.pop();
       }
     }
+    run_memo_.change(k, state_[k].shear && state_[k].shear->friction_event == kGlueEvent);
     if (state_[k].shear && state_[k].shear->friction_event) return apply_friction(k, run);
     if (springs_.edge) return apply_at_edge(k, run);
     ViscoelasticSpringState& s = state_[k];
@@ -926,9 +929,19 @@ class ViscoelasticRowDrive::Row {
   /// at its kept stretch, else where k's own tangential load falls within what holds.
   std::optional<double> rebinding_glue_delay(std::size_t k) const {
     if (!rebinds_pressed() || k != glue_front() || !sticks_pressed(k)) return std::nullopt;
-    for (std::size_t j = k; j < state_.size() && sticks_pressed(j); ++j) {
-      if (std::abs(kept_tangential_load(j)) < holding_tangential_load(j)) return 0.0;
+    std::size_t j = k;
+    // Under a held control a change moves every spring's load at once: no memo there.
+    if (const auto resume = held_ ? std::nullopt : run_memo_.resume(time_, k)) {
+      if (resume->holds) return 0.0;
+      j = resume->from;
     }
+    for (; j < state_.size() && sticks_pressed(j); ++j) {
+      if (std::abs(kept_tangential_load(j)) < holding_tangential_load(j)) {
+        run_memo_.record(time_, k, j, true);
+        return 0.0;
+      }
+    }
+    run_memo_.record(time_, k, j, false);
     const ViscoelasticSpringState& s = state_[k];
     FewValues<double> stresses(tangential_terms_.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) {
@@ -1791,6 +1804,7 @@ class ViscoelasticRowDrive::Row {
   RowSpringSet pressed_;  ///< in contact: pressed or glued
   RowSpringSet glued_;
   HoldingTangentialLoads holding_loads_;
+  mutable RebindingRunMemo run_memo_;  ///< rebinding's last look along the sticking run
   CompensatedSum pressed_images_;
   /// The events found as a segment begins (each spring's first in it: most of its events), in
   /// their order, read in turn; the events found later are queued. The next is the earlier head
