@@ -12,6 +12,7 @@
 #include <set>
 
 #include "engine/model/compensated_sum.hpp"
+#include "engine/model/exponential_sum_total.hpp"
 #include "engine/model/prony_arms.hpp"
 #include "engine/model/prony_creep.hpp"
 #include "engine/model/prony_load_drive.hpp"
@@ -383,7 +384,7 @@ class ViscoelasticRowDrive::Row {
           tangential_relaxed() *
               (static_cast<double>(tangential_members_) * tangential_ - glued_origins_.value()) +
           tangential_arms_.arm_force();
-      for (const std::size_t k : sliding_) tangential_loads += state_[k].shear->slide->load(time_);
+      if (!sliding_.empty()) tangential_loads += sliding_loads_.at(time_);
     }
     const bool carries = tangential_members_ > 0 || !sliding_.empty();
     return {time_,
@@ -868,6 +869,7 @@ class ViscoelasticRowDrive::Row {
     jump_losses_.add(tangential_stored_of(stretch, stresses) -
                      tangential_stored_of(s.shear->slide->stretch(time_), stresses));
     sliding_.insert(k);
+    sliding_loads_.add(s.shear->slide->load_from_start(), time_, time_, 1.0);
   }
 
   /// The queued slip or stick of pressed spring k, now.
@@ -882,6 +884,7 @@ class ViscoelasticRowDrive::Row {
     if (kind == kStickEvent) {
       const FewValues<double> stresses = s.shear->slide->stresses(time_);
       const double stretch = s.shear->slide->stretch(time_);
+      leave_sliding_loads(*s.shear->slide);
       s.shear->slide.reset();
       sliding_.erase(k);
       join_set(s, stretch, stresses);
@@ -982,9 +985,20 @@ class ViscoelasticRowDrive::Row {
     schedule(front);
   }
 
+  /// A slide ends now: its load leaves the sliding springs' total (which restarts from zero
+  /// once none slides, so that rounding left over from the leaves does not outlive them).
+  void leave_sliding_loads(const ViscoelasticSlide& slide) {
+    if (sliding_.size() == 1) {
+      sliding_loads_.clear(time_);
+      return;
+    }
+    sliding_loads_.add(slide.load_from_start(), slide.since(), time_, -1.0);
+  }
+
   /// A segment begins: each sliding spring's limit follows the new rates from its state now.
   void restart_slides() {
     const std::vector<std::size_t> sliding(sliding_.begin(), sliding_.end());
+    sliding_loads_.clear(time_);
     for (const std::size_t k : sliding) {
       ViscoelasticSpringState& s = state_[k];
       const FewValues<double> stresses = s.shear->slide->stresses(time_);
@@ -1011,6 +1025,7 @@ class ViscoelasticRowDrive::Row {
     glassy_step(stresses, tangential_terms_, -load / glassy_shear_modulus());
     const double after = tangential_stored_of(-sum_of(stresses) / tangential_relaxed(), stresses);
     jump_losses_.add(before - after);
+    leave_sliding_loads(*s.shear->slide);
     s.shear->slide.reset();
     sliding_.erase(k);
     s.shear->creep.emplace(tangential_modes_, stresses);
@@ -1797,6 +1812,7 @@ class ViscoelasticRowDrive::Row {
   CompensatedSum glued_origins_;         ///< sum of the tangential set's origins [m]
   std::int64_t tangential_members_ = 0;  ///< springs in the tangential set (glued or sticking)
   std::set<std::size_t> sliding_;        ///< with friction: pressed springs sliding
+  ExponentialSumTotal sliding_loads_;    ///< their tangential line loads' sum [N/m]
   CompensatedSum friction_;              ///< dissipated by friction [J/m]
   CompensatedSum tangential_work_;       ///< [J/m]
   bool last_let_go_by_shear_ = false;
