@@ -12,6 +12,7 @@
 #include <set>
 
 #include "engine/model/compensated_sum.hpp"
+#include "engine/model/decay_integrals.hpp"
 #include "engine/model/exponential_sum_total.hpp"
 #include "engine/model/prony_arms.hpp"
 #include "engine/model/prony_creep.hpp"
@@ -145,18 +146,10 @@ struct ViscoelasticRowEvent {
 
 /// The integrals of an arm's stress sigma(h) = c + (sigma_0 - c) exp(-h / tau), c = E_j w' tau,
 /// over [0, h] [N s / m] and of its square [N^2 s / m^2].
-struct ArmStressIntegrals {
-  double stress;
-  double square;
-};
-
 ArmStressIntegrals arm_stress_integrals(const PronyTerm& term, double sigma0, double rate,
                                         double h) {
-  const double c = term.modulus * rate * term.time;
-  const double a = sigma0 - c;
-  const double once = -std::expm1(-h / term.time) * term.time;
-  const double twice = -std::expm1(-2.0 * h / term.time) * term.time * 0.5;
-  return {c * h + a * once, c * c * h + 2.0 * c * a * once + a * a * twice};
+  return arm_stress_integrals(decay_integrals(h, term.time), sigma0,
+                              term.modulus * rate * term.time);
 }
 
 /// f'(s) as an exponential sum.
