@@ -12,6 +12,8 @@
 
 #include "engine/reference/jkr_scenario.hpp"
 #include "engine/run/run_scene.hpp"
+#include "engine/scene/registries.hpp"
+#include "engine/scene/scene_document.hpp"
 
 namespace {
 
@@ -90,6 +92,27 @@ void viscoelastic_touch(benchmark::State& state, int terms) {
   run_program(state, lee_radok_program(relaxation(terms), false));
 }
 
+/// scenes/viscoelastic/pull_off_after_shear_relaxing.toml at 1e4 springs: friction under a
+/// relaxing bulk with rebinding (glued, relaxed, sheared past the glue's strength, held, pulled
+/// off): slips, sticks, a cascade of glues from the front, let-gos.
+void shear_then_pull_off_relaxing(benchmark::State& state) {
+  mdrsim::SceneDocument doc = mdrsim::SceneDocument::from_file(
+      std::string(MDRSIM_SOURCE_DIR) + "/scenes/viscoelastic/pull_off_after_shear_relaxing.toml");
+  doc.set_value("discretization.springs", "10000");
+  const mdrsim::Scene scene = doc.build(mdrsim::Registries::builtin());
+  mdrsim::RunResult result;
+  for (auto _ : state) {
+    result = mdrsim::run_scene(scene, {});
+    benchmark::DoNotOptimize(result.status);
+  }
+  const auto events = static_cast<double>(result.counts.events);
+  state.counters["events"] = events;
+  state.counters["time_per_event"] =
+      benchmark::Counter(events * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(mdrsim::to_string(result.status));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -113,6 +136,9 @@ int main(int argc, char** argv) {
         terms)
         ->Unit(benchmark::kMillisecond);
   }
+  benchmark::RegisterBenchmark("viscoelastic_friction_shear_pull_off/springs:10000",
+                               shear_then_pull_off_relaxing)
+      ->Unit(benchmark::kMillisecond);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   benchmark::RunSpecifiedBenchmarks();

@@ -143,7 +143,9 @@ echo
 "$py" scripts/plot_pull_off_after_shear.py --results "$results" --springs 2000 8000
 # The same sphere on a relaxing bulk (E_0 = 10 E_inf, tau = 1 s): sheared to u over 0 .. 4 u_c
 # at u_c / tau times 0.01, 1 and 100, held 1e-3 s or 10 tau, with and without rebinding
-# (docs/friction.md "Pull-off after shear on a relaxing bulk"; about 20 s on 2 cores).
+# (docs/friction.md "Pull-off after shear on a relaxing bulk"; about 4 s on 2 cores). The
+# unsheared pull-offs, the relaxed curve after 10 tau and the shear that breaks the glue at
+# each speed off their closed forms (to 1/N) fail the job.
 echo "== friction: pull-off after shear on a relaxing bulk" >&2
 "$mdrsim" sweep scenes/viscoelastic/pull_off_after_shear_relaxing.toml \
   --vary "loading.stage.4.tangential.to=0:5.1171560213864e-5:17" \

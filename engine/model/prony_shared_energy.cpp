@@ -1,6 +1,8 @@
 // The shared arms' work and dissipation over a piece of constant drive rate, in closed form.
 #include "engine/model/prony_shared_energy.hpp"
 
+#include "engine/model/decay_integrals.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -31,17 +33,13 @@ SharedArmsPiece shared_arms_linear_piece(const SharedDriveArms& arms,
     const PronyTerm& term = arms.terms()[j];
     const double steady = term.modulus * rate * term.time;
     const double history = arms.history(j);
-    const double transient = history - steady;
     const double decaying = arms.arm_force(j) - weight * history;
-    // int_0^h exp(-s / tau) ds and int_0^h exp(-2 s / tau) ds.
-    const double once = -std::expm1(-duration / term.time) * term.time;
-    const double twice = -std::expm1(-2.0 * duration / term.time) * term.time * 0.5;
-    piece.load_integral += weight * (steady * duration + transient * once) + decaying * once;
-    const double history_squared = steady * steady * duration + 2.0 * steady * transient * once +
-                                   transient * transient * twice;
-    const double history_decay = steady * once + transient * twice;
+    // H_j(s) = H_j(0) E + steady D (decay_integrals.hpp: short pieces keep their digits).
+    const DecayIntegrals i = decay_integrals(duration, term.time);
+    const ArmStressIntegrals h = arm_stress_integrals(i, history, steady);
+    piece.load_integral += weight * h.stress + decaying * i.decay;
     const double squares =
-        weight * history_squared + 2.0 * decaying * history_decay + own[j] * twice;
+        weight * h.square + 2.0 * decaying * h.with_decay + own[j] * i.decay_squared;
     piece.dissipated += squares / (term.modulus * term.time);
   }
   return piece;

@@ -12,12 +12,16 @@
 #include <set>
 
 #include "engine/model/compensated_sum.hpp"
+#include "engine/model/decay_integrals.hpp"
+#include "engine/model/exponential_sum_total.hpp"
 #include "engine/model/prony_arms.hpp"
 #include "engine/model/prony_creep.hpp"
 #include "engine/model/prony_load_drive.hpp"
 #include "engine/model/prony_shared_drive.hpp"
 #include "engine/model/prony_shared_energy.hpp"
 #include "engine/model/viscoelastic_edge.hpp"
+#include "engine/program/rebinding_run.hpp"
+#include "engine/program/viscoelastic_holding.hpp"
 #include "engine/program/viscoelastic_slide.hpp"
 
 namespace mdrsim {
@@ -143,18 +147,10 @@ struct ViscoelasticRowEvent {
 
 /// The integrals of an arm's stress sigma(h) = c + (sigma_0 - c) exp(-h / tau), c = E_j w' tau,
 /// over [0, h] [N s / m] and of its square [N^2 s / m^2].
-struct ArmStressIntegrals {
-  double stress;
-  double square;
-};
-
 ArmStressIntegrals arm_stress_integrals(const PronyTerm& term, double sigma0, double rate,
                                         double h) {
-  const double c = term.modulus * rate * term.time;
-  const double a = sigma0 - c;
-  const double once = -std::expm1(-h / term.time) * term.time;
-  const double twice = -std::expm1(-2.0 * h / term.time) * term.time * 0.5;
-  return {c * h + a * once, c * c * h + 2.0 * c * a * once + a * a * twice};
+  return arm_stress_integrals(decay_integrals(h, term.time), sigma0,
+                              term.modulus * rate * term.time);
 }
 
 /// f'(s) as an exponential sum.
@@ -211,7 +207,8 @@ class ViscoelasticRowDrive::Row {
         store_stride_(3 * springs.terms.size() + modes_->rates().size()),
         store_(state_.size() * store_stride_, 0.0),
         pressed_(springs.images.size()),
-        glued_(springs.images.size()) {}
+        glued_(springs.images.size()),
+        holding_loads_(springs.edge, springs.spacing, springs.images.size()) {}
 
   /// A new segment from the present time: every spring's next event within it is queued (the
   /// energy summed up to now, the rate changing).
@@ -231,6 +228,7 @@ class ViscoelasticRowDrive::Row {
       start_tangential();
     }
     if (springs_.friction) restart_slides();
+    run_memo_.forget();
     queue_ = {};
     first_events_.clear();
     next_first_event_ = 0;
@@ -311,6 +309,7 @@ class ViscoelasticRowDrive::Row {
         queue_.pop();
       }
     }
+    run_memo_.change(k, state_[k].shear && state_[k].shear->friction_event == kGlueEvent);
     if (state_[k].shear && state_[k].shear->friction_event) return apply_friction(k, run);
     if (springs_.edge) return apply_at_edge(k, run);
     ViscoelasticSpringState& s = state_[k];
@@ -398,7 +397,7 @@ class ViscoelasticRowDrive::Row {
           tangential_relaxed() *
               (static_cast<double>(tangential_members_) * tangential_ - glued_origins_.value()) +
           tangential_arms_.arm_force();
-      for (const std::size_t k : sliding_) tangential_loads += state_[k].shear->slide->load(time_);
+      if (!sliding_.empty()) tangential_loads += sliding_loads_.at(time_);
     }
     const bool carries = tangential_members_ > 0 || !sliding_.empty();
     return {time_,
@@ -927,6 +926,7 @@ class ViscoelasticRowDrive::Row {
     jump_losses_.add(tangential_stored_of(stretch, stresses) -
                      tangential_stored_of(s.shear->slide->stretch(time_), stresses));
     sliding_.insert(k);
+    sliding_loads_.add(s.shear->slide->load_from_start(), time_, time_, 1.0);
   }
 
   /// The queued slip or stick of pressed spring k, now.
@@ -941,6 +941,7 @@ class ViscoelasticRowDrive::Row {
     if (kind == kStickEvent) {
       const FewValues<double> stresses = s.shear->slide->stresses(time_);
       const double stretch = s.shear->slide->stretch(time_);
+      leave_sliding_loads(*s.shear->slide);
       s.shear->slide.reset();
       sliding_.erase(k);
       join_set(s, stretch, stresses);
@@ -982,34 +983,25 @@ class ViscoelasticRowDrive::Row {
     }
     return load;
   }
-  /// |q_x| [N/m] below which glued spring k holds with no elongation: the glassy criterion's
-  /// margin at (0, q_x / G_0, x_k) is positive, bisected (a built-in criterion's holding set is
-  /// convex and symmetric in u_x); infinity without a criterion or where it always holds.
-  double holding_tangential_load(std::size_t k) const {
-    const ViscoelasticEdge& edge = *springs_.edge;
-    if (!edge.criterion) return HUGE_VAL;
-    const double x = springs_.spacing * static_cast<double>(k + 1);
-    const auto holds = [&](double q) {
-      return edge.criterion->margin({0.0, q / edge.glassy_shear_modulus, x}) > 0.0;
-    };
-    if (!holds(0.0)) return 0.0;
-    double hi = std::max(edge.let_go_loads[k], 1e-300);
-    for (int i = 0; i < 2000 && holds(hi); ++i) hi *= 2.0;
-    if (holds(hi)) return HUGE_VAL;
-    double lo = 0.0;
-    for (;;) {
-      const double mid = lo + 0.5 * (hi - lo);
-      if (mid <= lo || mid >= hi) return lo;
-      (holds(mid) ? lo : hi) = mid;
-    }
-  }
+  /// |q_x| [N/m] below which glued spring k holds with no elongation (HoldingTangentialLoads).
+  double holding_tangential_load(std::size_t k) const { return holding_loads_.at(k); }
   /// The front spring k's glue: now where some spring of the sticking run from k outwards holds
   /// at its kept stretch, else where k's own tangential load falls within what holds.
   std::optional<double> rebinding_glue_delay(std::size_t k) const {
     if (!rebinds_pressed() || k != glue_front() || !sticks_pressed(k)) return std::nullopt;
-    for (std::size_t j = k; j < state_.size() && sticks_pressed(j); ++j) {
-      if (std::abs(kept_tangential_load(j)) < holding_tangential_load(j)) return 0.0;
+    std::size_t j = k;
+    // Under a held control a change moves every spring's load at once: no memo there.
+    if (const auto resume = held_ ? std::nullopt : run_memo_.resume(time_, k)) {
+      if (resume->holds) return 0.0;
+      j = resume->from;
     }
+    for (; j < state_.size() && sticks_pressed(j); ++j) {
+      if (std::abs(kept_tangential_load(j)) < holding_tangential_load(j)) {
+        run_memo_.record(time_, k, j, true);
+        return 0.0;
+      }
+    }
+    run_memo_.record(time_, k, j, false);
     const ViscoelasticSpringState& s = state_[k];
     FewValues<double> stresses(tangential_terms_.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) {
@@ -1050,9 +1042,20 @@ class ViscoelasticRowDrive::Row {
     schedule(front);
   }
 
+  /// A slide ends now: its load leaves the sliding springs' total (which restarts from zero
+  /// once none slides, so that rounding left over from the leaves does not outlive them).
+  void leave_sliding_loads(const ViscoelasticSlide& slide) {
+    if (sliding_.size() == 1) {
+      sliding_loads_.clear(time_);
+      return;
+    }
+    sliding_loads_.add(slide.load_from_start(), slide.since(), time_, -1.0);
+  }
+
   /// A segment begins: each sliding spring's limit follows the new rates from its state now.
   void restart_slides() {
     const std::vector<std::size_t> sliding(sliding_.begin(), sliding_.end());
+    sliding_loads_.clear(time_);
     for (const std::size_t k : sliding) {
       ViscoelasticSpringState& s = state_[k];
       const FewValues<double> stresses = s.shear->slide->stresses(time_);
@@ -1079,6 +1082,7 @@ class ViscoelasticRowDrive::Row {
     glassy_step(stresses, tangential_terms_, -load / glassy_shear_modulus());
     const double after = tangential_stored_of(-sum_of(stresses) / tangential_relaxed(), stresses);
     jump_losses_.add(before - after);
+    leave_sliding_loads(*s.shear->slide);
     s.shear->slide.reset();
     sliding_.erase(k);
     s.shear->creep.emplace(tangential_modes_, stresses);
@@ -1865,6 +1869,7 @@ class ViscoelasticRowDrive::Row {
   CompensatedSum glued_origins_;         ///< sum of the tangential set's origins [m]
   std::int64_t tangential_members_ = 0;  ///< springs in the tangential set (glued or sticking)
   std::set<std::size_t> sliding_;        ///< with friction: pressed springs sliding
+  ExponentialSumTotal sliding_loads_;    ///< their tangential line loads' sum [N/m]
   CompensatedSum friction_;              ///< dissipated by friction [J/m]
   CompensatedSum tangential_work_;       ///< [J/m]
   bool last_let_go_by_shear_ = false;
@@ -1873,6 +1878,8 @@ class ViscoelasticRowDrive::Row {
   std::vector<double> store_;  ///< the springs' blocks, in spring order
   RowSpringSet pressed_;       ///< in contact: pressed or glued
   RowSpringSet glued_;
+  HoldingTangentialLoads holding_loads_;
+  mutable RebindingRunMemo run_memo_;  ///< rebinding's last look along the sticking run
   CompensatedSum pressed_images_;
   /// The events found as a segment begins (each spring's first in it: most of its events), in
   /// their order, read in turn; the events found later are queued. The next is the earlier head

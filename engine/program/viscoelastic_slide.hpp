@@ -30,7 +30,9 @@ class ViscoelasticSlide {
                     double tangential_rate, double since);
 
   std::int8_t direction() const { return direction_; }
-  double load(double t) const { return load_.at(t - since_); }  ///< f_x at time t [N/m]
+  double load(double t) const { return load_.at(t - since_); }     ///< f_x at time t [N/m]
+  const ExponentialSum& load_from_start() const { return load_; }  ///< f_x(s), s = t - since
+  double since() const { return since_; }                          ///< [s]
   double stretch(double t) const { return response_.stretch.at(t - since_); }  ///< [m]
   FewValues<double> stresses(double t) const;                                  ///< [N/m] per term
   /// Its work, friction and dashpot dissipation from time `from` to `to` [s].
