@@ -155,6 +155,16 @@ ArmStressIntegrals arm_stress_integrals(const PronyTerm& term, double sigma0, do
   return {c * h + a * once, c * c * h + 2.0 * c * a * once + a * a * twice};
 }
 
+/// Whether f(s) = c + b s + sum_j a_j exp(-s / tau_j) cannot fall for s >= 0: b >= 0 and every
+/// a_j <= 0 (a pressed spring's load while the drive presses and its arms stand below their
+/// steady stress). Its values rounded are monotone too (each a_j exp(-s / tau_j) rounds to at
+/// least a_j), so first_crossing from f(0) >= 0 to the level 0 finds nothing, and need not look.
+bool loads_up(const ExponentialSum& f) {
+  return f.slope >= 0.0 &&
+         std::all_of(f.decays.begin(), f.decays.end(),
+                     [](const ExponentialDecay& d) { return d.amplitude <= 0.0; });
+}
+
 /// f'(s) as an exponential sum.
 ExponentialSum exponential_sum_slope(const ExponentialSum& f) {
   ExponentialSum slope{f.slope, 0.0, {}};
@@ -1261,6 +1271,7 @@ class ViscoelasticRowDrive::Row {
     // A spring at zero load that stays there (met at the turn of a hold) stays pressed, as an
     // elastic row counts a spring whose image the depth reaches.
     if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
+    if (now >= 0.0 && loads_up(load)) return std::nullopt;
     if (now < 0.0) load.constant -= now;
     return first_crossing(load, 0.0, span);
   }
