@@ -241,6 +241,8 @@ class ViscoelasticRowDrive::Row {
     first_events_.clear();
     next_first_event_ = 0;
     held_.reset();
+    if (!segment.held && !own_squares_current_) rebuild_own_squares();
+    own_squares_current_ = !segment.held;
     if (segment.held) {
       // Per unit length of one half: kappa d + q_total = phi (prony_load_drive.hpp).
       const AffineConstraint& c = segment.held->constraint;
@@ -300,6 +302,7 @@ class ViscoelasticRowDrive::Row {
       held_advance_to(t);
       return;
     }
+    if (t > time_ && !pressed_.empty()) count_contact_piece(t - time_);
     arms_.advance(rate_, t - time_);
     if (tangential_on_) tangential_arms_.advance(tangential_rate_, t - time_);
     time_ = t;
@@ -372,7 +375,9 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
       if (in_contact(s)) {
-        stored.add(stored_of(s.counted_stretch, counted_stresses(s)));
+        FewValues<double> stresses(terms());
+        for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(member(s), j);
+        stored.add(stored_of(depth_ - springs_.images[k], stresses));
       } else if (s.phase == ViscoelasticSpringPhase::free) {
         stored.add(s.counted_stored);
       }
@@ -458,13 +463,24 @@ class ViscoelasticRowDrive::Row {
   /// Spring s joins the arms now with arm stresses `stresses` [N/m].
   void enter_arms(ViscoelasticSpringState& s, std::span<const double> stresses) {
     s.entry_time = arms_.enter(stresses, 1.0, {block(s), terms()});
+    if (held_) return;
+    // Its own part sigma_j - H_j is its offset, now.
+    for (std::size_t j = 0; j < terms(); ++j) own_squares_[j] += block(s)[j] * block(s)[j];
   }
   /// Spring s leaves the arms now, just after count_pressed(s), which read its arm stresses
   /// [N/m] into counted_stresses; they are returned.
   FewValues<double> leave_arms_counted(const ViscoelasticSpringState& s) {
     const std::span<const double> counted = counted_stresses(s);
     FewValues<double> stresses(counted.begin(), counted.end());
+    if (!held_) {
+      for (std::size_t j = 0; j < terms(); ++j) {
+        const double own = stresses[j] - arms_.history(j);
+        own_squares_[j] -= own * own;
+      }
+    }
     arms_.leave_read(stresses, 1.0);
+    // An empty set's sums are zero exactly, not the roundoff of their additions and removals.
+    if (!held_ && arms_.weight() == 0.0) std::fill(own_squares_.begin(), own_squares_.end(), 0.0);
     return stresses;
   }
 
@@ -747,37 +763,73 @@ class ViscoelasticRowDrive::Row {
     return e;
   }
 
-  /// A pressed spring's work and dissipation from its last count to now, the drive's rate
-  /// unchanged in between (every pressed spring is counted where the rate changes).
+  /// A spring in contact notes where it stands (its normal work and dissipation are counted for
+  /// the whole contact at once: count_contact_piece, count_held_piece), and its tangential work
+  /// and dissipation from its last count to now, the drive's rate unchanged in between (every
+  /// spring with tangential arms is counted where the rate changes).
   void count_pressed(ViscoelasticSpringState& s, double image) {
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      counted_stresses(s)[j] = arms_.stress(member(s), j);
+    }
     if (held_) {
-      // A held segment counts the work and the dissipation of every pressed spring together
-      // (count_held_piece); the spring only notes where it stands.
-      for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-        counted_stresses(s)[j] = arms_.stress(member(s), j);
-      }
       s.counted_at = time_;
       s.counted_stretch = depth_ - image;
       if (tangential_on_ && s.phase == ViscoelasticSpringPhase::glued) note_tangential(s);
       return;
     }
     const double h = time_ - s.counted_at;
-    const double w0 = s.counted_stretch;
-    double load_integral = springs_.relaxed_modulus * (w0 * h + 0.5 * rate_ * h * h);
-    double dissipated = 0.0;
-    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-      const PronyTerm& term = springs_.terms[j];
-      const ArmStressIntegrals i = arm_stress_integrals(term, counted_stresses(s)[j], rate_, h);
-      load_integral += i.stress;
-      dissipated += i.square / (term.modulus * term.time);
-      counted_stresses(s)[j] = arms_.stress(member(s), j);
-    }
-    machine_work_.add(rate_ * load_integral);
-    dissipated_.add(dissipated);
     if (tangential_on_ && s.shear && s.shear->in_set) count_tangential(s, h);
     if (s.shear && s.shear->slide) count_sliding(s);
     s.counted_at = time_;
     s.counted_stretch = depth_ - image;
+  }
+
+  /// The springs in contact: their normal work and dissipation over the next h [s] of the drive
+  /// at its rate, all at once. With sigma_ij = H_j + delta_ij (H_j the arms' common history,
+  /// relaxing towards c_j = E_j w' tau_j, delta_ij a member's own part, decaying as
+  /// exp(-s / tau_j)), sum_i sigma_ij = W H_j + C_j and sum_i sigma_ij^2 = W H_j^2 + 2 H_j C_j +
+  /// sum_i delta_ij^2, each integrated in closed form: O(terms) a piece, where a closed form a
+  /// spring at each of its counts took three exponentials a term.
+  void count_contact_piece(double h) {
+    const double n = arms_.weight();
+    if (!(n > 0.0)) return;
+    double load_integral = springs_.relaxed_modulus *
+                           ((n * depth_ - pressed_images_.value()) * h + 0.5 * n * rate_ * h * h);
+    double dissipated = 0.0;
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      const PronyTerm& term = springs_.terms[j];
+      // 1 - exp(-h / tau) by expm1 (h is mostly far below tau); 1 - exp(-2 h / tau) from it.
+      const double relaxed_part = -std::expm1(-h / term.time);
+      const double once = relaxed_part * term.time;
+      const double twice = relaxed_part * (2.0 - relaxed_part) * 0.5 * term.time;
+      const double steady = term.modulus * rate_ * term.time;
+      const double history = arms_.history(j);
+      const double transient = history - steady;
+      const double decaying = arms_.arm_force(j) - n * history;
+      load_integral += n * (steady * h + transient * once) + decaying * once;
+      const double history_squared =
+          steady * steady * h + 2.0 * steady * transient * once + transient * transient * twice;
+      const double squares = n * history_squared +
+                             2.0 * decaying * (steady * once + transient * twice) +
+                             std::max(own_squares_[j], 0.0) * twice;
+      dissipated += squares / (term.modulus * term.time);
+      const double remaining = 1.0 - relaxed_part;
+      own_squares_[j] *= remaining * remaining;
+    }
+    machine_work_.add(rate_ * load_integral);
+    dissipated_.add(dissipated);
+  }
+
+  /// own_squares_ from the springs in contact where they stand.
+  void rebuild_own_squares() {
+    own_squares_.assign(terms(), 0.0);
+    for (const ViscoelasticSpringState& s : state_) {
+      if (!in_contact(s)) continue;
+      for (std::size_t j = 0; j < terms(); ++j) {
+        const double own = arms_.stress(member(s), j) - arms_.history(j);
+        own_squares_[j] += own * own;
+      }
+    }
   }
 
   /// G_inf [Pa], the tangential arms' relaxed modulus.
@@ -1197,7 +1249,17 @@ class ViscoelasticRowDrive::Row {
   void count_all() {
     // The springs in contact in ascending order, then the free ones.
     for (std::size_t k = 0; k < state_.size(); ++k) {
-      if (in_contact(state_[k])) count_pressed(state_[k], springs_.images[k]);
+      // The normal arms are counted for the whole contact as time passes; only a spring's
+      // tangential arms are counted one by one.
+      ViscoelasticSpringState& s = state_[k];
+      if (!in_contact(s)) continue;
+      if (s.shear) {
+        count_pressed(s, springs_.images[k]);
+      } else {
+        // Tangential arms made later count from here (glue_tangentially).
+        s.counted_at = time_;
+        s.counted_stretch = depth_ - springs_.images[k];
+      }
     }
     for (ViscoelasticSpringState& s : state_) {
       if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
@@ -1902,7 +1964,9 @@ class ViscoelasticRowDrive::Row {
   std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyAbove> free_keys_;
   std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyExpiresLater> free_expiry_;
   std::vector<std::uint32_t> free_generation_;
-  std::vector<double> own_squares_;  ///< sum_i delta_ij^2 over the pressed springs [N^2/m^2]
+  /// sum_i delta_ij^2 over the springs in contact [N^2/m^2], delta_ij = sigma_ij - H_j.
+  std::vector<double> own_squares_;
+  bool own_squares_current_ = false;  ///< whether own_squares_ is, outside a held segment
   /// The same of the glued springs' tangential arms, in a held segment.
   SharedArmOwnSquares tangential_own_squares_;
   ExponentialSum motion_;  ///< the depth from now in a held segment [m]
