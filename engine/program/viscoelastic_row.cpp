@@ -1239,8 +1239,9 @@ class ViscoelasticRowDrive::Row {
 
   /// A free spring's dissipation from its last count to now: the energy it stores less.
   void count_free(ViscoelasticSpringState& s) {
-    const double t = time_ - s.released_at;
-    const double stored = stored_of(creep(s).stretch(t), creep(s).stresses(t));
+    double stretch = 0.0;
+    const FewValues<double> stresses = creep(s).stresses(time_ - s.released_at, stretch);
+    const double stored = stored_of(stretch, stresses);
     dissipated_.add(s.counted_stored - stored);
     s.counted_stored = stored;
     s.counted_at = time_;
