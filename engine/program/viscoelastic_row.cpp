@@ -302,8 +302,13 @@ class ViscoelasticRowDrive::Row {
       held_advance_to(t);
       return;
     }
-    if (t > time_ && !pressed_.empty()) count_contact_piece(t - time_);
-    arms_.advance(rate_, t - time_);
+    if (t > time_ && arms_.weight() > 0.0) {
+      // The contact's piece and the arms' advance share 1 - exp(-h / tau_j).
+      count_contact_piece(t - time_);
+      arms_.advance(rate_, t - time_, relaxed_parts_);
+    } else {
+      arms_.advance(rate_, t - time_);
+    }
     if (tangential_on_) tangential_arms_.advance(tangential_rate_, t - time_);
     time_ = t;
     depth_ = t == end_ ? end_depth_ : segment_depth_ + rate_ * (t - segment_start_);
@@ -792,14 +797,15 @@ class ViscoelasticRowDrive::Row {
   /// spring at each of its counts took three exponentials a term.
   void count_contact_piece(double h) {
     const double n = arms_.weight();
-    if (!(n > 0.0)) return;
     double load_integral = springs_.relaxed_modulus *
                            ((n * depth_ - pressed_images_.value()) * h + 0.5 * n * rate_ * h * h);
     double dissipated = 0.0;
+    relaxed_parts_.resize(springs_.terms.size());
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
       const PronyTerm& term = springs_.terms[j];
       // 1 - exp(-h / tau) by expm1 (h is mostly far below tau); 1 - exp(-2 h / tau) from it.
       const double relaxed_part = -std::expm1(-h / term.time);
+      relaxed_parts_[j] = relaxed_part;
       const double once = relaxed_part * term.time;
       const double twice = relaxed_part * (2.0 - relaxed_part) * 0.5 * term.time;
       const double steady = term.modulus * rate_ * term.time;
@@ -1968,6 +1974,8 @@ class ViscoelasticRowDrive::Row {
   /// sum_i delta_ij^2 over the springs in contact [N^2/m^2], delta_ij = sigma_ij - H_j.
   std::vector<double> own_squares_;
   bool own_squares_current_ = false;  ///< whether own_squares_ is, outside a held segment
+  /// 1 - exp(-h / tau_j) of the last piece, which count_contact_piece hands to the arms.
+  std::vector<double> relaxed_parts_;
   /// The same of the glued springs' tangential arms, in a held segment.
   SharedArmOwnSquares tangential_own_squares_;
   ExponentialSum motion_;  ///< the depth from now in a held segment [m]
