@@ -98,6 +98,22 @@ void append_sign_changes(Fn fn, const InlineVector<double>& points, InlineVector
   }
 }
 
+// Whether append_decay_sum_zeros(raw, 0, hi) finds no zero because raw falls from below zero
+// throughout: a negative constant and decays of nonnegative amplitude, so p' has its sign
+// wherever it is read (its own constant -a_1 r_1 negative, its decays not positive) and p's
+// rounded values only fall (each a_j exp(-r_j s) rounds to at most a_j), from p(0) < 0 read as
+// append_sign_changes reads it. Its one call to exp, at hi, is then not needed.
+bool falls_below_zero(const ConstantPlusDecays& raw) {
+  if (!(raw.constant < 0.0)) return false;
+  if (!std::all_of(raw.terms.begin(), raw.terms.end(),
+                   [](const auto& term) { return term.first >= 0.0; })) {
+    return false;
+  }
+  const ConstantPlusDecays p = merged_decays(raw);
+  if (p.terms.empty()) return true;
+  return p.terms.front().first * p.terms.front().second > 0.0 && p.at(0.0) < 0.0;
+}
+
 // Appends to `zeros` the zeros of p in (lo, hi): p' = exp(-r_1 s) q(s) with q = -a_1 r_1 -
 // sum_{j >= 2} a_j r_j exp(-(r_j - r_1) s), one decay fewer; p is monotone between q's zeros.
 void append_decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi,
@@ -243,11 +259,16 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     derivative.terms.emplace_back(-decay.amplitude / decay.time, 1.0 / decay.time);
   }
   InlineVector<double> points{0.0};
-  if (!one_signed(derivative)) append_decay_sum_zeros(derivative, 0.0, span, points);
+  if (!one_signed(derivative) && !falls_below_zero(derivative)) {
+    append_decay_sum_zeros(derivative, 0.0, span, points);
+  }
   points.push_back(span);
   // The side: g at 0, or where g starts at the level, g at the end of the first piece (g moves
   // monotonically away from the level there).
   double side = g(0.0);
+  // Starting at the level with one monotone piece, f moves away from it up to span: the piece
+  // that would give the side is the whole span.
+  if (side == 0.0 && points.size() == 2) return std::nullopt;
   if (side == 0.0) {
     side = g(points[1]);
     if (side == 0.0) {
