@@ -182,14 +182,18 @@ std::optional<double> one_decay_start(double a, double b, double c, double tau, 
 // kMostNewtonSteps hand the piece to TOMS 748.
 constexpr int kMostNewtonSteps = 60;
 std::optional<double> one_signed_decays_root(const ExponentialSum& f, double level, double lo,
-                                             double hi, double g_lo) {
+                                             double hi, double g_lo, std::optional<double> near) {
   const bool convex = std::any_of(f.decays.begin(), f.decays.end(),
                                   [](const ExponentialDecay& d) { return d.amplitude > 0.0; });
   const bool concave = std::any_of(f.decays.begin(), f.decays.end(),
                                    [](const ExponentialDecay& d) { return d.amplitude < 0.0; });
   if (convex == concave) return std::nullopt;
   std::optional<double> start;
-  if (f.decays.size() == 1) {
+  if (near && *near >= lo && *near <= hi) {
+    // Near the root: on Fourier's side Newton goes on from there, on the other its first step
+    // lands there (the tangent of a convex or concave piece crosses the level on that side).
+    start = near;
+  } else if (f.decays.size() == 1) {
     const ExponentialDecay& d = f.decays.front();
     start = one_decay_start(f.constant - level, f.slope, d.amplitude, d.time, lo, hi);
   }
@@ -250,6 +254,11 @@ double ExponentialSum::slope_at(double s) const {
 }
 
 std::optional<double> first_crossing(const ExponentialSum& f, double level, double span) {
+  return first_crossing(f, level, span, std::nullopt);
+}
+
+std::optional<double> first_crossing(const ExponentialSum& f, double level, double span,
+                                     std::optional<double> near) {
   if (!(span > 0.0)) {
     return std::nullopt;
   }
@@ -282,7 +291,7 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     const double g_hi = g(hi);
     if (g_hi == 0.0 || (g_hi < 0.0) != (side < 0.0)) {
       if (g_hi == 0.0) return hi;
-      if (const auto root = one_signed_decays_root(f, level, lo, hi, g_lo)) return root;
+      if (const auto root = one_signed_decays_root(f, level, lo, hi, g_lo, near)) return root;
       return bracketed_root_from(g, lo, hi, g_lo, g_hi);
     }
     g_lo = g_hi;

@@ -258,8 +258,10 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t k = 0; k < state_.size(); ++k) {
       if (const auto delay = next_event_delay(k)) {
         first_events_.push_back({time_ + *delay, k, state_[k].version});
+        release_hint_ = delay;
       }
     }
+    release_hint_.reset();
     sort_first_events();
   }
 
@@ -1342,7 +1344,7 @@ class ViscoelasticRowDrive::Row {
     if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
     if (now >= 0.0 && loads_up(load)) return std::nullopt;
     if (now < 0.0) load.constant -= now;
-    return first_crossing(load, 0.0, span);
+    return first_crossing(load, 0.0, span, release_hint_);
   }
 
   // A held segment (fixed load, a machine spring): the depth follows motion_, rebuilt at every
@@ -1981,6 +1983,9 @@ class ViscoelasticRowDrive::Row {
   ExponentialSum motion_;  ///< the depth from now in a held segment [m]
   /// A sum next_event_delay builds, its storage kept from event to event.
   mutable ExponentialSum scratch_;
+  /// As a segment begins, the last spring's first event delay [s]: where the next release's
+  /// Newton starts (neighbours release close in time).
+  std::optional<double> release_hint_;
   CompensatedSum machine_work_;       ///< [J/m]
   CompensatedSum dissipated_;         ///< [J/m]
   CompensatedSum surface_;            ///< [J/m]
