@@ -382,9 +382,14 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
       if (in_contact(s)) {
-        FewValues<double> stresses(terms());
-        for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(member(s), j);
-        stored.add(stored_of(depth_ - springs_.images[k], stresses));
+        // stored_of(w, its stresses now), term by term as it sums them.
+        const double w = depth_ - springs_.images[k];
+        double e = 0.5 * springs_.relaxed_modulus * w * w;
+        for (std::size_t j = 0; j < terms(); ++j) {
+          const double sigma = arms_.stress(member(s), j);
+          e += 0.5 * sigma * sigma / springs_.terms[j].modulus;
+        }
+        stored.add(e);
       } else if (s.phase == ViscoelasticSpringPhase::free) {
         stored.add(s.counted_stored);
       }
