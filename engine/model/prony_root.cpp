@@ -199,6 +199,14 @@ std::optional<double> one_signed_decays_root(const ExponentialSum& f, double lev
   }
   double s = start.value_or((g_lo > 0.0) == convex ? lo : hi);
   const bool halley = f.decays.size() > 1;
+  // From a start near the root the steps shrink quadratically: once the next one, about
+  // |g'' / (2 g')| times this one squared, falls within an eps of s, this step's end is the root
+  // to that eps and the step that would confirm it is not taken. The estimate holds where the
+  // step is short against the fastest decay's time (g'' and g' barely change along it).
+  const bool foresee = near.has_value() && start == near;
+  const double eps = std::numeric_limits<double>::epsilon();
+  double shortest = HUGE_VAL;
+  for (const ExponentialDecay& d : f.decays) shortest = std::min(shortest, d.time);
   for (int step = 0; step < kMostNewtonSteps; ++step) {
     double g = f.constant + f.slope * s;
     double slope = f.slope;
@@ -207,7 +215,7 @@ std::optional<double> one_signed_decays_root(const ExponentialSum& f, double lev
       const double e = d.amplitude * std::exp(-s / d.time);
       g += e;
       slope -= e / d.time;
-      if (halley) curvature += e / (d.time * d.time);
+      if (halley || foresee) curvature += e / (d.time * d.time);
     }
     g -= level;
     if (g == 0.0) return s;
@@ -218,7 +226,10 @@ std::optional<double> one_signed_decays_root(const ExponentialSum& f, double lev
       if (far >= lo && far <= hi) next = far;
     }
     if (!(next >= lo && next <= hi)) return std::nullopt;
-    if (std::abs(next - s) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(next)) {
+    const double taken = std::abs(next - s);
+    if (taken <= 4.0 * eps * std::abs(next)) return next;
+    if (foresee && taken <= 1e-3 * shortest &&
+        std::abs(curvature / (2.0 * slope)) * taken * taken <= eps * std::abs(next)) {
       return next;
     }
     s = next;
