@@ -94,10 +94,29 @@ FreeSpringCreep::FreeSpringCreep(double relaxed_modulus, std::span<const PronyTe
     : FreeSpringCreep(std::make_shared<const RetardationModes>(relaxed_modulus, terms), stresses) {}
 
 FewValues<double> FreeSpringCreepRef::stresses(double t) const {
+  FewValues<double> decays(amplitudes_.size());
+  for (std::size_t k = 0; k < decays.size(); ++k) decays[k] = std::exp(-modes_->rates()[k] * t);
+  return stresses_from_decays(t, decays);
+}
+
+FewValues<double> FreeSpringCreepRef::stresses(double t, double& stretch) const {
+  FewValues<double> decays(amplitudes_.size());
+  stretch = 0.0;
+  for (std::size_t k = 0; k < decays.size(); ++k) {
+    // exp(-mu 0) is 1 exactly, as mode_stretch and stresses(t) read it.
+    decays[k] = t == 0.0 ? 1.0 : std::exp(-modes_->rates()[k] * t);
+    stretch +=
+        modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus() * decays[k];
+  }
+  return stresses_from_decays(t, decays);
+}
+
+FewValues<double> FreeSpringCreepRef::stresses_from_decays(double t,
+                                                           std::span<const double> decays) const {
   const std::span<const PronyTerm> groups = modes_->groups();
   FewValues<double> group_stress(groups.size(), 0.0);
   for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
-    const double decay = amplitudes_[k] * std::exp(-modes_->rates()[k] * t);
+    const double decay = amplitudes_[k] * decays[k];
     for (std::size_t g = 0; g < groups.size(); ++g) {
       group_stress[g] += groups[g].modulus * modes_->mode(k, g) * decay;
     }
@@ -106,8 +125,10 @@ FewValues<double> FreeSpringCreepRef::stresses(double t) const {
   FewValues<double> out(terms.size());
   for (std::size_t j = 0; j < terms.size(); ++j) {
     const std::size_t g = modes_->group_of(j);
-    out[j] = terms[j].modulus / groups[g].modulus * group_stress[g] +
-             residuals_[j] * std::exp(-t / terms[j].time);
+    // A term alone in its group has no residual (zero times its decay, which need not be read).
+    const double residual =
+        residuals_[j] == 0.0 ? residuals_[j] : residuals_[j] * std::exp(-t / terms[j].time);
+    out[j] = terms[j].modulus / groups[g].modulus * group_stress[g] + residual;
   }
   return out;
 }

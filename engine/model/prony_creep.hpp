@@ -61,6 +61,8 @@ class FreeSpringCreepRef {
   double stretch(double t) const;
   /// The arm stresses sigma_j(t) [N/m].
   FewValues<double> stresses(double t) const;
+  /// stretch(t) and stresses(t), the same numbers, each mode's decay read once for both.
+  FewValues<double> stresses(double t, double& stretch) const;
   /// w(t0 + s) as an exponential sum in s [s].
   ExponentialSum stretch_from(double t0) const;
   /// The same into `w` (its decays' storage reused).
@@ -71,6 +73,8 @@ class FreeSpringCreepRef {
  private:
   /// Mode k's part of the stretch at t [m].
   double mode_stretch(std::size_t k, double t) const;
+  /// The arm stresses at t from each mode's decay exp(-mu_k t).
+  FewValues<double> stresses_from_decays(double t, std::span<const double> decays) const;
 
   const RetardationModes* modes_;
   std::span<const double> amplitudes_;

@@ -98,6 +98,22 @@ void append_sign_changes(Fn fn, const InlineVector<double>& points, InlineVector
   }
 }
 
+// Whether append_decay_sum_zeros(raw, 0, hi) finds no zero because raw falls from below zero
+// throughout: a negative constant and decays of nonnegative amplitude, so p' has its sign
+// wherever it is read (its own constant -a_1 r_1 negative, its decays not positive) and p's
+// rounded values only fall (each a_j exp(-r_j s) rounds to at most a_j), from p(0) < 0 read as
+// append_sign_changes reads it. Its one call to exp, at hi, is then not needed.
+bool falls_below_zero(const ConstantPlusDecays& raw) {
+  if (!(raw.constant < 0.0)) return false;
+  if (!std::all_of(raw.terms.begin(), raw.terms.end(),
+                   [](const auto& term) { return term.first >= 0.0; })) {
+    return false;
+  }
+  const ConstantPlusDecays p = merged_decays(raw);
+  if (p.terms.empty()) return true;
+  return p.terms.front().first * p.terms.front().second > 0.0 && p.at(0.0) < 0.0;
+}
+
 // Appends to `zeros` the zeros of p in (lo, hi): p' = exp(-r_1 s) q(s) with q = -a_1 r_1 -
 // sum_{j >= 2} a_j r_j exp(-(r_j - r_1) s), one decay fewer; p is monotone between q's zeros.
 void append_decay_sum_zeros(const ConstantPlusDecays& raw, double lo, double hi,
@@ -166,19 +182,31 @@ std::optional<double> one_decay_start(double a, double b, double c, double tau, 
 // kMostNewtonSteps hand the piece to TOMS 748.
 constexpr int kMostNewtonSteps = 60;
 std::optional<double> one_signed_decays_root(const ExponentialSum& f, double level, double lo,
-                                             double hi, double g_lo) {
+                                             double hi, double g_lo, std::optional<double> near) {
   const bool convex = std::any_of(f.decays.begin(), f.decays.end(),
                                   [](const ExponentialDecay& d) { return d.amplitude > 0.0; });
   const bool concave = std::any_of(f.decays.begin(), f.decays.end(),
                                    [](const ExponentialDecay& d) { return d.amplitude < 0.0; });
   if (convex == concave) return std::nullopt;
   std::optional<double> start;
-  if (f.decays.size() == 1) {
+  if (near && *near >= lo && *near <= hi) {
+    // Near the root: on Fourier's side Newton goes on from there, on the other its first step
+    // lands there (the tangent of a convex or concave piece crosses the level on that side).
+    start = near;
+  } else if (f.decays.size() == 1) {
     const ExponentialDecay& d = f.decays.front();
     start = one_decay_start(f.constant - level, f.slope, d.amplitude, d.time, lo, hi);
   }
   double s = start.value_or((g_lo > 0.0) == convex ? lo : hi);
   const bool halley = f.decays.size() > 1;
+  // From a start near the root the steps shrink quadratically: once the next one, about
+  // |g'' / (2 g')| times this one squared, falls within an eps of s, this step's end is the root
+  // to that eps and the step that would confirm it is not taken. The estimate holds where the
+  // step is short against the fastest decay's time (g'' and g' barely change along it).
+  const bool foresee = near.has_value() && start == near;
+  const double eps = std::numeric_limits<double>::epsilon();
+  double shortest = HUGE_VAL;
+  for (const ExponentialDecay& d : f.decays) shortest = std::min(shortest, d.time);
   for (int step = 0; step < kMostNewtonSteps; ++step) {
     double g = f.constant + f.slope * s;
     double slope = f.slope;
@@ -187,7 +215,7 @@ std::optional<double> one_signed_decays_root(const ExponentialSum& f, double lev
       const double e = d.amplitude * std::exp(-s / d.time);
       g += e;
       slope -= e / d.time;
-      if (halley) curvature += e / (d.time * d.time);
+      if (halley || foresee) curvature += e / (d.time * d.time);
     }
     g -= level;
     if (g == 0.0) return s;
@@ -198,7 +226,10 @@ std::optional<double> one_signed_decays_root(const ExponentialSum& f, double lev
       if (far >= lo && far <= hi) next = far;
     }
     if (!(next >= lo && next <= hi)) return std::nullopt;
-    if (std::abs(next - s) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(next)) {
+    const double taken = std::abs(next - s);
+    if (taken <= 4.0 * eps * std::abs(next)) return next;
+    if (foresee && taken <= 1e-3 * shortest &&
+        std::abs(curvature / (2.0 * slope)) * taken * taken <= eps * std::abs(next)) {
       return next;
     }
     s = next;
@@ -234,6 +265,11 @@ double ExponentialSum::slope_at(double s) const {
 }
 
 std::optional<double> first_crossing(const ExponentialSum& f, double level, double span) {
+  return first_crossing(f, level, span, std::nullopt);
+}
+
+std::optional<double> first_crossing(const ExponentialSum& f, double level, double span,
+                                     std::optional<double> near) {
   if (!(span > 0.0)) {
     return std::nullopt;
   }
@@ -243,11 +279,16 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     derivative.terms.emplace_back(-decay.amplitude / decay.time, 1.0 / decay.time);
   }
   InlineVector<double> points{0.0};
-  if (!one_signed(derivative)) append_decay_sum_zeros(derivative, 0.0, span, points);
+  if (!one_signed(derivative) && !falls_below_zero(derivative)) {
+    append_decay_sum_zeros(derivative, 0.0, span, points);
+  }
   points.push_back(span);
   // The side: g at 0, or where g starts at the level, g at the end of the first piece (g moves
   // monotonically away from the level there).
   double side = g(0.0);
+  // Starting at the level with one monotone piece, f moves away from it up to span: the piece
+  // that would give the side is the whole span.
+  if (side == 0.0 && points.size() == 2) return std::nullopt;
   if (side == 0.0) {
     side = g(points[1]);
     if (side == 0.0) {
@@ -261,7 +302,7 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
     const double g_hi = g(hi);
     if (g_hi == 0.0 || (g_hi < 0.0) != (side < 0.0)) {
       if (g_hi == 0.0) return hi;
-      if (const auto root = one_signed_decays_root(f, level, lo, hi, g_lo)) return root;
+      if (const auto root = one_signed_decays_root(f, level, lo, hi, g_lo, near)) return root;
       return bracketed_root_from(g, lo, hi, g_lo, g_hi);
     }
     g_lo = g_hi;

@@ -46,5 +46,10 @@ struct ExponentialSum {
 /// straddle the level is solved by TOMS 748, or with one decay (f convex or concave throughout)
 /// by Newton from the end where it cannot overshoot, to the same 4 eps.
 std::optional<double> first_crossing(const ExponentialSum& f, double level, double span);
+/// The same, Newton starting from `near` [s] where it falls on the piece (a neighbouring
+/// spring's crossing, found just before: Ting's releases are close in time), not from the
+/// closed form or the piece's end: the same root to its 4 eps, not to the bit.
+std::optional<double> first_crossing(const ExponentialSum& f, double level, double span,
+                                     std::optional<double> near);
 
 }  // namespace mdrsim

@@ -20,6 +20,15 @@ void SharedDriveArms::advance(double rate, double duration) {
   time_ += duration;
 }
 
+void SharedDriveArms::advance(double rate, double duration, std::span<const double> relaxed_parts) {
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    const double steady = terms_[j].modulus * rate * terms_[j].time;
+    history_[j] += (steady - history_[j]) * relaxed_parts[j];
+    decaying_[j] *= std::exp(-duration / terms_[j].time);
+  }
+  time_ += duration;
+}
+
 void SharedDriveArms::advance_along(const ExponentialSum& motion, double duration) {
   for (std::size_t j = 0; j < terms_.size(); ++j) {
     history_[j] = arm_stress_under(history_[j], terms_[j], motion).at(duration);

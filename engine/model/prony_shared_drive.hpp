@@ -36,6 +36,9 @@ class SharedDriveArms {
 
   /// The drive moves at `rate` [m/s] for `duration` [s]: the clock, H_j and C_j advance.
   void advance(double rate, double duration);
+  /// The same, with 1 - exp(-duration / tau_j) given per term (`relaxed_parts`, by expm1 as
+  /// maxwell_arm_after takes it: the same numbers), for a caller that needs them too.
+  void advance(double rate, double duration, std::span<const double> relaxed_parts);
   /// The drive follows `motion` (its stretch as a sum in s from now, prony_load_drive.hpp) for
   /// `duration` [s].
   void advance_along(const ExponentialSum& motion, double duration);

@@ -264,9 +264,10 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       fold.change(change, stage_name, drive.before_last_change(),
                   held_value(control, drive.before_last_change()), by_shear);
     }
-    Event event{.kind = viscoelastic_event_kind(change),
-                .state = held_snapshot(s, control),
-                .stage = stage_name};
+    // An event no observer listens to is not built (a run without observers reports none).
+    const EventKind kind = viscoelastic_event_kind(change);
+    if (!observers.wants(kind)) return;
+    Event event{.kind = kind, .state = held_snapshot(s, control), .stage = stage_name};
     if (change == ViscoelasticRowChange::let_go) {
       event.spring = s.glued;
       event.in_cascade = jumps.cascading();

@@ -153,6 +153,16 @@ ArmStressIntegrals arm_stress_integrals(const PronyTerm& term, double sigma0, do
                               term.modulus * rate * term.time);
 }
 
+/// Whether f(s) = c + b s + sum_j a_j exp(-s / tau_j) cannot fall for s >= 0: b >= 0 and every
+/// a_j <= 0 (a pressed spring's load while the drive presses and its arms stand below their
+/// steady stress). Its values rounded are monotone too (each a_j exp(-s / tau_j) rounds to at
+/// least a_j), so first_crossing from f(0) >= 0 to the level 0 finds nothing, and need not look.
+bool loads_up(const ExponentialSum& f) {
+  return f.slope >= 0.0 &&
+         std::all_of(f.decays.begin(), f.decays.end(),
+                     [](const ExponentialDecay& d) { return d.amplitude <= 0.0; });
+}
+
 /// f'(s) as an exponential sum.
 ExponentialSum exponential_sum_slope(const ExponentialSum& f) {
   ExponentialSum slope{f.slope, 0.0, {}};
@@ -233,6 +243,8 @@ class ViscoelasticRowDrive::Row {
     first_events_.clear();
     next_first_event_ = 0;
     held_.reset();
+    if (!segment.held && !own_squares_current_) rebuild_own_squares();
+    own_squares_current_ = !segment.held;
     if (segment.held) {
       // Per unit length of one half: kappa d + q_total = phi (prony_load_drive.hpp).
       const AffineConstraint& c = segment.held->constraint;
@@ -248,8 +260,10 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t k = 0; k < state_.size(); ++k) {
       if (const auto delay = next_event_delay(k)) {
         first_events_.push_back({time_ + *delay, k, state_[k].version});
+        release_hint_ = delay;
       }
     }
+    release_hint_.reset();
     sort_first_events();
   }
 
@@ -292,7 +306,13 @@ class ViscoelasticRowDrive::Row {
       held_advance_to(t);
       return;
     }
-    arms_.advance(rate_, t - time_);
+    if (t > time_ && arms_.weight() > 0.0) {
+      // The contact's piece and the arms' advance share 1 - exp(-h / tau_j).
+      count_contact_piece(t - time_);
+      arms_.advance(rate_, t - time_, relaxed_parts_);
+    } else {
+      arms_.advance(rate_, t - time_);
+    }
     if (tangential_on_) tangential_arms_.advance(tangential_rate_, t - time_);
     time_ = t;
     depth_ = t == end_ ? end_depth_ : segment_depth_ + rate_ * (t - segment_start_);
@@ -365,7 +385,14 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
       if (in_contact(s)) {
-        stored.add(stored_of(s.counted_stretch, counted_stresses(s)));
+        // stored_of(w, its stresses now), term by term as it sums them.
+        const double w = depth_ - springs_.images[k];
+        double e = 0.5 * springs_.relaxed_modulus * w * w;
+        for (std::size_t j = 0; j < terms(); ++j) {
+          const double sigma = arms_.stress(member(s), j);
+          e += 0.5 * sigma * sigma / springs_.terms[j].modulus;
+        }
+        stored.add(e);
       } else if (s.phase == ViscoelasticSpringPhase::free) {
         stored.add(s.counted_stored);
       }
@@ -451,13 +478,24 @@ class ViscoelasticRowDrive::Row {
   /// Spring s joins the arms now with arm stresses `stresses` [N/m].
   void enter_arms(ViscoelasticSpringState& s, std::span<const double> stresses) {
     s.entry_time = arms_.enter(stresses, 1.0, {block(s), terms()});
+    if (held_) return;
+    // Its own part sigma_j - H_j is its offset, now.
+    for (std::size_t j = 0; j < terms(); ++j) own_squares_[j] += block(s)[j] * block(s)[j];
   }
   /// Spring s leaves the arms now, just after count_pressed(s), which read its arm stresses
   /// [N/m] into counted_stresses; they are returned.
   FewValues<double> leave_arms_counted(const ViscoelasticSpringState& s) {
     const std::span<const double> counted = counted_stresses(s);
     FewValues<double> stresses(counted.begin(), counted.end());
+    if (!held_) {
+      for (std::size_t j = 0; j < terms(); ++j) {
+        const double own = stresses[j] - arms_.history(j);
+        own_squares_[j] -= own * own;
+      }
+    }
     arms_.leave_read(stresses, 1.0);
+    // An empty set's sums are zero exactly, not the roundoff of their additions and removals.
+    if (!held_ && arms_.weight() == 0.0) std::fill(own_squares_.begin(), own_squares_.end(), 0.0);
     return stresses;
   }
 
@@ -740,37 +778,74 @@ class ViscoelasticRowDrive::Row {
     return e;
   }
 
-  /// A pressed spring's work and dissipation from its last count to now, the drive's rate
-  /// unchanged in between (every pressed spring is counted where the rate changes).
+  /// A spring in contact notes where it stands (its normal work and dissipation are counted for
+  /// the whole contact at once: count_contact_piece, count_held_piece), and its tangential work
+  /// and dissipation from its last count to now, the drive's rate unchanged in between (every
+  /// spring with tangential arms is counted where the rate changes).
   void count_pressed(ViscoelasticSpringState& s, double image) {
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      counted_stresses(s)[j] = arms_.stress(member(s), j);
+    }
     if (held_) {
-      // A held segment counts the work and the dissipation of every pressed spring together
-      // (count_held_piece); the spring only notes where it stands.
-      for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-        counted_stresses(s)[j] = arms_.stress(member(s), j);
-      }
       s.counted_at = time_;
       s.counted_stretch = depth_ - image;
       if (tangential_on_ && s.phase == ViscoelasticSpringPhase::glued) note_tangential(s);
       return;
     }
     const double h = time_ - s.counted_at;
-    const double w0 = s.counted_stretch;
-    double load_integral = springs_.relaxed_modulus * (w0 * h + 0.5 * rate_ * h * h);
-    double dissipated = 0.0;
-    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
-      const PronyTerm& term = springs_.terms[j];
-      const ArmStressIntegrals i = arm_stress_integrals(term, counted_stresses(s)[j], rate_, h);
-      load_integral += i.stress;
-      dissipated += i.square / (term.modulus * term.time);
-      counted_stresses(s)[j] = arms_.stress(member(s), j);
-    }
-    machine_work_.add(rate_ * load_integral);
-    dissipated_.add(dissipated);
     if (tangential_on_ && s.shear && s.shear->in_set) count_tangential(s, h);
     if (s.shear && s.shear->slide) count_sliding(s);
     s.counted_at = time_;
     s.counted_stretch = depth_ - image;
+  }
+
+  /// The springs in contact: their normal work and dissipation over the next h [s] of the drive
+  /// at its rate, all at once. With sigma_ij = H_j + delta_ij (H_j the arms' common history,
+  /// relaxing towards c_j = E_j w' tau_j, delta_ij a member's own part, decaying as
+  /// exp(-s / tau_j)), sum_i sigma_ij = W H_j + C_j and sum_i sigma_ij^2 = W H_j^2 + 2 H_j C_j +
+  /// sum_i delta_ij^2, each integrated in closed form: O(terms) a piece, where a closed form a
+  /// spring at each of its counts took three exponentials a term.
+  void count_contact_piece(double h) {
+    const double n = arms_.weight();
+    double load_integral = springs_.relaxed_modulus *
+                           ((n * depth_ - pressed_images_.value()) * h + 0.5 * n * rate_ * h * h);
+    double dissipated = 0.0;
+    relaxed_parts_.resize(springs_.terms.size());
+    for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
+      const PronyTerm& term = springs_.terms[j];
+      // 1 - exp(-h / tau) by expm1 (h is mostly far below tau); 1 - exp(-2 h / tau) from it.
+      const double relaxed_part = -std::expm1(-h / term.time);
+      relaxed_parts_[j] = relaxed_part;
+      const double once = relaxed_part * term.time;
+      const double twice = relaxed_part * (2.0 - relaxed_part) * 0.5 * term.time;
+      const double steady = term.modulus * rate_ * term.time;
+      const double history = arms_.history(j);
+      const double transient = history - steady;
+      const double decaying = arms_.arm_force(j) - n * history;
+      load_integral += n * (steady * h + transient * once) + decaying * once;
+      const double history_squared =
+          steady * steady * h + 2.0 * steady * transient * once + transient * transient * twice;
+      const double squares = n * history_squared +
+                             2.0 * decaying * (steady * once + transient * twice) +
+                             std::max(own_squares_[j], 0.0) * twice;
+      dissipated += squares / (term.modulus * term.time);
+      const double remaining = 1.0 - relaxed_part;
+      own_squares_[j] *= remaining * remaining;
+    }
+    machine_work_.add(rate_ * load_integral);
+    dissipated_.add(dissipated);
+  }
+
+  /// own_squares_ from the springs in contact where they stand.
+  void rebuild_own_squares() {
+    own_squares_.assign(terms(), 0.0);
+    for (const ViscoelasticSpringState& s : state_) {
+      if (!in_contact(s)) continue;
+      for (std::size_t j = 0; j < terms(); ++j) {
+        const double own = arms_.stress(member(s), j) - arms_.history(j);
+        own_squares_[j] += own * own;
+      }
+    }
   }
 
   /// G_inf [Pa], the tangential arms' relaxed modulus.
@@ -1185,8 +1260,9 @@ class ViscoelasticRowDrive::Row {
 
   /// A free spring's dissipation from its last count to now: the energy it stores less.
   void count_free(ViscoelasticSpringState& s) {
-    const double t = time_ - s.released_at;
-    const double stored = stored_of(creep(s).stretch(t), creep(s).stresses(t));
+    double stretch = 0.0;
+    const FewValues<double> stresses = creep(s).stresses(time_ - s.released_at, stretch);
+    const double stored = stored_of(stretch, stresses);
     dissipated_.add(s.counted_stored - stored);
     s.counted_stored = stored;
     s.counted_at = time_;
@@ -1195,7 +1271,17 @@ class ViscoelasticRowDrive::Row {
   void count_all() {
     // The springs in contact in ascending order, then the free ones.
     for (std::size_t k = 0; k < state_.size(); ++k) {
-      if (in_contact(state_[k])) count_pressed(state_[k], springs_.images[k]);
+      // The normal arms are counted for the whole contact as time passes; only a spring's
+      // tangential arms are counted one by one.
+      ViscoelasticSpringState& s = state_[k];
+      if (!in_contact(s)) continue;
+      if (s.shear) {
+        count_pressed(s, springs_.images[k]);
+      } else {
+        // Tangential arms made later count from here (glue_tangentially).
+        s.counted_at = time_;
+        s.counted_stretch = depth_ - springs_.images[k];
+      }
     }
     for (ViscoelasticSpringState& s : state_) {
       if (s.phase == ViscoelasticSpringPhase::free) count_free(s);
@@ -1269,8 +1355,9 @@ class ViscoelasticRowDrive::Row {
     // A spring at zero load that stays there (met at the turn of a hold) stays pressed, as an
     // elastic row counts a spring whose image the depth reaches.
     if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
+    if (now >= 0.0 && loads_up(load)) return std::nullopt;
     if (now < 0.0) load.constant -= now;
-    return first_crossing(load, 0.0, span);
+    return first_crossing(load, 0.0, span, release_hint_);
   }
 
   // A held segment (fixed load, a machine spring): the depth follows motion_, rebuilt at every
@@ -1902,12 +1989,19 @@ class ViscoelasticRowDrive::Row {
   std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyAbove> free_keys_;
   std::priority_queue<HeldSpringKey, std::vector<HeldSpringKey>, HeldKeyExpiresLater> free_expiry_;
   std::vector<std::uint32_t> free_generation_;
-  std::vector<double> own_squares_;  ///< sum_i delta_ij^2 over the pressed springs [N^2/m^2]
+  /// sum_i delta_ij^2 over the springs in contact [N^2/m^2], delta_ij = sigma_ij - H_j.
+  std::vector<double> own_squares_;
+  bool own_squares_current_ = false;  ///< whether own_squares_ is, outside a held segment
+  /// 1 - exp(-h / tau_j) of the last piece, which count_contact_piece hands to the arms.
+  std::vector<double> relaxed_parts_;
   /// The same of the glued springs' tangential arms, in a held segment.
   SharedArmOwnSquares tangential_own_squares_;
   ExponentialSum motion_;  ///< the depth from now in a held segment [m]
   /// A sum next_event_delay builds, its storage kept from event to event.
   mutable ExponentialSum scratch_;
+  /// As a segment begins, the last spring's first event delay [s]: where the next release's
+  /// Newton starts (neighbours release close in time).
+  std::optional<double> release_hint_;
   CompensatedSum machine_work_;       ///< [J/m]
   CompensatedSum dissipated_;         ///< [J/m]
   CompensatedSum surface_;            ///< [J/m]

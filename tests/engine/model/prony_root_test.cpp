@@ -51,8 +51,8 @@ TEST(PronyRoot, OneDecayAndASlopeByLambertW) {
 // 64 bits; whether it has one. Tolerance 4 eps of the root (the root finder's stopping rule: a
 // step, or TOMS 748's bracket, within 4 eps of s) plus the rounding of f in double, 4 eps of
 // its terms' sizes over its slope (a root near 0 sits where its terms cancel).
-bool expect_root(const ExponentialSum& f, double span) {
-  const std::optional<double> s = first_crossing(f, 0.0, span);
+bool expect_root(const ExponentialSum& f, double span, std::optional<double> near = std::nullopt) {
+  const std::optional<double> s = first_crossing(f, 0.0, span, near);
   if (!s) return false;
   const auto g = [&](long double x) {
     long double sum = static_cast<long double>(f.constant) + static_cast<long double>(f.slope) * x;
@@ -135,6 +135,33 @@ TEST(PronyRoot, SeveralDecaysRootsToTheirLastBits) {
       f.decays.push_back({sign * unit(random) * 10.0, 0.01 + unit(random)});
     }
     if (expect_root(f, 5.0)) ++found;
+  }
+  EXPECT_GT(found, 1000);
+}
+
+// Newton started near the root (a neighbouring spring's crossing), on either side of it, or
+// anywhere on the span: the same roots to their last bits, for one decay and for several of one
+// sign; a start where there is no root finds none.
+TEST(PronyRoot, RootsFromANearbyStartToTheirLastBits) {
+  std::mt19937_64 random(13);
+  std::uniform_real_distribution<double> unit(0.05, 1.0);
+  int found = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    ExponentialSum f{(unit(random) - 0.5) * 20.0,
+                     (trial % 2 ? 1.0 : -1.0) * unit(random) * (trial % 8 < 4 ? 1.0 : 1e3),
+                     {}};
+    const int decays = 1 + trial % 3;
+    const double sign = trial % 16 < 8 ? 1.0 : -1.0;
+    for (int j = 0; j < decays; ++j) {
+      f.decays.push_back({sign * unit(random) * 10.0, 0.01 + unit(random)});
+    }
+    const std::optional<double> root = first_crossing(f, 0.0, 5.0);
+    // Within 1e-5 of the root either side, or anywhere on the span.
+    const double near = !root || trial % 3 == 0
+                            ? 5.0 * unit(random)
+                            : *root * (1.0 + (trial % 2 ? 1e-5 : -1e-5) * unit(random));
+    EXPECT_EQ(first_crossing(f, 0.0, 5.0, near).has_value(), root.has_value());
+    if (expect_root(f, 5.0, near)) ++found;
   }
   EXPECT_GT(found, 1000);
 }
