@@ -10,6 +10,8 @@ namespace {
 /// as 2^n / n!, 24 of them reach below 1e-17 of the first.
 constexpr double kSeriesBelow = 1.0;
 constexpr int kSeriesTerms = 26;
+/// A term below this share of the sum changes none of its bits.
+constexpr double kLastBit = 0x1p-54;
 
 /// x - 1 + exp(-x) = sum_{n >= 2} (-x)^n / n!.
 double rise_series(double x) {
@@ -18,6 +20,8 @@ double rise_series(double x) {
   for (int n = 3; n < kSeriesTerms; ++n) {
     term *= -x / n;
     sum += term;
+    // The terms fall from here on (n > x): one below the sum's last bit ends it.
+    if (std::abs(term) <= kLastBit * std::abs(sum)) break;
   }
   return sum;
 }
@@ -32,6 +36,7 @@ double rise_squared_series(double x) {
     two *= 2.0;
     const double term = (two - 2.0) * power;
     sum += (n % 2 == 1) ? term : -term;
+    if (term <= kLastBit * std::abs(sum)) break;
   }
   return sum;
 }
@@ -39,8 +44,11 @@ double rise_squared_series(double x) {
 }  // namespace
 
 DecayIntegrals decay_integrals(double h, double tau) {
+  return decay_integrals(h, tau, -std::expm1(-h / tau));
+}
+
+DecayIntegrals decay_integrals(double h, double tau, double fall) {
   const double x = h / tau;
-  const double fall = -std::expm1(-x);  // 1 - exp(-x)
   DecayIntegrals i{};
   i.decay = tau * fall;
   i.decay_squared = -std::expm1(-2.0 * x) * tau * 0.5;

@@ -18,6 +18,8 @@ struct DecayIntegrals {
 /// The integrals over a piece of h [s] at relaxation time tau [s], each to a few eps of itself
 /// at any h / tau >= 0 (the rise's by their Taylor series below h / tau = 1).
 DecayIntegrals decay_integrals(double h, double tau);
+/// The same where the caller has `fall` = 1 - exp(-h / tau) (by expm1) already.
+DecayIntegrals decay_integrals(double h, double tau, double fall);
 
 /// The integrals of an arm's stress sigma(s) = sigma0 E(s) + c D(s) (c = E_j w' tau, its steady
 /// value) over [0, h] [N s / m], of its square [N^2 s / m^2] and of sigma E [N s / m].

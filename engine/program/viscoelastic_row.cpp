@@ -813,21 +813,23 @@ class ViscoelasticRowDrive::Row {
     relaxed_parts_.resize(springs_.terms.size());
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
       const PronyTerm& term = springs_.terms[j];
-      // 1 - exp(-h / tau) by expm1 (h is mostly far below tau); 1 - exp(-2 h / tau) from it.
+      // 1 - exp(-h / tau) by expm1 (h is mostly far below tau), shared with the arms' advance.
       const double relaxed_part = -std::expm1(-h / term.time);
       relaxed_parts_[j] = relaxed_part;
-      const double once = relaxed_part * term.time;
-      const double twice = relaxed_part * (2.0 - relaxed_part) * 0.5 * term.time;
+      // The common history H(s) = history E(s) + steady D(s) (E = exp(-s / tau), D = 1 - E),
+      // the members' own parts decaying as E: integrals of E, D and their products taken whole
+      // (decay_integrals), so that a piece far shorter than tau keeps its digits.
+      const DecayIntegrals i = decay_integrals(h, term.time, relaxed_part);
       const double steady = term.modulus * rate_ * term.time;
       const double history = arms_.history(j);
-      const double transient = history - steady;
       const double decaying = arms_.arm_force(j) - n * history;
-      load_integral += n * (steady * h + transient * once) + decaying * once;
-      const double history_squared =
-          steady * steady * h + 2.0 * steady * transient * once + transient * transient * twice;
+      load_integral += n * (history * i.decay + steady * i.rise) + decaying * i.decay;
+      const double history_squared = history * history * i.decay_squared +
+                                     2.0 * history * steady * i.rise_decay +
+                                     steady * steady * i.rise_squared;
       const double squares = n * history_squared +
-                             2.0 * decaying * (steady * once + transient * twice) +
-                             std::max(own_squares_[j], 0.0) * twice;
+                             2.0 * decaying * (history * i.decay_squared + steady * i.rise_decay) +
+                             std::max(own_squares_[j], 0.0) * i.decay_squared;
       dissipated += squares / (term.modulus * term.time);
       const double remaining = 1.0 - relaxed_part;
       own_squares_[j] *= remaining * remaining;
