@@ -258,8 +258,8 @@ class ViscoelasticRowDrive::Row {
     // At most one a spring: room for all at once, not grown by copies.
     first_events_.reserve(state_.size());
     for (std::size_t k = 0; k < state_.size(); ++k) {
-      if (const auto delay = next_event_delay(k)) {
-        first_events_.push_back({time_ + *delay, k, state_[k].version});
+      if (const double delay = event_delay(k); delay < kNoDelay) {
+        first_events_.push_back({time_ + delay, k, state_[k].version});
         release_hint_ = delay;
       }
     }
@@ -1298,9 +1298,20 @@ class ViscoelasticRowDrive::Row {
 
   /// Spring k's next event from now within the segment, queued; none beyond its end.
   void schedule(std::size_t k) {
-    if (const auto delay = next_event_delay(k)) {
-      queue_.push({time_ + *delay, k, state_[k].version});
+    if (const double delay = event_delay(k); delay < kNoDelay) {
+      queue_.push({time_ + delay, k, state_[k].version});
     }
+  }
+
+  /// No event within the segment, for event_delay and contact_delay.
+  static constexpr double kNoDelay = HUGE_VAL;
+
+  /// next_event_delay() as a number, kNoDelay for none: a spring without tangential arms (the
+  /// most) takes contact_delay() as it comes, where an optional passed up through the stack,
+  /// written in two parts and read whole, stalled every call.
+  double event_delay(std::size_t k) const {
+    if (!state_[k].shear) return contact_delay(k);
+    return next_event_delay(k).value_or(kNoDelay);
   }
 
   std::optional<double> next_event_delay(std::size_t k) const {
@@ -1321,15 +1332,21 @@ class ViscoelasticRowDrive::Row {
 
   /// Spring k's next touch, release, glue or let-go from now within the segment.
   std::optional<double> contact_event_delay(std::size_t k) const {
-    if (springs_.edge) return next_event_delay_at_edge(k);
+    const double delay = contact_delay(k);
+    return delay < kNoDelay ? std::optional<double>(delay) : std::nullopt;
+  }
+
+  /// contact_event_delay() as a number, kNoDelay for none.
+  double contact_delay(std::size_t k) const {
+    if (springs_.edge) return next_event_delay_at_edge(k).value_or(kNoDelay);
     const ViscoelasticSpringState& s = state_[k];
     const double span = end_ - time_;
     const double stretch = depth_ - springs_.images[k];
     if (s.phase == ViscoelasticSpringPhase::untouched) {
       if (stretch >= 0.0) return 0.0;
-      if (rate_ <= 0.0) return std::nullopt;
+      if (rate_ <= 0.0) return kNoDelay;
       const double delay = -stretch / rate_;
-      return delay <= span ? std::optional<double>(delay) : std::nullopt;
+      return delay <= span ? delay : kNoDelay;
     }
     // A touch or a release leaves the spring at zero overlap or zero load up to rounding: it
     // acts at once only when the sign says so and the motion leads on (no back-and-forth at
@@ -1347,7 +1364,7 @@ class ViscoelasticRowDrive::Row {
       overlap.slope = rate_;
       const double now = overlap.at(0.0);
       if (now >= 0.0 && overlap.slope_at(0.0) > 0.0 && time_ > s.released_at) return 0.0;
-      return first_crossing(overlap, std::max(now, 0.0), span);
+      return first_crossing(overlap, std::max(now, 0.0), span).value_or(kNoDelay);
     }
     FewValues<double> stresses(springs_.terms.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(member(s), j);
@@ -1357,9 +1374,9 @@ class ViscoelasticRowDrive::Row {
     // A spring at zero load that stays there (met at the turn of a hold) stays pressed, as an
     // elastic row counts a spring whose image the depth reaches.
     if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
-    if (now >= 0.0 && loads_up(load)) return std::nullopt;
+    if (now >= 0.0 && loads_up(load)) return kNoDelay;
     if (now < 0.0) load.constant -= now;
-    return first_crossing(load, 0.0, span, release_hint_);
+    return first_crossing(load, 0.0, span, release_hint_).value_or(kNoDelay);
   }
 
   // A held segment (fixed load, a machine spring): the depth follows motion_, rebuilt at every
