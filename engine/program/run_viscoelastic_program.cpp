@@ -278,6 +278,15 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     }
     observers.emit(event);
   };
+  // Without adhesion, a row reaching past the contact or an observer of the springs' changes,
+  // on_change does nothing: the drive then builds no states around each change.
+  const bool listens =
+      extended || adhesive || observers.wants(EventKind::spring_touched) ||
+      observers.wants(EventKind::spring_lifted) || observers.wants(EventKind::spring_glued) ||
+      observers.wants(EventKind::spring_detached) || observers.wants(EventKind::spring_slipped) ||
+      observers.wants(EventKind::spring_stuck);
+  const ViscoelasticRowDrive::OnChange report =
+      listens ? ViscoelasticRowDrive::OnChange(on_change) : ViscoelasticRowDrive::OnChange();
   std::vector<ViscoelasticRowSample> no_samples;
   ViscoelasticRowEnergy before = drive.energy();
   AxisWork total;
@@ -311,7 +320,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       const bool in_contact = drive.sample().pressed > 0;
       hold_let_gos = adhesive && !drives_through_spring(control);
       const HeldStageEnd held_end =
-          run_held_stage(drive, stage, control, held, tangential, hold_let_gos, on_change);
+          run_held_stage(drive, stage, control, held, tangential, hold_let_gos, report);
       held = held_end.held;
       if (hold_let_gos && held_end.separated) {
         // The flight: the stage ends at the critical point, the first let-go told, the rest not.
@@ -331,7 +340,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     } else if (!stage.until_separation) {
       drive.run(
           {sd.seconds, rate, sd.end, std::nullopt, tangential_rate, tangential.at(1.0, false)},
-          false, {}, no_samples, on_change);
+          false, {}, no_samples, report);
       held = sd.end;
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
@@ -339,7 +348,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
         for (int piece = 0; piece < kMostSeparationPieces && !separated && !drive.limited();
              ++piece) {
           separated = drive.run({sd.seconds, rate, std::nullopt, std::nullopt, tangential_rate},
-                                true, {}, no_samples, on_change);
+                                true, {}, no_samples, report);
         }
       }
       held = drive.sample().depth;

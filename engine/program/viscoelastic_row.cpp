@@ -2053,13 +2053,13 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
     if (!event) break;
     row.advance_to(event->time);
     // A release or a let-go is reported as the spring leaves (the state before it is removed,
-    // as an elastic program's lift), a touch or a glue with the spring in contact.
-    const ViscoelasticRowSample before = row.sample();
-    before_last_change_ = before;
+    // as an elastic program's lift), a touch or a glue with the spring in contact; with no one
+    // to report to, neither state is built.
+    if (on_change) before_last_change_ = row.sample();
     const ViscoelasticRowChange change = row.apply(event->spring, counts_);
     const bool leaves =
         change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
-    if (on_change) on_change(change, leaves ? before : row.sample());
+    if (on_change) on_change(change, leaves ? before_last_change_ : row.sample());
     if (stop_at_separation && leaves && !row.in_contact()) return true;
     if (counts_.events() >= event_limit_) {
       limited_ = true;

@@ -154,7 +154,8 @@ class ViscoelasticRowDrive {
   /// Whether the last let-go broke a compressed spring (its tangential load alone): it lost its
   /// glue and stays pressed.
   bool last_let_go_by_shear() const;
-  /// The state just before the last change (an on_change may ask for it).
+  /// The state just before the last change (an on_change may ask for it; kept only where
+  /// run() was given one).
   const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }
   /// The energy so far (a pass over the springs).
   ViscoelasticRowEnergy energy();
