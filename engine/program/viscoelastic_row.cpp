@@ -1363,7 +1363,17 @@ class ViscoelasticRowDrive::Row {
       overlap.constant = stretch - overlap.constant;
       overlap.slope = rate_;
       const double now = overlap.at(0.0);
-      if (now >= 0.0 && overlap.slope_at(0.0) > 0.0 && time_ > s.released_at) return 0.0;
+      const double closing = overlap.slope_at(0.0);
+      if (now >= 0.0 && closing > 0.0 && time_ > s.released_at) return 0.0;
+      // The indenter leaving faster than the surface comes back, which comes back ever slower
+      // (the overlap's decays all below zero: its slope only falls): the overlap falls from
+      // where it stands, and the spring is not met again in the segment. first_crossing finds
+      // none as well, at the cost of its pieces (most of a withdrawal's free springs).
+      if (closing < 0.0 &&
+          std::all_of(overlap.decays.begin(), overlap.decays.end(),
+                      [](const ExponentialDecay& d) { return d.amplitude <= 0.0; })) {
+        return kNoDelay;
+      }
       return first_crossing(overlap, std::max(now, 0.0), span).value_or(kNoDelay);
     }
     FewValues<double> stresses(springs_.terms.size());
