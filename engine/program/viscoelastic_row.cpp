@@ -1307,8 +1307,8 @@ class ViscoelasticRowDrive::Row {
   static constexpr double kNoDelay = HUGE_VAL;
 
   /// next_event_delay() as a number, kNoDelay for none: a spring without tangential arms (the
-  /// most) takes contact_delay() as it comes, where an optional passed up through the stack,
-  /// written in two parts and read whole, stalled every call.
+  /// most) takes contact_delay() as it comes. An optional returned up through the stack is
+  /// written in two parts and read whole: a store-forwarding stall at every call.
   double event_delay(std::size_t k) const {
     if (!state_[k].shear) return contact_delay(k);
     return next_event_delay(k).value_or(kNoDelay);
