@@ -1060,6 +1060,15 @@ class ViscoelasticRowDrive::Row {
     }
     return load;
   }
+  /// A member of the tangential set's line load q_x [N/m] from now, its stretch moving at u_x'.
+  ExponentialSum tangential_load_over(const ViscoelasticSpringState& s) const {
+    FewValues<double> stresses(tangential_terms_.size());
+    for (std::size_t j = 0; j < stresses.size(); ++j) {
+      stresses[j] = tangential_arms_.stress(s.shear->member, j);
+    }
+    return line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
+                          stresses, tangential_rate_);
+  }
   /// |q_x| [N/m] below which glued spring k holds with no elongation (HoldingTangentialLoads).
   double holding_tangential_load(std::size_t k) const { return holding_loads_.at(k); }
   /// The front spring k's glue: now where some spring of the sticking run from k outwards holds
@@ -1080,13 +1089,7 @@ class ViscoelasticRowDrive::Row {
     }
     run_memo_.record(time_, k, j, false);
     const ViscoelasticSpringState& s = state_[k];
-    FewValues<double> stresses(tangential_terms_.size());
-    for (std::size_t j = 0; j < stresses.size(); ++j) {
-      stresses[j] = tangential_arms_.stress(s.shear->member, j);
-    }
-    const ExponentialSum load =
-        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
-                       stresses, tangential_rate_);
+    const ExponentialSum load = tangential_load_over(s);
     const double holding = holding_tangential_load(k);
     return first_crossing(load, load.at(0.0) > 0.0 ? holding : -holding, end_ - time_);
   }
@@ -1212,13 +1215,7 @@ class ViscoelasticRowDrive::Row {
       return {s.shear->slide->stick_delay(time_, span, just_changed), kStickEvent};
     if (!s.shear->in_set) return {std::nullopt, 0};
     const ExponentialSum normal = load_over(s, depth_ - springs_.images[k]);
-    FewValues<double> stresses(tangential_terms_.size());
-    for (std::size_t j = 0; j < stresses.size(); ++j) {
-      stresses[j] = tangential_arms_.stress(s.shear->member, j);
-    }
-    const ExponentialSum tangential =
-        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
-                       stresses, tangential_rate_);
+    const ExponentialSum tangential = tangential_load_over(s);
     const double mu = *springs_.friction;
     std::optional<double> best;
     std::int8_t kind = 0;
@@ -1880,13 +1877,7 @@ class ViscoelasticRowDrive::Row {
   std::optional<double> tangential_let_go_delay(std::size_t k, const ExponentialSum& normal,
                                                 double span) const {
     const ViscoelasticSpringState& s = state_[k];
-    FewValues<double> stresses(tangential_terms_.size());
-    for (std::size_t j = 0; j < stresses.size(); ++j) {
-      stresses[j] = tangential_arms_.stress(s.shear->member, j);
-    }
-    const ExponentialSum tangential =
-        line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
-                       stresses, tangential_rate_);
+    const ExponentialSum tangential = tangential_load_over(s);
     const ViscoelasticEdge& edge = *springs_.edge;
     const double x = springs_.spacing * static_cast<double>(k + 1);
     const auto lets_go = [&](double at) {
