@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "engine/accuracy/adaptive_resolution.hpp"
 #include "engine/accuracy/dugdale_rows.hpp"
@@ -175,6 +176,15 @@ RunResult run_on_continuum(const Scene& scene, const ObserverList& observers,
   return std::move(run.result);
 }
 
+/// The friction outputs a run over several rows leaves the finest row's: the stick/slip front is
+/// not located between springs (docs/friction.md).
+void warn_friction_uncovered(const Scene& scene, std::string_view fields, RunResult& result) {
+  result.warnings.push_back(
+      fmt::format("friction: {} are the finest row's ({} springs), not "
+                  "covered by {}'s estimates",
+                  fields, result.springs, to_string(scene.plan.driver)));
+}
+
 RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) {
   // The rate law's row takes an elastic or a relaxing bulk.
   if (scene.front_speed_law) {
@@ -200,14 +210,9 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
       case RouteDriver::one_row:
         return run_viscoelastic_program(scene, observers);
     }
-    if (scene.friction) {
-      // The works, friction's included, are combined across the rows; the stick/slip front is
-      // not located between springs (docs/viscoelastic.md "Friction").
-      result.warnings.push_back(fmt::format(
-          "friction: springs_sliding and stick_radius are the finest row's ({} springs), not "
-          "covered by {}'s estimates",
-          result.springs, to_string(scene.plan.driver)));
-    }
+    // The works, friction's included, are combined across the rows (docs/viscoelastic.md
+    // "Friction").
+    if (scene.friction) warn_friction_uncovered(scene, "springs_sliding and stick_radius", result);
     return result;
   }
   RunResult result;
@@ -223,11 +228,8 @@ RunResult run_on_program_row(const Scene& scene, const ObserverList& observers) 
       break;
   }
   if (scene.friction && scene.plan.driver != RouteDriver::one_row) {
-    // The stick/slip front is not located between springs (docs/friction.md).
-    result.warnings.push_back(fmt::format(
-        "friction: springs_sliding, stick_radius and dissipated_by_friction are the finest "
-        "row's ({} springs), not covered by {}'s estimates",
-        result.springs, to_string(scene.plan.driver)));
+    warn_friction_uncovered(scene, "springs_sliding, stick_radius and dissipated_by_friction",
+                            result);
   }
   return result;
 }
