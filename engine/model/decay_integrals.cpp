@@ -1,7 +1,9 @@
 // A Maxwell arm's integrals over a piece, accurate for short pieces.
 #include "engine/model/decay_integrals.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace mdrsim {
 namespace {
@@ -12,13 +14,22 @@ constexpr double kSeriesBelow = 1.0;
 constexpr int kSeriesTerms = 26;
 /// A term below this share of the sum changes none of its bits.
 constexpr double kLastBit = 0x1p-54;
+/// Below it relaxed_part sums its series.
+constexpr double kShortPiece = 0x1p-7;
+
+/// 1 / n for the series' terms: a product where a division per term would stall each step.
+constexpr std::array<double, kSeriesTerms> kInverses = [] {
+  std::array<double, kSeriesTerms> inverses{};
+  for (int n = 1; n < kSeriesTerms; ++n) inverses[static_cast<std::size_t>(n)] = 1.0 / n;
+  return inverses;
+}();
 
 /// x - 1 + exp(-x) = sum_{n >= 2} (-x)^n / n!.
 double rise_series(double x) {
   double term = x * x / 2.0;  // (-x)^2 / 2!
   double sum = term;
   for (int n = 3; n < kSeriesTerms; ++n) {
-    term *= -x / n;
+    term *= -x * kInverses[static_cast<std::size_t>(n)];
     sum += term;
     // The terms fall from here on (n > x): one below the sum's last bit ends it.
     if (std::abs(term) <= kLastBit * std::abs(sum)) break;
@@ -32,7 +43,7 @@ double rise_squared_series(double x) {
   double two = 2.0;            // 2^(n-1) at n = 2
   double sum = 0.0;
   for (int n = 3; n < kSeriesTerms; ++n) {
-    power *= x / n;
+    power *= x * kInverses[static_cast<std::size_t>(n)];
     two *= 2.0;
     const double term = (two - 2.0) * power;
     sum += (n % 2 == 1) ? term : -term;
@@ -43,22 +54,36 @@ double rise_squared_series(double x) {
 
 }  // namespace
 
+double relaxed_part(double x) {
+  if (x < kShortPiece) {
+    // x - x^2/2! + ... - x^6/6!: the next term is below 2^-53 of the sum at x < 2^-7, and the
+    // terms fall by at least 2^-8 each, so Horner's rounding stays within an ulp.
+    return x * (1.0 + x * (-1.0 / 2.0 +
+                           x * (1.0 / 6.0 +
+                                x * (-1.0 / 24.0 + x * (1.0 / 120.0 + x * (-1.0 / 720.0 +
+                                                                           x * (1.0 / 5040.0)))))));
+  }
+  return -std::expm1(-x);
+}
+
 DecayIntegrals decay_integrals(double h, double tau) {
-  return decay_integrals(h, tau, -std::expm1(-h / tau));
+  return decay_integrals(h, tau, relaxed_part(h / tau));
 }
 
 DecayIntegrals decay_integrals(double h, double tau, double fall) {
   const double x = h / tau;
   DecayIntegrals i{};
   i.decay = tau * fall;
-  i.decay_squared = -std::expm1(-2.0 * x) * tau * 0.5;
+  // 1 - exp(-2x) = (1 - exp(-x)) (1 + exp(-x)): from `fall` to a few eps, with no second call.
+  const double fall_twice = fall * (2.0 - fall);
+  i.decay_squared = fall_twice * tau * 0.5;
   i.rise_decay = tau * fall * fall * 0.5;
   if (x < kSeriesBelow) {
     i.rise = tau * rise_series(x);
     i.rise_squared = tau * rise_squared_series(x);
   } else {
     i.rise = tau * (x - fall);
-    i.rise_squared = tau * (x - 2.0 * fall - std::expm1(-2.0 * x) * 0.5);
+    i.rise_squared = tau * (x - 2.0 * fall + fall_twice * 0.5);
   }
   return i;
 }

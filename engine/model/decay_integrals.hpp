@@ -6,6 +6,10 @@
 
 namespace mdrsim {
 
+/// 1 - exp(-x) for x >= 0 to about an ulp: by its Taylor series on short pieces (x < 2^-7, an
+/// event's usual step against a relaxation time: no call), by expm1 beyond.
+double relaxed_part(double x);
+
 /// Over [0, h] [s] with E(s) = exp(-s / tau) and D(s) = 1 - E(s), each [s]:
 struct DecayIntegrals {
   double decay;          ///< int E = tau (1 - exp(-x))

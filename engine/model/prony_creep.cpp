@@ -48,36 +48,67 @@ RetardationModes::RetardationModes(double relaxed_modulus, std::span<const Prony
     double amplitude = 0.0;
     for (std::size_t g = 0; g < count; ++g) amplitude -= groups_[g].modulus * modes_[k][g];
     stretch_amplitudes_.push_back(amplitude);
+    stretch_of_modes_.push_back(amplitude / relaxed_modulus_);
+  }
+  // alpha_k = <v_k, y0> / <v_k, v_k>, <u, v> = sum_g E_g u_g v_g + (sum E_g u_g)(sum E_g v_g) / E*,
+  // with y0_g = sigma_g / E_g (E_g y0_g = sigma_g): linear in sigma_g, its coefficients once here.
+  for (std::size_t k = 0; k < count; ++k) {
+    double weighted = 0.0;
+    for (std::size_t g = 0; g < count; ++g) weighted += groups_[g].modulus * modes_[k][g];
+    for (std::size_t g = 0; g < count; ++g) {
+      projections_.push_back((modes_[k][g] + weighted / relaxed_modulus_) / mode_norms_[k]);
+      stress_of_modes_.push_back(groups_[g].modulus * modes_[k][g]);
+    }
+  }
+  for (std::size_t j = 0; j < terms_.size(); ++j) {
+    shares_.push_back(terms_[j].modulus / groups_[group_of_[j]].modulus);
+  }
+  // With no residuals sigma_j = share_j sigma_g, and the shares of a group sum to one: its terms
+  // store sigma_g^2 / (2 E_g) together.
+  for (std::size_t k = 0; k < count; ++k) {
+    for (std::size_t l = 0; l < count; ++l) {
+      double form = 0.5 * relaxed_modulus_ * stretch_of_modes_[k] * stretch_of_modes_[l];
+      for (std::size_t g = 0; g < count; ++g) {
+        form += 0.5 * groups_[g].modulus * modes_[k][g] * modes_[l][g];
+      }
+      stored_forms_.push_back(form);
+    }
   }
 }
 
 FewValues<double> RetardationModes::amplitudes(std::span<const double> group_stresses) const {
-  // alpha_k = <v_k, y0> / <v_k, v_k>, <u, v> = sum_g E_g u_g v_g + (sum E_g u_g)(sum E_g v_g) / E*,
-  // with y0_g = sigma_g / E_g: E_g y0_g = sigma_g.
-  double stress_sum = 0.0;
-  for (const double sigma : group_stresses) stress_sum += sigma;
   FewValues<double> alpha(rates_.size());
-  for (std::size_t k = 0; k < rates_.size(); ++k) {
-    double diagonal = 0.0, weighted = 0.0;
-    for (std::size_t g = 0; g < groups_.size(); ++g) {
-      diagonal += modes_[k][g] * group_stresses[g];
-      weighted += groups_[g].modulus * modes_[k][g];
-    }
-    alpha[k] = (diagonal + weighted * stress_sum / relaxed_modulus_) / mode_norms_[k];
-  }
+  amplitudes(group_stresses, alpha);
   return alpha;
+}
+
+void RetardationModes::amplitudes(std::span<const double> group_stresses,
+                                  std::span<double> alpha) const {
+  const std::size_t count = groups_.size();
+  for (std::size_t k = 0; k < rates_.size(); ++k) {
+    double sum = 0.0;
+    for (std::size_t g = 0; g < count; ++g) sum += projections_[k * count + g] * group_stresses[g];
+    alpha[k] = sum;
+  }
 }
 
 void free_spring_numbers(const RetardationModes& modes, std::span<const double> stresses,
                          std::span<double> amplitudes, std::span<double> residuals) {
   const std::span<const PronyTerm> terms = modes.terms();
+  if (modes.groups().size() == terms.size()) {
+    // Each term its own group (distinct relaxation times, the usual case): the terms are the
+    // groups, reordered, and no term has a residual.
+    FewValues<double> group_stresses(terms.size());
+    for (std::size_t j = 0; j < terms.size(); ++j) group_stresses[modes.group_of(j)] = stresses[j];
+    modes.amplitudes(group_stresses, amplitudes);
+    std::fill(residuals.begin(), residuals.end(), 0.0);
+    return;
+  }
   FewValues<double> group_stresses(modes.groups().size(), 0.0);
   for (std::size_t j = 0; j < terms.size(); ++j) group_stresses[modes.group_of(j)] += stresses[j];
-  const FewValues<double> alpha = modes.amplitudes(group_stresses);
-  std::copy(alpha.begin(), alpha.end(), amplitudes.begin());
+  modes.amplitudes(group_stresses, amplitudes);
   for (std::size_t j = 0; j < terms.size(); ++j) {
-    const std::size_t g = modes.group_of(j);
-    residuals[j] = stresses[j] - terms[j].modulus / modes.groups()[g].modulus * group_stresses[g];
+    residuals[j] = stresses[j] - modes.share_of_group(j) * group_stresses[modes.group_of(j)];
   }
 }
 
@@ -105,10 +136,36 @@ FewValues<double> FreeSpringCreepRef::stresses(double t, double& stretch) const 
   for (std::size_t k = 0; k < decays.size(); ++k) {
     // exp(-mu 0) is 1 exactly, as mode_stretch and stresses(t) read it.
     decays[k] = t == 0.0 ? 1.0 : std::exp(-modes_->rates()[k] * t);
-    stretch +=
-        modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus() * decays[k];
+    stretch += modes_->stretch_of_mode(k) * amplitudes_[k] * decays[k];
   }
   return stresses_from_decays(t, decays);
+}
+
+double FreeSpringCreepRef::stored(double t) const {
+  const bool residuals =
+      std::any_of(residuals_.begin(), residuals_.end(), [](double r) { return r != 0.0; });
+  if (residuals) {
+    double w = 0.0;
+    const FewValues<double> sigma = stresses(t, w);
+    double e = 0.5 * modes_->relaxed_modulus() * w * w;
+    const std::span<const PronyTerm> terms = modes_->terms();
+    for (std::size_t j = 0; j < terms.size(); ++j)
+      e += 0.5 * sigma[j] * sigma[j] / terms[j].modulus;
+    return e;
+  }
+  const std::size_t count = amplitudes_.size();
+  FewValues<double> parts(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    // exp(-mu 0) is 1 exactly, as stresses(t) reads it.
+    parts[k] = t == 0.0 ? amplitudes_[k] : amplitudes_[k] * std::exp(-modes_->rates()[k] * t);
+  }
+  double e = 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    double row = 0.0;
+    for (std::size_t l = 0; l < count; ++l) row += modes_->stored_form(k, l) * parts[l];
+    e += row * parts[k];
+  }
+  return e;
 }
 
 FewValues<double> FreeSpringCreepRef::stresses_from_decays(double t,
@@ -118,7 +175,7 @@ FewValues<double> FreeSpringCreepRef::stresses_from_decays(double t,
   for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
     const double decay = amplitudes_[k] * decays[k];
     for (std::size_t g = 0; g < groups.size(); ++g) {
-      group_stress[g] += groups[g].modulus * modes_->mode(k, g) * decay;
+      group_stress[g] += modes_->stress_of_mode(k, g) * decay;
     }
   }
   const std::span<const PronyTerm> terms = modes_->terms();
@@ -128,7 +185,7 @@ FewValues<double> FreeSpringCreepRef::stresses_from_decays(double t,
     // A term alone in its group has no residual (zero times its decay, which need not be read).
     const double residual =
         residuals_[j] == 0.0 ? residuals_[j] : residuals_[j] * std::exp(-t / terms[j].time);
-    out[j] = terms[j].modulus / groups[g].modulus * group_stress[g] + residual;
+    out[j] = modes_->share_of_group(j) * group_stress[g] + residual;
   }
   return out;
 }
@@ -150,8 +207,7 @@ void FreeSpringCreepRef::stretch_from(double t0, ExponentialSum& w) const {
 }
 
 double FreeSpringCreepRef::mode_stretch(std::size_t k, double t) const {
-  const double at_release =
-      modes_->stretch_amplitude(k) * amplitudes_[k] / modes_->relaxed_modulus();
+  const double at_release = modes_->stretch_of_mode(k) * amplitudes_[k];
   // exp(-mu 0) is 1 exactly: a spring read as it is released needs no call.
   return t == 0.0 ? at_release : at_release * std::exp(-modes_->rates()[k] * t);
 }

@@ -35,8 +35,23 @@ class RetardationModes {
   double mode(std::size_t k, std::size_t g) const { return modes_[k][g]; }
   /// -sum_g E_g v_kg: E* times the stretch of mode k at unit amplitude.
   double stretch_amplitude(std::size_t k) const { return stretch_amplitudes_[k]; }
+  /// stretch_amplitude(k) / E*: the stretch of mode k at unit amplitude [m].
+  double stretch_of_mode(std::size_t k) const { return stretch_of_modes_[k]; }
+  /// E_g v_kg: group g's stress in mode k at unit amplitude.
+  double stress_of_mode(std::size_t k, std::size_t g) const {
+    return stress_of_modes_[k * groups_.size() + g];
+  }
+  /// E_j / E_g(j): term j's share of its group's stress.
+  double share_of_group(std::size_t j) const { return shares_[j]; }
+  /// Q_kl = E* s_k s_l / 2 + sum_g (E_g v_kg)(E_g v_lg) / (2 E_g), s_k the stretch of mode k: a
+  /// free spring with no residuals stores sum_kl Q_kl u_k u_l [J/m] at mode parts u_k.
+  double stored_form(std::size_t k, std::size_t l) const {
+    return stored_forms_[k * rates_.size() + l];
+  }
   /// alpha_k of group stresses sigma_g [N/m]: y = sum_k alpha_k v_k at the release.
   FewValues<double> amplitudes(std::span<const double> group_stresses) const;
+  /// The same into `alpha` (one per mode), no temporaries: a row releases a spring an event.
+  void amplitudes(std::span<const double> group_stresses, std::span<double> alpha) const;
 
  private:
   double relaxed_modulus_;
@@ -47,6 +62,12 @@ class RetardationModes {
   std::vector<std::vector<double>> modes_;
   std::vector<double> stretch_amplitudes_;
   std::vector<double> mode_norms_;  ///< <v_k, v_k> in the pencil's inner product
+  /// alpha_k = sum_g projections_[k groups + g] sigma_g: the pencil's projection per unit stress.
+  std::vector<double> projections_;
+  std::vector<double> stretch_of_modes_;
+  std::vector<double> stress_of_modes_;  ///< E_g v_kg, row k
+  std::vector<double> shares_;           ///< E_j / E_g(j)
+  std::vector<double> stored_forms_;     ///< Q_kl, row k
 };
 
 /// A free spring's numbers held elsewhere (a row's flat per-spring store), read in place: its
@@ -63,6 +84,9 @@ class FreeSpringCreepRef {
   FewValues<double> stresses(double t) const;
   /// stretch(t) and stresses(t), the same numbers, each mode's decay read once for both.
   FewValues<double> stresses(double t, double& stretch) const;
+  /// What the spring stores at t [J/m]: E* w^2 / 2 + sum_j sigma_j^2 / (2 E_j), from its modes'
+  /// parts alone where it has no residuals (each term its own group: always), to a few eps.
+  double stored(double t) const;
   /// w(t0 + s) as an exponential sum in s [s].
   ExponentialSum stretch_from(double t0) const;
   /// The same into `w` (its decays' storage reused).

@@ -182,7 +182,8 @@ std::optional<double> one_decay_start(double a, double b, double c, double tau, 
 // kMostNewtonSteps hand the piece to TOMS 748.
 constexpr int kMostNewtonSteps = 60;
 std::optional<double> one_signed_decays_root(const ExponentialSum& f, double level, double lo,
-                                             double hi, double g_lo, std::optional<double> near) {
+                                             double hi, double g_lo, std::optional<double> near,
+                                             double slope_sign = 0.0) {
   const bool convex = std::any_of(f.decays.begin(), f.decays.end(),
                                   [](const ExponentialDecay& d) { return d.amplitude > 0.0; });
   const bool concave = std::any_of(f.decays.begin(), f.decays.end(),
@@ -206,18 +207,27 @@ std::optional<double> one_signed_decays_root(const ExponentialSum& f, double lev
   const bool foresee = near.has_value() && start == near;
   const double eps = std::numeric_limits<double>::epsilon();
   double shortest = HUGE_VAL;
-  for (const ExponentialDecay& d : f.decays) shortest = std::min(shortest, d.time);
+  // Each decay's rate 1 / tau once: a step multiplies by it (a division a decay and step would
+  // stall every step on its latency).
+  InlineVector<double> rates;
+  for (const ExponentialDecay& d : f.decays) {
+    shortest = std::min(shortest, d.time);
+    rates.push_back(1.0 / d.time);
+  }
   for (int step = 0; step < kMostNewtonSteps; ++step) {
     double g = f.constant + f.slope * s;
     double slope = f.slope;
     double curvature = 0.0;
-    for (const ExponentialDecay& d : f.decays) {
-      const double e = d.amplitude * std::exp(-s / d.time);
+    for (std::size_t m = 0; m < f.decays.size(); ++m) {
+      const double e = f.decays[m].amplitude * std::exp(-s * rates[m]);
       g += e;
-      slope -= e / d.time;
-      if (halley || foresee) curvature += e / (d.time * d.time);
+      slope -= e * rates[m];
+      if (halley || foresee) curvature += e * rates[m] * rates[m];
     }
     g -= level;
+    // A piece taken whole on trust (hinted_first_crossing): g' keeps its sign on it at every point
+    // Newton reads, or the piece is not one.
+    if (slope_sign != 0.0 && !(slope * slope_sign > 0.0)) return std::nullopt;
     if (g == 0.0) return s;
     if (!(slope != 0.0)) return std::nullopt;
     double next = s - g / slope;
@@ -229,7 +239,7 @@ std::optional<double> one_signed_decays_root(const ExponentialSum& f, double lev
     const double taken = std::abs(next - s);
     if (taken <= 4.0 * eps * std::abs(next)) return next;
     if (foresee && taken <= 1e-3 * shortest &&
-        std::abs(curvature / (2.0 * slope)) * taken * taken <= eps * std::abs(next)) {
+        std::abs(curvature) * taken * taken <= 2.0 * eps * std::abs(next) * std::abs(slope)) {
       return next;
     }
     s = next;
@@ -268,10 +278,36 @@ std::optional<double> first_crossing(const ExponentialSum& f, double level, doub
   return first_crossing(f, level, span, std::nullopt);
 }
 
+/// first_crossing's root where a hint `near` in (0, span] is given, f's decays are of one sign
+/// (f' is monotone) and f moves towards the level at 0: Newton from the hint on [0, span] taken
+/// as one piece, every point it reads keeping f''s sign at 0, so f is monotone from 0 to the
+/// root and no crossing comes earlier. The pieces first_crossing would cut end where f' changes
+/// sign, which those points never pass: where this finds a root, first_crossing's Newton finds
+/// the same to its 4 eps (bit for bit where f' keeps its sign up to span: the same piece),
+/// without reading f at span or cutting the pieces. None otherwise.
+namespace {
+std::optional<double> hinted_first_crossing(const ExponentialSum& f, double level, double span,
+                                            double near) {
+  if (!(near > 0.0 && near <= span)) return std::nullopt;
+  const double g0 = f.at(0.0) - level;
+  const double slope0 = f.slope_at(0.0);
+  if (g0 == 0.0 || !(slope0 != 0.0) || (g0 > 0.0) == (slope0 > 0.0)) return std::nullopt;
+  const bool convex = std::any_of(f.decays.begin(), f.decays.end(),
+                                  [](const ExponentialDecay& d) { return d.amplitude > 0.0; });
+  const bool concave = std::any_of(f.decays.begin(), f.decays.end(),
+                                   [](const ExponentialDecay& d) { return d.amplitude < 0.0; });
+  if (convex == concave) return std::nullopt;
+  return one_signed_decays_root(f, level, 0.0, span, g0, near, slope0 > 0.0 ? 1.0 : -1.0);
+}
+}  // namespace
+
 std::optional<double> first_crossing(const ExponentialSum& f, double level, double span,
                                      std::optional<double> near) {
   if (!(span > 0.0)) {
     return std::nullopt;
+  }
+  if (near) {
+    if (const auto root = hinted_first_crossing(f, level, span, *near)) return root;
   }
   const auto g = [&](double s) { return f.at(s) - level; };
   ConstantPlusDecays derivative{f.slope, {}};
