@@ -344,6 +344,7 @@ class ViscoelasticRowDrive::Row {
       s.phase = ViscoelasticSpringPhase::free;
       pressed_.erase(k);
       pressed_images_.add(-springs_.images[k]);
+      pressed_image_squares_.add(-springs_.images[k] * springs_.images[k]);
       ++run.releases;
       if (pressed_.empty()) run.separation_time = time_;
     } else {
@@ -358,6 +359,7 @@ class ViscoelasticRowDrive::Row {
       s.phase = ViscoelasticSpringPhase::pressed;
       pressed_.insert(k);
       pressed_images_.add(springs_.images[k]);
+      pressed_image_squares_.add(springs_.images[k] * springs_.images[k]);
       if (springs_.friction && tangential_on_) glue_tangentially(s);
       ++run.touches;
       run.separation_time.reset();
@@ -382,9 +384,11 @@ class ViscoelasticRowDrive::Row {
                             dissipated_.value(),   surface_.value(),         jump_losses_.value(),
                             friction_.value()};
     CompensatedSum stored;
+    const std::optional<double> contact = contact_stored_by_sums();
+    if (contact) stored.add(*contact);
     for (std::size_t k = 0; k < state_.size(); ++k) {
       const ViscoelasticSpringState& s = state_[k];
-      if (in_contact(s)) {
+      if (in_contact(s) && !contact) {
         // stored_of(w, its stresses now), term by term as it sums them.
         const double w = depth_ - springs_.images[k];
         double e = 0.5 * springs_.relaxed_modulus * w * w;
@@ -408,6 +412,35 @@ class ViscoelasticRowDrive::Row {
     }
     e.stored = stored.value();
     return e;
+  }
+
+  /// What the springs in contact store [J/m] from the row's sums, O(terms): E* / 2 sum_i w_i^2
+  /// with sum_i w_i^2 = n d^2 - 2 d sum g_i + sum g_i^2, and per term sum_i sigma_ij^2 / (2 E_j)
+  /// with sum_i sigma_ij^2 = W H_j^2 + 2 H_j C_j + sum_i delta_ij^2 (count_contact_piece's
+  /// split). None where the sums are not kept (a held segment's) or where they cancel beyond
+  /// 2^10 of the result (then at most ten bits are lost to them): the springs are summed instead.
+  std::optional<double> contact_stored_by_sums() const {
+    if (held_ || !own_squares_current_) return std::nullopt;
+    const double n = static_cast<double>(pressed_.size());
+    if (n == 0.0) return 0.0;
+    const double images = pressed_images_.value();
+    const double squares = pressed_image_squares_.value();
+    const double stretches = n * depth_ * depth_ - 2.0 * depth_ * images + squares;
+    double stored = 0.5 * springs_.relaxed_modulus * stretches;
+    double gross = 0.5 * springs_.relaxed_modulus *
+                   (n * depth_ * depth_ + 2.0 * std::abs(depth_ * images) + squares);
+    if (!(stretches > 0.0)) return std::nullopt;
+    for (std::size_t j = 0; j < terms(); ++j) {
+      const double history = arms_.history(j);
+      const double decaying = arms_.arm_force(j) - n * history;
+      const double half_compliance = 0.5 / springs_.terms[j].modulus;
+      const double own = own_squares_[j];
+      if (!(own >= 0.0) || own_squares_gross_[j] > 0x1p10 * own) return std::nullopt;
+      stored += (n * history * history + 2.0 * history * decaying + own) * half_compliance;
+      gross += (n * history * history + 2.0 * std::abs(history * decaying) + own) * half_compliance;
+    }
+    if (!(stored > 0.0) || gross > 0x1p10 * stored) return std::nullopt;
+    return stored;
   }
 
   ViscoelasticRowSample sample() const {
@@ -480,7 +513,10 @@ class ViscoelasticRowDrive::Row {
     s.entry_time = arms_.enter(stresses, 1.0, {block(s), terms()});
     if (held_) return;
     // Its own part sigma_j - H_j is its offset, now.
-    for (std::size_t j = 0; j < terms(); ++j) own_squares_[j] += block(s)[j] * block(s)[j];
+    for (std::size_t j = 0; j < terms(); ++j) {
+      own_squares_[j] += block(s)[j] * block(s)[j];
+      own_squares_gross_[j] += block(s)[j] * block(s)[j];
+    }
   }
   /// Spring s leaves the arms now, just after count_pressed(s), which read its arm stresses
   /// [N/m] into counted_stresses; they are returned.
@@ -491,11 +527,15 @@ class ViscoelasticRowDrive::Row {
       for (std::size_t j = 0; j < terms(); ++j) {
         const double own = stresses[j] - arms_.history(j);
         own_squares_[j] -= own * own;
+        own_squares_gross_[j] += own * own;
       }
     }
     arms_.leave_read(stresses, 1.0);
     // An empty set's sums are zero exactly, not the roundoff of their additions and removals.
-    if (!held_ && arms_.weight() == 0.0) std::fill(own_squares_.begin(), own_squares_.end(), 0.0);
+    if (!held_ && arms_.weight() == 0.0) {
+      std::fill(own_squares_.begin(), own_squares_.end(), 0.0);
+      std::fill(own_squares_gross_.begin(), own_squares_gross_.end(), 0.0);
+    }
     return stresses;
   }
 
@@ -658,6 +698,7 @@ class ViscoelasticRowDrive::Row {
     pressed_.erase(k);
     glued_.erase(k);
     pressed_images_.add(-springs_.images[k]);
+    pressed_image_squares_.add(-springs_.images[k] * springs_.images[k]);
     ++run.let_gos;
     if (pressed_.empty()) run.separation_time = time_;
   }
@@ -721,6 +762,7 @@ class ViscoelasticRowDrive::Row {
     s.phase = ViscoelasticSpringPhase::free;
     pressed_.erase(k);
     pressed_images_.add(-springs_.images[k]);
+    pressed_image_squares_.add(-springs_.images[k] * springs_.images[k]);
     ++run.releases;
     if (pressed_.empty()) run.separation_time = time_;
   }
@@ -760,6 +802,7 @@ class ViscoelasticRowDrive::Row {
     s.phase = glue_gap ? ViscoelasticSpringPhase::glued : ViscoelasticSpringPhase::pressed;
     pressed_.insert(k);
     pressed_images_.add(springs_.images[k]);
+    pressed_image_squares_.add(springs_.images[k] * springs_.images[k]);
     run.separation_time.reset();
   }
   static double sum_of(std::span<const double> values) {
@@ -813,8 +856,8 @@ class ViscoelasticRowDrive::Row {
     relaxed_parts_.resize(springs_.terms.size());
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
       const PronyTerm& term = springs_.terms[j];
-      // 1 - exp(-h / tau) by expm1 (h is mostly far below tau), shared with the arms' advance.
-      const double relaxed_part = -std::expm1(-h / term.time);
+      // 1 - exp(-h / tau) (h is mostly far below tau: its series), shared with the arms' advance.
+      const double relaxed_part = mdrsim::relaxed_part(h / term.time);
       relaxed_parts_[j] = relaxed_part;
       // The common history H(s) = history E(s) + steady D(s) (E = exp(-s / tau), D = 1 - E),
       // the members' own parts decaying as E: integrals of E, D and their products taken whole
@@ -833,6 +876,7 @@ class ViscoelasticRowDrive::Row {
       dissipated += squares / (term.modulus * term.time);
       const double remaining = 1.0 - relaxed_part;
       own_squares_[j] *= remaining * remaining;
+      own_squares_gross_[j] *= remaining * remaining;
     }
     machine_work_.add(rate_ * load_integral);
     dissipated_.add(dissipated);
@@ -848,6 +892,7 @@ class ViscoelasticRowDrive::Row {
         own_squares_[j] += own * own;
       }
     }
+    own_squares_gross_ = own_squares_;
   }
 
   /// G_inf [Pa], the tangential arms' relaxed modulus.
@@ -1259,9 +1304,7 @@ class ViscoelasticRowDrive::Row {
 
   /// A free spring's dissipation from its last count to now: the energy it stores less.
   void count_free(ViscoelasticSpringState& s) {
-    double stretch = 0.0;
-    const FewValues<double> stresses = creep(s).stresses(time_ - s.released_at, stretch);
-    const double stored = stored_of(stretch, stresses);
+    const double stored = creep(s).stored(time_ - s.released_at);
     dissipated_.add(s.counted_stored - stored);
     s.counted_stored = stored;
     s.counted_at = time_;
@@ -1988,6 +2031,7 @@ class ViscoelasticRowDrive::Row {
   HoldingTangentialLoads holding_loads_;
   mutable RebindingRunMemo run_memo_;  ///< rebinding's last look along the sticking run
   CompensatedSum pressed_images_;
+  CompensatedSum pressed_image_squares_;  ///< sum of g_i^2 over the springs in contact [m^2]
   /// The events found as a segment begins (each spring's first in it: most of its events), in
   /// their order, read in turn; the events found later are queued. The next is the earlier head
   /// (a spring's stale entries skipped in both), as one queue of all would give it.
@@ -2011,6 +2055,8 @@ class ViscoelasticRowDrive::Row {
   std::vector<std::uint32_t> free_generation_;
   /// sum_i delta_ij^2 over the springs in contact [N^2/m^2], delta_ij = sigma_ij - H_j.
   std::vector<double> own_squares_;
+  /// The same with every removal added, decayed alike: how far own_squares_ may have cancelled.
+  std::vector<double> own_squares_gross_;
   bool own_squares_current_ = false;  ///< whether own_squares_ is, outside a held segment
   /// 1 - exp(-h / tau_j) of the last piece, which count_contact_piece hands to the arms.
   std::vector<double> relaxed_parts_;
