@@ -63,17 +63,6 @@ RetardationModes::RetardationModes(double relaxed_modulus, std::span<const Prony
   for (std::size_t j = 0; j < terms_.size(); ++j) {
     shares_.push_back(terms_[j].modulus / groups_[group_of_[j]].modulus);
   }
-  // With no residuals sigma_j = share_j sigma_g, and the shares of a group sum to one: its terms
-  // store sigma_g^2 / (2 E_g) together.
-  for (std::size_t k = 0; k < count; ++k) {
-    for (std::size_t l = 0; l < count; ++l) {
-      double form = 0.5 * relaxed_modulus_ * stretch_of_modes_[k] * stretch_of_modes_[l];
-      for (std::size_t g = 0; g < count; ++g) {
-        form += 0.5 * groups_[g].modulus * modes_[k][g] * modes_[l][g];
-      }
-      stored_forms_.push_back(form);
-    }
-  }
 }
 
 FewValues<double> RetardationModes::amplitudes(std::span<const double> group_stresses) const {
@@ -142,28 +131,18 @@ FewValues<double> FreeSpringCreepRef::stresses(double t, double& stretch) const 
 }
 
 double FreeSpringCreepRef::stored(double t) const {
-  const bool residuals =
-      std::any_of(residuals_.begin(), residuals_.end(), [](double r) { return r != 0.0; });
-  if (residuals) {
-    double w = 0.0;
-    const FewValues<double> sigma = stresses(t, w);
-    double e = 0.5 * modes_->relaxed_modulus() * w * w;
-    const std::span<const PronyTerm> terms = modes_->terms();
-    for (std::size_t j = 0; j < terms.size(); ++j)
-      e += 0.5 * sigma[j] * sigma[j] / terms[j].modulus;
-    return e;
-  }
-  const std::size_t count = amplitudes_.size();
-  FewValues<double> parts(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    // exp(-mu 0) is 1 exactly, as stresses(t) reads it.
-    parts[k] = t == 0.0 ? amplitudes_[k] : amplitudes_[k] * std::exp(-modes_->rates()[k] * t);
-  }
   double e = 0.0;
-  for (std::size_t k = 0; k < count; ++k) {
-    double row = 0.0;
-    for (std::size_t l = 0; l < count; ++l) row += modes_->stored_form(k, l) * parts[l];
-    e += row * parts[k];
+  for (std::size_t k = 0; k < amplitudes_.size(); ++k) {
+    // exp(-mu 0) is 1 exactly, as stresses(t) reads it.
+    const double part =
+        t == 0.0 ? amplitudes_[k] : amplitudes_[k] * std::exp(-modes_->rates()[k] * t);
+    e += modes_->stored_of_mode(k) * part * part;
+  }
+  const std::span<const PronyTerm> terms = modes_->terms();
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    if (residuals_[j] == 0.0) continue;  // a term alone in its group
+    const double residual = residuals_[j] * std::exp(-t / terms[j].time);
+    e += 0.5 * residual * residual / terms[j].modulus;
   }
   return e;
 }

@@ -43,11 +43,10 @@ class RetardationModes {
   }
   /// E_j / E_g(j): term j's share of its group's stress.
   double share_of_group(std::size_t j) const { return shares_[j]; }
-  /// Q_kl = E* s_k s_l / 2 + sum_g (E_g v_kg)(E_g v_lg) / (2 E_g), s_k the stretch of mode k: a
-  /// free spring with no residuals stores sum_kl Q_kl u_k u_l [J/m] at mode parts u_k.
-  double stored_form(std::size_t k, std::size_t l) const {
-    return stored_forms_[k * rates_.size() + l];
-  }
+  /// <v_k, v_k> / 2: what mode k stores at unit amplitude. A free spring stores
+  /// E* w^2 / 2 + sum_g E_g y_g^2 / 2 = <y, y> / 2 in the pencil's inner product, in which the
+  /// modes are orthogonal: sum_k <v_k, v_k> / 2 (alpha_k exp(-mu_k t))^2 (its residuals aside).
+  double stored_of_mode(std::size_t k) const { return 0.5 * mode_norms_[k]; }
   /// alpha_k of group stresses sigma_g [N/m]: y = sum_k alpha_k v_k at the release.
   FewValues<double> amplitudes(std::span<const double> group_stresses) const;
   /// The same into `alpha` (one per mode), no temporaries: a row releases a spring an event.
@@ -67,7 +66,6 @@ class RetardationModes {
   std::vector<double> stretch_of_modes_;
   std::vector<double> stress_of_modes_;  ///< E_g v_kg, row k
   std::vector<double> shares_;           ///< E_j / E_g(j)
-  std::vector<double> stored_forms_;     ///< Q_kl, row k
 };
 
 /// A free spring's numbers held elsewhere (a row's flat per-spring store), read in place: its
@@ -84,8 +82,9 @@ class FreeSpringCreepRef {
   FewValues<double> stresses(double t) const;
   /// stretch(t) and stresses(t), the same numbers, each mode's decay read once for both.
   FewValues<double> stresses(double t, double& stretch) const;
-  /// What the spring stores at t [J/m]: E* w^2 / 2 + sum_j sigma_j^2 / (2 E_j), from its modes'
-  /// parts alone where it has no residuals (each term its own group: always), to a few eps.
+  /// What the spring stores at t [J/m]: E* w^2 / 2 + sum_j sigma_j^2 / (2 E_j), as a sum of
+  /// squares: each mode's (stored_of_mode), and each residual's r_j^2 exp(-2 t / tau_j) / (2 E_j)
+  /// (a group's residuals sum to zero, so they are orthogonal to its share of the modes).
   double stored(double t) const;
   /// w(t0 + s) as an exponential sum in s [s].
   ExponentialSum stretch_from(double t0) const;

@@ -92,5 +92,36 @@ TEST(PronyCreep, TouchTime) {
   EXPECT_FALSE(touch_time(creep, 0.0, w0 - delta, -1e-3, 100.0).has_value());
 }
 
+// What a free spring stores, E* w^2 / 2 + sum_j sigma_j^2 / (2 E_j) from its stretch and stresses
+// (stresses_from_decays, built term by term), against stored(), which sums the modes' and the
+// residuals' squares (their orthogonality in the pencil's inner product): three terms, two of
+// them sharing a relaxation time (so with residuals), and one term alone. Both sum a few products
+// of the same decays: 1e-14 of the energy at release.
+TEST(PronyCreep, StoredEnergyAsASumOfSquares) {
+  const std::vector<std::vector<PronyTerm>> materials{{{4.0e6, 0.1}, {3.0e6, 0.02}, {2.0e6, 0.1}},
+                                                      {{9.0e6, 0.1}}};
+  const std::vector<std::vector<double>> releases{{-30.0, 12.0, 5.0}, {-25.0}};
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const std::vector<PronyTerm>& terms = materials[m];
+    const FreeSpringCreep creep(kRelaxed, terms, releases[m]);
+    const auto direct = [&](double t) {
+      double w = 0.0;
+      const FewValues<double> sigma = creep.numbers().stresses(t, w);
+      double e = 0.5 * kRelaxed * w * w;
+      for (std::size_t j = 0; j < terms.size(); ++j) {
+        e += 0.5 * sigma[j] * sigma[j] / terms[j].modulus;
+      }
+      return e;
+    };
+    const double at_release = direct(0.0);
+    ASSERT_GT(at_release, 0.0);
+    for (const double t : {0.0, 1e-4, 0.01, 0.05, 0.3, 2.0}) {
+      EXPECT_NEAR(creep.numbers().stored(t), direct(t), 1e-14 * at_release) << m << " " << t;
+    }
+    // It only falls: the free spring dissipates.
+    EXPECT_LT(creep.numbers().stored(0.3), creep.numbers().stored(0.05));
+  }
+}
+
 }  // namespace
 }  // namespace mdrsim
