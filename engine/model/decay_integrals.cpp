@@ -14,8 +14,6 @@ constexpr double kSeriesBelow = 1.0;
 constexpr int kSeriesTerms = 26;
 /// A term below this share of the sum changes none of its bits.
 constexpr double kLastBit = 0x1p-54;
-/// Below it relaxed_part sums its series.
-constexpr double kShortPiece = 0x1p-7;
 
 /// 1 / n for the series' terms: a product where a division per term would stall each step.
 constexpr std::array<double, kSeriesTerms> kInverses = [] {
@@ -54,23 +52,13 @@ double rise_squared_series(double x) {
 
 }  // namespace
 
-double relaxed_part(double x) {
-  if (x < kShortPiece) {
-    // x - x^2/2! + ... - x^6/6!: the next term is below 2^-53 of the sum at x < 2^-7, and the
-    // terms fall by at least 2^-8 each, so Horner's rounding stays within an ulp.
-    return x * (1.0 + x * (-1.0 / 2.0 +
-                           x * (1.0 / 6.0 +
-                                x * (-1.0 / 24.0 + x * (1.0 / 120.0 + x * (-1.0 / 720.0 +
-                                                                           x * (1.0 / 5040.0)))))));
-  }
-  return -std::expm1(-x);
-}
+double relaxed_part_long(double x) { return -std::expm1(-x); }
 
 DecayIntegrals decay_integrals(double h, double tau) {
   return decay_integrals(h, tau, relaxed_part(h / tau));
 }
 
-DecayIntegrals decay_integrals(double h, double tau, double fall) {
+DecayIntegrals decay_integrals_long(double h, double tau, double fall) {
   const double x = h / tau;
   DecayIntegrals i{};
   i.decay = tau * fall;

@@ -92,10 +92,10 @@ class FreeSpringCreepRef {
   void stretch_from(double t0, ExponentialSum& w) const;
   /// The retardation rates mu_k [1/s], ascending.
   std::span<const double> rates() const { return modes_->rates(); }
+  /// Mode k's part of the stretch at t [m] (stretch_from(t)'s decay k at 0).
+  double mode_stretch(std::size_t k, double t) const;
 
  private:
-  /// Mode k's part of the stretch at t [m].
-  double mode_stretch(std::size_t k, double t) const;
   /// The arm stresses at t from each mode's decay exp(-mu_k t).
   FewValues<double> stresses_from_decays(double t, std::span<const double> decays) const;
 

@@ -11,6 +11,7 @@
 #include <queue>
 #include <set>
 
+#include "engine/base/large_pages.hpp"
 #include "engine/model/compensated_sum.hpp"
 #include "engine/model/decay_integrals.hpp"
 #include "engine/model/exponential_sum_total.hpp"
@@ -218,7 +219,12 @@ class ViscoelasticRowDrive::Row {
         store_(state_.size() * store_stride_, 0.0),
         pressed_(springs.images.size()),
         glued_(springs.images.size()),
-        holding_loads_(springs.edge, springs.spacing, springs.images.size()) {}
+        holding_loads_(springs.edge, springs.spacing, springs.images.size()) {
+    for (const PronyTerm& term : springs.terms) {
+      inverse_times_.push_back(1.0 / term.time);
+      dissipation_factors_.push_back(1.0 / (term.modulus * term.time));
+    }
+  }
 
   /// A new segment from the present time: every spring's next event within it is queued (the
   /// energy summed up to now, the rate changing).
@@ -257,13 +263,24 @@ class ViscoelasticRowDrive::Row {
     }
     // At most one a spring: room for all at once, not grown by copies.
     first_events_.reserve(state_.size());
+    // The hint: the last two neighbours' delays carried on in a line (their spacing changes
+    // slowly along the row), so that Newton starts a second difference from the root, not a
+    // first.
+    // Plain numbers, kNoHint for none: an optional written to a member in two parts and read
+    // whole stalls on store forwarding at every spring.
+    double last = kNoHint, before_last = kNoHint;
     for (std::size_t k = 0; k < state_.size(); ++k) {
+      release_hint_ = last;
+      if (last > 0.0 && before_last > 0.0 && 2.0 * last - before_last > 0.0) {
+        release_hint_ = 2.0 * last - before_last;
+      }
       if (const double delay = event_delay(k); delay < kNoDelay) {
         first_events_.push_back({time_ + delay, k, state_[k].version});
-        release_hint_ = delay;
+        before_last = last;
+        last = delay;
       }
     }
-    release_hint_.reset();
+    release_hint_ = kNoHint;
     sort_first_events();
   }
 
@@ -857,12 +874,13 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
       const PronyTerm& term = springs_.terms[j];
       // 1 - exp(-h / tau) (h is mostly far below tau: its series), shared with the arms' advance.
-      const double relaxed_part = mdrsim::relaxed_part(h / term.time);
+      const double x = h * inverse_times_[j];
+      const double relaxed_part = mdrsim::relaxed_part(x);
       relaxed_parts_[j] = relaxed_part;
       // The common history H(s) = history E(s) + steady D(s) (E = exp(-s / tau), D = 1 - E),
       // the members' own parts decaying as E: integrals of E, D and their products taken whole
       // (decay_integrals), so that a piece far shorter than tau keeps its digits.
-      const DecayIntegrals i = decay_integrals(h, term.time, relaxed_part);
+      const DecayIntegrals i = decay_integrals_at(x, term.time, relaxed_part);
       const double steady = term.modulus * rate_ * term.time;
       const double history = arms_.history(j);
       const double decaying = arms_.arm_force(j) - n * history;
@@ -873,7 +891,7 @@ class ViscoelasticRowDrive::Row {
       const double squares = n * history_squared +
                              2.0 * decaying * (history * i.decay_squared + steady * i.rise_decay) +
                              std::max(own_squares_[j], 0.0) * i.decay_squared;
-      dissipated += squares / (term.modulus * term.time);
+      dissipated += squares * dissipation_factors_[j];
       const double remaining = 1.0 - relaxed_part;
       own_squares_[j] *= remaining * remaining;
       own_squares_gross_[j] *= remaining * remaining;
@@ -1397,27 +1415,50 @@ class ViscoelasticRowDrive::Row {
       // release's test and this one disagree by rounding, and the two would alternate forever.
       // Within rounding of the surface the level is taken where the overlap stands (shifting
       // the sum by its value at 0 need not make it 0 there), so that the crossing is a later one.
-      ExponentialSum& overlap = scratch_;
-      creep(s).stretch_from(time_ - s.released_at, overlap);
-      for (ExponentialDecay& decay : overlap.decays) decay.amplitude = -decay.amplitude;
-      overlap.constant = stretch - overlap.constant;
-      overlap.slope = rate_;
-      const double now = overlap.at(0.0);
-      const double closing = overlap.slope_at(0.0);
+      // Its value and slope now, read as ExponentialSum::at and slope_at read the sum below (the
+      // same numbers), before the sum is built: most free springs need no more.
+      const FreeSpringCreepRef free_creep = creep(s);
+      const double age = time_ - s.released_at;
+      double now = stretch + rate_ * 0.0;
+      double closing = rate_;
+      bool falls = true;
+      for (std::size_t m = 0; m < free_creep.rates().size(); ++m) {
+        const double amplitude = -free_creep.mode_stretch(m, age);
+        now += amplitude;
+        closing -= amplitude / (1.0 / free_creep.rates()[m]);
+        falls = falls && amplitude <= 0.0;
+      }
       if (now >= 0.0 && closing > 0.0 && time_ > s.released_at) return 0.0;
       // The indenter leaving faster than the surface comes back, which comes back ever slower
       // (the overlap's decays all below zero: its slope only falls): the overlap falls from
       // where it stands, and the spring is not met again in the segment. first_crossing finds
       // none as well, at the cost of its pieces (most of a withdrawal's free springs).
-      if (closing < 0.0 &&
-          std::all_of(overlap.decays.begin(), overlap.decays.end(),
-                      [](const ExponentialDecay& d) { return d.amplitude <= 0.0; })) {
-        return kNoDelay;
-      }
+      if (closing < 0.0 && falls) return kNoDelay;
+      ExponentialSum& overlap = scratch_;
+      free_creep.stretch_from(age, overlap);
+      for (ExponentialDecay& decay : overlap.decays) decay.amplitude = -decay.amplitude;
+      overlap.constant = stretch - overlap.constant;
+      overlap.slope = rate_;
       return first_crossing(overlap, std::max(now, 0.0), span).value_or(kNoDelay);
     }
     FewValues<double> stresses(springs_.terms.size());
     for (std::size_t j = 0; j < stresses.size(); ++j) stresses[j] = arms_.stress(member(s), j);
+    {
+      // Whether the load only rises (loads_up of the sum below at a load not below zero), read
+      // as line_load_over builds the sum and ExponentialSum::at reads it (the same numbers):
+      // a pressed spring while the drive presses needs no more.
+      double constant = springs_.relaxed_modulus * stretch;
+      for (const PronyTerm& term : springs_.terms) constant += term.modulus * rate_ * term.time;
+      double at_zero = constant + springs_.relaxed_modulus * rate_ * 0.0;
+      bool falls = true;
+      for (std::size_t j = 0; j < stresses.size(); ++j) {
+        const PronyTerm& term = springs_.terms[j];
+        const double amplitude = stresses[j] - term.modulus * rate_ * term.time;
+        at_zero += amplitude;
+        falls = falls && amplitude <= 0.0;
+      }
+      if (at_zero >= 0.0 && springs_.relaxed_modulus * rate_ >= 0.0 && falls) return kNoDelay;
+    }
     ExponentialSum& load = scratch_;
     line_load_over(load, springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
     const double now = load.at(0.0);
@@ -1426,7 +1467,9 @@ class ViscoelasticRowDrive::Row {
     if (now <= 0.0 && load.slope_at(0.0) < 0.0) return 0.0;
     if (now >= 0.0 && loads_up(load)) return kNoDelay;
     if (now < 0.0) load.constant -= now;
-    return first_crossing(load, 0.0, span, release_hint_).value_or(kNoDelay);
+    const std::optional<double> near =
+        release_hint_ > 0.0 ? std::optional<double>(release_hint_) : std::nullopt;
+    return first_crossing(load, 0.0, span, near).value_or(kNoDelay);
   }
 
   // A held segment (fixed load, a machine spring): the depth follows motion_, rebuilt at every
@@ -2023,10 +2066,12 @@ class ViscoelasticRowDrive::Row {
   CompensatedSum friction_;              ///< dissipated by friction [J/m]
   CompensatedSum tangential_work_;       ///< [J/m]
   bool last_let_go_by_shear_ = false;
-  std::vector<ViscoelasticSpringState> state_;
-  std::size_t store_stride_;   ///< the numbers a spring's block holds
-  std::vector<double> store_;  ///< the springs' blocks, in spring order
-  RowSpringSet pressed_;       ///< in contact: pressed or glued
+  // The per-spring arrays in large pages: 1e5 springs write some 13 MB of fresh memory a run (a
+  // fault per 4 KiB otherwise, and glibc returns such blocks between runs more or less at will).
+  std::vector<ViscoelasticSpringState, LargePageAllocator<ViscoelasticSpringState>> state_;
+  std::size_t store_stride_;                               ///< the numbers a spring's block holds
+  std::vector<double, LargePageAllocator<double>> store_;  ///< the springs' blocks, in spring order
+  RowSpringSet pressed_;                                   ///< in contact: pressed or glued
   RowSpringSet glued_;
   HoldingTangentialLoads holding_loads_;
   mutable RebindingRunMemo run_memo_;  ///< rebinding's last look along the sticking run
@@ -2035,7 +2080,7 @@ class ViscoelasticRowDrive::Row {
   /// The events found as a segment begins (each spring's first in it: most of its events), in
   /// their order, read in turn; the events found later are queued. The next is the earlier head
   /// (a spring's stale entries skipped in both), as one queue of all would give it.
-  std::vector<ViscoelasticRowEvent> first_events_;
+  std::vector<ViscoelasticRowEvent, LargePageAllocator<ViscoelasticRowEvent>> first_events_;
   std::size_t next_first_event_ = 0;
   bool next_is_first_ = false;  ///< whether next_event() took first_events_'s head
   std::priority_queue<ViscoelasticRowEvent, std::vector<ViscoelasticRowEvent>, std::greater<>>
@@ -2060,19 +2105,23 @@ class ViscoelasticRowDrive::Row {
   bool own_squares_current_ = false;  ///< whether own_squares_ is, outside a held segment
   /// 1 - exp(-h / tau_j) of the last piece, which count_contact_piece hands to the arms.
   std::vector<double> relaxed_parts_;
+  /// Per term, 1 / tau_j and 1 / (E_j tau_j): an event's piece multiplies by them.
+  std::vector<double> inverse_times_;
+  std::vector<double> dissipation_factors_;
   /// The same of the glued springs' tangential arms, in a held segment.
   SharedArmOwnSquares tangential_own_squares_;
   ExponentialSum motion_;  ///< the depth from now in a held segment [m]
   /// A sum next_event_delay builds, its storage kept from event to event.
   mutable ExponentialSum scratch_;
-  /// As a segment begins, the last spring's first event delay [s]: where the next release's
-  /// Newton starts (neighbours release close in time).
-  std::optional<double> release_hint_;
-  CompensatedSum machine_work_;       ///< [J/m]
-  CompensatedSum dissipated_;         ///< [J/m]
-  CompensatedSum surface_;            ///< [J/m]
-  CompensatedSum jump_losses_;        ///< [J/m]
-  ViscoelasticRowEnergy let_go_run_;  ///< let_go_run()
+  /// As a segment begins, where the next release's Newton starts [s]: the last two springs'
+  /// first event delays carried on (neighbours release close in time).
+  double release_hint_ = kNoHint;
+  static constexpr double kNoHint = -1.0;  ///< no hint: a delay is never negative
+  CompensatedSum machine_work_;            ///< [J/m]
+  CompensatedSum dissipated_;              ///< [J/m]
+  CompensatedSum surface_;                 ///< [J/m]
+  CompensatedSum jump_losses_;             ///< [J/m]
+  ViscoelasticRowEnergy let_go_run_;       ///< let_go_run()
   double let_go_run_time_ = -HUGE_VAL;
 };
 

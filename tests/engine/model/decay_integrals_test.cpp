@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace mdrsim {
@@ -39,7 +40,9 @@ TEST(DecayIntegrals, KeepTheirDigitsFromLongToVeryShortPieces) {
   // the series near h/tau = 1 alternates over terms 2x the sum). Differences of O(1) terms
   // left eps tau / h of the rise's integrals: 1e-4 of them at h/tau = 1e-12.
   const long double tau = 0.1L;
-  for (const double x : {1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 0.1, 0.5, 0.999, 1.0, 1.001, 3.0, 10.0}) {
+  // 2^-7 (0.0078125) parts the short pieces' polynomials from the series and closed forms.
+  for (const double x : {1e-12, 1e-9, 1e-6, 1e-4, 1e-3, 0.0078, 0.0078125, 0.0079, 1e-2, 0.1, 0.5,
+                         0.999, 1.0, 1.001, 3.0, 10.0}) {
     const double h = x * 0.1;
     const DecayIntegrals got = decay_integrals(h, 0.1);
     const auto e = [&](long double s) { return std::exp(-s / tau); };
@@ -56,6 +59,18 @@ TEST(DecayIntegrals, KeepTheirDigitsFromLongToVeryShortPieces) {
       const long double error = std::fabs((have[i] - want[i]) / want[i]);
       EXPECT_LT(error, 1e-15L) << names[i] << " at h/tau = " << x;
     }
+  }
+}
+
+// 1 - exp(-x) by relaxed_part (a Taylor polynomial below 2^-7, expm1 above) against long
+// double's expm1, within 2 ulp (the polynomial's Horner rounding and its truncation, below
+// 2^-53 of the sum), across the boundary and from 1e-15 to 30.
+TEST(DecayIntegrals, RelaxedPartToTwoUlpAcrossTheShortPiecesBoundary) {
+  for (const double x : {1e-15, 1e-9, 1e-5, 1e-3, 0.004, 0.0078, 0.00781249, 0.0078125, 0.0079,
+                         0.05, 0.7, 3.0, 30.0}) {
+    const long double want = -std::expm1(-static_cast<long double>(x));
+    const double have = relaxed_part(x);
+    EXPECT_LE(std::fabs(have - want), 2.0L * std::numeric_limits<double>::epsilon() * want) << x;
   }
 }
 
