@@ -84,6 +84,12 @@ void RetardationModes::amplitudes(std::span<const double> group_stresses,
 void free_spring_numbers(const RetardationModes& modes, std::span<const double> stresses,
                          std::span<double> amplitudes, std::span<double> residuals) {
   const std::span<const PronyTerm> terms = modes.terms();
+  if (terms.size() == 1) {
+    // One term, one group, one mode, no residual (a release an event: no temporaries).
+    modes.amplitudes(stresses, amplitudes);
+    residuals[0] = 0.0;
+    return;
+  }
   if (modes.groups().size() == terms.size()) {
     // Each term its own group (distinct relaxation times, the usual case): the terms are the
     // groups, reordered, and no term has a residual.

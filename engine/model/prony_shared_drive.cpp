@@ -10,7 +10,9 @@
 namespace mdrsim {
 
 SharedDriveArms::SharedDriveArms(std::vector<PronyTerm> terms)
-    : terms_(std::move(terms)), history_(terms_.size(), 0.0), decaying_(terms_.size(), 0.0) {}
+    : terms_(std::move(terms)), history_(terms_.size(), 0.0), decaying_(terms_.size(), 0.0) {
+  for (const PronyTerm& term : terms_) rates_.push_back(1.0 / term.time);
+}
 
 void SharedDriveArms::advance(double rate, double duration) {
   for (std::size_t j = 0; j < terms_.size(); ++j) {
@@ -67,7 +69,7 @@ double SharedDriveArms::stress(const SharedDriveMemberRef& member, std::size_t j
   const double age = time_ - member.entry_time;
   // exp(-0 / tau) is 1 exactly: a member read as it enters needs no call.
   if (age == 0.0) return history_[j] + member.offsets[j];
-  return history_[j] + member.offsets[j] * std::exp(-age / terms_[j].time);
+  return history_[j] + member.offsets[j] * std::exp(-age * rates_[j]);
 }
 
 FewValues<double> SharedDriveArms::leave(const SharedDriveMember& member) {

@@ -73,6 +73,7 @@ class SharedDriveArms {
 
  private:
   std::vector<PronyTerm> terms_;
+  std::vector<double> rates_;     ///< 1 / tau_j [1/s]: a member's read multiplies by it
   std::vector<double> history_;   ///< H_j [N/m]
   std::vector<double> decaying_;  ///< C_j [N]
   double weight_ = 0.0;
