@@ -38,4 +38,38 @@ TEST(LargePages, AVectorOnThemKeepsItsElements) {
   EXPECT_EQ(copy, values);
 }
 
+// A large block freed is kept for the thread's next block of its size (its pages counted as
+// kept until it is taken), which gets it back; a block of another size does not, a small one is
+// not kept, and past 256 MiB a freed block is given back.
+TEST(LargePages, AFreedLargeBlockIsKeptForTheNextOfItsSize) {
+  const std::size_t bytes = 3 * kLargePage + 40;  // four pages
+  const std::size_t before = mdrsim::kept_large_bytes();
+  void* first = mdrsim::allocate_large(bytes);
+  const std::size_t taken = mdrsim::kept_large_bytes();  // a kept block of four pages, if any
+  EXPECT_LE(taken, before);
+  mdrsim::free_large(first, bytes);
+  EXPECT_EQ(mdrsim::kept_large_bytes(), taken + 4 * kLargePage);
+  void* again = mdrsim::allocate_large(bytes - 20);  // the same number of pages
+  EXPECT_EQ(again, first);
+  EXPECT_EQ(mdrsim::kept_large_bytes(), taken);
+  void* other = mdrsim::allocate_large(6 * kLargePage);
+  EXPECT_NE(other, first);
+  mdrsim::free_large(other, 6 * kLargePage);
+  mdrsim::free_large(again, bytes - 20);
+  EXPECT_EQ(mdrsim::kept_large_bytes(), taken + 10 * kLargePage);
+  void* six = mdrsim::allocate_large(6 * kLargePage);
+  void* four = mdrsim::allocate_large(bytes);
+  EXPECT_EQ(six, other);
+  EXPECT_EQ(four, first);
+  mdrsim::free_large(six, 6 * kLargePage);
+  mdrsim::free_large(four, bytes);
+  void* small = mdrsim::allocate_large(1000);
+  mdrsim::free_large(small, 1000);
+  EXPECT_EQ(mdrsim::kept_large_bytes(), taken + 10 * kLargePage);
+  // 300 MiB is more than is kept: freed, it is given back.
+  void* huge = mdrsim::allocate_large(std::size_t{300} << 20);
+  mdrsim::free_large(huge, std::size_t{300} << 20);
+  EXPECT_EQ(mdrsim::kept_large_bytes(), taken + 10 * kLargePage);
+}
+
 }  // namespace
