@@ -295,6 +295,11 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   bool lost = false;
   double held = 0.0;
   double held_tangential = 0.0;  ///< u_x [m]
+  // The tangential axis's control: u_x held (fixed grips) or F_x (a fixed load, normal fixed
+  // grips only); a stage that does not name the axis keeps it.
+  bool shear_force_held = false;
+  double held_shear_force = 0.0;  ///< F_x [N]
+  bool shear_lost = false;        ///< a held F_x lost its last glued spring
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
     // A row's changes settle in a few events per spring and stage; a stage that takes more than
@@ -309,12 +314,26 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
         control = c;
       }
     }
+    if (stage.tangential && stage.tangential->controller->holds_force() != shear_force_held) {
+      // A switch sets the new held value from the present state: nothing jumps.
+      shear_force_held = !shear_force_held;
+      held_shear_force = drive.sample().tangential_force;
+    }
     const double spring_energy_before = machine_spring_energy(control, row_force(drive.sample()));
-    const AxisMotion tangential = axis_motion(stage.tangential, held_tangential);
+    const AxisMotion tangential =
+        axis_motion(stage.tangential, shear_force_held ? held_shear_force : held_tangential);
     const ViscoelasticStageDrive sd = stage_drive(stage, held, tangential.rate);
     const double rate = sd.rate();
-    // u_x moves linearly over the stage, under any normal control.
-    const double tangential_rate = sd.seconds > 0.0 ? tangential.rate / sd.seconds : 0.0;
+    // u_x (or a held F_x) moves linearly over the stage, under any normal control.
+    const double axis_rate = sd.seconds > 0.0 ? tangential.rate / sd.seconds : 0.0;
+    const double tangential_rate = shear_force_held ? 0.0 : axis_rate;
+    const double stage_start = drive.sample().time;
+    // A held F_x from the present time on.
+    const auto shear_force = [&]() -> std::optional<HeldShearForce> {
+      if (!shear_force_held) return std::nullopt;
+      return HeldShearForce{tangential.start + axis_rate * (drive.sample().time - stage_start),
+                            axis_rate};
+    };
     std::optional<ViscoelasticCascade> flight;
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
@@ -338,19 +357,40 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
             stage.name, drive.sample().pressed));
       }
     } else if (!stage.until_separation) {
-      drive.run(
-          {sd.seconds, rate, sd.end, std::nullopt, tangential_rate, tangential.at(1.0, false)},
-          false, {}, no_samples, report);
+      // Under a held F_x the let-gos that lose the glue are a flight: only the first is told.
+      hold_let_gos = adhesive && shear_force_held;
+      drive.run({sd.seconds, rate, sd.end, std::nullopt, tangential_rate, tangential.at(1.0, false),
+                 shear_force()},
+                false, {}, no_samples, report);
       held = sd.end;
+      // A held F_x that lost its last glued spring: the indenter slides away from the let-gos'
+      // critical point (as the normal held force's flight).
+      if (drive.shear_unheld()) {
+        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
+        held_let_gos.clear();
+        flight = jumps.open_cascade();
+      }
+      release_let_gos();
+      hold_let_gos = false;
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
+      hold_let_gos = adhesive && shear_force_held;
       if (rate < 0.0) {
         for (int piece = 0; piece < kMostSeparationPieces && !separated && !drive.limited();
              ++piece) {
-          separated = drive.run({sd.seconds, rate, std::nullopt, std::nullopt, tangential_rate},
+          separated = drive.run({sd.seconds, rate, std::nullopt, std::nullopt, tangential_rate,
+                                 std::nullopt, shear_force()},
                                 true, {}, no_samples, report);
+          if (drive.shear_unheld()) break;
         }
       }
+      if (drive.shear_unheld()) {
+        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
+        held_let_gos.clear();
+        flight = jumps.open_cascade();
+      }
+      release_let_gos();
+      hold_let_gos = false;
       held = drive.sample().depth;
       if (!separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
@@ -374,11 +414,13 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       end = flight->before;
       const ViscoelasticRowEnergy run = drive.let_go_run();
       now.machine_work -= run.machine_work;
+      now.tangential_work -= run.tangential_work;
       now.stored -= run.stored;
       now.surface -= run.surface;
       now.jump_losses -= run.jump_losses;
       if (auto jump = jumps.close()) {
-        jump->end = JumpEnd::separated;
+        jump->end =
+            shear_force_held && drive.shear_unheld() ? JumpEnd::sliding : JumpEnd::separated;
         jump->after = {};
         observers.emit({.kind = EventKind::jump, .state = jump->critical, .stage = jump->stage});
         result.jumps.push_back(std::move(*jump));
@@ -389,16 +431,29 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
              it != program.stages.end(); ++it) {
           skipped += fmt::format("{}'{}'", skipped.empty() ? "" : ", ", it->name);
         }
-        result.warnings.push_back(fmt::format(
-            "stage '{}': the normal fixed load (F = {:.6g} N) lost what held it and the indenter "
-            "separates: the program ends at its critical point; stages not run: {}",
-            stage.name, held, skipped));
+        if (shear_force_held && drive.shear_unheld()) {
+          result.warnings.push_back(fmt::format(
+              "stage '{}': the tangential fixed load (Fx = {:.6g} N) lost what held it and the "
+              "indenter slides away: the program ends at its critical point; stages not run: {}",
+              stage.name, flight->before.tangential_force, skipped));
+        } else {
+          result.warnings.push_back(fmt::format(
+              "stage '{}': the normal fixed load (F = {:.6g} N) lost what held it and the "
+              "indenter separates: the program ends at its critical point; stages not run: {}",
+              stage.name, held, skipped));
+        }
       }
     } else if (adhesive) {
       report_jump(jumps.close());
     }
     if (adhesive) jumps.observe(end);
     held_tangential = end.tangential_displacement;
+    shear_lost = shear_force_held && drive.shear_unheld();
+    if (shear_force_held) {
+      held_shear_force = !shear_lost && !stage.until_separation
+                             ? tangential.at(1.0, false)
+                             : tangential.start + axis_rate * (end.time - stage_start);
+    }
     ever_in_contact = ever_in_contact || drive.counts().touches + drive.counts().glues > 0;
     const StageRecord record = viscoelastic_stage_record(
         stage.name, end, control, before, now,
@@ -409,7 +464,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     result.stages.push_back(record);
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
     lost = ever_in_contact && (end.pressed == 0 || flight);
-    if (result.stop_reason || flight) break;
+    if (result.stop_reason || flight || shear_lost) break;
   }
   if (reached_row_end) {
     result.warnings.push_back(fmt::format(
@@ -425,7 +480,21 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     // "How a program ends"); a contact lost after its glue ends as the cascade that lost the
     // glue decides.
     result.status = lost ? RunStatus::no_instability : RunStatus::completed;
-    if (lost && jumps.glue_loss()) {
+    if (shear_lost) {
+      // The held F_x lost its last glued spring: as an elastic program's (the glue's loss
+      // decides; by shear alone a shear-off).
+      result.sliding = true;
+      if (jumps.glue_loss()) {
+        ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
+        if (jumps.glue_loss()->changes < 2) result.status = RunStatus::shear_off;
+      } else {
+        result.status = RunStatus::no_instability;
+        result.warnings.push_back(fmt::format(
+            "stage '{}': fixed-load holds F_x = {:.6g} N with no glued spring: the program ends "
+            "here",
+            stage_name, held_shear_force));
+      }
+    } else if (lost && jumps.glue_loss()) {
       ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
       if (result.critical) fold.locate(*jumps.glue_loss(), result);
     }

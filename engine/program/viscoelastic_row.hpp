@@ -45,6 +45,13 @@ struct HeldAxisMotion {
   double rate;   ///< h' [N/s or m/s]
 };
 
+/// A tangential force held instead of u_x (under normal fixed grips): F_x moves linearly in time
+/// and u_x creeps with the glued springs' tangential arms.
+struct HeldShearForce {
+  double start;  ///< F_x at the segment's start [N]
+  double rate;   ///< F_x' [N/s]
+};
+
 /// A stretch of the program during which the indentation moves at one rate, or, with `held`, a
 /// force or a machine end does (the depth then follows the row's creep between events).
 struct DriveSegment {
@@ -60,6 +67,9 @@ struct DriveSegment {
   double tangential_rate = 0.0;
   /// u_x at its end [m] where it is known exactly; else the start's plus rate times duration.
   std::optional<double> end_tangential = std::nullopt;
+  /// F_x held instead (tangential_rate and end_tangential unused): u_x follows the glued
+  /// springs' creep between events and steps at a let-go (docs/viscoelastic.md).
+  std::optional<HeldShearForce> tangential_force = std::nullopt;
 };
 
 /// The row's state at one time.
@@ -154,6 +164,8 @@ class ViscoelasticRowDrive {
   /// Whether the last let-go broke a compressed spring (its tangential load alone): it lost its
   /// glue and stays pressed.
   bool last_let_go_by_shear() const;
+  /// Whether a held F_x != 0 lost its last glued spring (run() then stops there).
+  bool shear_unheld() const;
   /// The state just before the last change (an on_change may ask for it; kept only where
   /// run() was given one).
   const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }
