@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -151,18 +152,19 @@ struct HeldStageEnd {
 
 HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
                             const AffineConstraint& control, double held,
-                            const AxisMotion& tangential, bool stop_at_loss,
-                            const ViscoelasticRowDrive::OnChange& on_change) {
+                            const AxisMotion& tangential,
+                            const std::function<std::optional<HeldShearForce>()>& shear_force,
+                            bool stop_at_loss, const ViscoelasticRowDrive::OnChange& on_change) {
   const AxisMotion m = axis_motion(stage.normal, held);
   // The reader leaves a stage with a speed one moving axis.
   const double seconds = seconds_per_parameter(stage, m.rate != 0.0 ? m.rate : tangential.rate);
   const double rate = seconds > 0.0 ? m.rate / seconds : 0.0;
-  const double tangential_rate = seconds > 0.0 ? tangential.rate / seconds : 0.0;
+  const double tangential_rate = seconds > 0.0 && !shear_force() ? tangential.rate / seconds : 0.0;
   std::vector<ViscoelasticRowSample> no_samples;
   if (!stage.until_separation) {
     const double start = drive.sample().time;
     const bool lost = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate},
-                                 tangential_rate, tangential.at(1.0, false)},
+                                 tangential_rate, tangential.at(1.0, false), shear_force()},
                                 stop_at_loss, {}, no_samples, on_change);
     if (lost) return {held + rate * (drive.sample().time - start), true};
     return {m.end.value_or(held + m.rate), false};
@@ -172,9 +174,9 @@ HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
   for (int piece = 0; piece < kMostSeparationPieces && !separated && rate < 0.0 && !drive.limited();
        ++piece) {
     const double start = drive.sample().time;
-    separated = drive.run(
-        {seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}, tangential_rate}, true,
-        {}, no_samples, on_change);
+    separated = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate},
+                           tangential_rate, std::nullopt, shear_force()},
+                          true, {}, no_samples, on_change);
     held += rate * (drive.sample().time - start);
   }
   return {held, separated};
@@ -334,14 +336,23 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       return HeldShearForce{tangential.start + axis_rate * (drive.sample().time - stage_start),
                             axis_rate};
     };
+    // A held F_x that lost its glue slides away, unless a normal fixed load lost the contact
+    // with it (the indenter separates: the normal axis's flight), as in the elastic program.
+    const auto slides = [&] {
+      return shear_force_held && drive.shear_unheld() &&
+             !(holds_force(control) && drive.sample().pressed == 0);
+    };
     std::optional<ViscoelasticCascade> flight;
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
-      hold_let_gos = adhesive && !drives_through_spring(control);
+      // A held F_x that loses its glue is a flight under a machine spring too.
+      hold_let_gos = adhesive && (!drives_through_spring(control) || shear_force_held);
       const HeldStageEnd held_end =
-          run_held_stage(drive, stage, control, held, tangential, hold_let_gos, report);
+          run_held_stage(drive, stage, control, held, tangential, shear_force,
+                         adhesive && !drives_through_spring(control), report);
       held = held_end.held;
-      if (hold_let_gos && held_end.separated) {
+      const bool flies = !drives_through_spring(control) || drive.shear_unheld();
+      if (hold_let_gos && held_end.separated && flies) {
         // The flight: the stage ends at the critical point, the first let-go told, the rest not.
         if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
         held_let_gos.clear();
@@ -419,8 +430,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       now.surface -= run.surface;
       now.jump_losses -= run.jump_losses;
       if (auto jump = jumps.close()) {
-        jump->end =
-            shear_force_held && drive.shear_unheld() ? JumpEnd::sliding : JumpEnd::separated;
+        jump->end = slides() ? JumpEnd::sliding : JumpEnd::separated;
         jump->after = {};
         observers.emit({.kind = EventKind::jump, .state = jump->critical, .stage = jump->stage});
         result.jumps.push_back(std::move(*jump));
@@ -431,7 +441,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
              it != program.stages.end(); ++it) {
           skipped += fmt::format("{}'{}'", skipped.empty() ? "" : ", ", it->name);
         }
-        if (shear_force_held && drive.shear_unheld()) {
+        if (slides()) {
           result.warnings.push_back(fmt::format(
               "stage '{}': the tangential fixed load (Fx = {:.6g} N) lost what held it and the "
               "indenter slides away: the program ends at its critical point; stages not run: {}",
@@ -448,7 +458,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     }
     if (adhesive) jumps.observe(end);
     held_tangential = end.tangential_displacement;
-    shear_lost = shear_force_held && drive.shear_unheld();
+    shear_lost = slides();
     if (shear_force_held) {
       held_shear_force = !shear_lost && !stage.until_separation
                              ? tangential.at(1.0, false)
@@ -464,7 +474,9 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     result.stages.push_back(record);
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
     lost = ever_in_contact && (end.pressed == 0 || flight);
-    if (result.stop_reason || flight || shear_lost) break;
+    if (result.stop_reason || flight || shear_lost || (shear_force_held && drive.shear_unheld())) {
+      break;
+    }
   }
   if (reached_row_end) {
     result.warnings.push_back(fmt::format(

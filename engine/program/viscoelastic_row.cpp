@@ -605,6 +605,7 @@ class ViscoelasticRowDrive::Row {
     const double surface_before = surface_.value();
     const double losses_before = jump_losses_.value();
     const double tangential_before = tangential_work_.value();
+    const double spring_before = spring_work_.value();
     ViscoelasticRowChange change = ViscoelasticRowChange::touch;
     if (s.phase == ViscoelasticSpringPhase::glued) {
       change = ViscoelasticRowChange::let_go;
@@ -630,14 +631,20 @@ class ViscoelasticRowDrive::Row {
         index_change(k, left);
       }
       held_glassy_step(held_load_before);
+      if (shear_held_ &&
+          (change == ViscoelasticRowChange::let_go || change == ViscoelasticRowChange::glue)) {
+        held_shear_change(change);
+      }
       rebuild_motion();
-      note_let_go_run(change, machine_before, surface_before, losses_before, tangential_before);
+      note_let_go_run(change, machine_before, surface_before, losses_before, tangential_before,
+                      spring_before);
       return change;
     }
     if (shear_held_ &&
         (change == ViscoelasticRowChange::let_go || change == ViscoelasticRowChange::glue)) {
       held_shear_change(change);
-      note_let_go_run(change, machine_before, surface_before, losses_before, tangential_before);
+      note_let_go_run(change, machine_before, surface_before, losses_before, tangential_before,
+                      spring_before);
     }
     for (const auto j :
          {std::optional<std::size_t>(k), boundary_before, outside_before, boundary(), outside()}) {
@@ -657,7 +664,7 @@ class ViscoelasticRowDrive::Row {
 
  private:
   void note_let_go_run(ViscoelasticRowChange change, double machine_before, double surface_before,
-                       double losses_before, double tangential_before) {
+                       double losses_before, double tangential_before, double spring_before) {
     const bool joins = change == ViscoelasticRowChange::let_go && time_ == let_go_run_time_;
     if (!joins) let_go_run_ = {};
     let_go_run_time_ = change == ViscoelasticRowChange::let_go ? time_ : -HUGE_VAL;
@@ -671,7 +678,10 @@ class ViscoelasticRowDrive::Row {
     let_go_run_.tangential_work += tangential;
     let_go_run_.surface += surface;
     let_go_run_.jump_losses += losses;
-    let_go_run_.stored += machine + tangential - surface - losses;
+    // What a machine spring's end gave the row in their glassy steps (its own energy is the
+    // caller's).
+    const double spring = spring_work_.value() - spring_before;
+    let_go_run_.stored += machine + tangential + spring - surface - losses;
   }
 
   /// The springs' total line load per half [N/m]: E* (n d - sum g) + sum_j S_j.
@@ -700,6 +710,7 @@ class ViscoelasticRowDrive::Row {
     const bool fixed_load = axis.stiffness == 0.0;
     const double machine = fixed_load ? axis.held * step : 0.5 * step * (load_before + load_after);
     if (fixed_load) machine_work_.add(machine);
+    if (!fixed_load) spring_work_.add(machine);
     jump_losses_.add(machine - stored);
     arms_.glassy_step(step);
     depth_ += step;
@@ -1547,13 +1558,16 @@ class ViscoelasticRowDrive::Row {
       }
       depth_ = motion_.at(h);
       motion_ = shifted(motion_, h);
-      if (tangential_on_) {
+      if (shear_held_) {
+        advance_held_shear(h);
+      } else if (tangential_on_) {
         count_held_tangential_piece(h);
         tangential_arms_.advance(tangential_rate_, h);
         tangential_own_squares_.advance(tangential_terms_, h);
       }
     }
     time_ = t;
+    if (shear_held_) return;
     tangential_ =
         t == end_ ? end_tangential_ : segment_tangential_ + tangential_rate_ * (t - segment_start_);
   }
@@ -2070,7 +2084,7 @@ class ViscoelasticRowDrive::Row {
     return line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
   }
 
-  // A held tangential force (under normal fixed grips). Between events the glued set is fixed
+  // A held tangential force (under any normal control). Between events the glued set is fixed
   // and G_inf (m u_x - sum of its origins) + sum_j S_j = phi(t), phi the held F_x per unit
   // length of one half, S_j the set's arm forces with S_j' = G_j m u_x' - S_j / tau_j: the
   // equation the depth obeys under a held normal force, so u_x(t) is depth_under_held_axis's
@@ -2181,6 +2195,7 @@ class ViscoelasticRowDrive::Row {
 
   std::optional<RowHeldAxis> shear_held_;  ///< a held F_x's constraint, per unit x of one half
   ExponentialSum shear_motion_;            ///< u_x from now under it [m]
+  CompensatedSum spring_work_;  ///< a machine spring's work on the row in glassy steps [J/m]
   bool shear_unheld_ = false;
 
   const ViscoelasticRowSprings& springs_;

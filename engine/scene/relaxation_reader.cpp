@@ -57,27 +57,18 @@ void refuse_outside_relaxation_scope(const TomlReader& loading, const TomlReader
         "relaxation",
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
-  // The axes' controls as each stage leaves them (a stage that does not name an axis keeps it).
-  std::string normal_control = "fixed-grips";
+  // The tangential control as each stage leaves it (a stage that does not name it keeps it).
   std::string tangential_control = "fixed-grips";
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
-    if (stage.normal) normal_control = stage.normal->control;
     if (stage.tangential) tangential_control = stage.tangential->control;
-    // u_x moves under fixed grips whatever the normal control; a held tangential force is
-    // carried under normal fixed grips, on a glue that holds it (docs/viscoelastic.md).
+    // u_x moves under fixed grips, or follows a held tangential force on a glue that holds
+    // it, whatever the normal control (docs/viscoelastic.md).
     if (stage.tangential && stage.tangential->control != "fixed-grips" &&
         stage.tangential->control != "fixed-load") {
       loading.fail_at("stage", not_yet_with_relaxation(
                                    fmt::format("loading.stage.{}.tangential.control = \"{}\"",
                                                i + 1, stage.tangential->control)));
-    }
-    if (tangential_control == "fixed-load" && normal_control != "fixed-grips") {
-      loading.fail_at("stage",
-                      not_yet_with_relaxation(fmt::format(
-                          "loading.stage.{}: a tangential fixed load under a normal control "
-                          "other than fixed grips (\"{}\")",
-                          i + 1, normal_control)));
     }
     if (tangential_control == "fixed-load" && !scene.material.adhesive()) {
       loading.fail_at("stage",

@@ -83,19 +83,51 @@ ShearForceProgram shear_force_program(double depth, double force, bool pull) {
   return {fmt::format("d = {}, F_x = {}{}", depth, force, pull ? ", pulled off" : ""), stages};
 }
 
-TEST(ViscoelasticShearForce, AVanishingArmIsTheElasticProgramUnderAHeldTangentialForce) {
-  // E_1 = 1e-9 E_inf: every load differs from the elastic row's by that share, so every state
-  // the two report agrees to 1e-9 of the path's largest force (u_x to 1e-9 of the largest u_x:
-  // it is a held force over a stiffness that differs by that share); counts, statuses and
-  // jumps equal (by_shear apart: the viscoelastic jumps do not set it).
-  const std::vector<ShearForceProgram> programs{
+/// Pressed, sheared by F_x = `force`, held and pulled off under a held normal control: a fixed
+/// load (`machine` false) or a machine spring of 2000 N/m.
+ShearForceProgram held_normal_program(bool machine, double force) {
+  const std::string press =
+      machine ? "normal = { control = \"compliant\", stiffness = 2000.0, by = 3.0e-4 }\n"
+                "duration = 0.3\n"
+              : "normal = { control = \"fixed-load\", to = 0.2 }\nduration = 0.5\n";
+  const std::string pull =
+      machine ? "normal = { control = \"compliant\", stiffness = 2000.0, by = -1.0 }\n"
+                "until = \"separation\"\nduration = 1000.0\n"
+              : "normal = { control = \"fixed-load\", by = -1.0 }\nuntil = \"separation\"\n"
+                "duration = 10.0\n";
+  const std::string stages =
+      shear_force_stage("press", press) +
+      shear_force_stage("shear",
+                        fmt::format("tangential = {{ control = \"fixed-load\", to = {} }}\n"
+                                    "duration = 0.05\n",
+                                    force)) +
+      shear_force_stage("creep", "duration = 0.5\n") + shear_force_stage("pull", pull);
+  return {fmt::format("{}, F_x = {}, pulled off", machine ? "machine spring" : "fixed load", force),
+          stages};
+}
+
+/// Every program of the tests: normal fixed grips, then held normal controls.
+std::vector<ShearForceProgram> shear_force_programs() {
+  return {
       // F_x held through the pull-off: the glue goes while springs stay pressed (sliding).
       shear_force_program(2.25e-4, 0.01, true),
       // A small F_x: the pull-off parts the contact in tension.
       shear_force_program(2.25e-5, 1.0e-3, true),
       // F_x beyond what the glue carries: the ramp shears it off.
       shear_force_program(2.25e-5, 0.05, false),
+      held_normal_program(false, 0.01),
+      held_normal_program(false, 1.0e-3),
+      held_normal_program(true, 0.01),
+      held_normal_program(true, 1.0e-3),
   };
+}
+
+TEST(ViscoelasticShearForce, AVanishingArmIsTheElasticProgramUnderAHeldTangentialForce) {
+  // E_1 = 1e-9 E_inf: every load differs from the elastic row's by that share, so every state
+  // the two report agrees to 1e-9 of the path's largest force (u_x to 1e-9 of the largest u_x:
+  // it is a held force over a stiffness that differs by that share); counts, statuses and
+  // jumps equal (by_shear apart: the viscoelastic jumps do not set it).
+  const std::vector<ShearForceProgram> programs = shear_force_programs();
   std::printf("vanishing arm under a held F_x: largest gap to the elastic program / F_max\n");
   for (const ShearForceProgram& p : programs) {
     SCOPED_TRACE(p.name);
@@ -141,7 +173,7 @@ TEST(ViscoelasticShearForce, AVanishingArmIsTheElasticProgramUnderAHeldTangentia
       EXPECT_EQ(v.jumps[i].glued_springs, e.jumps[i].glued_springs) << i;
       compare(v.jumps[i].critical, e.jumps[i].critical, "jump");
     }
-    std::printf("  %-40s %.2e (status %d, %zu jumps, critical F %.10e / %.10e)\n", p.name.c_str(),
+    std::printf("  %-44s %.2e (status %d, %zu jumps, critical F %.10e / %.10e)\n", p.name.c_str(),
                 gap, static_cast<int>(v.status), v.jumps.size(),
                 v.critical ? v.critical->normal_force : 0.0,
                 e.critical ? e.critical->normal_force : 0.0);
@@ -217,11 +249,7 @@ TEST(ViscoelasticShearForce, EveryStageBalancesItsEnergy) {
   // stage's terms are differences of the run's totals, so the rounding they carry is that of
   // the totals: the largest term counts the totals so far (a shear stage's own terms, 1e-9 J,
   // sit beside a press's stored 1e-4 J).
-  const std::vector<ShearForceProgram> programs{
-      shear_force_program(2.25e-4, 0.01, true),
-      shear_force_program(2.25e-5, 1.0e-3, true),
-      shear_force_program(2.25e-5, 0.05, false),
-  };
+  const std::vector<ShearForceProgram> programs = shear_force_programs();
   std::printf("held F_x on a relaxing bulk: worst energy residual / largest term per program\n");
   for (const ShearForceProgram& p : programs) {
     SCOPED_TRACE(p.name);
@@ -245,7 +273,7 @@ TEST(ViscoelasticShearForce, EveryStageBalancesItsEnergy) {
       EXPECT_LT(std::abs(residual), 1e-12 * largest) << s.name;
       EXPECT_GE(e.jump_losses, -1e-12 * largest) << s.name;
     }
-    std::printf("  %-40s %.2e (status %d)\n", p.name.c_str(), worst, static_cast<int>(r.status));
+    std::printf("  %-44s %.2e (status %d)\n", p.name.c_str(), worst, static_cast<int>(r.status));
   }
 }
 

@@ -116,8 +116,8 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
        "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      // A tangential axis runs under fixed grips, or holds a force under normal fixed grips on
-      // a glue: not under a compliant control, a held normal control, or without adhesion.
+      // A tangential axis runs under fixed grips, or holds a force on a glue: not under a
+      // compliant control, without adhesion, or with friction.
       {"TangentialCompliant",
        replaced(kViscous, "until = \"separation\"\n",
                 "tangential = { control = \"compliant\", stiffness = 1e3, by = 1e-6 }\nuntil = "
@@ -130,15 +130,6 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "\"separation\"\n"),
        "v.toml:9:1: loading.stage: loading.stage.2: a tangential fixed load without adhesion is "
        "not yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      {"TangentialHeldForceUnderAHeldNormalForce",
-       replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
-                "normal = { by = -1.0e-4 }\nuntil = \"separation\"\n",
-                "tangential = { control = \"fixed-load\", to = 1e-3 }\nduration = 1.0\n"
-                "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
-                "until = \"separation\"\n"),
-       "v.toml:9:1: loading.stage: loading.stage.3: a tangential fixed load under a normal "
-       "control other than fixed grips (\"fixed-load\") is not yet taken with "
-       "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
       {"TangentialHeldForceWithFriction",
        replaced(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
                          "until = \"separation\"\n",
@@ -185,7 +176,14 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                      "tangential = { control = \"fixed-grips\", by = 1e-6 }\nduration = 1.0\n"
                      "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
                      "until = \"separation\"\nduration = 1.0\n")));
-  // A held tangential force under normal fixed grips on a glue is within it, pulled off too.
+  // A held tangential force on a glue is within it, pulled off under fixed grips or a fixed
+  // load.
+  EXPECT_NO_THROW(
+      build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                     "normal = { by = -1.0e-4 }\nuntil = \"separation\"\n",
+                     "tangential = { control = \"fixed-load\", to = 1e-3 }\nduration = 1.0\n"
+                     "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
+                     "until = \"separation\"\n")));
   EXPECT_NO_THROW(
       build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
                      "until = \"separation\"\n",
