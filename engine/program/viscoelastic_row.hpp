@@ -45,7 +45,7 @@ struct HeldAxisMotion {
   double rate;   ///< h' [N/s or m/s]
 };
 
-/// A tangential force held instead of u_x (under normal fixed grips): F_x moves linearly in time
+/// A tangential force held instead of u_x (under any normal control): F_x moves linearly in time
 /// and u_x creeps with the glued springs' tangential arms.
 struct HeldShearForce {
   double start;  ///< F_x at the segment's start [N]
@@ -121,7 +121,8 @@ struct ViscoelasticRowRun {
 /// tangential arms their stored energy G_inf w_x^2 / 2 + sum_j s_j^2 / (2 G_j) and their
 /// dissipation; a let-go steps the tangential stretch to zero load too, releasing q_x^2 /
 /// (2 G_0) (in jump_losses): machine_work + tangential_work = stored + surface +
-/// dissipated_by_bulk + jump_losses.
+/// dissipated_by_bulk + jump_losses. Under a held F_x, tangential_work is int F_x du_x along u_x's
+/// creep and F_x Du_x at each let-go's glassy step of u_x.
 struct ViscoelasticRowEnergy {
   double machine_work = 0.0;
   double tangential_work = 0.0;
