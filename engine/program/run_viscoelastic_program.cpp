@@ -297,10 +297,11 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   bool lost = false;
   double held = 0.0;
   double held_tangential = 0.0;  ///< u_x [m]
-  // The tangential axis's control: u_x held (fixed grips) or F_x (a fixed load, normal fixed
-  // grips only); a stage that does not name the axis keeps it.
+  // The tangential axis's control: u_x held (fixed grips), or F_x (a fixed load) or a machine
+  // spring's end (compliant); a stage that does not name the axis keeps it.
+  AffineConstraint tangential_control{1.0, 0.0};
   bool shear_force_held = false;
-  double held_shear_force = 0.0;  ///< F_x [N]
+  double held_shear_force = 0.0;  ///< its held value a_u u_x + a_F F_x [N or m]
   bool shear_lost = false;        ///< a held F_x lost its last glued spring
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
@@ -316,12 +317,32 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
         control = c;
       }
     }
-    if (stage.tangential && stage.tangential->controller->holds_force() != shear_force_held) {
-      // A switch sets the new held value from the present state: nothing jumps.
-      shear_force_held = !shear_force_held;
-      held_shear_force = drive.sample().tangential_force;
+    if (stage.tangential) {
+      const AffineConstraint c = stage.tangential->controller->constraint();
+      if (c.displacement_coefficient != tangential_control.displacement_coefficient ||
+          c.force_coefficient != tangential_control.force_coefficient) {
+        // A switch sets the new held value from the present state: nothing jumps.
+        tangential_control = c;
+        shear_force_held = !is_fixed_grips(c);
+        const ViscoelasticRowSample now = drive.sample();
+        held_shear_force = c.displacement_coefficient * now.tangential_displacement +
+                           c.force_coefficient * now.tangential_force;
+      }
     }
+    // Under a held F_x (not a machine spring) a loss of the glue is a flight.
+    const bool shear_holds_force = shear_force_held && holds_force(tangential_control);
     const double spring_energy_before = machine_spring_energy(control, row_force(drive.sample()));
+    const double tangential_spring_before =
+        machine_spring_energy(tangential_control, drive.sample().tangential_force);
+    // What the machine springs store more at the stage's end `end` [J].
+    const auto spring_change = [&](const ViscoelasticRowSample& end) {
+      double change = machine_spring_energy(control, row_force(end)) - spring_energy_before;
+      if (drives_through_spring(tangential_control)) {
+        change += machine_spring_energy(tangential_control, end.tangential_force) -
+                  tangential_spring_before;
+      }
+      return change;
+    };
     const AxisMotion tangential =
         axis_motion(stage.tangential, shear_force_held ? held_shear_force : held_tangential);
     const ViscoelasticStageDrive sd = stage_drive(stage, held, tangential.rate);
@@ -334,7 +355,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     const auto shear_force = [&]() -> std::optional<HeldShearForce> {
       if (!shear_force_held) return std::nullopt;
       return HeldShearForce{tangential.start + axis_rate * (drive.sample().time - stage_start),
-                            axis_rate};
+                            axis_rate, tangential_control};
     };
     // A held F_x that lost its glue slides away, unless a normal fixed load lost the contact
     // with it (the indenter separates: the normal axis's flight), as in the elastic program.
@@ -346,7 +367,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
       // A held F_x that loses its glue is a flight under a machine spring too.
-      hold_let_gos = adhesive && (!drives_through_spring(control) || shear_force_held);
+      hold_let_gos = adhesive && (!drives_through_spring(control) || shear_holds_force);
       const HeldStageEnd held_end =
           run_held_stage(drive, stage, control, held, tangential, shear_force,
                          adhesive && !drives_through_spring(control), report);
@@ -369,7 +390,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       }
     } else if (!stage.until_separation) {
       // Under a held F_x the let-gos that lose the glue are a flight: only the first is told.
-      hold_let_gos = adhesive && shear_force_held;
+      hold_let_gos = adhesive && shear_holds_force;
       drive.run({sd.seconds, rate, sd.end, std::nullopt, tangential_rate, tangential.at(1.0, false),
                  shear_force()},
                 false, {}, no_samples, report);
@@ -385,7 +406,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       hold_let_gos = false;
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
-      hold_let_gos = adhesive && shear_force_held;
+      hold_let_gos = adhesive && shear_holds_force;
       if (rate < 0.0) {
         for (int piece = 0; piece < kMostSeparationPieces && !separated && !drive.limited();
              ++piece) {
@@ -465,9 +486,8 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
                              : tangential.start + axis_rate * (end.time - stage_start);
     }
     ever_in_contact = ever_in_contact || drive.counts().touches + drive.counts().glues > 0;
-    const StageRecord record = viscoelastic_stage_record(
-        stage.name, end, control, before, now,
-        machine_spring_energy(control, row_force(end)) - spring_energy_before);
+    const StageRecord record =
+        viscoelastic_stage_record(stage.name, end, control, before, now, spring_change(end));
     total += record.work;
     total_energy += *record.energy;
     before = now;

@@ -2107,8 +2107,11 @@ class ViscoelasticRowDrive::Row {
     shear_unheld_ = false;
     if (!segment.tangential_force) return;
     if (!tangential_on_ && springs_.edge && springs_.shear_ratio > 0.0) start_tangential();
-    const double per_half = 2.0 * springs_.spacing;
-    shear_held_ = RowHeldAxis{0.0, segment.tangential_force->start / per_half,
+    // Per unit length of one half: kappa u_x + q_total = phi (prony_load_drive.hpp).
+    const AffineConstraint& c = segment.tangential_force->constraint;
+    const double per_half = 2.0 * springs_.spacing * c.force_coefficient;
+    shear_held_ = RowHeldAxis{c.displacement_coefficient / per_half,
+                              segment.tangential_force->start / per_half,
                               segment.tangential_force->rate / per_half};
     tangential_own_squares_.reset(tangential_terms_.size());
     for (const ViscoelasticSpringState& s : state_) {
@@ -2130,7 +2133,8 @@ class ViscoelasticRowDrive::Row {
                                           {tangential_members_, glued_origins_.value(), sums}, axis,
                                           tangential_);
     tangential_ = shear_motion_.at(0.0);
-    shear_unheld_ = tangential_members_ == 0 && (axis.held != 0.0 || axis.rate != 0.0);
+    shear_unheld_ =
+        tangential_members_ == 0 && axis.stiffness == 0.0 && (axis.held != 0.0 || axis.rate != 0.0);
   }
 
   void advance_held_shear(double h) {
@@ -2142,12 +2146,23 @@ class ViscoelasticRowDrive::Row {
     shear_motion_ = shifted(shear_motion_, h);
   }
 
-  /// The machine's tangential work int phi du_x and the members' dissipation over the next h
-  /// [s] of shear_motion_, all members at once.
+  /// The machine's tangential work and the members' dissipation over the next h [s] of
+  /// shear_motion_, all members at once: int phi du_x under a fixed load, int q dh under a
+  /// machine spring (its end moving at phi' / kappa, its load phi - kappa u_x).
   void count_held_shear_piece(double h) {
     const RowHeldAxis axis = shear_now();
-    tangential_work_.add(
-        integral_of_product({axis.held, axis.rate, {}}, exponential_sum_slope(shear_motion_), h));
+    if (axis.stiffness > 0.0) {
+      ExponentialSum load{axis.held - axis.stiffness * shear_motion_.constant,
+                          axis.rate - axis.stiffness * shear_motion_.slope,
+                          {}};
+      for (const ExponentialDecay& d : shear_motion_.decays) {
+        load.decays.push_back({-axis.stiffness * d.amplitude, d.time});
+      }
+      tangential_work_.add(integral_of_product(load, {axis.rate / axis.stiffness, 0.0, {}}, h));
+    } else {
+      tangential_work_.add(
+          integral_of_product({axis.held, axis.rate, {}}, exponential_sum_slope(shear_motion_), h));
+    }
     if (tangential_members_ == 0) return;
     dissipated_.add(
         shared_arms_motion_piece(tangential_arms_, tangential_own_squares_, shear_motion_, h)
@@ -2155,21 +2170,31 @@ class ViscoelasticRowDrive::Row {
   }
 
   /// After a glue or a let-go: the constraint met again at once, the members answering with
-  /// G_0 (the dashpots do not move): (m G_0) Du = phi - q. The machine holds its force (work
-  /// phi Du), the members store Du q + m G_0 Du^2 / 2 more, and the rest is lost:
-  /// m G_0 Du^2 / 2.
+  /// G_0 (the dashpots do not move): (kappa + m G_0) Du = phi - kappa u - q, as the held normal
+  /// axis's glassy step (held_glassy_step): a fixed load holds its force (work phi Du), a
+  /// machine spring's end stays (its work on the row Du (q_before + q_after) / 2); the members
+  /// store Du q + m G_0 Du^2 / 2 more, and the rest is lost.
   void held_shear_change(ViscoelasticRowChange change) {
-    if (change == ViscoelasticRowChange::let_go && tangential_members_ > 0) {
-      const RowHeldAxis axis = shear_now();
-      const auto m = static_cast<double>(tangential_members_);
-      const double glassy = m * glassy_shear_modulus();
+    const RowHeldAxis axis = shear_now();
+    const auto m = static_cast<double>(tangential_members_);
+    const double glassy = m * glassy_shear_modulus();
+    const double stiffness = axis.stiffness + glassy;
+    if (change == ViscoelasticRowChange::let_go && stiffness > 0.0) {
       const double load = tangential_relaxed() * (m * tangential_ - glued_origins_.value()) +
                           tangential_arms_.arm_force();
-      const double step = (axis.held - load) / glassy;
-      const double machine = axis.held * step;
-      tangential_work_.add(machine);
-      jump_losses_.add(machine - (step * load + 0.5 * glassy * step * step));
-      tangential_arms_.glassy_step(step);
+      const double load_before = axis.held - axis.stiffness * tangential_;
+      const double step = (load_before - load) / stiffness;
+      const double stored = step * load + 0.5 * glassy * step * step;
+      const bool fixed_load = axis.stiffness == 0.0;
+      const double machine =
+          fixed_load ? axis.held * step : 0.5 * step * (load_before + load + glassy * step);
+      if (fixed_load) {
+        tangential_work_.add(machine);
+      } else {
+        spring_work_.add(machine);
+      }
+      jump_losses_.add(machine - stored);
+      if (m > 0.0) tangential_arms_.glassy_step(step);
       tangential_ += step;
     }
     rebuild_shear_motion();

@@ -45,11 +45,13 @@ struct HeldAxisMotion {
   double rate;   ///< h' [N/s or m/s]
 };
 
-/// A tangential force held instead of u_x (under any normal control): F_x moves linearly in time
-/// and u_x creeps with the glued springs' tangential arms.
+/// A tangential force held instead of u_x (under any normal control): F_x, or a machine spring's
+/// end, moves linearly in time and u_x creeps with the glued springs' tangential arms.
 struct HeldShearForce {
-  double start;  ///< F_x at the segment's start [N]
-  double rate;   ///< F_x' [N/s]
+  double start;  ///< h at the segment's start [N under a fixed load, m under a machine spring]
+  double rate;   ///< h' [N/s or m/s]
+  /// a_u u_x + a_F F_x = h: a fixed load (0, 1) or a machine spring (1, 1 / k).
+  AffineConstraint constraint = {0.0, 1.0};
 };
 
 /// A stretch of the program during which the indentation moves at one rate, or, with `held`, a
@@ -165,7 +167,7 @@ class ViscoelasticRowDrive {
   /// Whether the last let-go broke a compressed spring (its tangential load alone): it lost its
   /// glue and stays pressed.
   bool last_let_go_by_shear() const;
-  /// Whether a held F_x != 0 lost its last glued spring (run() then stops there).
+  /// Whether a fixed load F_x != 0 lost its last glued spring (run() then stops there).
   bool shear_unheld() const;
   /// The state just before the last change (an on_change may ask for it; kept only where
   /// run() was given one).

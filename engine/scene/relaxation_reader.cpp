@@ -62,18 +62,13 @@ void refuse_outside_relaxation_scope(const TomlReader& loading, const TomlReader
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
     if (stage.tangential) tangential_control = stage.tangential->control;
-    // u_x moves under fixed grips, or follows a held tangential force on a glue that holds
-    // it, whatever the normal control (docs/viscoelastic.md).
-    if (stage.tangential && stage.tangential->control != "fixed-grips" &&
-        stage.tangential->control != "fixed-load") {
-      loading.fail_at("stage", not_yet_with_relaxation(
-                                   fmt::format("loading.stage.{}.tangential.control = \"{}\"",
-                                               i + 1, stage.tangential->control)));
-    }
-    if (tangential_control == "fixed-load" && !scene.material.adhesive()) {
-      loading.fail_at("stage",
-                      not_yet_with_relaxation(fmt::format(
-                          "loading.stage.{}: a tangential fixed load without adhesion", i + 1)));
+    // u_x moves under fixed grips, or follows a held force or machine spring on a glue that
+    // holds it, whatever the normal control (docs/viscoelastic.md).
+    if (tangential_control != "fixed-grips" && !scene.material.adhesive()) {
+      loading.fail_at("stage", not_yet_with_relaxation(fmt::format(
+                                   "loading.stage.{}: a tangential \"{}\" control without "
+                                   "adhesion",
+                                   i + 1, tangential_control)));
     }
     if (stage.normal && stage.normal->controller->holds_force() && !scene.material.adhesive()) {
       // A held force loses the contact in a flight only where the glue's last let-go loses it:

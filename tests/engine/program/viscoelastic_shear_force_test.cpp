@@ -106,6 +106,27 @@ ShearForceProgram held_normal_program(bool machine, double force) {
           stages};
 }
 
+/// Pressed (normal fixed grips, or a fixed load of 0.2 N), u_x driven through a tangential
+/// machine spring of 2000 N/m whose end moves to 10 um, held, pulled off.
+ShearForceProgram tangential_spring_program(bool held_normal) {
+  const std::string press =
+      held_normal ? "normal = { control = \"fixed-load\", to = 0.2 }\nduration = 0.5\n"
+                  : "normal = { control = \"fixed-grips\", to = 2.25e-4 }\nspeed = 1.0e-3\n";
+  const std::string pull =
+      held_normal ? "normal = { control = \"fixed-load\", by = -1.0 }\nuntil = \"separation\"\n"
+                    "duration = 10.0\n"
+                  : "normal = { control = \"fixed-grips\", by = -1.0e-3 }\n"
+                    "until = \"separation\"\nspeed = 1.0e-3\n";
+  const std::string stages =
+      shear_force_stage("press", press) +
+      shear_force_stage("shear",
+                        "tangential = { control = \"compliant\", stiffness = 2000.0, to = 1.0e-5 "
+                        "}\nduration = 0.05\n") +
+      shear_force_stage("creep", "duration = 0.5\n") + shear_force_stage("pull", pull);
+  return {fmt::format("tangential machine spring, normal {}", held_normal ? "fixed load" : "grips"),
+          stages};
+}
+
 /// Every program of the tests: normal fixed grips, then held normal controls.
 std::vector<ShearForceProgram> shear_force_programs() {
   return {
@@ -119,6 +140,8 @@ std::vector<ShearForceProgram> shear_force_programs() {
       held_normal_program(false, 1.0e-3),
       held_normal_program(true, 0.01),
       held_normal_program(true, 1.0e-3),
+      tangential_spring_program(false),
+      tangential_spring_program(true),
   };
 }
 

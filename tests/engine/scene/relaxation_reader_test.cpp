@@ -116,20 +116,15 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
        "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      // A tangential axis runs under fixed grips, or holds a force on a glue: not under a
-      // compliant control, without adhesion, or with friction.
-      {"TangentialCompliant",
-       replaced(kViscous, "until = \"separation\"\n",
-                "tangential = { control = \"compliant\", stiffness = 1e3, by = 1e-6 }\nuntil = "
-                "\"separation\"\n"),
-       "v.toml:9:1: loading.stage: loading.stage.2.tangential.control = \"compliant\" is not "
-       "yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+      // A tangential axis runs under fixed grips, or holds a force or a machine spring's end on
+      // a glue: not without adhesion, nor with friction.
       {"TangentialHeldForceWithoutAdhesion",
        replaced(kViscous, "until = \"separation\"\n",
                 "tangential = { control = \"fixed-load\", by = 1e-3 }\nuntil = "
                 "\"separation\"\n"),
-       "v.toml:9:1: loading.stage: loading.stage.2: a tangential fixed load without adhesion is "
-       "not yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+       "v.toml:9:1: loading.stage: loading.stage.2: a tangential \"fixed-load\" control without "
+       "adhesion is not yet taken with material.relaxation (docs/viscoelastic.md \"What it "
+       "refuses\")"},
       {"TangentialHeldForceWithFriction",
        replaced(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
                          "until = \"separation\"\n",
@@ -188,6 +183,12 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
       build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
                      "until = \"separation\"\n",
                      "tangential = { control = \"fixed-load\", by = 1e-3 }\n"
+                     "until = \"separation\"\n")));
+  // So is a tangential machine spring.
+  EXPECT_NO_THROW(
+      build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                     "until = \"separation\"\n",
+                     "tangential = { control = \"compliant\", stiffness = 1e3, by = 1e-6 }\n"
                      "until = \"separation\"\n")));
   // A held force that stays pressing and a machine spring are within it.
   EXPECT_NO_THROW(build(replaced(
