@@ -2084,18 +2084,19 @@ class ViscoelasticRowDrive::Row {
     return line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
   }
 
-  // A held tangential force (under any normal control). Between events the glued set is fixed
-  // and G_inf (m u_x - sum of its origins) + sum_j S_j = phi(t), phi the held F_x per unit
-  // length of one half, S_j the set's arm forces with S_j' = G_j m u_x' - S_j / tau_j: the
-  // equation the depth obeys under a held normal force, so u_x(t) is depth_under_held_axis's
-  // exponential sum with the tangential arms and G_inf. The normal axis does not see it; only
-  // the boundary's let-go reads its q_x, against that sum. A glue leaves the constraint met (a
-  // free spring carries no load); a let-go takes its q_x away, and the members left take it at
+  // A held tangential force or machine spring (under any normal control). Between events the
+  // glued set is fixed and kappa u_x + G_inf (m u_x - sum of its origins) + sum_j S_j = phi(t),
+  // phi the held F_x (or k h) per unit length of one half, kappa = 0 under a fixed load, S_j the
+  // set's arm forces with S_j' = G_j m u_x' - S_j / tau_j: the equation the depth obeys under a
+  // held normal control, so u_x(t) is depth_under_held_axis's exponential sum with the
+  // tangential arms and G_inf. The normal axis does not see it; only the boundary's let-go
+  // reads its q_x, against that sum. A glue leaves the constraint met (a free spring carries no
+  // load); a let-go takes its q_x away, and the members left (and a machine spring) take it at
   // once with the arms' glassy modulus G_0 (a step of u_x), which may let the next boundary go
-  // at the same time. Either rebuilds the motion. With no member left a held F_x != 0 is not
-  // carried (shear_unheld).
+  // at the same time. Either rebuilds the motion. With no member left a fixed load F_x != 0 is
+  // not carried (shear_unheld).
 
-  /// F_x's constraint from now: kappa = 0, phi and phi' [N/m, N/(m s)].
+  /// The tangential constraint from now: kappa, phi and phi' [N/m^2, N/m, N/(m s)].
   RowHeldAxis shear_now() const {
     RowHeldAxis axis = *shear_held_;
     axis.held += axis.rate * (time_ - segment_start_);
