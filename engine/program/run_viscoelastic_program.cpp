@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -151,18 +152,19 @@ struct HeldStageEnd {
 
 HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
                             const AffineConstraint& control, double held,
-                            const AxisMotion& tangential, bool stop_at_loss,
-                            const ViscoelasticRowDrive::OnChange& on_change) {
+                            const AxisMotion& tangential,
+                            const std::function<std::optional<HeldShearForce>()>& shear_force,
+                            bool stop_at_loss, const ViscoelasticRowDrive::OnChange& on_change) {
   const AxisMotion m = axis_motion(stage.normal, held);
   // The reader leaves a stage with a speed one moving axis.
   const double seconds = seconds_per_parameter(stage, m.rate != 0.0 ? m.rate : tangential.rate);
   const double rate = seconds > 0.0 ? m.rate / seconds : 0.0;
-  const double tangential_rate = seconds > 0.0 ? tangential.rate / seconds : 0.0;
+  const double tangential_rate = seconds > 0.0 && !shear_force() ? tangential.rate / seconds : 0.0;
   std::vector<ViscoelasticRowSample> no_samples;
   if (!stage.until_separation) {
     const double start = drive.sample().time;
     const bool lost = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate},
-                                 tangential_rate, tangential.at(1.0, false)},
+                                 tangential_rate, tangential.at(1.0, false), shear_force()},
                                 stop_at_loss, {}, no_samples, on_change);
     if (lost) return {held + rate * (drive.sample().time - start), true};
     return {m.end.value_or(held + m.rate), false};
@@ -172,9 +174,9 @@ HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
   for (int piece = 0; piece < kMostSeparationPieces && !separated && rate < 0.0 && !drive.limited();
        ++piece) {
     const double start = drive.sample().time;
-    separated = drive.run(
-        {seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate}, tangential_rate}, true,
-        {}, no_samples, on_change);
+    separated = drive.run({seconds, 0.0, std::nullopt, HeldAxisMotion{control, held, rate},
+                           tangential_rate, std::nullopt, shear_force()},
+                          true, {}, no_samples, on_change);
     held += rate * (drive.sample().time - start);
   }
   return {held, separated};
@@ -295,6 +297,12 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   bool lost = false;
   double held = 0.0;
   double held_tangential = 0.0;  ///< u_x [m]
+  // The tangential axis's control: u_x held (fixed grips), or F_x (a fixed load) or a machine
+  // spring's end (compliant); a stage that does not name the axis keeps it.
+  AffineConstraint tangential_control{1.0, 0.0};
+  bool shear_force_held = false;
+  double held_shear_force = 0.0;  ///< its held value a_u u_x + a_F F_x [N or m]
+  bool shear_lost = false;        ///< a held F_x lost its last glued spring
   for (const Stage& stage : program.stages) {
     stage_name = stage.name;
     // A row's changes settle in a few events per spring and stage; a stage that takes more than
@@ -309,20 +317,63 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
         control = c;
       }
     }
+    if (stage.tangential) {
+      const AffineConstraint c = stage.tangential->controller->constraint();
+      if (c.displacement_coefficient != tangential_control.displacement_coefficient ||
+          c.force_coefficient != tangential_control.force_coefficient) {
+        // A switch sets the new held value from the present state: nothing jumps.
+        tangential_control = c;
+        shear_force_held = !is_fixed_grips(c);
+        const ViscoelasticRowSample now = drive.sample();
+        held_shear_force = c.displacement_coefficient * now.tangential_displacement +
+                           c.force_coefficient * now.tangential_force;
+      }
+    }
+    // Under a held F_x (not a machine spring) a loss of the glue is a flight.
+    const bool shear_holds_force = shear_force_held && holds_force(tangential_control);
     const double spring_energy_before = machine_spring_energy(control, row_force(drive.sample()));
-    const AxisMotion tangential = axis_motion(stage.tangential, held_tangential);
+    const double tangential_spring_before =
+        machine_spring_energy(tangential_control, drive.sample().tangential_force);
+    // What the machine springs store more at the stage's end `end` [J].
+    const auto spring_change = [&](const ViscoelasticRowSample& end) {
+      double change = machine_spring_energy(control, row_force(end)) - spring_energy_before;
+      if (drives_through_spring(tangential_control)) {
+        change += machine_spring_energy(tangential_control, end.tangential_force) -
+                  tangential_spring_before;
+      }
+      return change;
+    };
+    const AxisMotion tangential =
+        axis_motion(stage.tangential, shear_force_held ? held_shear_force : held_tangential);
     const ViscoelasticStageDrive sd = stage_drive(stage, held, tangential.rate);
     const double rate = sd.rate();
-    // u_x moves linearly over the stage, under any normal control.
-    const double tangential_rate = sd.seconds > 0.0 ? tangential.rate / sd.seconds : 0.0;
+    // u_x (or a held F_x) moves linearly over the stage, under any normal control.
+    const double axis_rate = sd.seconds > 0.0 ? tangential.rate / sd.seconds : 0.0;
+    const double tangential_rate = shear_force_held ? 0.0 : axis_rate;
+    const double stage_start = drive.sample().time;
+    // A held F_x from the present time on.
+    const auto shear_force = [&]() -> std::optional<HeldShearForce> {
+      if (!shear_force_held) return std::nullopt;
+      return HeldShearForce{tangential.start + axis_rate * (drive.sample().time - stage_start),
+                            axis_rate, tangential_control};
+    };
+    // A held F_x that lost its glue slides away, unless a normal fixed load lost the contact
+    // with it (the indenter separates: the normal axis's flight), as in the elastic program.
+    const auto slides = [&] {
+      return shear_force_held && drive.shear_unheld() &&
+             !(holds_force(control) && drive.sample().pressed == 0);
+    };
     std::optional<ViscoelasticCascade> flight;
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
-      hold_let_gos = adhesive && !drives_through_spring(control);
+      // A held F_x that loses its glue is a flight under a machine spring too.
+      hold_let_gos = adhesive && (!drives_through_spring(control) || shear_holds_force);
       const HeldStageEnd held_end =
-          run_held_stage(drive, stage, control, held, tangential, hold_let_gos, report);
+          run_held_stage(drive, stage, control, held, tangential, shear_force,
+                         adhesive && !drives_through_spring(control), report);
       held = held_end.held;
-      if (hold_let_gos && held_end.separated) {
+      const bool flies = !drives_through_spring(control) || drive.shear_unheld();
+      if (hold_let_gos && held_end.separated && flies) {
         // The flight: the stage ends at the critical point, the first let-go told, the rest not.
         if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
         held_let_gos.clear();
@@ -338,19 +389,40 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
             stage.name, drive.sample().pressed));
       }
     } else if (!stage.until_separation) {
-      drive.run(
-          {sd.seconds, rate, sd.end, std::nullopt, tangential_rate, tangential.at(1.0, false)},
-          false, {}, no_samples, report);
+      // Under a held F_x the let-gos that lose the glue are a flight: only the first is told.
+      hold_let_gos = adhesive && shear_holds_force;
+      drive.run({sd.seconds, rate, sd.end, std::nullopt, tangential_rate, tangential.at(1.0, false),
+                 shear_force()},
+                false, {}, no_samples, report);
       held = sd.end;
+      // A held F_x that lost its last glued spring: the indenter slides away from the let-gos'
+      // critical point (as the normal held force's flight).
+      if (drive.shear_unheld()) {
+        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
+        held_let_gos.clear();
+        flight = jumps.open_cascade();
+      }
+      release_let_gos();
+      hold_let_gos = false;
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
+      hold_let_gos = adhesive && shear_holds_force;
       if (rate < 0.0) {
         for (int piece = 0; piece < kMostSeparationPieces && !separated && !drive.limited();
              ++piece) {
-          separated = drive.run({sd.seconds, rate, std::nullopt, std::nullopt, tangential_rate},
+          separated = drive.run({sd.seconds, rate, std::nullopt, std::nullopt, tangential_rate,
+                                 std::nullopt, shear_force()},
                                 true, {}, no_samples, report);
+          if (drive.shear_unheld()) break;
         }
       }
+      if (drive.shear_unheld()) {
+        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
+        held_let_gos.clear();
+        flight = jumps.open_cascade();
+      }
+      release_let_gos();
+      hold_let_gos = false;
       held = drive.sample().depth;
       if (!separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
@@ -374,11 +446,12 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       end = flight->before;
       const ViscoelasticRowEnergy run = drive.let_go_run();
       now.machine_work -= run.machine_work;
+      now.tangential_work -= run.tangential_work;
       now.stored -= run.stored;
       now.surface -= run.surface;
       now.jump_losses -= run.jump_losses;
       if (auto jump = jumps.close()) {
-        jump->end = JumpEnd::separated;
+        jump->end = slides() ? JumpEnd::sliding : JumpEnd::separated;
         jump->after = {};
         observers.emit({.kind = EventKind::jump, .state = jump->critical, .stage = jump->stage});
         result.jumps.push_back(std::move(*jump));
@@ -389,27 +462,41 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
              it != program.stages.end(); ++it) {
           skipped += fmt::format("{}'{}'", skipped.empty() ? "" : ", ", it->name);
         }
-        result.warnings.push_back(fmt::format(
-            "stage '{}': the normal fixed load (F = {:.6g} N) lost what held it and the indenter "
-            "separates: the program ends at its critical point; stages not run: {}",
-            stage.name, held, skipped));
+        if (slides()) {
+          result.warnings.push_back(fmt::format(
+              "stage '{}': the tangential fixed load (Fx = {:.6g} N) lost what held it and the "
+              "indenter slides away: the program ends at its critical point; stages not run: {}",
+              stage.name, flight->before.tangential_force, skipped));
+        } else {
+          result.warnings.push_back(fmt::format(
+              "stage '{}': the normal fixed load (F = {:.6g} N) lost what held it and the "
+              "indenter separates: the program ends at its critical point; stages not run: {}",
+              stage.name, held, skipped));
+        }
       }
     } else if (adhesive) {
       report_jump(jumps.close());
     }
     if (adhesive) jumps.observe(end);
     held_tangential = end.tangential_displacement;
+    shear_lost = slides();
+    if (shear_force_held) {
+      held_shear_force = !shear_lost && !stage.until_separation
+                             ? tangential.at(1.0, false)
+                             : tangential.start + axis_rate * (end.time - stage_start);
+    }
     ever_in_contact = ever_in_contact || drive.counts().touches + drive.counts().glues > 0;
-    const StageRecord record = viscoelastic_stage_record(
-        stage.name, end, control, before, now,
-        machine_spring_energy(control, row_force(end)) - spring_energy_before);
+    const StageRecord record =
+        viscoelastic_stage_record(stage.name, end, control, before, now, spring_change(end));
     total += record.work;
     total_energy += *record.energy;
     before = now;
     result.stages.push_back(record);
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
     lost = ever_in_contact && (end.pressed == 0 || flight);
-    if (result.stop_reason || flight) break;
+    if (result.stop_reason || flight || shear_lost || (shear_force_held && drive.shear_unheld())) {
+      break;
+    }
   }
   if (reached_row_end) {
     result.warnings.push_back(fmt::format(
@@ -425,7 +512,21 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     // "How a program ends"); a contact lost after its glue ends as the cascade that lost the
     // glue decides.
     result.status = lost ? RunStatus::no_instability : RunStatus::completed;
-    if (lost && jumps.glue_loss()) {
+    if (shear_lost) {
+      // The held F_x lost its last glued spring: as an elastic program's (the glue's loss
+      // decides; by shear alone a shear-off).
+      result.sliding = true;
+      if (jumps.glue_loss()) {
+        ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
+        if (jumps.glue_loss()->changes < 2) result.status = RunStatus::shear_off;
+      } else {
+        result.status = RunStatus::no_instability;
+        result.warnings.push_back(fmt::format(
+            "stage '{}': fixed-load holds F_x = {:.6g} N with no glued spring: the program ends "
+            "here",
+            stage_name, held_shear_force));
+      }
+    } else if (lost && jumps.glue_loss()) {
       ViscoelasticJumps::decide(*jumps.glue_loss(), spec.zero.contact_force, result);
       if (result.critical) fold.locate(*jumps.glue_loss(), result);
     }

@@ -17,6 +17,7 @@
 #include "engine/model/exponential_sum_total.hpp"
 #include "engine/model/prony_arms.hpp"
 #include "engine/model/prony_creep.hpp"
+#include "engine/model/prony_held_shear.hpp"
 #include "engine/model/prony_load_drive.hpp"
 #include "engine/model/prony_shared_drive.hpp"
 #include "engine/model/prony_shared_energy.hpp"
@@ -244,6 +245,7 @@ class ViscoelasticRowDrive::Row {
       start_tangential();
     }
     if (springs_.friction) restart_slides();
+    begin_held_shear(segment);
     run_memo_.forget();
     queue_ = {};
     first_events_.clear();
@@ -330,9 +332,14 @@ class ViscoelasticRowDrive::Row {
     } else {
       arms_.advance(rate_, t - time_);
     }
-    if (tangential_on_) tangential_arms_.advance(tangential_rate_, t - time_);
+    if (shear_held_) {
+      advance_held_shear(t - time_);
+    } else if (tangential_on_) {
+      tangential_arms_.advance(tangential_rate_, t - time_);
+    }
     time_ = t;
     depth_ = t == end_ ? end_depth_ : segment_depth_ + rate_ * (t - segment_start_);
+    if (shear_held_) return;
     tangential_ =
         t == end_ ? end_tangential_ : segment_tangential_ + tangential_rate_ * (t - segment_start_);
   }
@@ -393,6 +400,7 @@ class ViscoelasticRowDrive::Row {
 
   bool in_contact() const { return !pressed_.empty(); }
   bool last_let_go_by_shear() const { return last_let_go_by_shear_; }
+  bool shear_unheld() const { return shear_unheld_; }
 
   /// The energy up to now, per unit x of one half [J/m].
   ViscoelasticRowEnergy energy() {
@@ -596,6 +604,8 @@ class ViscoelasticRowDrive::Row {
     const double machine_before = machine_work_.value();
     const double surface_before = surface_.value();
     const double losses_before = jump_losses_.value();
+    const double tangential_before = tangential_work_.value();
+    const double spring_before = spring_work_.value();
     ViscoelasticRowChange change = ViscoelasticRowChange::touch;
     if (s.phase == ViscoelasticSpringPhase::glued) {
       change = ViscoelasticRowChange::let_go;
@@ -621,9 +631,20 @@ class ViscoelasticRowDrive::Row {
         index_change(k, left);
       }
       held_glassy_step(held_load_before);
+      if (shear_held_ &&
+          (change == ViscoelasticRowChange::let_go || change == ViscoelasticRowChange::glue)) {
+        held_shear_change(change);
+      }
       rebuild_motion();
-      note_let_go_run(change, machine_before, surface_before, losses_before);
+      note_let_go_run(change, machine_before, surface_before, losses_before, tangential_before,
+                      spring_before);
       return change;
+    }
+    if (shear_held_ &&
+        (change == ViscoelasticRowChange::let_go || change == ViscoelasticRowChange::glue)) {
+      held_shear_change(change);
+      note_let_go_run(change, machine_before, surface_before, losses_before, tangential_before,
+                      spring_before);
     }
     for (const auto j :
          {std::optional<std::size_t>(k), boundary_before, outside_before, boundary(), outside()}) {
@@ -643,7 +664,7 @@ class ViscoelasticRowDrive::Row {
 
  private:
   void note_let_go_run(ViscoelasticRowChange change, double machine_before, double surface_before,
-                       double losses_before) {
+                       double losses_before, double tangential_before, double spring_before) {
     const bool joins = change == ViscoelasticRowChange::let_go && time_ == let_go_run_time_;
     if (!joins) let_go_run_ = {};
     let_go_run_time_ = change == ViscoelasticRowChange::let_go ? time_ : -HUGE_VAL;
@@ -651,10 +672,16 @@ class ViscoelasticRowDrive::Row {
     const double machine = machine_work_.value() - machine_before;
     const double surface = surface_.value() - surface_before;
     const double losses = jump_losses_.value() - losses_before;
+    // A held F_x's let-gos step u_x (its work); under fixed grips u_x does not move at a let-go.
+    const double tangential = tangential_work_.value() - tangential_before;
     let_go_run_.machine_work += machine;
+    let_go_run_.tangential_work += tangential;
     let_go_run_.surface += surface;
     let_go_run_.jump_losses += losses;
-    let_go_run_.stored += machine - surface - losses;
+    // What a machine spring's end gave the row in their glassy steps (its own energy is the
+    // caller's).
+    const double spring = spring_work_.value() - spring_before;
+    let_go_run_.stored += machine + tangential + spring - surface - losses;
   }
 
   /// The springs' total line load per half [N/m]: E* (n d - sum g) + sum_j S_j.
@@ -683,6 +710,7 @@ class ViscoelasticRowDrive::Row {
     const bool fixed_load = axis.stiffness == 0.0;
     const double machine = fixed_load ? axis.held * step : 0.5 * step * (load_before + load_after);
     if (fixed_load) machine_work_.add(machine);
+    if (!fixed_load) spring_work_.add(machine);
     jump_losses_.add(machine - stored);
     arms_.glassy_step(step);
     depth_ += step;
@@ -853,7 +881,11 @@ class ViscoelasticRowDrive::Row {
       return;
     }
     const double h = time_ - s.counted_at;
-    if (tangential_on_ && s.shear && s.shear->in_set) count_tangential(s, h);
+    if (shear_held_ && s.shear && s.shear->in_set) {
+      note_tangential(s);  // counted for all members at once (count_held_shear_piece)
+    } else if (tangential_on_ && s.shear && s.shear->in_set) {
+      count_tangential(s, h);
+    }
     if (s.shear && s.shear->slide) count_sliding(s);
     s.counted_at = time_;
     s.counted_stretch = depth_ - image;
@@ -952,7 +984,7 @@ class ViscoelasticRowDrive::Row {
       s.shear->creep.reset();
     }
     s.shear->origin = tangential_ - stretch;
-    if (held_) tangential_own_squares_.change(tangential_arms_, stresses, 1.0);
+    if (held_ || shear_held_) tangential_own_squares_.change(tangential_arms_, stresses, 1.0);
     s.shear->member = tangential_arms_.enter(stresses, 1.0);
     s.shear->counted_stretch = stretch;
     s.shear->counted_stresses = stresses;
@@ -965,7 +997,7 @@ class ViscoelasticRowDrive::Row {
   /// to zero load, releasing q_x^2 / (2 G_0), and it creeps free from there.
   void let_go_tangentially(ViscoelasticSpringState& s) {
     FewValues<double> stresses = tangential_arms_.leave(s.shear->member);
-    if (held_) tangential_own_squares_.change(tangential_arms_, stresses, -1.0);
+    if (held_ || shear_held_) tangential_own_squares_.change(tangential_arms_, stresses, -1.0);
     const double stretch = tangential_ - s.shear->origin;
     const double load = tangential_relaxed() * stretch + sum_of(stresses);
     const double before = tangential_stored_of(stretch, stresses);
@@ -1129,6 +1161,7 @@ class ViscoelasticRowDrive::Row {
     for (std::size_t j = 0; j < stresses.size(); ++j) {
       stresses[j] = tangential_arms_.stress(s.shear->member, j);
     }
+    if (shear_held_) return held_shear_load(s, stresses);
     return line_load_over(tangential_relaxed(), tangential_terms_, tangential_ - s.shear->origin,
                           stresses, tangential_rate_);
   }
@@ -1525,13 +1558,16 @@ class ViscoelasticRowDrive::Row {
       }
       depth_ = motion_.at(h);
       motion_ = shifted(motion_, h);
-      if (tangential_on_) {
+      if (shear_held_) {
+        advance_held_shear(h);
+      } else if (tangential_on_) {
         count_held_tangential_piece(h);
         tangential_arms_.advance(tangential_rate_, h);
         tangential_own_squares_.advance(tangential_terms_, h);
       }
     }
     time_ = t;
+    if (shear_held_) return;
     tangential_ =
         t == end_ ? end_tangential_ : segment_tangential_ + tangential_rate_ * (t - segment_start_);
   }
@@ -2048,6 +2084,146 @@ class ViscoelasticRowDrive::Row {
     return line_load_over(springs_.relaxed_modulus, springs_.terms, stretch, stresses, rate_);
   }
 
+  // A held tangential force or machine spring (under any normal control). Between events the
+  // glued set is fixed and kappa u_x + G_inf (m u_x - sum of its origins) + sum_j S_j = phi(t),
+  // phi the held F_x (or k h) per unit length of one half, kappa = 0 under a fixed load, S_j the
+  // set's arm forces with S_j' = G_j m u_x' - S_j / tau_j: the equation the depth obeys under a
+  // held normal control, so u_x(t) is depth_under_held_axis's exponential sum with the
+  // tangential arms and G_inf. The normal axis does not see it; only the boundary's let-go
+  // reads its q_x, against that sum. A glue leaves the constraint met (a free spring carries no
+  // load); a let-go takes its q_x away, and the members left (and a machine spring) take it at
+  // once with the arms' glassy modulus G_0 (a step of u_x), which may let the next boundary go
+  // at the same time. Either rebuilds the motion. With no member left a fixed load F_x != 0 is
+  // not carried (shear_unheld).
+
+  /// The tangential constraint from now: kappa, phi and phi' [N/m^2, N/m, N/(m s)].
+  RowHeldAxis shear_now() const {
+    RowHeldAxis axis = *shear_held_;
+    axis.held += axis.rate * (time_ - segment_start_);
+    return axis;
+  }
+
+  void begin_held_shear(const DriveSegment& segment) {
+    shear_held_.reset();
+    shear_unheld_ = false;
+    if (!segment.tangential_force) return;
+    if (!tangential_on_ && springs_.edge && springs_.shear_ratio > 0.0) start_tangential();
+    // Per unit length of one half: kappa u_x + q_total = phi (prony_load_drive.hpp).
+    const AffineConstraint& c = segment.tangential_force->constraint;
+    const double per_half = 2.0 * springs_.spacing * c.force_coefficient;
+    shear_held_ = RowHeldAxis{c.displacement_coefficient / per_half,
+                              segment.tangential_force->start / per_half,
+                              segment.tangential_force->rate / per_half};
+    tangential_own_squares_.reset(tangential_terms_.size());
+    for (const ViscoelasticSpringState& s : state_) {
+      if (!s.shear || !s.shear->in_set) continue;
+      FewValues<double> stresses(tangential_terms_.size());
+      for (std::size_t j = 0; j < stresses.size(); ++j) {
+        stresses[j] = tangential_arms_.stress(s.shear->member, j);
+      }
+      tangential_own_squares_.change(tangential_arms_, stresses, 1.0);
+    }
+    rebuild_shear_motion();
+  }
+
+  void rebuild_shear_motion() {
+    const RowHeldAxis axis = shear_now();
+    std::vector<double> sums(tangential_terms_.size());
+    for (std::size_t j = 0; j < sums.size(); ++j) sums[j] = tangential_arms_.arm_force(j);
+    shear_motion_ = depth_under_held_axis(tangential_relaxed(), tangential_terms_,
+                                          {tangential_members_, glued_origins_.value(), sums}, axis,
+                                          tangential_);
+    tangential_ = shear_motion_.at(0.0);
+    shear_unheld_ =
+        tangential_members_ == 0 && axis.stiffness == 0.0 && (axis.held != 0.0 || axis.rate != 0.0);
+  }
+
+  void advance_held_shear(double h) {
+    if (!(h > 0.0)) return;
+    count_held_shear_piece(h);
+    tangential_arms_.advance_along(shear_motion_, h);
+    tangential_own_squares_.advance(tangential_terms_, h);
+    tangential_ = shear_motion_.at(h);
+    shear_motion_ = shifted(shear_motion_, h);
+  }
+
+  /// The machine's tangential work and the members' dissipation over the next h [s] of
+  /// shear_motion_, all members at once: int phi du_x under a fixed load, int q dh under a
+  /// machine spring (its end moving at phi' / kappa, its load phi - kappa u_x).
+  void count_held_shear_piece(double h) {
+    const RowHeldAxis axis = shear_now();
+    if (axis.stiffness > 0.0) {
+      ExponentialSum load{axis.held - axis.stiffness * shear_motion_.constant,
+                          axis.rate - axis.stiffness * shear_motion_.slope,
+                          {}};
+      for (const ExponentialDecay& d : shear_motion_.decays) {
+        load.decays.push_back({-axis.stiffness * d.amplitude, d.time});
+      }
+      tangential_work_.add(integral_of_product(load, {axis.rate / axis.stiffness, 0.0, {}}, h));
+    } else {
+      tangential_work_.add(
+          integral_of_product({axis.held, axis.rate, {}}, exponential_sum_slope(shear_motion_), h));
+    }
+    if (tangential_members_ == 0) return;
+    dissipated_.add(
+        shared_arms_motion_piece(tangential_arms_, tangential_own_squares_, shear_motion_, h)
+            .dissipated);
+  }
+
+  /// After a glue or a let-go: the constraint met again at once, the members answering with
+  /// G_0 (the dashpots do not move): (kappa + m G_0) Du = phi - kappa u - q, as the held normal
+  /// axis's glassy step (held_glassy_step): a fixed load holds its force (work phi Du), a
+  /// machine spring's end stays (its work on the row Du (q_before + q_after) / 2); the members
+  /// store Du q + m G_0 Du^2 / 2 more, and the rest is lost.
+  void held_shear_change(ViscoelasticRowChange change) {
+    const RowHeldAxis axis = shear_now();
+    const auto m = static_cast<double>(tangential_members_);
+    const double glassy = m * glassy_shear_modulus();
+    const double stiffness = axis.stiffness + glassy;
+    if (change == ViscoelasticRowChange::let_go && stiffness > 0.0) {
+      const double load = tangential_relaxed() * (m * tangential_ - glued_origins_.value()) +
+                          tangential_arms_.arm_force();
+      const double load_before = axis.held - axis.stiffness * tangential_;
+      const double step = (load_before - load) / stiffness;
+      const double stored = step * load + 0.5 * glassy * step * step;
+      const bool fixed_load = axis.stiffness == 0.0;
+      const double machine =
+          fixed_load ? axis.held * step : 0.5 * step * (load_before + load + glassy * step);
+      if (fixed_load) {
+        tangential_work_.add(machine);
+      } else {
+        spring_work_.add(machine);
+      }
+      jump_losses_.add(machine - stored);
+      if (m > 0.0) tangential_arms_.glassy_step(step);
+      tangential_ += step;
+    }
+    rebuild_shear_motion();
+  }
+
+  /// A member's tangential line load from now under shear_motion_ (its arm stresses now).
+  ExponentialSum held_shear_load(const ViscoelasticSpringState& s,
+                                 std::span<const double> stresses) const {
+    ExponentialSum load{tangential_relaxed() * (shear_motion_.constant - s.shear->origin),
+                        tangential_relaxed() * shear_motion_.slope,
+                        {}};
+    for (const ExponentialDecay& d : shear_motion_.decays) {
+      load.decays.push_back({tangential_relaxed() * d.amplitude, d.time});
+    }
+    for (std::size_t j = 0; j < tangential_terms_.size(); ++j) {
+      const ExponentialSum r = arm_stress_under(stresses[j], tangential_terms_[j], shear_motion_);
+      load.constant += r.constant;
+      load.slope += r.slope;
+      load.decays.insert(load.decays.end(), r.decays.begin(), r.decays.end());
+    }
+    return load;
+  }
+
+  std::optional<RowHeldAxis> shear_held_;  ///< a held F_x's constraint, per unit x of one half
+  ExponentialSum shear_motion_;            ///< u_x from now under it [m]
+  CompensatedSum spring_work_;  ///< a machine spring's work on the row in glassy steps [J/m]
+  bool shear_unheld_ = false;
+
   const ViscoelasticRowSprings& springs_;
   SharedDriveArms arms_;
   std::shared_ptr<const RetardationModes> modes_;
@@ -2136,6 +2312,7 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
                                const OnChange& on_change) {
   Row& row = *row_;
   row.begin_segment(segment);
+  if (row.shear_unheld()) return true;
   std::size_t next_sample = 0;
   for (;;) {
     const auto event = row.next_event();
@@ -2157,6 +2334,7 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
         change == ViscoelasticRowChange::release || change == ViscoelasticRowChange::let_go;
     if (on_change) on_change(change, leaves ? before_last_change_ : row.sample());
     if (stop_at_separation && leaves && !row.in_contact()) return true;
+    if (row.shear_unheld()) return true;
     if (counts_.events() >= event_limit_) {
       limited_ = true;
       return false;
@@ -2169,6 +2347,7 @@ bool ViscoelasticRowDrive::run(const DriveSegment& segment, bool stop_at_separat
 ViscoelasticRowSample ViscoelasticRowDrive::sample() const { return row_->sample(); }
 
 bool ViscoelasticRowDrive::last_let_go_by_shear() const { return row_->last_let_go_by_shear(); }
+bool ViscoelasticRowDrive::shear_unheld() const { return row_->shear_unheld(); }
 ViscoelasticRowEnergy ViscoelasticRowDrive::let_go_run() const {
   const ViscoelasticRowEnergy e = row_->let_go_run();
   const double both_halves = 2.0 * row_->spacing();

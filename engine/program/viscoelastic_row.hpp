@@ -45,6 +45,15 @@ struct HeldAxisMotion {
   double rate;   ///< h' [N/s or m/s]
 };
 
+/// A tangential force held instead of u_x (under any normal control): F_x, or a machine spring's
+/// end, moves linearly in time and u_x creeps with the glued springs' tangential arms.
+struct HeldShearForce {
+  double start;  ///< h at the segment's start [N under a fixed load, m under a machine spring]
+  double rate;   ///< h' [N/s or m/s]
+  /// a_u u_x + a_F F_x = h: a fixed load (0, 1) or a machine spring (1, 1 / k).
+  AffineConstraint constraint = {0.0, 1.0};
+};
+
 /// A stretch of the program during which the indentation moves at one rate, or, with `held`, a
 /// force or a machine end does (the depth then follows the row's creep between events).
 struct DriveSegment {
@@ -60,6 +69,9 @@ struct DriveSegment {
   double tangential_rate = 0.0;
   /// u_x at its end [m] where it is known exactly; else the start's plus rate times duration.
   std::optional<double> end_tangential = std::nullopt;
+  /// F_x held instead (tangential_rate and end_tangential unused): u_x follows the glued
+  /// springs' creep between events and steps at a let-go (docs/viscoelastic.md).
+  std::optional<HeldShearForce> tangential_force = std::nullopt;
 };
 
 /// The row's state at one time.
@@ -111,7 +123,8 @@ struct ViscoelasticRowRun {
 /// tangential arms their stored energy G_inf w_x^2 / 2 + sum_j s_j^2 / (2 G_j) and their
 /// dissipation; a let-go steps the tangential stretch to zero load too, releasing q_x^2 /
 /// (2 G_0) (in jump_losses): machine_work + tangential_work = stored + surface +
-/// dissipated_by_bulk + jump_losses.
+/// dissipated_by_bulk + jump_losses. Under a held F_x, tangential_work is int F_x du_x along u_x's
+/// creep and F_x Du_x at each let-go's glassy step of u_x.
 struct ViscoelasticRowEnergy {
   double machine_work = 0.0;
   double tangential_work = 0.0;
@@ -154,6 +167,8 @@ class ViscoelasticRowDrive {
   /// Whether the last let-go broke a compressed spring (its tangential load alone): it lost its
   /// glue and stays pressed.
   bool last_let_go_by_shear() const;
+  /// Whether a fixed load F_x != 0 lost its last glued spring (run() then stops there).
+  bool shear_unheld() const;
   /// The state just before the last change (an on_change may ask for it; kept only where
   /// run() was given one).
   const ViscoelasticRowSample& before_last_change() const { return before_last_change_; }

@@ -57,14 +57,18 @@ void refuse_outside_relaxation_scope(const TomlReader& loading, const TomlReader
         "relaxation",
         std::string("needs every loading stage to have a duration or speed") + kRelaxationScope);
   }
+  // The tangential control as each stage leaves it (a stage that does not name it keeps it).
+  std::string tangential_control = "fixed-grips";
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
-    // u_x moves under fixed grips whatever the normal control; a held tangential force is not
-    // carried.
-    if (stage.tangential && stage.tangential->control != "fixed-grips") {
-      loading.fail_at("stage", not_yet_with_relaxation(
-                                   fmt::format("loading.stage.{}.tangential.control = \"{}\"",
-                                               i + 1, stage.tangential->control)));
+    if (stage.tangential) tangential_control = stage.tangential->control;
+    // u_x moves under fixed grips, or follows a held force or machine spring on a glue that
+    // holds it, whatever the normal control (docs/viscoelastic.md).
+    if (tangential_control != "fixed-grips" && !scene.material.adhesive()) {
+      loading.fail_at("stage", not_yet_with_relaxation(fmt::format(
+                                   "loading.stage.{}: a tangential \"{}\" control without "
+                                   "adhesion",
+                                   i + 1, tangential_control)));
     }
     if (stage.normal && stage.normal->controller->holds_force() && !scene.material.adhesive()) {
       // A held force loses the contact in a flight only where the glue's last let-go loses it:
@@ -96,11 +100,17 @@ void refuse_friction_with_relaxation(const TomlReader& friction, const Scene& sc
     friction.fail_at("law", not_yet_with_relaxation("a friction law other than one coefficient"));
   }
   // Slips and sticks are located along a fixed-grips drive only: under a held control the depth
-  // creeps between events, and the sliding springs' limits with it.
+  // (or u_x) creeps between events, and the sliding springs' limits with it.
   std::string normal_control = "fixed-grips";  // a stage's own, or the one before it
   for (std::size_t i = 0; i < scene.program->stages.size(); ++i) {
     const Stage& stage = scene.program->stages[i];
     if (stage.normal) normal_control = stage.normal->control;
+    if (stage.tangential && stage.tangential->control != "fixed-grips") {
+      friction.fail_at("coefficient", not_yet_with_relaxation(fmt::format(
+                                          "friction under a tangential control other than fixed "
+                                          "grips (loading.stage.{}: \"{}\")",
+                                          i + 1, stage.tangential->control)));
+    }
     if (normal_control != "fixed-grips") {
       friction.fail_at("coefficient", not_yet_with_relaxation(fmt::format(
                                           "friction under a normal control other than fixed grips "

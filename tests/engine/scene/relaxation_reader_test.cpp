@@ -116,13 +116,24 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                 "work_of_adhesion = 0.0\ngrading = { exponent = 0.5, depth = 1e-3 }\n"),
        "v.toml:5:11: material.grading: a graded half-space is not yet taken with "
        "material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
-      // A tangential axis runs under fixed grips.
-      {"TangentialHeldForce",
+      // A tangential axis runs under fixed grips, or holds a force or a machine spring's end on
+      // a glue: not without adhesion, nor with friction.
+      {"TangentialHeldForceWithoutAdhesion",
        replaced(kViscous, "until = \"separation\"\n",
                 "tangential = { control = \"fixed-load\", by = 1e-3 }\nuntil = "
                 "\"separation\"\n"),
-       "v.toml:9:1: loading.stage: loading.stage.2.tangential.control = \"fixed-load\" is not "
-       "yet taken with material.relaxation (docs/viscoelastic.md \"What it refuses\")"},
+       "v.toml:9:1: loading.stage: loading.stage.2: a tangential \"fixed-load\" control without "
+       "adhesion is not yet taken with material.relaxation (docs/viscoelastic.md \"What it "
+       "refuses\")"},
+      {"TangentialHeldForceWithFriction",
+       replaced(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                         "until = \"separation\"\n",
+                         "tangential = { control = \"fixed-load\", by = 1e-3 }\nuntil = "
+                         "\"separation\"\n"),
+                "springs = 100\n", "springs = 100\n[friction]\ncoefficient = 0.5\n"),
+       "v.toml:20:15: friction.coefficient: friction under a tangential control other than fixed "
+       "grips (loading.stage.2: \"fixed-load\") is not yet taken with material.relaxation "
+       "(docs/viscoelastic.md \"What it refuses\")"},
       {"FixedLoad",
        replaced(kViscous, "normal = { by = -1.0e-4 }",
                 "normal = { control = \"fixed-load\", by = -1.0e-3 }"),
@@ -160,6 +171,25 @@ TEST(RelaxationReader, RefusesOneLineAtTheKey) {
                      "tangential = { control = \"fixed-grips\", by = 1e-6 }\nduration = 1.0\n"
                      "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
                      "until = \"separation\"\nduration = 1.0\n")));
+  // A held tangential force on a glue is within it, pulled off under fixed grips or a fixed
+  // load.
+  EXPECT_NO_THROW(
+      build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                     "normal = { by = -1.0e-4 }\nuntil = \"separation\"\n",
+                     "tangential = { control = \"fixed-load\", to = 1e-3 }\nduration = 1.0\n"
+                     "[[loading.stage]]\nnormal = { control = \"fixed-load\", by = -1e-3 }\n"
+                     "until = \"separation\"\n")));
+  EXPECT_NO_THROW(
+      build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                     "until = \"separation\"\n",
+                     "tangential = { control = \"fixed-load\", by = 1e-3 }\n"
+                     "until = \"separation\"\n")));
+  // So is a tangential machine spring.
+  EXPECT_NO_THROW(
+      build(replaced(replaced(kViscous, "work_of_adhesion = 0.0", "work_of_adhesion = 0.05"),
+                     "until = \"separation\"\n",
+                     "tangential = { control = \"compliant\", stiffness = 1e3, by = 1e-6 }\n"
+                     "until = \"separation\"\n")));
   // A held force that stays pressing and a machine spring are within it.
   EXPECT_NO_THROW(build(replaced(
       replaced(kViscous, "normal = { control = \"fixed-grips\", to = 2.0e-5 }",
