@@ -61,6 +61,9 @@ std::optional<JumpRecord> ViscoelasticJumps::close() {
   jump.after = viscoelastic_snapshot(c.after);
   jump.springs = c.after.pressed - c.before.pressed;
   jump.glued_springs = c.after.glued - c.before.glued;
+  // As the elastic program's: the first spring due after the critical point broke at zero
+  // stretch (the tangential load alone).
+  jump.by_shear = c.second_by_shear;
   return jump;
 }
 

@@ -149,7 +149,7 @@ TEST(ViscoelasticShearForce, AVanishingArmIsTheElasticProgramUnderAHeldTangentia
   // E_1 = 1e-9 E_inf: every load differs from the elastic row's by that share, so every state
   // the two report agrees to 1e-9 of the path's largest force (u_x to 1e-9 of the largest u_x:
   // it is a held force over a stiffness that differs by that share); counts, statuses and
-  // jumps equal (by_shear apart: the viscoelastic jumps do not set it).
+  // jumps equal, by_shear included (the shear-off ramp's jump is one).
   const std::vector<ShearForceProgram> programs = shear_force_programs();
   std::printf("vanishing arm under a held F_x: largest gap to the elastic program / F_max\n");
   for (const ShearForceProgram& p : programs) {
@@ -194,6 +194,7 @@ TEST(ViscoelasticShearForce, AVanishingArmIsTheElasticProgramUnderAHeldTangentia
       EXPECT_EQ(v.jumps[i].end, e.jumps[i].end) << i;
       EXPECT_EQ(v.jumps[i].springs, e.jumps[i].springs) << i;
       EXPECT_EQ(v.jumps[i].glued_springs, e.jumps[i].glued_springs) << i;
+      EXPECT_EQ(v.jumps[i].by_shear, e.jumps[i].by_shear) << i;
       compare(v.jumps[i].critical, e.jumps[i].critical, "jump");
     }
     std::printf("  %-44s %.2e (status %d, %zu jumps, critical F %.10e / %.10e)\n", p.name.c_str(),
