@@ -182,6 +182,25 @@ HeldStageEnd run_held_stage(ViscoelasticRowDrive& drive, const Stage& stage,
   return {held, separated};
 }
 
+/// The names of the stages after `stage`, quoted, for a warning that they are not run.
+std::string stages_after(const Program& program, const Stage& stage) {
+  std::string skipped;
+  for (auto it = program.stages.begin() + (&stage - program.stages.data()) + 1;
+       it != program.stages.end(); ++it) {
+    skipped += fmt::format("{}'{}'", skipped.empty() ? "" : ", ", it->name);
+  }
+  return skipped;
+}
+
+/// The held value a stage moves its normal axis to from `held` (a stage until separation has
+/// no end: its start).
+double held_end_value(const Stage& stage, double held) {
+  if (!stage.normal || stage.until_separation) return held;
+  if (stage.normal->motion == StageAxis::Motion::to) return stage.normal->value;
+  if (stage.normal->motion == StageAxis::Motion::by) return held + stage.normal->value;
+  return held;
+}
+
 }  // namespace
 
 RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& observers) {
@@ -283,10 +302,10 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
   // Without adhesion, a row reaching past the contact or an observer of the springs' changes,
   // on_change does nothing: the drive then builds no states around each change.
   const bool listens =
-      extended || adhesive || observers.wants(EventKind::spring_touched) ||
-      observers.wants(EventKind::spring_lifted) || observers.wants(EventKind::spring_glued) ||
-      observers.wants(EventKind::spring_detached) || observers.wants(EventKind::spring_slipped) ||
-      observers.wants(EventKind::spring_stuck);
+      extended || adhesive || holds_other_than_depth(program) ||
+      observers.wants(EventKind::spring_touched) || observers.wants(EventKind::spring_lifted) ||
+      observers.wants(EventKind::spring_glued) || observers.wants(EventKind::spring_detached) ||
+      observers.wants(EventKind::spring_slipped) || observers.wants(EventKind::spring_stuck);
   const ViscoelasticRowDrive::OnChange report =
       listens ? ViscoelasticRowDrive::OnChange(on_change) : ViscoelasticRowDrive::OnChange();
   std::vector<ViscoelasticRowSample> no_samples;
@@ -364,14 +383,25 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
              !(holds_force(control) && drive.sample().pressed == 0);
     };
     std::optional<ViscoelasticCascade> flight;
+    bool unglued_loss = false;  ///< a held force without adhesion fell to zero in contact
+    ViscoelasticRowSample unglued_end{};
     if (!is_fixed_grips(control)) {
       const bool in_contact = drive.sample().pressed > 0;
       // A held F_x that loses its glue is a flight under a machine spring too.
       hold_let_gos = adhesive && (!drives_through_spring(control) || shear_holds_force);
+      // Without adhesion a held force that falls to zero loses the contact at zero force, where
+      // the last pressed spring's load (the force) reaches zero: the stage stops there.
+      const bool falls = !adhesive && holds_force(control) && in_contact &&
+                         (stage.until_separation || !(held_end_value(stage, held) > 0.0));
       const HeldStageEnd held_end =
           run_held_stage(drive, stage, control, held, tangential, shear_force,
-                         adhesive && !drives_through_spring(control), report);
+                         (adhesive || falls) && !drives_through_spring(control), report);
       held = held_end.held;
+      if (falls && (held_end.separated || !(held > 0.0))) {
+        // As the elastic program's: the stage ends at the loss, the last spring at zero load.
+        unglued_loss = true;
+        unglued_end = drive.sample().pressed > 0 ? drive.sample() : drive.before_last_change();
+      }
       const bool flies = !drives_through_spring(control) || drive.shear_unheld();
       if (hold_let_gos && held_end.separated && flies) {
         // The flight: the stage ends at the critical point, the first let-go told, the rest not.
@@ -457,11 +487,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
         result.jumps.push_back(std::move(*jump));
       }
       if (&stage != &program.stages.back()) {
-        std::string skipped;
-        for (auto it = program.stages.begin() + (&stage - program.stages.data()) + 1;
-             it != program.stages.end(); ++it) {
-          skipped += fmt::format("{}'{}'", skipped.empty() ? "" : ", ", it->name);
-        }
+        const std::string skipped = stages_after(program, stage);
         if (slides()) {
           result.warnings.push_back(fmt::format(
               "stage '{}': the tangential fixed load (Fx = {:.6g} N) lost what held it and the "
@@ -476,6 +502,15 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       }
     } else if (adhesive) {
       report_jump(jumps.close());
+    }
+    if (unglued_loss) {
+      end = unglued_end;
+      if (&stage != &program.stages.back()) {
+        result.warnings.push_back(fmt::format(
+            "stage '{}': the normal fixed load (F = 0 N) lost what held it and the indenter "
+            "separates: the program ends at its critical point; stages not run: {}",
+            stage.name, stages_after(program, stage)));
+      }
     }
     if (adhesive) jumps.observe(end);
     held_tangential = end.tangential_displacement;
@@ -493,8 +528,9 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     before = now;
     result.stages.push_back(record);
     observers.emit({.kind = EventKind::stage_end, .state = record.end, .stage = stage_name});
-    lost = ever_in_contact && (end.pressed == 0 || flight);
-    if (result.stop_reason || flight || shear_lost || (shear_force_held && drive.shear_unheld())) {
+    lost = ever_in_contact && (end.pressed == 0 || flight || unglued_loss);
+    if (result.stop_reason || flight || unglued_loss || shear_lost ||
+        (shear_force_held && drive.shear_unheld())) {
       break;
     }
   }

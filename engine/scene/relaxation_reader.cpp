@@ -70,20 +70,6 @@ void refuse_outside_relaxation_scope(const TomlReader& loading, const TomlReader
                                    "adhesion",
                                    i + 1, tangential_control)));
     }
-    if (stage.normal && stage.normal->controller->holds_force() && !scene.material.adhesive()) {
-      // A held force loses the contact in a flight only where the glue's last let-go loses it:
-      // without adhesion the contact lost under a load is not carried.
-      const StageAxis& axis = *stage.normal;
-      const bool falls = (axis.motion == StageAxis::Motion::to && !(axis.value > 0.0)) ||
-                         (axis.motion == StageAxis::Motion::by && axis.value < 0.0);
-      if (stage.until_separation || falls) {
-        loading.fail_at("stage",
-                        not_yet_with_relaxation(fmt::format(
-                            "loading.stage.{}.normal: a fixed load until separation, lowered "
-                            "(by < 0) or to a force <= 0,",
-                            i + 1)));
-      }
-    }
   }
   if (route_keys.method_given && scene.solver.method != SolverMethod::event) {
     throw SceneError(route_keys.method_at +
