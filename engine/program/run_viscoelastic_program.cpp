@@ -299,7 +299,8 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
     }
     observers.emit(event);
   };
-  // Without adhesion, a row reaching past the contact or an observer of the springs' changes,
+  // Without adhesion, a row reaching past the contact, a held control (a loss of the contact
+  // ends at the state before the last release) or an observer of the springs' changes,
   // on_change does nothing: the drive then builds no states around each change.
   const bool listens =
       extended || adhesive || holds_other_than_depth(program) ||

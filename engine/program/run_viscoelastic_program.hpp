@@ -14,7 +14,9 @@ namespace mdrsim {
 /// largest contact radius the program reaches (an elastic program's frame: g(a_max) = the
 /// deepest indentation under fixed grips, the relaxed contact where a force or machine end is
 /// held). Each stage's held value moves linearly in time; a stage until separation ends where
-/// the last spring in contact leaves. Under a machine spring its F^2 / (2k) is part of each
+/// the last spring in contact leaves, and without glue a fixed load lowered to or past zero
+/// ends where the force reaches zero, the contact lost there. Under a machine spring its
+/// F^2 / (2k) is part of each
 /// stage's stored energy. With work_of_adhesion > 0 the row has an adhesive edge (let-go and
 /// glue on the glassy modulus, engine/model/viscoelastic_edge). Emits spring_touched,
 /// spring_lifted, spring_glued, spring_detached and jump at each change and stage_end, every
