@@ -384,6 +384,18 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
              !(holds_force(control) && drive.sample().pressed == 0);
     };
     std::optional<ViscoelasticCascade> flight;
+    // The held let-gos of a stage's end: where they lost what held the indenter (`flies`), a
+    // flight (the stage ends at the critical point, the first let-go told, the rest not); the
+    // others told.
+    const auto end_held_let_gos = [&](bool flies) {
+      if (flies) {
+        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
+        held_let_gos.clear();
+        flight = jumps.open_cascade();
+      }
+      release_let_gos();
+      hold_let_gos = false;
+    };
     bool unglued_loss = false;  ///< a held force without adhesion fell to zero in contact
     ViscoelasticRowSample unglued_end{};
     if (!is_fixed_grips(control)) {
@@ -404,14 +416,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
         unglued_end = drive.sample().pressed > 0 ? drive.sample() : drive.before_last_change();
       }
       const bool flies = !drives_through_spring(control) || drive.shear_unheld();
-      if (hold_let_gos && held_end.separated && flies) {
-        // The flight: the stage ends at the critical point, the first let-go told, the rest not.
-        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
-        held_let_gos.clear();
-        flight = jumps.open_cascade();
-      }
-      release_let_gos();
-      hold_let_gos = false;
+      end_held_let_gos(hold_let_gos && held_end.separated && flies);
       if (stage.until_separation && in_contact && !held_end.separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
         result.warnings.push_back(fmt::format(
@@ -428,13 +433,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       held = sd.end;
       // A held F_x that lost its last glued spring: the indenter slides away from the let-gos'
       // critical point (as the normal held force's flight).
-      if (drive.shear_unheld()) {
-        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
-        held_let_gos.clear();
-        flight = jumps.open_cascade();
-      }
-      release_let_gos();
-      hold_let_gos = false;
+      end_held_let_gos(drive.shear_unheld());
     } else if (drive.sample().pressed > 0) {
       bool separated = false;
       hold_let_gos = adhesive && shear_holds_force;
@@ -447,13 +446,7 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
           if (drive.shear_unheld()) break;
         }
       }
-      if (drive.shear_unheld()) {
-        if (!held_let_gos.empty()) observers.emit(held_let_gos.front());
-        held_let_gos.clear();
-        flight = jumps.open_cascade();
-      }
-      release_let_gos();
-      hold_let_gos = false;
+      end_held_let_gos(drive.shear_unheld());
       held = drive.sample().depth;
       if (!separated && !drive.limited()) {
         stop_at_limit(result, StopReason::no_end);
