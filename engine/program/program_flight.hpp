@@ -3,6 +3,8 @@
 // loses the contact").
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "engine/model/contact_snapshot.hpp"
@@ -28,8 +30,13 @@ struct Flight {
 /// Whether a fixed-load axis holds a force that nothing holds: a tension (or a pull about to
 /// start) with no spring in contact, a tangential force with nothing glued.
 inline bool normal_cannot_hold(const ProgramRow& row, const AxisMotion& normal) {
-  return !row.normal_has_stiffness() && row.in_contact() == 0 &&
-         (row.normal().held < 0.0 || (row.normal().held == 0.0 && normal.rate < 0.0));
+  if (row.normal_has_stiffness() || row.in_contact() != 0) return false;
+  const double held = row.normal().held;
+  // Zero to the rounding of the held line's value (start + rate t, to a few eps of its terms):
+  // a falling force whose last spring lifts within that of zero has lost the contact there.
+  const double zero = 8.0 * std::numeric_limits<double>::epsilon() *
+                      (std::abs(normal.start) + std::abs(normal.rate));
+  return held < 0.0 || (held <= zero && normal.rate < 0.0);
 }
 inline bool tangential_cannot_hold(const ProgramRow& row, const AxisMotion& tangential) {
   return !row.tangential_has_stiffness() &&

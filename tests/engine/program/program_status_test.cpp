@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -95,6 +96,39 @@ TEST(ProgramStatus, AnUnsettlingCascadeStopsTheProgramWithAWarning) {
   // The stages before the one that did not settle are reported.
   ASSERT_GE(r.stages.size(), 4U);
   EXPECT_EQ(r.stages[3].name, "reload");
+}
+
+// Without adhesion, a fixed load lowered through zero loses the contact as its last spring
+// lifts at zero load: the stage ends there (F = 0 to the held line's rounding, no tension), at
+// every spring count. The lifts' rounding once left the force a few 1e-18 N above zero after
+// the last but one (200 and 300 springs): the last spring then held the pull, -0.05 N at
+// d = -6.9 mm, and the run reported an instability.
+TEST(ProgramStatus, AFallingLoadWithoutAdhesionLosesTheContactAtZeroForce) {
+  for (const int springs : {100, 200, 300, 400, 800}) {
+    SCOPED_TRACE(springs);
+    const RunResult r =
+        run_scene(test::build_scene_text(
+                      fmt::format("[material]\neffective_modulus = 1.0e6\nwork_of_adhesion = 0.0\n"
+                                  "[profile]\ntype = \"parabolic\"\nradius = 0.01\n"
+                                  "[[loading.stage]]\nname = \"load\"\nnormal = {{ control = "
+                                  "\"fixed-load\", to = 0.05 }}\n"
+                                  "duration = 0.2\n"
+                                  "[[loading.stage]]\nname = \"hold\"\nduration = 0.5\n"
+                                  "[[loading.stage]]\nname = \"unload\"\nnormal = {{ control = "
+                                  "\"fixed-load\", by = -0.1 }}\n"
+                                  "duration = 0.2\n"
+                                  "[discretization]\nsprings = {}\n[solver]\nmethod = \"event\"\n",
+                                  springs)),
+                  {});
+    EXPECT_EQ(r.status, RunStatus::no_instability);
+    EXPECT_FALSE(r.critical.has_value());
+    ASSERT_EQ(r.stages.size(), 3u);
+    const ContactSnapshot& end = r.stages[2].end;
+    // 0.05 N held to 16 eps of its line's terms: the force where the contact is lost.
+    EXPECT_LE(std::abs(end.normal_force), 16.0 * std::numeric_limits<double>::epsilon() * 0.15);
+    EXPECT_GE(end.indentation, 0.0);
+    EXPECT_LE(end.springs_in_contact, 1);
+  }
 }
 
 }  // namespace
