@@ -49,8 +49,7 @@ std::string relaxation(int terms) {
   return text + " ]\n";
 }
 
-void run_program(benchmark::State& state, const std::string& text) {
-  const mdrsim::Scene scene = mdrsim::test::build_scene_text(text);
+void run_program(benchmark::State& state, const mdrsim::Scene& scene) {
   mdrsim::RunResult result;
   for (auto _ : state) {
     result = mdrsim::run_scene(scene, {});
@@ -62,6 +61,10 @@ void run_program(benchmark::State& state, const std::string& text) {
       benchmark::Counter(events * static_cast<double>(state.iterations()),
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.SetLabel(mdrsim::to_string(result.status));
+}
+
+void run_program(benchmark::State& state, const std::string& text) {
+  run_program(state, mdrsim::test::build_scene_text(text));
 }
 
 /// The elastic program's row: glued as it presses (dgamma_a = dgamma = 0.05 J/m^2), every spring
@@ -99,18 +102,7 @@ void shear_then_pull_off_relaxing(benchmark::State& state) {
   mdrsim::SceneDocument doc = mdrsim::SceneDocument::from_file(
       std::string(MDRSIM_SOURCE_DIR) + "/scenes/viscoelastic/pull_off_after_shear_relaxing.toml");
   doc.set_value("discretization.springs", "10000");
-  const mdrsim::Scene scene = doc.build(mdrsim::Registries::builtin());
-  mdrsim::RunResult result;
-  for (auto _ : state) {
-    result = mdrsim::run_scene(scene, {});
-    benchmark::DoNotOptimize(result.status);
-  }
-  const auto events = static_cast<double>(result.counts.events);
-  state.counters["events"] = events;
-  state.counters["time_per_event"] =
-      benchmark::Counter(events * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(mdrsim::to_string(result.status));
+  run_program(state, doc.build(mdrsim::Registries::builtin()));
 }
 
 }  // namespace

@@ -209,4 +209,22 @@ ExponentialSum depth_under_held_axis(double relaxed_modulus, std::span<const Pro
   return d;
 }
 
+double held_axis_work(const RowHeldAxis& axis, const ExponentialSum& motion, double h) {
+  ExponentialSum load{axis.held, axis.rate, {}};
+  ExponentialSum driving{axis.rate / std::max(axis.stiffness, 1e-300), 0.0, {}};
+  if (axis.stiffness > 0.0) {
+    load.constant -= axis.stiffness * motion.constant;
+    load.slope -= axis.stiffness * motion.slope;
+    for (const ExponentialDecay& d : motion.decays) {
+      load.decays.push_back({-axis.stiffness * d.amplitude, d.time});
+    }
+  } else {
+    driving.constant = motion.slope;
+    for (const ExponentialDecay& d : motion.decays) {
+      driving.decays.push_back({-d.amplitude / d.time, d.time});
+    }
+  }
+  return integral_of_product(load, driving, h);
+}
+
 }  // namespace mdrsim

@@ -40,7 +40,16 @@ struct RowHeldAxis {
   double stiffness;  ///< kappa [N/m^2]: 0 under a fixed load
   double held;       ///< phi at s = 0 [N/m]
   double rate;       ///< phi' [N/(m s)]
+
+  /// The same axis `elapsed` [s] later (phi moved on).
+  RowHeldAxis after(double elapsed) const { return {stiffness, held + rate * elapsed, rate}; }
 };
+
+/// The machine's work on a held axis over the next h [s] of `motion` (the axis's displacement
+/// from now, depth_under_held_axis's sum) [J/m]: int phi du under a fixed load (the machine
+/// moves with the indenter), int q dh under a machine spring (its end h moving at phi' / kappa,
+/// its load q = phi - kappa u).
+double held_axis_work(const RowHeldAxis& axis, const ExponentialSum& motion, double h);
 
 /// The pressed springs between events: n of them, sum g_i, and the sums S_j of their arms'
 /// stresses per term.

@@ -192,15 +192,6 @@ std::string stages_after(const Program& program, const Stage& stage) {
   return skipped;
 }
 
-/// The held value a stage moves its normal axis to from `held` (a stage until separation has
-/// no end: its start).
-double held_end_value(const Stage& stage, double held) {
-  if (!stage.normal || stage.until_separation) return held;
-  if (stage.normal->motion == StageAxis::Motion::to) return stage.normal->value;
-  if (stage.normal->motion == StageAxis::Motion::by) return held + stage.normal->value;
-  return held;
-}
-
 }  // namespace
 
 RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& observers) {
@@ -405,7 +396,8 @@ RunResult run_viscoelastic_program(const Scene& scene, const ObserverList& obser
       // Without adhesion a held force that falls to zero loses the contact at zero force, where
       // the last pressed spring's load (the force) reaches zero: the stage stops there.
       const bool falls = !adhesive && holds_force(control) && in_contact &&
-                         (stage.until_separation || !(held_end_value(stage, held) > 0.0));
+                         (stage.until_separation ||
+                          !((stage.normal ? held_after(*stage.normal, held, false) : held) > 0.0));
       const HeldStageEnd held_end =
           run_held_stage(drive, stage, control, held, tangential, shear_force,
                          (adhesive || falls) && !drives_through_spring(control), report);

@@ -1508,11 +1508,7 @@ class ViscoelasticRowDrive::Row {
   // A held segment (fixed load, a machine spring): the depth follows motion_, rebuilt at every
   // event, and each event is the first of every spring's found against it.
 
-  RowHeldAxis held_now() const {
-    RowHeldAxis axis = *held_;
-    axis.held += axis.rate * (time_ - segment_start_);
-    return axis;
-  }
+  RowHeldAxis held_now() const { return held_->after(time_ - segment_start_); }
 
   std::vector<double> arm_sums() const {
     std::vector<double> sums(springs_.terms.size());
@@ -1577,24 +1573,7 @@ class ViscoelasticRowDrive::Row {
   /// stress decaying plus the arms' common response R_j to the motion, so sum_i sigma_ij^2 =
   /// n R_j^2 + 2 R_j S_j(0) exp(-s/tau_j) + sum_i sigma_ij(0)^2 exp(-2 s/tau_j).
   void count_held_piece(double h) {
-    const RowHeldAxis axis = held_now();
-    ExponentialSum load{axis.held, axis.rate, {}};
-    // Under a machine spring its end moves at h' = phi' / kappa.
-    ExponentialSum driving{axis.rate / std::max(axis.stiffness, 1e-300), 0.0, {}};
-    if (axis.stiffness > 0.0) {
-      load.constant -= axis.stiffness * motion_.constant;
-      load.slope -= axis.stiffness * motion_.slope;
-      for (const ExponentialDecay& d : motion_.decays) {
-        load.decays.push_back({-axis.stiffness * d.amplitude, d.time});
-      }
-    } else {
-      // Under a fixed load the machine moves with the indenter: d'(s).
-      driving.constant = motion_.slope;
-      for (const ExponentialDecay& d : motion_.decays) {
-        driving.decays.push_back({-d.amplitude / d.time, d.time});
-      }
-    }
-    machine_work_.add(integral_of_product(load, driving, h));
+    machine_work_.add(held_axis_work(held_now(), motion_, h));
     if (pressed_.empty()) return;
     const auto n = static_cast<double>(pressed_.size());
     for (std::size_t j = 0; j < springs_.terms.size(); ++j) {
@@ -2097,11 +2076,7 @@ class ViscoelasticRowDrive::Row {
   // not carried (shear_unheld).
 
   /// The tangential constraint from now: kappa, phi and phi' [N/m^2, N/m, N/(m s)].
-  RowHeldAxis shear_now() const {
-    RowHeldAxis axis = *shear_held_;
-    axis.held += axis.rate * (time_ - segment_start_);
-    return axis;
-  }
+  RowHeldAxis shear_now() const { return shear_held_->after(time_ - segment_start_); }
 
   void begin_held_shear(const DriveSegment& segment) {
     shear_held_.reset();
@@ -2151,19 +2126,7 @@ class ViscoelasticRowDrive::Row {
   /// shear_motion_, all members at once: int phi du_x under a fixed load, int q dh under a
   /// machine spring (its end moving at phi' / kappa, its load phi - kappa u_x).
   void count_held_shear_piece(double h) {
-    const RowHeldAxis axis = shear_now();
-    if (axis.stiffness > 0.0) {
-      ExponentialSum load{axis.held - axis.stiffness * shear_motion_.constant,
-                          axis.rate - axis.stiffness * shear_motion_.slope,
-                          {}};
-      for (const ExponentialDecay& d : shear_motion_.decays) {
-        load.decays.push_back({-axis.stiffness * d.amplitude, d.time});
-      }
-      tangential_work_.add(integral_of_product(load, {axis.rate / axis.stiffness, 0.0, {}}, h));
-    } else {
-      tangential_work_.add(
-          integral_of_product({axis.held, axis.rate, {}}, exponential_sum_slope(shear_motion_), h));
-    }
+    tangential_work_.add(held_axis_work(shear_now(), shear_motion_, h));
     if (tangential_members_ == 0) return;
     dissipated_.add(
         shared_arms_motion_piece(tangential_arms_, tangential_own_squares_, shear_motion_, h)
